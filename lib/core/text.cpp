@@ -1,0 +1,220 @@
+// Text input with locations, strict number parsing and round-trip number output.
+#include "core/text.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+namespace sigchain {
+
+TextInput::TextInput(std::string text, std::string name)
+    : m_name(std::move(name)), m_text(std::move(text)) {
+    auto nul = m_text.find('\0');
+    if (nul != std::string::npos) {
+        int line = 1 + static_cast<int>(std::count(m_text.begin(), m_text.begin() + nul, '\n'));
+        throw DataError({m_name, line}, "binary data (NUL byte); expected a text file");
+    }
+}
+
+TextInput TextInput::from_file(const std::string& path) {
+    if (path == "-") return from_stream(std::cin, "-");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path + ": cannot open: " + std::strerror(errno));
+    return from_stream(in, path);
+}
+
+TextInput TextInput::from_string(std::string text, std::string name) {
+    return TextInput(std::move(text), std::move(name));
+}
+
+TextInput TextInput::from_stream(std::istream& in, std::string name) {
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw IoError(SourceLocation{name, 0}.str() + ": read error");
+    return TextInput(std::move(text), std::move(name));
+}
+
+std::string_view trim(std::string_view text) {
+    const char* ws = " \t\r\n\f\v";
+    auto b = text.find_first_not_of(ws);
+    if (b == std::string_view::npos) return {};
+    auto e = text.find_last_not_of(ws);
+    return text.substr(b, e - b + 1);
+}
+
+std::vector<std::string_view> split_fields(std::string_view text, bool commas_too) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    auto is_sep = [&](char c) {
+        return c == ' ' || c == '\t' || c == '\r' || c == '\n' || (commas_too && c == ',');
+    };
+    while (i < text.size()) {
+        while (i < text.size() && is_sep(text[i])) ++i;
+        std::size_t j = i;
+        while (j < text.size() && !is_sep(text[j])) ++j;
+        if (j > i) out.push_back(text.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+LineCursor::LineCursor(const TextInput& input, Mode mode) : m_input(input) {
+    std::string_view all = input.text();
+    int number = 0;
+    std::size_t start = 0;
+    while (start < all.size()) {
+        auto end = all.find('\n', start);
+        if (end == std::string_view::npos) end = all.size();
+        std::string_view raw = all.substr(start, end - start);
+        ++number;
+        start = end + 1;
+        if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+        if (mode == Mode::Raw) {
+            m_lines.push_back({number, raw});
+            continue;
+        }
+        auto hash = raw.find('#');
+        if (hash != std::string_view::npos) raw = raw.substr(0, hash);
+        raw = trim(raw);
+        if (!raw.empty()) m_lines.push_back({number, raw});
+    }
+}
+
+const Line& LineCursor::peek(std::string_view what) const {
+    if (at_end()) {
+        int last = m_lines.empty() ? 0 : m_lines.back().number;
+        throw DataError(m_input.at(last),
+                        "unexpected end of file, expected " + std::string(what));
+    }
+    return m_lines[m_pos];
+}
+
+const Line& LineCursor::next(std::string_view what) {
+    const Line& line = peek(what);
+    ++m_pos;
+    return line;
+}
+
+std::vector<std::string_view> LineCursor::fields(std::size_t count, std::string_view what,
+                                                 bool commas_too) {
+    const Line& line = next(what);
+    auto f = split_fields(line.text, commas_too);
+    if (f.size() != count) {
+        throw DataError(where(line), "expected " + std::to_string(count) + " fields (" +
+                                         std::string(what) + "), found " +
+                                         std::to_string(f.size()) + ": " + quoted(line.text));
+    }
+    return f;
+}
+
+SourceLocation LineCursor::where() const {
+    if (m_lines.empty()) return m_input.at(0);
+    std::size_t i = m_pos == 0 ? 0 : m_pos - 1;
+    if (i >= m_lines.size()) i = m_lines.size() - 1;
+    return m_input.at(m_lines[i].number);
+}
+
+void LineCursor::require_not_empty(std::string_view what) const {
+    if (m_lines.empty()) throw DataError(m_input.at(0), "empty file, expected " + std::string(what));
+}
+
+void LineCursor::require_end(std::string_view after) const {
+    if (at_end()) return;
+    const Line& line = m_lines[m_pos];
+    throw DataError(m_input.at(line.number), "unexpected content after " + std::string(after) +
+                                                 ", found " + quoted(line.text));
+}
+
+std::string quoted(std::string_view token) {
+    std::string out = "'";
+    std::size_t n = 0;
+    for (char c : token) {
+        if (++n > 40) {
+            out += "...";
+            break;
+        }
+        auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", u);
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + "'";
+}
+
+double parse_double(std::string_view token, const SourceLocation& where, std::string_view what) {
+    double value = 0;
+    std::string_view t = token;
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+    auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    bool whole = ec == std::errc() && ptr == t.data() + t.size() && !t.empty();
+    if (!whole && ec == std::errc::result_out_of_range)
+        throw DataError(where, "expected " + std::string(what) + " (a number), found " +
+                                   quoted(token) + " (out of range)");
+    if (!whole)
+        throw DataError(where, "expected " + std::string(what) + " (a number), found " +
+                                   quoted(token));
+    if (!std::isfinite(value))
+        throw DataError(where, "expected " + std::string(what) + " (a finite number), found " +
+                                   quoted(token));
+    return value;
+}
+
+long parse_long(std::string_view token, const SourceLocation& where, std::string_view what) {
+    long value = 0;
+    std::string_view t = token;
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+    auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (ec != std::errc() || ptr != t.data() + t.size() || t.empty())
+        throw DataError(where, "expected " + std::string(what) + " (an integer), found " +
+                                   quoted(token));
+    return value;
+}
+
+long parse_count(std::string_view token, const SourceLocation& where, std::string_view what) {
+    long value = parse_long(token, where, what);
+    if (value < 0)
+        throw DataError(where, "expected " + std::string(what) +
+                                   " (a count, 0 or more), found " + quoted(token));
+    return value;
+}
+
+double parse_in_range(std::string_view token, const SourceLocation& where, std::string_view what,
+                      double lo, double hi) {
+    double v = parse_double(token, where, what);
+    if (v < lo || v > hi)
+        throw DataError(where, "expected " + std::string(what) + " in [" + format_number(lo) +
+                                   ", " + format_number(hi) + "], found " + quoted(token));
+    return v;
+}
+
+std::string format_number(double value) {
+    char buf[64];
+    auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
+    return std::string(buf, ec == std::errc() ? ptr : buf);
+}
+
+void require_monotonic(const std::vector<double>& values, const SourceLocation& where,
+                       std::string_view what) {
+    if (values.size() < 2) return;
+    bool increasing = values[1] > values[0];
+    for (std::size_t i = 1; i < values.size(); ++i) {
+        bool ok = increasing ? values[i] > values[i - 1] : values[i] < values[i - 1];
+        if (!ok)
+            throw DataError(where, std::string(what) + " is not monotonic: value " +
+                                       std::to_string(i + 1) + " (" + format_number(values[i]) +
+                                       ") after " + format_number(values[i - 1]));
+    }
+}
+
+}  // namespace sigchain

@@ -1,0 +1,1 @@
+// Geometry library; see view_angle.hpp.

@@ -1,0 +1,42 @@
+// .adv look-angle file (seed fig. 4.27; man adv(5)): where the frame camera is and
+// where it looks.
+#pragma once
+
+#include <array>
+#include <ostream>
+#include <string>
+
+#include "core/text.hpp"
+
+namespace sigchain::io {
+
+enum class LengthUnit { Meters, Feet };
+enum class SensorKind { Frame, Line, Pushbroom };
+
+// Scene frame: x east, y north, z up, in the scene's length unit (`units`).
+struct Adv {
+    std::array<double, 3> target{};  // target point (scene units)
+    std::array<double, 3> camera{};  // camera point (scene units)
+    double elevation_deg = 0;        // camera angles as AutoCAD DVIEW records them
+    double azimuth_deg = 0;
+    double twist_deg = 0;
+    double focal_length_mm = 0;
+    long rows = 0;
+    long columns = 0;
+    // Optional `key = value` extensions (sigchain), with their defaults.
+    LengthUnit units = LengthUnit::Meters;
+    double pixel_pitch_um = 9.0;  // DCS 420
+    SensorKind sensor = SensorKind::Frame;
+    long samples_per_pixel = 1;
+    // Which optional keys were present (so a rewrite keeps a legacy file legacy).
+    bool has_units = false, has_pixel_pitch = false, has_sensor = false, has_samples = false;
+};
+
+Adv parse_adv(const TextInput& in);
+void write_adv(std::ostream& out, const Adv& adv);
+inline Adv read_adv_file(const std::string& path) { return parse_adv(TextInput::from_file(path)); }
+
+// Metres per scene unit.
+double meters_per_unit(LengthUnit unit);
+
+}  // namespace sigchain::io

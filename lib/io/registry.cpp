@@ -1,0 +1,28 @@
+// Registry of file formats by extension: one line per format below.
+#include "io/registry.hpp"
+
+#include <algorithm>
+
+// FORMAT HEADERS (one include per format)
+
+namespace sigchain::io {
+
+const std::vector<FormatHandler>& formats() {
+    static const std::vector<FormatHandler> all = [] {
+        std::vector<FormatHandler> v = {
+            // FORMAT LIST (one line per format: X_format(),)
+        };
+        std::sort(v.begin(), v.end(),
+                  [](const auto& a, const auto& b) { return a.extension < b.extension; });
+        return v;
+    }();
+    return all;
+}
+
+const FormatHandler* find_format(std::string_view extension) {
+    for (const auto& f : formats())
+        if (f.extension == extension) return &f;
+    return nullptr;
+}
+
+}  // namespace sigchain::io

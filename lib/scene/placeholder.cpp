@@ -1,0 +1,1 @@
+// Scene library (Embree); see scene.hpp.
