@@ -1,9 +1,40 @@
-// find_min_max_view_angle: placeholder replaced below in this issue.
+// find_min_max_view_angle: the view-angle range a sensor sees of a scene (seed 4.2.3.3).
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "core/output.hpp"
+#include "geom/view_angle_job.hpp"
+
+namespace cli = sigchain::cli;
+namespace geom = sigchain::geom;
+
 int main(int argc, char** argv) {
-    sigchain::cli::Cli cli({"find_min_max_view_angle", "View-angle range.", "ADV GDB"});
-    return cli.run(argc, argv, [](const auto&, auto&) -> int {
-        throw sigchain::NotImplemented("not implemented yet");
+    cli::Cli tool({"find_min_max_view_angle",
+                   "Print the minimum, maximum and suggested increment of the view angle\n"
+                   "of a sensor over a scene, by the scene-bounding-box and field-of-view "
+                   "methods.",
+                   "[OPTIONS] ADV GDB|ODB"});
+    tool.add_positional("input", -1, "look-angle file (.adv) and scene (.gdb or .odb)");
+    tool.add_options()
+        ("snd", "print only the view-angle line for a .snd file")
+        ("method,m", cli::po::value<std::string>()->default_value("field-of-view"),
+         "method for --snd: field-of-view or scene-bounding-box")
+        ("grid", cli::po::value<int>()->default_value(256),
+         "interior rays per image axis for the field-of-view method (>= 1)");
+    tool.add_output_option();
+    return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
+        auto inputs = cli::args(vm, "input");
+        if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and GDB|ODB");
+        geom::ViewAngleJob job{inputs[0], inputs[1], vm.count("snd") > 0};
+        const auto& method = vm["method"].as<std::string>();
+        if (method == "scene-bounding-box") job.method = geom::ViewAngleMethod::BoundingBox;
+        else if (method != "field-of-view")
+            throw sigchain::UsageError("unknown method '" + method +
+                                       "' (field-of-view or scene-bounding-box)");
+        job.grid = vm["grid"].as<int>();
+        if (job.grid < 1) throw sigchain::UsageError("--grid must be at least 1");
+        sigchain::AtomicOutput out(vm["output"].as<std::string>());
+        geom::run_view_angle_job(job, out.stream());
+        out.commit();
+        return 0;
     });
 }

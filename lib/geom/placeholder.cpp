@@ -1,1 +1,0 @@
-// Geometry library; see view_angle.hpp.

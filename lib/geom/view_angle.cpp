@@ -1,0 +1,99 @@
+// View-angle range by the scene-bounding-box and field-of-view methods (seed 4.2.3.3).
+#include "geom/view_angle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace sigchain::geom {
+
+namespace {
+constexpr double kRad = 180.0 / std::numbers::pi;
+
+struct Accumulator {
+    double lo = 1e300, hi = -1e300;
+    std::size_t n = 0;
+    void add(double v) {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+        ++n;
+    }
+    AngleRange range() const {
+        return {lo, hi, suggested_increment_deg(lo, hi), n};
+    }
+};
+}  // namespace
+
+Vec3 reference_direction(const FrameCamera& cam) {
+    Vec3 h{cam.forward[0], cam.forward[1], 0.0};
+    double n = std::hypot(h[0], h[1]);
+    if (n > std::sin(0.01 / kRad)) return {h[0] / n, h[1] / n, 0.0};
+    Vec3 up{-cam.down[0], -cam.down[1], 0.0};
+    return normalized(up);
+}
+
+double signed_view_angle_deg(const Vec3& d, const Vec3& ref) {
+    Vec3 u = normalized(d);
+    double off_nadir = std::acos(std::clamp(-u[2], -1.0, 1.0)) * kRad;
+    double along = u[0] * ref[0] + u[1] * ref[1];
+    return along < 0 ? -off_nadir : off_nadir;
+}
+
+double suggested_increment_deg(double min_deg, double max_deg, int min_steps) {
+    double span = std::max(0.0, max_deg - min_deg) / std::max(1, min_steps);
+    if (span >= 1.0) return 1.0;
+    if (span <= 0.01) return 0.01;
+    double p = std::pow(10.0, std::floor(std::log10(span)));
+    for (double m : {5.0, 2.0, 1.0})
+        if (m * p <= span) return m * p;
+    return p;
+}
+
+ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& scene, int grid) {
+    scene::Bounds b = scene.bounds();
+    if (b.empty()) throw DataError({}, "the scene has no facets");
+    ViewAngleReport rep;
+    Vec3 ref = reference_direction(cam);
+    rep.reference_azimuth_deg = std::fmod(std::atan2(ref[0], ref[1]) * kRad + 360.0, 360.0);
+
+    Accumulator box;
+    for (int i = 0; i < 8; ++i) {
+        Vec3 corner{(i & 1) ? b.upper[0] : b.lower[0], (i & 2) ? b.upper[1] : b.lower[1],
+                    (i & 4) ? b.upper[2] : b.lower[2]};
+        Vec3 d{corner[0] - cam.position[0], corner[1] - cam.position[1],
+               corner[2] - cam.position[2]};
+        if (dot(d, d) > 0) box.add(signed_view_angle_deg(d, ref));
+    }
+    rep.bounding_box = box.range();
+
+    Accumulator fov, border;
+    auto cast = [&](double row, double col, bool on_border) {
+        Vec3 d = cam.direction(row, col);
+        double angle = signed_view_angle_deg(d, ref);
+        if (on_border) border.add(angle);
+        ++rep.rays_cast;
+        if (scene.intersect(cam.position, d)) fov.add(angle);
+    };
+    double R = static_cast<double>(cam.rows), C = static_cast<double>(cam.columns);
+    for (double r : {0.0, R})
+        for (double c : {0.0, C}) cast(r, c, true);  // the image's outer corners
+    for (long c = 0; c < cam.columns; ++c) {
+        cast(0.5, c + 0.5, true);
+        cast(R - 0.5, c + 0.5, true);
+    }
+    for (long r = 0; r < cam.rows; ++r) {
+        cast(r + 0.5, 0.5, true);
+        cast(r + 0.5, C - 0.5, true);
+    }
+    int gr = static_cast<int>(std::min<long>(grid, cam.rows));
+    int gc = static_cast<int>(std::min<long>(grid, cam.columns));
+    for (int i = 0; i < gr; ++i)
+        for (int j = 0; j < gc; ++j) cast((i + 0.5) * R / gr, (j + 0.5) * C / gc, false);
+    rep.unclipped_field_of_view = border.range();
+    if (fov.n > 0) rep.field_of_view = fov.range();
+    return rep;
+}
+
+}  // namespace sigchain::geom

@@ -1,0 +1,49 @@
+// View-angle range of a sensor over a scene (seed 4.2.3.3, DIRSIG's
+// find_min_max_view_angle): the range of angles the .snd and .rad tables must cover.
+//
+// A view angle is the angle between a ray from the sensor and nadir (-z), in
+// degrees, signed: positive when the ray's horizontal part points along the
+// reference azimuth, negative when it points against it. The reference azimuth is
+// the horizontal direction of the camera's line of sight or, for a line of sight
+// within 0.01 deg of nadir (or zenith), the image's up direction made horizontal.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "geom/camera.hpp"
+#include "scene/scene.hpp"
+
+namespace sigchain::geom {
+
+struct AngleRange {
+    double min_deg = 0;
+    double max_deg = 0;
+    double increment_deg = 0;  // suggested
+    std::size_t samples = 0;   // rays or corners that contributed
+};
+
+struct ViewAngleReport {
+    AngleRange bounding_box;               // "scene-bounding-box"
+    std::optional<AngleRange> field_of_view;  // "field-of-view"; none if no ray hits
+    AngleRange unclipped_field_of_view;    // image border rays, hit or not
+    double reference_azimuth_deg = 0;      // clockwise from north (+y)
+    std::size_t rays_cast = 0;
+};
+
+// Horizontal reference direction (unit, z = 0) for the sign of view angles.
+Vec3 reference_direction(const FrameCamera& cam);
+// Signed view angle (deg) of a ray direction from the sensor.
+double signed_view_angle_deg(const Vec3& direction, const Vec3& reference);
+// A round increment (1, 2 or 5 x 10^k deg) giving at least `min_steps` steps over
+// the range, at most 1 deg and at least 0.01 deg.
+double suggested_increment_deg(double min_deg, double max_deg, int min_steps = 10);
+
+// Both methods. The field-of-view method casts the rays through every border
+// pixel centre and the four image corners, plus an interior grid of at most
+// `grid` x `grid` rays, and keeps the angles of those that hit the scene.
+// Throws DataError if the scene is empty.
+ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& scene,
+                                 int grid = 256);
+
+}  // namespace sigchain::geom

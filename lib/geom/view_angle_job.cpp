@@ -1,0 +1,80 @@
+// The find_min_max_view_angle job: inputs, both methods, the report.
+#include "geom/view_angle_job.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "geom/view_angle.hpp"
+#include "io/adv.hpp"
+#include "io/check.hpp"
+#include "scene/scene.hpp"
+
+namespace sigchain::geom {
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::string s = buf;
+    return s == "-0.0000" || s == "-0.00" || s == "-0" ? s.substr(1) : s;
+}
+
+int decimals_of(double increment) {
+    return increment >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(increment) - 1e-9));
+}
+
+scene::Scene load_scene(const std::string& path) {
+    std::string ext = io::format_of_path(path);
+    if (ext == "gdb") return scene::load_gdb_scene(path);
+    throw UsageError(path + ": the scene must be a .gdb or .odb file");
+}
+
+void row(std::ostream& out, const char* name, const AngleRange& r) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%-20s %10s %10s %10s %8zu\n", name,
+                  fixed(r.min_deg, 4).c_str(), fixed(r.max_deg, 4).c_str(),
+                  fixed(r.increment_deg, 2).c_str(), r.samples);
+    out << buf;
+}
+
+}  // namespace
+
+std::string snd_view_angle_line(double min_deg, double max_deg, double inc) {
+    // Round outward to the increment so the .rad table covers the whole range.
+    double lo = std::floor(min_deg / inc + 1e-9) * inc;
+    double hi = std::ceil(max_deg / inc - 1e-9) * inc;
+    int d = std::max(1, decimals_of(inc));
+    return fixed(lo, d) + " " + fixed(hi, d) + " " + fixed(inc, d);
+}
+
+void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
+    io::Adv adv = io::read_adv_file(job.adv_path);
+    FrameCamera cam = frame_camera(adv, job.adv_path);
+    scene::Scene sc = load_scene(job.scene_path);
+    if (sc.triangle_count() == 0)
+        throw DataError({job.scene_path, 0}, "the scene has no facets");
+    ViewAngleReport rep = find_view_angles(cam, sc, job.grid);
+    if (job.method == ViewAngleMethod::FieldOfView && !rep.field_of_view)
+        throw DataError({job.adv_path, 0}, "no ray of the field of view hits the scene in " +
+                                               job.scene_path + "; check the look angles");
+    if (job.snd_line) {
+        const AngleRange& r =
+            job.method == ViewAngleMethod::FieldOfView ? *rep.field_of_view : rep.bounding_box;
+        out << snd_view_angle_line(r.min_deg, r.max_deg, r.increment_deg)
+            << "\t# min, max and increment of the view angle (deg, "
+            << (job.method == ViewAngleMethod::FieldOfView ? "field-of-view" : "scene-bounding-box")
+            << ")\n";
+        return;
+    }
+    out << "# view angles off nadir (deg), positive toward azimuth "
+        << fixed(rep.reference_azimuth_deg, 3) << " deg (clockwise from north)\n"
+        << "# method                min_deg    max_deg  increment  samples\n";
+    row(out, "scene-bounding-box", rep.bounding_box);
+    if (rep.field_of_view) row(out, "field-of-view", *rep.field_of_view);
+    else out << "field-of-view        none (no ray of the image hits the scene)\n";
+    row(out, "unclipped-image", rep.unclipped_field_of_view);
+}
+
+}  // namespace sigchain::geom
