@@ -4,6 +4,8 @@
 #include <algorithm>
 
 // FORMAT HEADERS (one include per format)
+#include "io/cdk.hpp"
+#include "io/wth.hpp"
 
 namespace sigchain::io {
 
@@ -11,6 +13,8 @@ const std::vector<FormatHandler>& formats() {
     static const std::vector<FormatHandler> all = [] {
         std::vector<FormatHandler> v = {
             // FORMAT LIST (one line per format: X_format(),)
+            cdk_format(),
+            wth_format(),
         };
         std::sort(v.begin(), v.end(),
                   [](const auto& a, const auto& b) { return a.extension < b.extension; });
