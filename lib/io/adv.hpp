@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/text.hpp"
+#include "io/registry.hpp"
 
 namespace sigchain::io {
 
@@ -14,6 +15,8 @@ enum class LengthUnit { Meters, Feet };
 enum class SensorKind { Frame, Line, Pushbroom };
 
 // Scene frame: x east, y north, z up, in the scene's length unit (`units`).
+// The line of sight runs from `camera` to `target`; the angles only orient the image
+// (adv(5) gives the full convention).
 struct Adv {
     std::array<double, 3> target{};  // target point (scene units)
     std::array<double, 3> camera{};  // camera point (scene units)
@@ -30,11 +33,21 @@ struct Adv {
     long samples_per_pixel = 1;
     // Which optional keys were present (so a rewrite keeps a legacy file legacy).
     bool has_units = false, has_pixel_pitch = false, has_sensor = false, has_samples = false;
+
+    bool operator==(const Adv&) const = default;
 };
 
+// Limits the reader enforces (adv(5) ERRORS).
+inline constexpr long kAdvMaxImageSide = 100000;  // rows, columns
+inline constexpr long kAdvMaxSamplesPerPixel = 65536;
+
+// Parses a whole .adv; throws DataError ("FILE:LINE: expected ..., found ...").
 Adv parse_adv(const TextInput& in);
+// Writes the legacy five lines, then each optional key that was present or differs
+// from its default. Numbers round-trip exactly.
 void write_adv(std::ostream& out, const Adv& adv);
 inline Adv read_adv_file(const std::string& path) { return parse_adv(TextInput::from_file(path)); }
+FormatHandler adv_format();
 
 // Metres per scene unit.
 double meters_per_unit(LengthUnit unit);

@@ -4,8 +4,12 @@
 #include <algorithm>
 
 // FORMAT HEADERS (one include per format)
-#include "io/cdk.hpp"
-#include "io/wth.hpp"
+#include "io/adv.hpp"
+#include "io/cpt.hpp"
+#include "io/rsd.hpp"
+#include "io/sen.hpp"
+#include "io/snd.hpp"
+#include "io/tmp.hpp"
 
 namespace sigchain::io {
 
@@ -13,8 +17,12 @@ const std::vector<FormatHandler>& formats() {
     static const std::vector<FormatHandler> all = [] {
         std::vector<FormatHandler> v = {
             // FORMAT LIST (one line per format: X_format(),)
-            cdk_format(),
-            wth_format(),
+            adv_format(),
+            cpt_format(),
+            rsd_format(),
+            sen_format(),
+            snd_format(),
+            tmp_format(),
         };
         std::sort(v.begin(), v.end(),
                   [](const auto& a, const auto& b) { return a.extension < b.extension; });

@@ -1,0 +1,29 @@
+// Header lines shared by sigchain's own text formats: the `# sigchain-NAME MAJOR[.MINOR]`
+// magic line and `key = value` lines (man tmp(5), cpt(5)).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "core/text.hpp"
+
+namespace sigchain::io {
+
+// Checks that the first physical line of `in` is `# sigchain-NAME MAJOR[.MINOR]` with
+// MAJOR == `major` (any minor version is accepted: minor versions only add optional
+// content). Returns the minor version (0 when absent). Throws DataError at line 1 for a
+// missing or malformed magic line or another major version, and at line 0 for an empty
+// file.
+int require_magic_line(const TextInput& in, std::string_view name, int major);
+
+// A `key = value` line split at its first `=`, both sides trimmed.
+struct KeyValue {
+    std::string_view key;
+    std::string_view value;
+};
+
+// The key and value of `text`, or nothing when it has no `=`. Throws DataError at
+// `where` when the key or the value is empty or the key contains white space.
+std::optional<KeyValue> split_key_value(std::string_view text, const SourceLocation& where);
+
+}  // namespace sigchain::io

@@ -1,0 +1,152 @@
+// Tests for the .adv look-angle reader and writer (lib/io/adv).
+#include "io/adv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+using namespace sigchain;
+using namespace sigchain::io;
+
+namespace {
+
+const std::string kLegacy = "1800 1800 465\n1700 1700 1600\n90 -91 0.0\n40\n512 512\n";
+
+// The message of the DataError that parsing `text` (as "t.adv") throws.
+std::string error_of(const std::string& text) {
+    try {
+        parse_adv(TextInput::from_string(text, "t.adv"));
+    } catch (const DataError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+std::string written(const Adv& adv) {
+    std::ostringstream out;
+    write_adv(out, adv);
+    return out.str();
+}
+
+}  // namespace
+
+TEST(Adv, SeedSampleParsesToTheSeedValues) {
+    Adv a = read_adv_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.adv");
+    EXPECT_EQ(a.target, (std::array<double, 3>{1800, 1800, 465}));
+    EXPECT_EQ(a.camera, (std::array<double, 3>{1700, 1700, 1600}));
+    EXPECT_EQ(a.elevation_deg, 90);
+    EXPECT_EQ(a.azimuth_deg, -91);
+    EXPECT_EQ(a.twist_deg, 0);
+    EXPECT_EQ(a.focal_length_mm, 40);
+    EXPECT_EQ(a.rows, 512);
+    EXPECT_EQ(a.columns, 512);
+    EXPECT_EQ(a.units, LengthUnit::Feet);
+    EXPECT_TRUE(a.has_units);
+    EXPECT_EQ(a.pixel_pitch_um, 9.0);
+    EXPECT_FALSE(a.has_pixel_pitch);
+    EXPECT_EQ(a.sensor, SensorKind::Frame);
+    EXPECT_EQ(a.samples_per_pixel, 1);
+    EXPECT_DOUBLE_EQ(meters_per_unit(a.units), 0.3048);
+}
+
+TEST(Adv, LegacyFileGetsDefaultsAndStaysLegacy) {
+    Adv a = parse_adv(TextInput::from_string(kLegacy, "t.adv"));
+    EXPECT_EQ(a.units, LengthUnit::Meters);
+    EXPECT_EQ(meters_per_unit(a.units), 1.0);
+    EXPECT_FALSE(a.has_units || a.has_pixel_pitch || a.has_sensor || a.has_samples);
+    EXPECT_EQ(written(a), "1800 1800 465\n1700 1700 1600\n90 -91 0\n40\n512 512\n");
+}
+
+TEST(Adv, OptionalKeys) {
+    Adv a = parse_adv(TextInput::from_string(
+        kLegacy + "units = m\npixel_pitch_um=12.5\nsensor = pushbroom\nsamples_per_pixel = 4\n",
+        "t.adv"));
+    EXPECT_TRUE(a.has_units && a.has_pixel_pitch && a.has_sensor && a.has_samples);
+    EXPECT_EQ(a.pixel_pitch_um, 12.5);
+    EXPECT_EQ(a.sensor, SensorKind::Pushbroom);
+    EXPECT_EQ(a.samples_per_pixel, 4);
+}
+
+TEST(Adv, RoundTripIsExactAndIdempotent) {
+    Adv a = read_adv_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.adv");
+    a.target = {0.1, -2.0 / 3.0, 1e-7};
+    a.pixel_pitch_um = 7.4;
+    a.sensor = SensorKind::Line;
+    std::string once = written(a);
+    Adv b = parse_adv(TextInput::from_string(once, "once.adv"));
+    EXPECT_EQ(b.target, a.target);
+    b.has_pixel_pitch = a.has_pixel_pitch = true;  // written because not the default
+    b.has_sensor = a.has_sensor = true;
+    EXPECT_EQ(b, a);
+    EXPECT_EQ(written(b), once);
+}
+
+TEST(Adv, EmptyFile) {
+    EXPECT_EQ(error_of("# only a comment\n\n"),
+              "t.adv: empty file, expected an .adv look-angle file (target point x y z)");
+}
+
+TEST(Adv, BinaryFile) {
+    EXPECT_THROW(TextInput::from_string(std::string("1 2 3\n\0\n", 8), "t.adv"), DataError);
+}
+
+TEST(Adv, TruncatedFile) {
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\n40\n"),
+              "t.adv:4: unexpected end of file, expected image size: rows columns");
+}
+
+TEST(Adv, WrongFieldCount) {
+    EXPECT_EQ(error_of("1 2\n4 5 6\n90 0 0\n40\n8 8\n"),
+              "t.adv:1: expected 3 fields (target point), found 2: '1 2'");
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\n40\n8\n"),
+              "t.adv:5: expected 2 fields (image size: rows columns), found 1: '8'");
+}
+
+TEST(Adv, NotANumber) {
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\nforty\n8 8\n"),
+              "t.adv:4: expected focal length (mm) (a number), found 'forty'");
+    EXPECT_EQ(error_of("1 2 nan\n4 5 6\n90 0 0\n40\n8 8\n"),
+              "t.adv:1: expected target point z (a finite number), found 'nan'");
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\n40\n8 8.5\n"),
+              "t.adv:5: expected image columns (an integer), found '8.5'");
+}
+
+TEST(Adv, OutOfRange) {
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n91 0 0\n40\n8 8\n"),
+              "t.adv:3: expected camera elevation (deg) in [-90, 90], found '91'");
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\n0\n8 8\n"),
+              "t.adv:4: expected focal length (mm) greater than 0, found '0'");
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\n40\n0 8\n"),
+              "t.adv:5: expected image rows (an integer from 1 to 100000), found '0'");
+    EXPECT_EQ(error_of("1 2 3\n4 5 6\n90 0 0\n40\n-8 8\n"),
+              "t.adv:5: expected image rows (an integer from 1 to 100000), found '-8'");
+}
+
+TEST(Adv, CameraAtTarget) {
+    EXPECT_EQ(error_of("1 2 3\n1 2 3.0\n90 0 0\n40\n8 8\n"),
+              "t.adv:2: expected a camera point different from the target point, found the "
+              "same point");
+}
+
+TEST(Adv, BadKeys) {
+    EXPECT_EQ(error_of(kLegacy + "colour = red\n"),
+              "t.adv:6: expected a key units, pixel_pitch_um, sensor or samples_per_pixel, "
+              "found 'colour'");
+    EXPECT_EQ(error_of(kLegacy + "units = ft\n# again\nunits = m\n"),
+              "t.adv:8: expected each key once, found 'units' again (first on line 6)");
+    EXPECT_EQ(error_of(kLegacy + "units = feet\n"),
+              "t.adv:6: expected units ft or m, found 'feet'");
+    EXPECT_EQ(error_of(kLegacy + "pixel_pitch_um = -9\n"),
+              "t.adv:6: expected pixel_pitch_um greater than 0, found '-9'");
+    EXPECT_EQ(error_of(kLegacy + "sensor = whisk\n"),
+              "t.adv:6: expected sensor frame, line or pushbroom, found 'whisk'");
+    EXPECT_EQ(error_of(kLegacy + "samples_per_pixel = 0\n"),
+              "t.adv:6: expected samples_per_pixel (an integer from 1 to 65536), found '0'");
+    EXPECT_EQ(error_of(kLegacy + "units =\n"),
+              "t.adv:6: expected a value after 'units =', found 'units ='");
+}
+
+TEST(Adv, ExtraLineAfterImageSize) {
+    EXPECT_EQ(error_of(kLegacy + "512 512\n"),
+              "t.adv:6: expected 'key = value' after the image size, found '512 512'");
+}
