@@ -4,6 +4,8 @@
 #include <algorithm>
 
 // FORMAT HEADERS (one include per format)
+#include "io/cdk.hpp"
+#include "io/wth.hpp"
 #include "io/adv.hpp"
 #include "io/cpt.hpp"
 #include "io/rsd.hpp"
@@ -17,6 +19,8 @@ const std::vector<FormatHandler>& formats() {
     static const std::vector<FormatHandler> all = [] {
         std::vector<FormatHandler> v = {
             // FORMAT LIST (one line per format: X_format(),)
+            cdk_format(),
+            wth_format(),
             adv_format(),
             cpt_format(),
             rsd_format(),
