@@ -40,6 +40,12 @@ need_a_seed_sample() {
     skip "no seed sample in tests/data/seed/ has a registered format yet"
 }
 
+# Runs sigchain-check with ARGS, failing with its stderr unless it exits 0.
+check_ok() {
+    run --separate-stderr sigchain-check "$@"
+    [ "$status" -eq 0 ] || fail "sigchain-check $* exited $status: $stderr"
+}
+
 # Usage errors: exit 2, nothing on stdout, MESSAGE and "Try ..." on stderr.
 assert_usage_error() {
     local message="$1"
@@ -215,9 +221,9 @@ assert_usage_error() {
         e="${f##*.}"
         e="${e,,}"
         known_formats | grep -qx -- "$e" || continue
-        run -0 --separate-stderr sigchain-check --rewrite -o "once.$e" "$f"
-        run -0 --separate-stderr sigchain-check "once.$e"
-        run -0 --separate-stderr sigchain-check --rewrite -o "twice.$e" "once.$e"
+        check_ok --rewrite -o "once.$e" "$f"
+        check_ok "once.$e"
+        check_ok --rewrite -o "twice.$e" "once.$e"
         run diff -u "once.$e" "twice.$e"
         assert_success
         n=$((n + 1))
@@ -242,4 +248,21 @@ assert_usage_error() {
     run -1 --separate-stderr sigchain-check --rewrite -o "old.$ext" "empty.$ext"
     assert_equal "$(cat "old.$ext")" "keep me"
     assert_no_temp_files .
+}
+
+@test "every seed sample with DOS line endings (CRLF) reads as with LF" {
+    need_a_seed_sample
+    local f e n=0
+    for f in "$SEED"/*; do
+        e="${f##*.}"
+        e="${e,,}"
+        known_formats | grep -qx -- "$e" || continue
+        sed 's/$/\r/' "$f" > "dos.$e"
+        check_ok --rewrite -o "unix-rewritten.$e" "$f"
+        check_ok --rewrite -o "dos-rewritten.$e" "dos.$e"
+        run diff -u "unix-rewritten.$e" "dos-rewritten.$e"
+        assert_success
+        n=$((n + 1))
+    done
+    [ "$n" -gt 0 ]
 }
