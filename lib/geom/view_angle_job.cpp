@@ -7,8 +7,7 @@
 #include "core/error.hpp"
 #include "geom/view_angle.hpp"
 #include "io/adv.hpp"
-#include "io/check.hpp"
-#include "scene/scene.hpp"
+#include "scene/load.hpp"
 
 namespace sigchain::geom {
 
@@ -23,12 +22,6 @@ std::string fixed(double v, int decimals) {
 
 int decimals_of(double increment) {
     return increment >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(increment) - 1e-9));
-}
-
-scene::Scene load_scene(const std::string& path) {
-    std::string ext = io::format_of_path(path);
-    if (ext == "gdb") return scene::load_gdb_scene(path);
-    throw UsageError(path + ": the scene must be a .gdb or .odb file");
 }
 
 void row(std::ostream& out, const char* name, const AngleRange& r) {
@@ -52,7 +45,7 @@ std::string snd_view_angle_line(double min_deg, double max_deg, double inc) {
 void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
     io::Adv adv = io::read_adv_file(job.adv_path);
     FrameCamera cam = frame_camera(adv, job.adv_path);
-    scene::Scene sc = load_scene(job.scene_path);
+    scene::Scene sc = scene::load_scene_file(job.scene_path, io::meters_per_unit(adv.units));
     if (sc.triangle_count() == 0)
         throw DataError({job.scene_path, 0}, "the scene has no facets");
     ViewAngleReport rep = find_view_angles(cam, sc, job.grid);

@@ -1,4 +1,5 @@
 # Shared set-up for sigchain's Bats tests: tools on PATH, a scratch directory,
+bats_require_minimum_version 1.5.0
 # bats-support/bats-assert, and golden-file helpers.
 bats_load_library() { :; }
 load '/usr/lib/bats/bats-support/load.bash'

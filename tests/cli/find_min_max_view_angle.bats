@@ -1,0 +1,90 @@
+#!/usr/bin/env bats
+# Tests: find_min_max_view_angle
+# Also requires: tests/data/geom/*.adv, tests/data/geom/*.gdb, tests/data/seed/box_on_plane.gdb
+load test_helper
+
+GEOM="$SIGCHAIN_SOURCE_DIR/tests/data/geom"
+
+@test "--help prints usage to stdout and exits 0" {
+    run -0 --separate-stderr find_min_max_view_angle --help
+    assert_output --partial "Usage: find_min_max_view_angle"
+    assert_output --partial "See find_min_max_view_angle(1)."
+}
+
+@test "--version prints the version and exits 0" {
+    run -0 --separate-stderr find_min_max_view_angle --version
+    assert_output --regexp '^find_min_max_view_angle \(sigchain\) [0-9]+\.[0-9]+\.[0-9]+$'
+}
+
+@test "unknown option exits 2" {
+    run -2 --separate-stderr find_min_max_view_angle --no-such-option
+    [[ "$stderr" == *"Try 'find_min_max_view_angle --help'."* ]]
+    assert_output ''
+}
+
+@test "wrong number of files exits 2" {
+    run -2 --separate-stderr find_min_max_view_angle "$GEOM/nadir.adv"
+    [[ "$stderr" == *"expected two files"* ]]
+}
+
+@test "unknown method exits 2" {
+    run -2 --separate-stderr find_min_max_view_angle -m sideways --snd "$GEOM/nadir.adv" "$GEOM/plane_100m.gdb"
+    [[ "$stderr" == *"unknown method 'sideways'"* ]]
+}
+
+@test "nadir view: golden report" {
+    run -0 --separate-stderr find_min_max_view_angle -o report.txt "$GEOM/nadir.adv" "$GEOM/plane_100m.gdb"
+    assert_golden report.txt "$GOLDEN/find_min_max_view_angle/nadir.txt"
+    assert_no_temp_files .
+}
+
+@test "oblique view: field of view clipped to the scene, golden report" {
+    run -0 --separate-stderr find_min_max_view_angle "$GEOM/oblique.adv" "$GEOM/plane_100m.gdb"
+    echo "$output" > report.txt
+    assert_golden report.txt "$GOLDEN/find_min_max_view_angle/oblique.txt"
+    # Hand-computed: bounding box 45.0358..47.7557 deg (atan(hypot(1000,50)/1000),
+    # atan(hypot(1100,50)/1000)).
+    assert_output --regexp 'scene-bounding-box +45\.0358 +47\.7564'
+}
+
+@test "--snd prints a line ready for a .snd file, rounded outward" {
+    run -0 --separate-stderr find_min_max_view_angle --snd "$GEOM/oblique.adv" "$GEOM/plane_100m.gdb"
+    assert_output --regexp '^45\.0 47\.8 0\.2	# min, max and increment of the view angle \(deg, field-of-view\)$'
+    run -0 --separate-stderr find_min_max_view_angle --snd -m scene-bounding-box "$GEOM/oblique.adv" "$GEOM/plane_100m.gdb"
+    assert_output --partial "scene-bounding-box"
+}
+
+@test "a tower raises the bounding box maximum" {
+    run -0 --separate-stderr find_min_max_view_angle "$GEOM/oblique.adv" "$GEOM/tower.gdb"
+    # atan(hypot(1100, 50) / 950) = 49.2142 deg
+    assert_output --regexp 'scene-bounding-box +45\.0358 +49\.2133'
+}
+
+@test "no ray hits the scene: exit 1, nothing written" {
+    run -1 --separate-stderr find_min_max_view_angle -o out.txt "$GEOM/sky.adv" "$GEOM/plane_100m.gdb"
+    [[ "$stderr" == *"no ray of the field of view hits the scene"* ]]
+    [ ! -e out.txt ]
+    assert_no_temp_files .
+}
+
+@test "malformed .adv exits 1 naming FILE:LINE" {
+    printf '50 50 0\n50 50 1000\n90 -90 0\nfifty\n10 10\n' > bad.adv
+    run -1 --separate-stderr find_min_max_view_angle bad.adv "$GEOM/plane_100m.gdb"
+    [[ "$stderr" == "find_min_max_view_angle: bad.adv:4: "* ]]
+}
+
+@test "malformed .gdb exits 1 naming FILE:LINE" {
+    printf 'OBJECT\nthing\n1-0-0\nPART\n' > bad.gdb
+    run -1 --separate-stderr find_min_max_view_angle "$GEOM/nadir.adv" bad.gdb
+    [[ "$stderr" == "find_min_max_view_angle: bad.gdb:"* ]]
+}
+
+@test "missing file exits 1 naming it" {
+    run -1 --separate-stderr find_min_max_view_angle "$GEOM/nadir.adv" no-such.gdb
+    [[ "$stderr" == *"no-such.gdb: cannot open"* ]]
+}
+
+@test "the .adv can come from standard input" {
+    run -0 --separate-stderr sh -c "find_min_max_view_angle --snd - '$GEOM/plane_100m.gdb' < '$GEOM/oblique.adv'"
+    assert_output --regexp '^45\.0 47\.8 0\.2'
+}
