@@ -6,6 +6,9 @@
 // FORMAT HEADERS (one include per format)
 #include "io/cdk.hpp"
 #include "io/wth.hpp"
+#include "io/ems.hpp"
+#include "io/ext.hpp"
+#include "io/rad.hpp"
 #include "io/adv.hpp"
 #include "io/cpt.hpp"
 #include "io/rsd.hpp"
@@ -21,6 +24,9 @@ const std::vector<FormatHandler>& formats() {
             // FORMAT LIST (one line per format: X_format(),)
             cdk_format(),
             wth_format(),
+            ems_format(),
+            ext_format(),
+            rad_format(),
             adv_format(),
             cpt_format(),
             rsd_format(),

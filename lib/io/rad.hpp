@@ -1,0 +1,92 @@
+// .rad radiance tables, one per sensor band (seed fig. 4.33; man rad(5)): solar and
+// path terms per spectral sample and view angle, plus sigchain's sky hemisphere.
+//
+// Units throughout: irradiance W cm-2 um-1, radiance W cm-2 sr-1 um-1 (per
+// micrometre; rad(5) explains why the seed's "per cm-1" labels are not followed),
+// wavelength um, wavenumber cm-1, angles degrees, distances km.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/text.hpp"
+#include "io/registry.hpp"
+
+namespace sigchain::io {
+
+// One spectral sample: the sun-to-ground terms.
+struct RadSample {
+    double wavelength_um = 0;  // = 1e4 / wavenumber_cm1
+    double wavenumber_cm1 = 0;
+    double solar_irradiance = 0;  // Es, exoatmospheric, W cm-2 um-1, >= 0
+    double sun_transmission = 0;  // tau1, sun to ground, [0, 1]
+    bool operator==(const RadSample&) const = default;
+};
+
+// The ground-to-sensor terms of one spectral sample along one view angle.
+struct RadPathSample {
+    double transmission = 0;        // tau2, ground to sensor, [0, 1]
+    double emitted_radiance = 0;    // L_ue, upwelled path emission, >= 0
+    double scattered_radiance = 0;  // L_us, upwelled path scattering, >= 0
+    bool operator==(const RadPathSample&) const = default;
+};
+
+// One view-angle block.
+struct RadView {
+    double view_angle_deg = 0;        // from nadir, signed as build_radiance lays them out
+    double range_km = 0;              // ground to sensor along the view, > 0
+    std::vector<RadPathSample> path;  // one per spectral sample
+    bool operator==(const RadView&) const = default;
+};
+
+// One cell of the downwelled sky hemisphere above a horizontal ground facet.
+// Frame: zenith from local up; azimuth clockwise from north (scene ENU: y north).
+struct RadSkyCell {
+    double zenith_deg = 0;                   // cell centre, [0, 90]
+    double azimuth_deg = 0;                  // cell centre, [0, 360)
+    double solid_angle_sr = 0;               // > 0
+    std::vector<double> scattered_radiance;  // L_ds per spectral sample, >= 0
+    std::vector<double> emitted_radiance;    // L_de per spectral sample, >= 0
+    bool operator==(const RadSkyCell&) const = default;
+};
+
+// sigchain's additions after the legacy tables (SIGCHAIN_RAD block).
+struct RadSky {
+    long version_minor = 0;      // SIGCHAIN_RAD 1[.minor]
+    double sun_zenith_deg = 0;   // [0, 180]; > 90 is below the horizon
+    double sun_azimuth_deg = 0;  // [0, 360), clockwise from north
+    long zenith_count = 0;       // rings of the hemisphere grid
+    long azimuth_count = 0;      // cells per ring
+    // zenith_count * azimuth_count cells, ring by ring (zenith increasing), azimuth
+    // increasing within a ring; every ring has the same azimuths; solid angles sum to 2 pi.
+    std::vector<RadSkyCell> cells;
+    bool operator==(const RadSky&) const = default;
+};
+
+struct Rad {
+    double sensor_altitude_km = 0;
+    double min_wavelength_um = 0;  // = 1e4 / max_wavenumber_cm1
+    double max_wavelength_um = 0;  // = 1e4 / min_wavenumber_cm1
+    double min_wavenumber_cm1 = 0;
+    double max_wavenumber_cm1 = 0;
+    double wavenumber_increment_cm1 = 0;
+    double min_view_angle_deg = 0;
+    double max_view_angle_deg = 0;
+    double view_angle_increment_deg = 0;
+    double placeholder = 999;  // header line 11, unused ("N/A" in the seed)
+    // max_wavenumber_cm1 down to min_wavenumber_cm1 by the increment (wavelength increasing).
+    std::vector<RadSample> samples;
+    // min_view_angle_deg up to max_view_angle_deg by the increment.
+    std::vector<RadView> views;
+    std::optional<RadSky> sky;  // absent in a DIRSIG file; always written by sigchain
+    bool operator==(const Rad&) const = default;
+};
+
+Rad parse_rad(const TextInput& in);
+void write_rad(std::ostream& out, const Rad& rad);
+inline Rad read_rad_file(const std::string& path) { return parse_rad(TextInput::from_file(path)); }
+FormatHandler rad_format();
+
+}  // namespace sigchain::io
