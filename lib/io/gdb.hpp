@@ -2,11 +2,13 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "core/text.hpp"
+#include "io/registry.hpp"
 
 namespace sigchain::io {
 
@@ -18,18 +20,18 @@ struct GdbFacet {
     std::string name;
     std::string id;             // "1-1-1"
     std::string material_name;
-    long material_id = 0;
+    long material_id = 0;       // MATERIAL_ID in the .mat
     std::string legacy_name;
     double temperature_c = -1;  // -1: from therm
-    double thickness_cm = 0;
-    double power = -1;          // self-generated power (-1 default)
-    double exposed_area = -1;
+    double thickness_cm = 0;    // -1: the material's THICKNESS
+    double power = -1;          // self-generated power; -1: the material's
+    double exposed_area = -1;   // -1: the material's EXPOSED_AREA
     std::array<std::string, 3> spares{"null", "null", "null"};
     std::vector<Vec3> vertices;  // 3 or 4
     Vec3 normal{};
     double slope_zenith_deg = 0;
     double slope_azimuth_deg = 0;
-    std::string spare;           // the spare token after slope azimuth
+    std::string spare;           // the spare line after slope azimuth
     int line = 0;                // line of the FACE keyword (for later messages)
 };
 
@@ -55,5 +57,20 @@ struct Gdb {
 Gdb parse_gdb(const TextInput& in);
 void write_gdb(std::ostream& out, const Gdb& gdb);
 inline Gdb read_gdb_file(const std::string& path) { return parse_gdb(TextInput::from_file(path)); }
+
+// Geometric problems that are legal in a .gdb but that a consumer should know about:
+// facets whose vertices coincide, facets of zero area, quads that are not planar
+// (a vertex further than kGdbPlanarTolerance x the facet's size from its plane),
+// normals more than kGdbNormalToleranceDeg off the facet's plane normal (either
+// sign), and parts or objects without facets. One message per problem:
+// "FILE:LINE: object 'N' (ID), part 'N' (ID), facet 'N' (ID): what".
+inline constexpr double kGdbPlanarTolerance = 1e-3;
+inline constexpr double kGdbNormalToleranceDeg = 1.0;
+std::vector<std::string> gdb_problems(const Gdb& gdb);
+
+// Number of facets over all objects and parts.
+std::size_t gdb_facet_count(const Gdb& gdb);
+
+FormatHandler gdb_format();
 
 }  // namespace sigchain::io

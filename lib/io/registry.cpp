@@ -9,6 +9,10 @@
 #include "io/ems.hpp"
 #include "io/ext.hpp"
 #include "io/rad.hpp"
+#include "io/gdb.hpp"
+#include "io/mat.hpp"
+#include "io/odb.hpp"
+#include "io/shd.hpp"
 #include "io/adv.hpp"
 #include "io/cpt.hpp"
 #include "io/rsd.hpp"
@@ -27,6 +31,10 @@ const std::vector<FormatHandler>& formats() {
             ems_format(),
             ext_format(),
             rad_format(),
+            gdb_format(),
+            mat_format(),
+            odb_format(),
+            shd_format(),
             adv_format(),
             cpt_format(),
             rsd_format(),

@@ -1,0 +1,310 @@
+// .gdb geometric database (DIRSIG 3 layout; man gdb(5)): reader, writer, problem report.
+#include "io/gdb.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace sigchain::io {
+
+namespace {
+
+constexpr std::string_view kEndWhat = "OBJECT, PART, FACE or END (a .gdb ends with END)";
+
+bool is_keyword(std::string_view text) {
+    return text == "OBJECT" || text == "PART" || text == "FACE" || text == "END";
+}
+
+// A whole line: names may contain spaces, but may not be a keyword (which would mean
+// a field is missing and the parser would otherwise silently shift every field).
+std::string read_text(LineCursor& c, std::string_view what) {
+    const Line& line = c.next(what);
+    if (is_keyword(line.text))
+        throw DataError(c.where(line), "expected " + std::string(what) + ", found keyword " +
+                                           sigchain::quoted(line.text));
+    return std::string(line.text);
+}
+
+// "1-1-0": three non-negative integers joined by dashes.
+bool is_id(std::string_view text) {
+    int parts = 0;
+    std::size_t i = 0;
+    while (true) {
+        std::size_t j = i;
+        while (j < text.size() && text[j] >= '0' && text[j] <= '9') ++j;
+        if (j == i) return false;
+        ++parts;
+        if (j == text.size()) return parts == 3;
+        if (text[j] != '-') return false;
+        i = j + 1;
+    }
+}
+
+std::string read_id(LineCursor& c, std::string_view what) {
+    const Line& line = c.next(what);
+    if (!is_id(line.text))
+        throw DataError(c.where(line),
+                        "expected " + std::string(what) +
+                            " (three dash-separated integers such as 1-1-0), found " +
+                            sigchain::quoted(line.text));
+    return std::string(line.text);
+}
+
+double read_number(LineCursor& c, std::string_view what) {
+    auto f = c.fields(1, what);
+    return parse_double(f[0], c.where(), what);
+}
+
+Vec3 read_vec3(LineCursor& c, std::string_view what) {
+    auto f = c.fields(3, what, true);
+    Vec3 v{};
+    for (int i = 0; i < 3; ++i) v[i] = parse_double(f[i], c.where(), what);
+    return v;
+}
+
+void read_facet_attributes(LineCursor& c, GdbFacet& f) {
+    f.material_name = read_text(c, "material name");
+    auto id = c.fields(1, "material id");
+    f.material_id = parse_count(id[0], c.where(), "material id");
+    f.legacy_name = read_text(c, "legacy name");
+    f.temperature_c = read_number(c, "temperature (C, -1 = from therm)");
+    if (f.temperature_c != -1 && f.temperature_c < -273.15)
+        throw DataError(c.where(), "expected temperature (C) -1 or at least -273.15, found " +
+                                       format_number(f.temperature_c));
+    f.thickness_cm = read_number(c, "thickness (cm)");
+    if (f.thickness_cm != -1 && f.thickness_cm < 0)
+        throw DataError(c.where(), "expected thickness (cm) 0 or more, or -1, found " +
+                                       format_number(f.thickness_cm));
+    f.power = read_number(c, "self-generated power");
+    f.exposed_area = read_number(c, "exposed area");
+    for (auto& spare : f.spares) spare = read_text(c, "spare field (null)");
+}
+
+void read_facet_geometry(LineCursor& c, GdbFacet& f) {
+    auto n = c.fields(1, "vertex count (3 or 4)");
+    long count = parse_long(n[0], c.where(), "vertex count (3 or 4)");
+    if (count != 3 && count != 4)
+        throw DataError(c.where(), "expected vertex count 3 or 4, found " + sigchain::quoted(n[0]));
+    for (long i = 0; i < count; ++i) f.vertices.push_back(read_vec3(c, "vertex x y z"));
+    f.normal = read_vec3(c, "normal nx ny nz");
+    if (f.normal[0] == 0 && f.normal[1] == 0 && f.normal[2] == 0)
+        throw DataError(c.where(), "expected a non-zero normal, found 0 0 0");
+    auto z = c.fields(1, "slope zenith (deg)");
+    f.slope_zenith_deg = parse_in_range(z[0], c.where(), "slope zenith (deg)", 0, 180);
+    auto a = c.fields(1, "slope azimuth (deg)");
+    f.slope_azimuth_deg = parse_in_range(a[0], c.where(), "slope azimuth (deg)", -360, 360);
+    f.spare = read_text(c, "facet spare field");
+}
+
+GdbFacet read_facet(LineCursor& c, int keyword_line) {
+    GdbFacet f;
+    f.line = keyword_line;
+    f.name = read_text(c, "facet name");
+    f.id = read_id(c, "facet id");
+    read_facet_attributes(c, f);
+    read_facet_geometry(c, f);
+    return f;
+}
+
+}  // namespace
+
+Gdb parse_gdb(const TextInput& in) {
+    Gdb gdb;
+    gdb.file = in.name();
+    LineCursor c(in);
+    c.require_not_empty("OBJECT or END");
+    while (true) {
+        const Line& line = c.next(kEndWhat);
+        if (line.text == "END") break;
+        if (line.text == "OBJECT") {
+            GdbObject obj;
+            obj.line = line.number;
+            obj.name = read_text(c, "object name");
+            obj.id = read_id(c, "object id");
+            gdb.objects.push_back(std::move(obj));
+        } else if (line.text == "PART") {
+            if (gdb.objects.empty())
+                throw DataError(c.where(line),
+                                "expected OBJECT before PART, found PART outside an OBJECT");
+            GdbPart part;
+            part.line = line.number;
+            part.name = read_text(c, "part name");
+            part.id = read_id(c, "part id");
+            gdb.objects.back().parts.push_back(std::move(part));
+        } else if (line.text == "FACE") {
+            if (gdb.objects.empty() || gdb.objects.back().parts.empty())
+                throw DataError(c.where(line),
+                                "expected PART before FACE, found FACE outside a PART");
+            int number = line.number;
+            gdb.objects.back().parts.back().facets.push_back(read_facet(c, number));
+        } else {
+            throw DataError(c.where(line), "expected " + std::string(kEndWhat) + ", found " +
+                                               sigchain::quoted(line.text));
+        }
+    }
+    c.require_end("END");
+    return gdb;
+}
+
+namespace {
+
+void write_facet(std::ostream& out, const GdbFacet& f) {
+    out << "FACE\n" << f.name << '\n' << f.id << '\n';
+    out << f.material_name << '\n' << f.material_id << '\n' << f.legacy_name << '\n';
+    out << format_number(f.temperature_c) << '\n' << format_number(f.thickness_cm) << '\n';
+    out << format_number(f.power) << '\n' << format_number(f.exposed_area) << '\n';
+    for (const auto& spare : f.spares) out << spare << '\n';
+    out << f.vertices.size() << '\n';
+    auto vec = [&](const Vec3& v) {
+        out << format_number(v[0]) << ' ' << format_number(v[1]) << ' ' << format_number(v[2])
+            << '\n';
+    };
+    for (const auto& v : f.vertices) vec(v);
+    vec(f.normal);
+    out << format_number(f.slope_zenith_deg) << '\n' << format_number(f.slope_azimuth_deg) << '\n';
+    out << f.spare << '\n';
+}
+
+}  // namespace
+
+void write_gdb(std::ostream& out, const Gdb& gdb) {
+    for (const auto& obj : gdb.objects) {
+        out << "OBJECT\n" << obj.name << '\n' << obj.id << '\n';
+        for (const auto& part : obj.parts) {
+            out << "PART\n" << part.name << '\n' << part.id << '\n';
+            for (const auto& f : part.facets) write_facet(out, f);
+        }
+    }
+    out << "END\n";
+}
+
+std::size_t gdb_facet_count(const Gdb& gdb) {
+    std::size_t n = 0;
+    for (const auto& obj : gdb.objects)
+        for (const auto& part : obj.parts) n += part.facets.size();
+    return n;
+}
+
+// --- Problems (legal but degenerate geometry) ---
+
+namespace {
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+// Newell's method: a normal whose length is twice the polygon's area, robust for
+// slightly non-planar quads.
+Vec3 newell_normal(const std::vector<Vec3>& v) {
+    Vec3 n{};
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Vec3& a = v[i];
+        const Vec3& b = v[(i + 1) % v.size()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    return n;
+}
+
+// The largest distance between two vertices (0 when all coincide).
+double facet_size(const std::vector<Vec3>& v) {
+    double size = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (std::size_t j = i + 1; j < v.size(); ++j) size = std::max(size, norm(sub(v[i], v[j])));
+    return size;
+}
+
+void facet_problems(const GdbFacet& f, std::vector<std::string>& out) {
+    const auto& v = f.vertices;
+    double size = facet_size(v);
+    if (size == 0) {
+        out.push_back("all vertices coincide");
+        return;
+    }
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (std::size_t j = i + 1; j < v.size(); ++j)
+            if (norm(sub(v[i], v[j])) <= 1e-9 * size)
+                out.push_back("vertices " + std::to_string(i + 1) + " and " +
+                              std::to_string(j + 1) + " coincide");
+    Vec3 n = newell_normal(v);
+    double twice_area = norm(n);
+    if (twice_area <= 1e-9 * size * size) {
+        out.push_back("zero area (collinear vertices)");
+        return;
+    }
+    Vec3 unit{n[0] / twice_area, n[1] / twice_area, n[2] / twice_area};
+    if (v.size() == 4) {
+        Vec3 centre{};
+        for (const auto& p : v)
+            for (int k = 0; k < 3; ++k) centre[k] += p[k] / 4;
+        double off = 0;
+        for (const auto& p : v) off = std::max(off, std::abs(dot(sub(p, centre), unit)));
+        if (off > kGdbPlanarTolerance * size)
+            out.push_back("non-planar quad (a vertex is " + format_number(off) +
+                          " from the plane, tolerance " +
+                          format_number(kGdbPlanarTolerance * size) + ")");
+    }
+    double c = std::min(1.0, std::abs(dot(unit, f.normal)) / norm(f.normal));
+    double off_deg = std::acos(c) * 180.0 / 3.14159265358979323846;
+    if (off_deg > kGdbNormalToleranceDeg)
+        out.push_back("normal is " + format_number(std::round(off_deg * 100) / 100) +
+                      " deg off the plane of the vertices");
+}
+
+std::string label(const std::string& kind, const std::string& name, const std::string& id) {
+    return kind + " " + sigchain::quoted(name) + " (" + id + ")";
+}
+
+}  // namespace
+
+std::vector<std::string> gdb_problems(const Gdb& gdb) {
+    std::vector<std::string> out;
+    for (const auto& obj : gdb.objects) {
+        std::string o = label("object", obj.name, obj.id);
+        if (obj.parts.empty())
+            out.push_back(SourceLocation{gdb.file, obj.line}.str() + ": " + o + ": no parts");
+        for (const auto& part : obj.parts) {
+            std::string p = o + ", " + label("part", part.name, part.id);
+            if (part.facets.empty())
+                out.push_back(SourceLocation{gdb.file, part.line}.str() + ": " + p + ": no facets");
+            for (const auto& f : part.facets) {
+                std::vector<std::string> found;
+                facet_problems(f, found);
+                for (const auto& what : found)
+                    out.push_back(SourceLocation{gdb.file, f.line}.str() + ": " + p + ", " +
+                                  label("facet", f.name, f.id) + ": " + what);
+            }
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// "1 facet", "2 facets" (for summaries).
+std::string plural(std::size_t n, const std::string& noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+}  // namespace
+
+FormatHandler gdb_format() {
+    return {"gdb", "geometric database (DIRSIG 3 layout)",
+            [](const TextInput& in) {
+                Gdb g = parse_gdb(in);
+                std::size_t parts = 0;
+                for (const auto& obj : g.objects) parts += obj.parts.size();
+                std::ostringstream s;
+                s << plural(g.objects.size(), "object") << ", " << plural(parts, "part") << ", "
+                  << plural(gdb_facet_count(g), "facet");
+                auto problems = gdb_problems(g);
+                if (!problems.empty()) s << ", " << plural(problems.size(), "geometry problem");
+                return s.str();
+            },
+            [](const TextInput& in, std::ostream& out) { write_gdb(out, parse_gdb(in)); }};
+}
+
+}  // namespace sigchain::io

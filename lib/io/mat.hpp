@@ -1,0 +1,75 @@
+// .mat material database (seed fig. 4.34, DIRSIG 3; man mat(5)): tagged material entries.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/text.hpp"
+#include "io/registry.hpp"
+
+namespace sigchain::io {
+
+enum class OpticalDescription { Opaque, UniformTransmission, NonuniformTransmission };
+
+// How trace samples the reflectance of a surface (DESIGN.md section 4, "Radiometry").
+// Files without REFLECTANCE_MODEL (every legacy file) mean Dirsig.
+enum class ReflectanceModel { Lambertian, Dirsig, Cone, Phong, Exponential, Table };
+
+// How the entry was delimited, kept so that a rewrite keeps the file's style:
+// MATERIAL_ENTRY_BEGIN .. MATERIAL_ENTRY_END (DIRSIG 3, the seed) or
+// MATERIAL_ENTRY { .. } (DIRSIG 3.x).
+enum class MaterialEntryStyle { BeginEnd, Braces };
+
+// One material. Thermal units follow DCS THERM as the seed's values imply (see mat(5),
+// UNITS, for what is certain and what is not).
+struct Material {
+    std::string name;                     // MATERIAL_NAME (may contain spaces)
+    long id = 0;                          // MATERIAL_ID, 0 or more, unique in the file
+    double specific_heat_cal_g_c = 0;     // SPECIFIC_HEAT, cal g-1 C-1
+    double thermal_conductivity_dcs = 0;  // THERMAL_CONDUCTIVITY, DCS units (mat(5))
+    double mass_density_g_cm3 = 0;        // MASS_DENSITY, g cm-3
+    double specularity = 0;               // 0 = all diffuse .. 1 = all specular
+    double visible_emissivity = 0;        // solar absorptivity, 0..1
+    double thermal_emissivity = 0;        // 0..1
+    double exposed_area = 0;              // DCS THERM exposed-area term (seed: -0.25)
+    OpticalDescription optical = OpticalDescription::Opaque;
+    std::string emissivity_file;  // .ems file name, as written
+    // Optional tags (absent: nullopt or empty).
+    std::optional<double> thickness_cm;
+    std::string extinction_file;  // .ext; required for the transmissions
+    std::string texture_file;
+    std::optional<bool> use_gaussian_texture;    // absent means FALSE
+    std::optional<bool> double_sided;            // absent means FALSE
+    std::optional<double> self_generated_power;  // DCS THERM units (mat(5))
+    // sigchain's reflectance model and its parameters (only the model's own).
+    std::optional<ReflectanceModel> reflectance_model;  // absent means Dirsig
+    std::optional<double> cone_half_angle_deg;          // cone: (0, 90]
+    std::optional<double> phong_exponent;               // phong: 0 or more
+    std::optional<double> exponential_width_deg;        // exponential: (0, 90]
+    std::string table_file;                             // table: BRDF table file
+    MaterialEntryStyle style = MaterialEntryStyle::BeginEnd;
+    int line = 0;  // line of the entry's opening keyword
+};
+
+struct Mat {
+    std::string file;
+    std::vector<Material> materials;  // in file order
+
+    // The material with this id, or nullptr.
+    const Material* find(long id) const;
+};
+
+ReflectanceModel effective_model(const Material& m);
+
+// W m-1 K-1 per DCS conductivity unit (1e-4 cal cm-1 s-1 C-1; see mat(5) UNITS).
+inline constexpr double kWattsPerMeterKelvinPerDcsConductivity = 0.04184;
+
+Mat parse_mat(const TextInput& in);
+void write_mat(std::ostream& out, const Mat& mat);
+inline Mat read_mat_file(const std::string& path) { return parse_mat(TextInput::from_file(path)); }
+
+FormatHandler mat_format();
+
+}  // namespace sigchain::io

@@ -1,0 +1,70 @@
+// .odb scene assembly (after DIRSIG 3.x's ODB; man odb(5)): which geometry files make
+// the scene, in which units, and where each copy is placed.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/text.hpp"
+#include "io/registry.hpp"
+
+namespace sigchain::io {
+
+enum class OdbUnits { Meters, Feet };
+enum class OdbSource { Gdb, Obj, Dem };
+
+// A row-major 4x4 affine matrix: placed = M * (x, y, z, 1).
+using Matrix4 = std::array<double, 16>;
+
+// One placement of an object. Either components (scale, then rotation about x, then y,
+// then z, then translation: M = T Rz Ry Rx S; angles in degrees, right-handed,
+// counter-clockwise looking down each axis toward the origin) or a whole matrix.
+// Translations are in the object's UNITS (odb(5)).
+struct OdbInstance {
+    bool is_matrix = false;
+    std::array<double, 3> translation{};                             // x y z (object units)
+    std::array<double, 3> scale{1, 1, 1};                            // sx sy sz (non-zero)
+    std::array<double, 3> rotation_deg{};                            // rx ry rz (deg)
+    Matrix4 matrix{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // when is_matrix
+    int line = 0;
+};
+
+struct OdbObject {
+    OdbSource source = OdbSource::Gdb;
+    std::string path;                 // GDB_FILENAME, OBJ_FILENAME or DEM_FILENAME, as written
+    std::string material_map;         // MATERIAL_MAP (OBJ only; required there)
+    std::string landuse_file;         // LANDUSE_FILENAME (DEM only; with LANDUSE_MAP)
+    std::string landuse_map;          // LANDUSE_MAP (DEM only; with LANDUSE_FILENAME)
+    std::optional<long> material_id;  // MATERIAL_ID (DEM without land use only; required there)
+    OdbUnits units = OdbUnits::Meters;
+    std::vector<OdbInstance> instances;  // as written; empty = no INSTANCES block
+    int line = 0;                        // line of `OBJECT {`
+};
+
+struct Odb {
+    std::string file;  // the file it was read from ("-" for stdin)
+    std::vector<OdbObject> objects;
+};
+
+Odb parse_odb(const TextInput& in);
+void write_odb(std::ostream& out, const Odb& odb);
+inline Odb read_odb_file(const std::string& path) { return parse_odb(TextInput::from_file(path)); }
+
+// The placement matrix of one instance (object units in, object units out).
+Matrix4 instance_matrix(const OdbInstance& instance);
+// The placements of an object: one per instance, or the identity when it has none.
+std::vector<Matrix4> placements(const OdbObject& object);
+
+// Metres per unit.
+double meters_per_odb_unit(OdbUnits units);
+
+// A path from the .odb resolved against the .odb's directory (absolute paths are kept;
+// for standard input, the current directory).
+std::string resolve_odb_path(const Odb& odb, const std::string& path);
+
+FormatHandler odb_format();
+
+}  // namespace sigchain::io

@@ -1,0 +1,4 @@
+PART
+lawn
+1-1-0
+END
