@@ -107,7 +107,8 @@ std::vector<std::string_view> LineCursor::fields(std::size_t count, std::string_
     const Line& line = next(what);
     auto f = split_fields(line.text, commas_too);
     if (f.size() != count) {
-        throw DataError(where(line), "expected " + std::to_string(count) + " fields (" +
+        throw DataError(where(line), "expected " + std::to_string(count) +
+                                         (count == 1 ? " field (" : " fields (") +
                                          std::string(what) + "), found " +
                                          std::to_string(f.size()) + ": " + quoted(line.text));
     }

@@ -35,16 +35,20 @@ ControlPoint parse_point(const Line& line, const SourceLocation& at) {
     p.radius_px = parse_position(f[5], at, "averaging radius (pixels)");
     auto rest = static_cast<std::size_t>(f[5].data() + f[5].size() - line.text.data());
     p.description = std::string(trim(line.text.substr(rest)));
+    for (char c : p.description)
+        if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
+            throw DataError(at, "expected a description of printable text, found " +
+                                    quoted(p.description));
     p.line = line.number;
     return p;
 }
 
 void check_writable(const ControlPoint& p) {
     if (p.name.empty() || p.name.find_first_of(" \t\r\n#") != std::string::npos)
-        throw std::invalid_argument("control point name '" + p.name +
+        throw Error("control point name '" + p.name +
                                     "' is empty or holds white space or '#'");
     if (p.description.find_first_of("#\r\n") != std::string::npos)
-        throw std::invalid_argument("description of control point '" + p.name +
+        throw Error("description of control point '" + p.name +
                                     "' holds '#' or a line break");
 }
 

@@ -117,7 +117,7 @@ golden() {
 @test "sen: too few responses" { bad sen too_few 9 "unexpected end of file, expected relative response 7 of 7 (the count on line 1)"; }
 @test "sen: too many responses" { bad sen too_many 11 "unexpected content after 7 relative responses (the count on line 1), found '0.65'"; }
 @test "sen: negative count" { bad sen negative_count 1 "expected number of spectral samples (a count, 0 or more), found '-7'"; }
-@test "sen: wrong field count" { bad sen field_count 4 "expected 1 fields (relative response 1 of 2"; }
+@test "sen: wrong field count" { bad sen field_count 4 "expected 1 field (relative response 1 of 2"; }
 @test "sen: not a number" { bad sen not_number 3 "expected bias (a number), found 'zero'"; }
 @test "sen: negative response" { bad sen negative_response 5 "expected relative response 2 of 2 (the count on line 1) at or above 0, found '-0.5'"; }
 @test "sen: zero gain" { bad sen zero_gain 2 "expected gain greater than 0, found '0'"; }

@@ -98,7 +98,7 @@ golden() {
 }
 @test "ems: empty file" { bad ems empty "" "empty file, expected number of emissivity curves"; }
 @test "ems: binary file" { bad ems binary 3 "binary data (NUL byte)"; }
-@test "ems: wrong field count" { bad ems field_count 5 "expected 1 fields (fall-off value at 2 deg), found 2"; }
+@test "ems: wrong field count" { bad ems field_count 5 "expected 1 field (fall-off value at 2 deg), found 2"; }
 @test "ems: not a number" { bad ems not_a_number 96 "expected emissivity (a number), found 'high'"; }
 @test "ems: NaN" { bad ems nan 11 "expected fall-off value at 8 deg (a finite number), found 'nan'"; }
 @test "ems: inf" { bad ems inf 96 "expected wavenumber (cm-1) (a finite number), found 'inf'"; }

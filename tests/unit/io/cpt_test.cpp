@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
-#include <stdexcept>
 
 using namespace sigchain;
 using namespace sigchain::io;
@@ -67,9 +66,17 @@ TEST(Cpt, RoundTripIsExactAndIdempotent) {
 TEST(Cpt, WriterRefusesWhatCannotBeRead) {
     Cpt c;
     c.points.push_back({"a b", 0, 0, 0, 0, 0, "", 0});
-    EXPECT_THROW(written(c), std::invalid_argument);
+    EXPECT_THROW(written(c), Error);
     c.points[0] = {"ab", 0, 0, 0, 0, 0, "x # y", 0};
-    EXPECT_THROW(written(c), std::invalid_argument);
+    EXPECT_THROW(written(c), Error);
+}
+
+// Regression (found by the fuzzer): a carriage return inside a description was
+// accepted by the reader and then refused by the writer.
+TEST(Cpt, ControlCharacterInDescription) {
+    EXPECT_EQ(error_of(kMagic + "p 1 2 3 4 0 new asphalt\r\rlot\n"),
+              "t.cpt:2: expected a description of printable text, found "
+              "'new asphalt\\x0d\\x0dlot'");
 }
 
 TEST(Cpt, EmptyFile) {

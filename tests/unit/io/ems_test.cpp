@@ -183,7 +183,7 @@ TEST(EmsBad, BinaryFile) { EXPECT_THROW(parsed(std::string("1\n\0\n", 4)), DataE
 
 TEST(EmsBad, WrongFieldCount) {
     EXPECT_EQ(error_of(edited(4, "0.98 0.97", kByWavenumber)),
-              "t.ems:4: expected 1 fields (fall-off value at 2 deg), found 2: '0.98 0.97'");
+              "t.ems:4: expected 1 field (fall-off value at 2 deg), found 2: '0.98 0.97'");
     EXPECT_EQ(error_of(edited(95, "10000 0.5 1", kByWavenumber)),
               "t.ems:95: expected 2 fields (wavenumber (cm-1) and emissivity of curve 0 of 1), "
               "found 3: '10000 0.5 1'");

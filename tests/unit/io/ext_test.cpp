@@ -113,7 +113,7 @@ TEST(ExtBad, WrongFieldCount) {
               "t.ext:4: expected 2 fields (wavelength (um) and extinction coefficient (1/km) of "
               "curve 0 of 2), found 3: '0.7 300 1'");
     EXPECT_EQ(error_of(edited(1, "2 curves")),
-              "t.ext:1: expected 1 fields (number of extinction curves), found 2: '2 curves'");
+              "t.ext:1: expected 1 field (number of extinction curves), found 2: '2 curves'");
 }
 
 TEST(ExtBad, NotANumber) {

@@ -74,7 +74,7 @@ TEST(Sen, BadCount) {
 
 TEST(Sen, WrongFieldCountAndNonNumbers) {
     EXPECT_EQ(error_of("2\n1\n0\n0.5 0.6\n"),
-              "t.sen:4: expected 1 fields (relative response 1 of 2 (the count on line 1)), "
+              "t.sen:4: expected 1 field (relative response 1 of 2 (the count on line 1)), "
               "found 2: '0.5 0.6'");
     EXPECT_EQ(error_of("2\nhigh\n0\n0.5\n0.6\n"),
               "t.sen:2: expected gain (a number), found 'high'");
