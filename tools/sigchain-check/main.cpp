@@ -35,10 +35,19 @@ int main(int argc, char** argv) {
             out.commit();
             return 0;
         }
+        int status = 0;
         for (const auto& file : files) {
-            std::string summary = sigchain::io::check_file(file, format, nullptr);
-            if (ctx.verbosity() >= 0) std::cout << file << ": ok: " << summary << '\n';
+            try {
+                std::string summary = sigchain::io::check_file(file, format, nullptr);
+                if (ctx.verbosity() >= 0) std::cout << file << ": ok: " << summary << '\n';
+            } catch (const sigchain::DataError& e) {
+                std::cerr << ctx.tool() << ": " << e.what() << '\n';
+                status = 1;
+            } catch (const sigchain::IoError& e) {
+                std::cerr << ctx.tool() << ": " << e.what() << '\n';
+                status = 1;
+            }
         }
-        return 0;
+        return status;
     });
 }
