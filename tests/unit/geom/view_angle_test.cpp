@@ -17,9 +17,7 @@ namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
 io::GdbFacet quad(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-    io::GdbFacet f;
-    f.name = "f";
-    f.id = "1-1-1";
+    io::GdbFacet f;  // names and ids play no part in view angles
     f.vertices = {a, b, c, d};
     f.normal = {0, 0, 1};
     return f;
