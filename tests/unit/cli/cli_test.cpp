@@ -1,0 +1,111 @@
+// Tests for lib/cli: help, version, exit codes and message format shared by every tool.
+#include "cli/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+using namespace sigchain;
+namespace po = boost::program_options;
+
+namespace {
+
+struct Result {
+    int status;
+    std::string out, err;
+};
+
+// Runs a Cli named "tool" with `args` and `body`, capturing stdout and stderr.
+Result run(std::vector<std::string> args,
+           std::function<int(const po::variables_map&, cli::Context&)> body) {
+    cli::Cli c({"tool", "Does a thing.", "[OPTIONS] FILE"});
+    c.add_positional("file", -1, "input files");
+    c.add_output_option();
+    args.insert(args.begin(), "tool");
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    testing::internal::CaptureStdout();
+    testing::internal::CaptureStderr();
+    int status = c.run(static_cast<int>(argv.size()), argv.data(), body);
+    return {status, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+}
+
+int ok(const po::variables_map&, cli::Context&) { return 0; }
+
+}  // namespace
+
+TEST(Cli, HelpGoesToStdoutAndEndsWithSeeAlso) {
+    auto r = run({"--help"}, ok);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.out.find("Usage: tool [OPTIONS] FILE"), std::string::npos);
+    EXPECT_NE(r.out.find("See tool(1).\n"), std::string::npos);
+    EXPECT_EQ(r.err, "");
+}
+
+TEST(Cli, Version) {
+    auto r = run({"--version"}, ok);
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out.rfind("tool (sigchain) ", 0), 0u);
+}
+
+TEST(Cli, UnknownOptionIsUsageError) {
+    auto r = run({"--frobnicate"}, ok);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_NE(r.err.find("Try 'tool --help'."), std::string::npos);
+}
+
+TEST(Cli, ExceptionsMapToExitCodes) {
+    auto data = run({"f"}, [](const auto&, auto&) -> int {
+        throw DataError({"scene.gdb", 12}, "expected a vertex count (3 or 4), found '5'");
+    });
+    EXPECT_EQ(data.status, 1);
+    EXPECT_EQ(data.err, "tool: scene.gdb:12: expected a vertex count (3 or 4), found '5'\n");
+    auto usage = run({"f"}, [](const auto&, auto&) -> int { throw UsageError("no input"); });
+    EXPECT_EQ(usage.status, 2);
+    auto io = run({"f"}, [](const auto&, auto&) -> int { throw IoError("x: cannot open"); });
+    EXPECT_EQ(io.status, 1);
+    auto ni = run({"f"}, [](const auto&, auto&) -> int { throw NotImplemented("not yet"); });
+    EXPECT_EQ(ni.status, 1);
+    EXPECT_EQ(ni.err, "tool: not yet\n");
+}
+
+TEST(Cli, PositionalsOutputAndVerbosity) {
+    auto r = run({"-v", "-o", "out.txt", "a", "b"}, [](const po::variables_map& vm, cli::Context& ctx) {
+        EXPECT_EQ(cli::args(vm, "file"), (std::vector<std::string>{"a", "b"}));
+        EXPECT_EQ(vm["output"].as<std::string>(), "out.txt");
+        EXPECT_EQ(ctx.verbosity(), 1);
+        ctx.info("skipped the sky");
+        return 0;
+    });
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.err, "tool: skipped the sky\n");
+}
+
+TEST(Cli, QuietSilencesWarnings) {
+    auto r = run({"-q", "a"}, [](const auto&, cli::Context& ctx) {
+        ctx.warn("odd");
+        return 0;
+    });
+    EXPECT_EQ(r.err, "");
+}
+
+TEST(Cli, ProgressOnlyWhenEnabled) {
+    auto off = run({"a"}, [](const auto&, cli::Context& ctx) {
+        cli::Progress p(ctx, 10, "tracing");
+        p.update(5);
+        return 0;
+    });
+    // Under the test runner stderr is not a terminal: nothing is drawn.
+    EXPECT_EQ(off.err, "");
+    auto on = run({"--progress", "a"}, [](const auto&, cli::Context& ctx) {
+        cli::Progress p(ctx, 10, "tracing");
+        p.update(5);
+        return 0;
+    });
+    EXPECT_NE(on.err.find("tool: tracing ["), std::string::npos);
+    EXPECT_NE(on.err.find("50%"), std::string::npos);
+}
