@@ -67,6 +67,7 @@ std::vector<std::string_view> split_fields(std::string_view text, bool commas_to
 
 LineCursor::LineCursor(const TextInput& input, Mode mode) : m_input(input) {
     std::string_view all = input.text();
+    m_lines.reserve(static_cast<std::size_t>(std::count(all.begin(), all.end(), '\n')) + 1);
     int number = 0;
     std::size_t start = 0;
     while (start < all.size()) {
