@@ -19,8 +19,10 @@ std::string make_gdb(int n) {
         double x = i % 1000, y = i / 1000;
         s << "FACE\ncell " << i << "\n1-1-" << i + 1 << "\ngrass\n1\nlawn\n-1\n5\n-1\n-1\n"
           << "null\nnull\nnull\n4\n"
-          << x << " " << y << " 0\n" << x + 1 << " " << y << " 0\n"
-          << x + 1 << " " << y + 1 << " 0\n" << x << " " << y + 1 << " 0\n"
+          << x << " " << y << " 0\n"
+          << x + 1 << " " << y << " 0\n"
+          << x + 1 << " " << y + 1 << " 0\n"
+          << x << " " << y + 1 << " 0\n"
           << "0 0 1\n0\n0\nnull\n";
     }
     s << "END\n";

@@ -37,7 +37,8 @@ Progress::~Progress() {
 
 void Progress::update(std::size_t done) {
     if (!m_enabled) return;
-    int percent = static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(m_total));
+    int percent =
+        static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(m_total));
     if (percent == m_last_percent) return;
     m_last_percent = percent;
     int filled = percent / 5;
@@ -46,19 +47,19 @@ void Progress::update(std::size_t done) {
 }
 
 Cli::Cli(ToolInfo info) : m_info(std::move(info)), m_options("Options"), m_hidden("hidden") {
-    m_options.add_options()
-        ("help,h", "print this help and exit")
-        ("version", "print the version and exit (with -v, also library versions)")
-        ("quiet,q", "print no warnings or notes")
-        ("verbose,v", "print what is done and what is skipped")
-        ("progress", "draw a progress bar on stderr even when it is not a terminal");
+    m_options.add_options()("help,h", "print this help and exit")(
+        "version", "print the version and exit (with -v, also library versions)")(
+        "quiet,q", "print no warnings or notes")("verbose,v",
+                                                 "print what is done and what is skipped")(
+        "progress", "draw a progress bar on stderr even when it is not a terminal");
 }
 
 void Cli::add_positional(const char* name, int count, const char* help) {
     m_hidden.add_options()(name, po::value<std::vector<std::string>>(), help);
     m_positional.add(name, count);
     std::string n(name);
-    m_positional_help += "  " + n + std::string(n.size() < 18 ? 18 - n.size() : 1, ' ') + help + '\n';
+    m_positional_help +=
+        "  " + n + std::string(n.size() < 18 ? 18 - n.size() : 1, ' ') + help + '\n';
 }
 
 void Cli::add_output_option(const std::string& default_value) {

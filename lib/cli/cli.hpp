@@ -25,9 +25,9 @@ public:
     // -1 quiet, 0 normal, 1+ verbose.
     int verbosity() const { return m_verbosity; }
     bool progress_enabled() const { return m_progress; }
-    void warn(const std::string& message) const;   // "TOOL: warning: message" unless quiet
-    void info(const std::string& message) const;   // "TOOL: message" when verbose
-    void note(const std::string& message) const;   // "TOOL: message" unless quiet
+    void warn(const std::string& message) const;  // "TOOL: warning: message" unless quiet
+    void info(const std::string& message) const;  // "TOOL: message" when verbose
+    void note(const std::string& message) const;  // "TOOL: message" unless quiet
 
 private:
     std::string m_tool;
@@ -66,7 +66,8 @@ public:
     void add_output_option(const std::string& default_value = "-");
 
     // Parses argv and runs `body`; returns the process exit status.
-    int run(int argc, char** argv, const std::function<int(const po::variables_map&, Context&)>& body);
+    int run(int argc, char** argv,
+            const std::function<int(const po::variables_map&, Context&)>& body);
 
 private:
     ToolInfo m_info;

@@ -91,8 +91,7 @@ LineCursor::LineCursor(const TextInput& input, Mode mode) : m_input(input) {
 const Line& LineCursor::peek(std::string_view what) const {
     if (at_end()) {
         int last = m_lines.empty() ? 0 : m_lines.back().number;
-        throw DataError(m_input.at(last),
-                        "unexpected end of file, expected " + std::string(what));
+        throw DataError(m_input.at(last), "unexpected end of file, expected " + std::string(what));
     }
     return m_lines[m_pos];
 }
@@ -124,7 +123,8 @@ SourceLocation LineCursor::where() const {
 }
 
 void LineCursor::require_not_empty(std::string_view what) const {
-    if (m_lines.empty()) throw DataError(m_input.at(0), "empty file, expected " + std::string(what));
+    if (m_lines.empty())
+        throw DataError(m_input.at(0), "empty file, expected " + std::string(what));
 }
 
 void LineCursor::require_end(std::string_view after) const {
@@ -164,11 +164,11 @@ double parse_double(std::string_view token, const SourceLocation& where, std::st
         throw DataError(where, "expected " + std::string(what) + " (a number), found " +
                                    quoted(token) + " (out of range)");
     if (!whole)
-        throw DataError(where, "expected " + std::string(what) + " (a number), found " +
-                                   quoted(token));
+        throw DataError(where,
+                        "expected " + std::string(what) + " (a number), found " + quoted(token));
     if (!std::isfinite(value))
-        throw DataError(where, "expected " + std::string(what) + " (a finite number), found " +
-                                   quoted(token));
+        throw DataError(
+            where, "expected " + std::string(what) + " (a finite number), found " + quoted(token));
     return value;
 }
 
@@ -178,16 +178,16 @@ long parse_long(std::string_view token, const SourceLocation& where, std::string
     if (!t.empty() && t.front() == '+') t.remove_prefix(1);
     auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (ec != std::errc() || ptr != t.data() + t.size() || t.empty())
-        throw DataError(where, "expected " + std::string(what) + " (an integer), found " +
-                                   quoted(token));
+        throw DataError(where,
+                        "expected " + std::string(what) + " (an integer), found " + quoted(token));
     return value;
 }
 
 long parse_count(std::string_view token, const SourceLocation& where, std::string_view what) {
     long value = parse_long(token, where, what);
     if (value < 0)
-        throw DataError(where, "expected " + std::string(what) +
-                                   " (a count, 0 or more), found " + quoted(token));
+        throw DataError(where, "expected " + std::string(what) + " (a count, 0 or more), found " +
+                                   quoted(token));
     return value;
 }
 

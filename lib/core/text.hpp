@@ -19,8 +19,8 @@ namespace sigchain {
 // removed and is trimmed of surrounding white space, unless the cursor was created
 // in raw mode (fixed-column formats), where only the trailing CR/LF is removed.
 struct Line {
-    int number = 0;          // 1-based line number in the file
-    std::string_view text;   // view into the owning TextInput
+    int number = 0;         // 1-based line number in the file
+    std::string_view text;  // view into the owning TextInput
 };
 
 // A whole text file held in memory. Construction checks for binary content (NUL

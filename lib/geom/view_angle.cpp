@@ -20,9 +20,7 @@ struct Accumulator {
         hi = std::max(hi, v);
         ++n;
     }
-    AngleRange range() const {
-        return {lo, hi, suggested_increment_deg(lo, hi), n};
-    }
+    AngleRange range() const { return {lo, hi, suggested_increment_deg(lo, hi), n}; }
 };
 }  // namespace
 

@@ -24,10 +24,10 @@ struct AngleRange {
 };
 
 struct ViewAngleReport {
-    AngleRange bounding_box;               // "scene-bounding-box"
+    AngleRange bounding_box;                  // "scene-bounding-box"
     std::optional<AngleRange> field_of_view;  // "field-of-view"; none if no ray hits
-    AngleRange unclipped_field_of_view;    // image border rays, hit or not
-    double reference_azimuth_deg = 0;      // clockwise from north (+y)
+    AngleRange unclipped_field_of_view;       // image border rays, hit or not
+    double reference_azimuth_deg = 0;         // clockwise from north (+y)
     std::size_t rays_cast = 0;
 };
 
@@ -43,7 +43,6 @@ double suggested_increment_deg(double min_deg, double max_deg, int min_steps = 1
 // pixel centre and the four image corners, plus an interior grid of at most
 // `grid` x `grid` rays, and keeps the angles of those that hit the scene.
 // Throws DataError if the scene is empty.
-ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& scene,
-                                 int grid = 256);
+ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& scene, int grid = 256);
 
 }  // namespace sigchain::geom

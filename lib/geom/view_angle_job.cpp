@@ -26,9 +26,8 @@ int decimals_of(double increment) {
 
 void row(std::ostream& out, const char* name, const AngleRange& r) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "%-20s %10s %10s %10s %8zu\n", name,
-                  fixed(r.min_deg, 4).c_str(), fixed(r.max_deg, 4).c_str(),
-                  fixed(r.increment_deg, 2).c_str(), r.samples);
+    std::snprintf(buf, sizeof buf, "%-20s %10s %10s %10s %8zu\n", name, fixed(r.min_deg, 4).c_str(),
+                  fixed(r.max_deg, 4).c_str(), fixed(r.increment_deg, 2).c_str(), r.samples);
     out << buf;
 }
 
@@ -46,8 +45,7 @@ void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
     io::Adv adv = io::read_adv_file(job.adv_path);
     FrameCamera cam = frame_camera(adv, job.adv_path);
     scene::Scene sc = scene::load_scene_file(job.scene_path, io::meters_per_unit(adv.units));
-    if (sc.triangle_count() == 0)
-        throw DataError({job.scene_path, 0}, "the scene has no facets");
+    if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
     ViewAngleReport rep = find_view_angles(cam, sc, job.grid);
     if (job.method == ViewAngleMethod::FieldOfView && !rep.field_of_view)
         throw DataError({job.adv_path, 0}, "no ray of the field of view hits the scene in " +
@@ -65,8 +63,10 @@ void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
         << fixed(rep.reference_azimuth_deg, 3) << " deg (clockwise from north)\n"
         << "# method                min_deg    max_deg  increment  samples\n";
     row(out, "scene-bounding-box", rep.bounding_box);
-    if (rep.field_of_view) row(out, "field-of-view", *rep.field_of_view);
-    else out << "field-of-view        none (no ray of the image hits the scene)\n";
+    if (rep.field_of_view)
+        row(out, "field-of-view", *rep.field_of_view);
+    else
+        out << "field-of-view        none (no ray of the image hits the scene)\n";
     row(out, "unclipped-image", rep.unclipped_field_of_view);
 }
 

@@ -13,7 +13,7 @@ struct ViewAngleJob {
     std::string scene_path;  // .gdb or .odb
     bool snd_line = false;   // print only the .snd line of `method`
     ViewAngleMethod method = ViewAngleMethod::FieldOfView;
-    int grid = 256;          // interior rays per image axis (field-of-view)
+    int grid = 256;  // interior rays per image axis (field-of-view)
 };
 
 // Runs the job and writes the report (or the .snd line) to `out`. Throws DataError

@@ -20,8 +20,7 @@ std::string format_of_path(const std::string& path) {
     return ext;
 }
 
-std::string check_file(const std::string& path, const std::string& format,
-                       std::ostream* rewrite) {
+std::string check_file(const std::string& path, const std::string& format, std::ostream* rewrite) {
     std::string ext = format.empty() ? format_of_path(path) : format;
     if (ext.empty())
         throw UsageError(path + ": cannot tell the format from the name; use --format");

@@ -16,7 +16,6 @@ std::string format_of_path(const std::string& path);
 // Parses `path` ("-" is stdin) as `format` (or by its extension when empty) and
 // returns a one-line summary; with `rewrite`, also writes the canonical form.
 // Throws UsageError for an unknown format, DataError/IoError for bad files.
-std::string check_file(const std::string& path, const std::string& format,
-                       std::ostream* rewrite);
+std::string check_file(const std::string& path, const std::string& format, std::ostream* rewrite);
 
 }  // namespace sigchain::io

@@ -37,19 +37,17 @@ ControlPoint parse_point(const Line& line, const SourceLocation& at) {
     p.description = std::string(trim(line.text.substr(rest)));
     for (char c : p.description)
         if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
-            throw DataError(at, "expected a description of printable text, found " +
-                                    quoted(p.description));
+            throw DataError(
+                at, "expected a description of printable text, found " + quoted(p.description));
     p.line = line.number;
     return p;
 }
 
 void check_writable(const ControlPoint& p) {
     if (p.name.empty() || p.name.find_first_of(" \t\r\n#") != std::string::npos)
-        throw Error("control point name '" + p.name +
-                                    "' is empty or holds white space or '#'");
+        throw Error("control point name '" + p.name + "' is empty or holds white space or '#'");
     if (p.description.find_first_of("#\r\n") != std::string::npos)
-        throw Error("description of control point '" + p.name +
-                                    "' holds '#' or a line break");
+        throw Error("description of control point '" + p.name + "' holds '#' or a line break");
 }
 
 }  // namespace

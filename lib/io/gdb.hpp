@@ -18,9 +18,9 @@ using Vec3 = std::array<double, 3>;
 // scene frame x east, y north, z up.
 struct GdbFacet {
     std::string name;
-    std::string id;             // "1-1-1"
+    std::string id;  // "1-1-1"
     std::string material_name;
-    long material_id = 0;       // MATERIAL_ID in the .mat
+    long material_id = 0;  // MATERIAL_ID in the .mat
     std::string legacy_name;
     double temperature_c = -1;  // -1: from therm
     double thickness_cm = 0;    // -1: the material's THICKNESS
@@ -31,8 +31,8 @@ struct GdbFacet {
     Vec3 normal{};
     double slope_zenith_deg = 0;
     double slope_azimuth_deg = 0;
-    std::string spare;           // the spare line after slope azimuth
-    int line = 0;                // line of the FACE keyword (for later messages)
+    std::string spare;  // the spare line after slope azimuth
+    int line = 0;       // line of the FACE keyword (for later messages)
 };
 
 struct GdbPart {

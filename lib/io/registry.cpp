@@ -4,44 +4,46 @@
 #include <algorithm>
 
 // FORMAT HEADERS (one include per format)
+#include "io/adv.hpp"
 #include "io/cdk.hpp"
-#include "io/wth.hpp"
+#include "io/cpt.hpp"
 #include "io/ems.hpp"
 #include "io/ext.hpp"
-#include "io/rad.hpp"
 #include "io/gdb.hpp"
 #include "io/mat.hpp"
 #include "io/odb.hpp"
-#include "io/shd.hpp"
-#include "io/adv.hpp"
-#include "io/cpt.hpp"
+#include "io/rad.hpp"
 #include "io/rsd.hpp"
 #include "io/sen.hpp"
+#include "io/shd.hpp"
 #include "io/snd.hpp"
 #include "io/tmp.hpp"
+#include "io/wth.hpp"
 
 namespace sigchain::io {
 
 const std::vector<FormatHandler>& formats() {
+    // clang-format off
     static const std::vector<FormatHandler> all = [] {
         std::vector<FormatHandler> v = {
             // FORMAT LIST (one line per format: X_format(),)
+            adv_format(),
             cdk_format(),
-            wth_format(),
+            cpt_format(),
             ems_format(),
             ext_format(),
-            rad_format(),
             gdb_format(),
             mat_format(),
             odb_format(),
-            shd_format(),
-            adv_format(),
-            cpt_format(),
+            rad_format(),
             rsd_format(),
             sen_format(),
+            shd_format(),
             snd_format(),
             tmp_format(),
+            wth_format(),
         };
+        // clang-format on
         std::sort(v.begin(), v.end(),
                   [](const auto& a, const auto& b) { return a.extension < b.extension; });
         return v;

@@ -17,8 +17,9 @@ namespace {
 // Embree reports errors through a callback; keep the first one and throw after the call.
 void on_embree_error(void* user, RTCError code, const char* message) {
     auto* slot = static_cast<std::string*>(user);
-    if (slot->empty()) slot->assign("Embree error " + std::to_string(static_cast<int>(code)) +
-                                    ": " + (message ? message : ""));
+    if (slot->empty())
+        slot->assign("Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+                     (message ? message : ""));
 }
 
 double distance(const io::Vec3& a, const io::Vec3& b) {
@@ -35,7 +36,7 @@ struct Scene::Impl {
     RTCScene top = nullptr;
     std::vector<RTCScene> meshes;
     std::vector<std::size_t> mesh_triangles;
-    std::vector<std::vector<float>> mesh_vertices;          // per mesh, xyz
+    std::vector<std::vector<float>> mesh_vertices;         // per mesh, xyz
     std::vector<std::vector<std::uint32_t>> tri_to_facet;  // per mesh
     std::vector<std::size_t> placed_mesh;                  // per placement
     Bounds bounds{{1, 1, 1}, {-1, -1, -1}};
@@ -144,7 +145,8 @@ void Scene::place(std::size_t mesh, const Affine& t) {
     for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
         Vec3 p;
         for (int r = 0; r < 3; ++r)
-            p[r] = t[4 * r] * v[i] + t[4 * r + 1] * v[i + 1] + t[4 * r + 2] * v[i + 2] + t[4 * r + 3];
+            p[r] =
+                t[4 * r] * v[i] + t[4 * r + 1] * v[i + 1] + t[4 * r + 2] * v[i + 2] + t[4 * r + 3];
         bool first = b.empty();
         for (int r = 0; r < 3; ++r) {
             b.lower[r] = first ? p[r] : std::min(b.lower[r], p[r]);

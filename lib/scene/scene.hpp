@@ -24,9 +24,9 @@ using Affine = std::array<double, 12>;
 Affine identity_affine();
 
 struct Hit {
-    double distance = 0;      // along the unit ray direction, scene units
-    std::uint32_t object = 0; // index of the placed object (instance order)
-    std::uint32_t facet = 0;  // facet index within its .gdb (file order over parts)
+    double distance = 0;       // along the unit ray direction, scene units
+    std::uint32_t object = 0;  // index of the placed object (instance order)
+    std::uint32_t facet = 0;   // facet index within its .gdb (file order over parts)
 };
 
 struct Bounds {

@@ -14,19 +14,19 @@ int main(int argc, char** argv) {
                    "methods.",
                    "[OPTIONS] ADV GDB|ODB"});
     tool.add_positional("input", -1, "look-angle file (.adv) and scene (.gdb or .odb)");
-    tool.add_options()
-        ("snd", "print only the view-angle line for a .snd file")
-        ("method,m", cli::po::value<std::string>()->default_value("field-of-view"),
-         "method for --snd: field-of-view or scene-bounding-box")
-        ("grid", cli::po::value<int>()->default_value(256),
-         "interior rays per image axis for the field-of-view method (>= 1)");
+    tool.add_options()("snd", "print only the view-angle line for a .snd file")(
+        "method,m", cli::po::value<std::string>()->default_value("field-of-view"),
+        "method for --snd: field-of-view or scene-bounding-box")(
+        "grid", cli::po::value<int>()->default_value(256),
+        "interior rays per image axis for the field-of-view method (>= 1)");
     tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
         auto inputs = cli::args(vm, "input");
         if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and GDB|ODB");
         geom::ViewAngleJob job{inputs[0], inputs[1], vm.count("snd") > 0};
         const auto& method = vm["method"].as<std::string>();
-        if (method == "scene-bounding-box") job.method = geom::ViewAngleMethod::BoundingBox;
+        if (method == "scene-bounding-box")
+            job.method = geom::ViewAngleMethod::BoundingBox;
         else if (method != "field-of-view")
             throw sigchain::UsageError("unknown method '" + method +
                                        "' (field-of-view or scene-bounding-box)");

@@ -13,11 +13,11 @@ int main(int argc, char** argv) {
     cli::Cli tool({"sigchain-check", "Validate sigchain input files, or rewrite one canonically.",
                    "[OPTIONS] FILE..."});
     tool.add_positional("file", -1, "files to check ('-' reads standard input; needs --format)");
-    tool.add_options()
-        ("format,f", cli::po::value<std::string>()->default_value(""),
-         "format of every FILE (extension without the dot), instead of each name's extension")
-        ("rewrite", "write the one FILE back in canonical form (to -o)")
-        ("list-formats", "list the known formats and exit");
+    tool.add_options()(
+        "format,f", cli::po::value<std::string>()->default_value(""),
+        "format of every FILE (extension without the dot), instead of each name's extension")(
+        "rewrite", "write the one FILE back in canonical form (to -o)")(
+        "list-formats", "list the known formats and exit");
     tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         if (vm.count("list-formats")) {

@@ -74,13 +74,14 @@ TEST(Cli, ExceptionsMapToExitCodes) {
 }
 
 TEST(Cli, PositionalsOutputAndVerbosity) {
-    auto r = run({"-v", "-o", "out.txt", "a", "b"}, [](const po::variables_map& vm, cli::Context& ctx) {
-        EXPECT_EQ(cli::args(vm, "file"), (std::vector<std::string>{"a", "b"}));
-        EXPECT_EQ(vm["output"].as<std::string>(), "out.txt");
-        EXPECT_EQ(ctx.verbosity(), 1);
-        ctx.info("skipped the sky");
-        return 0;
-    });
+    auto r =
+        run({"-v", "-o", "out.txt", "a", "b"}, [](const po::variables_map& vm, cli::Context& ctx) {
+            EXPECT_EQ(cli::args(vm, "file"), (std::vector<std::string>{"a", "b"}));
+            EXPECT_EQ(vm["output"].as<std::string>(), "out.txt");
+            EXPECT_EQ(ctx.verbosity(), 1);
+            ctx.info("skipped the sky");
+            return 0;
+        });
     EXPECT_EQ(r.status, 0);
     EXPECT_EQ(r.err, "tool: skipped the sky\n");
 }

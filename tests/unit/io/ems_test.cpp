@@ -26,8 +26,8 @@ const std::vector<std::string> kByWavenumber =
     ems_lines("1", {"0", "20000 0.9", "10000 0.5", "5000 0.7"});
 
 // CURVE_BEGIN layout, two curves, the first closed by the optional CURVE_END.
-const std::vector<std::string> kByWavelength = ems_lines(
-    "2", {"CURVE_BEGIN", "0.4 0.2", "0.8 0.6", "CURVE_END", "CURVE_BEGIN", "1 0.95"});
+const std::vector<std::string> kByWavelength =
+    ems_lines("2", {"CURVE_BEGIN", "0.4 0.2", "0.8 0.6", "CURVE_END", "CURVE_BEGIN", "1 0.95"});
 
 // The proposed lobe table (seed fig. 5.22): lines 93-99, then curve 0 from line 100.
 std::vector<std::string> with_lobe() {
@@ -72,7 +72,7 @@ std::string written(const Ems& ems) {
 TEST(Ems, SeedSampleHasTheValuesTheFigureShows) {
     Ems e = read_ems_file(SIGCHAIN_TEST_DATA "/seed/fall_grass.ems");
     EXPECT_EQ(e.layout, EmsLayout::Wavenumber);
-    const std::vector<double> first = {1, 1, 0.99896, 0.998968, 0.997936,
+    const std::vector<double> first = {1,        1,        0.99896,  0.998968, 0.997936,
                                        0.997936, 0.996904, 0.995872, 0.99484};
     for (std::size_t d = 0; d < first.size(); ++d) EXPECT_EQ(e.fall_off[d], first[d]) << d;
     const std::vector<double> last = {0.50774,  0.474716, 0.44066,  0.405573, 0.368421,

@@ -86,7 +86,7 @@ TEST(Ext, TransmittanceIsFiniteAtGrazingIncidence) {
     double t = transmittance(1e-3, 1e-3, 0);  // k d = 1e-6, |cos| clamped to 1e-6
     EXPECT_TRUE(std::isfinite(t));
     EXPECT_DOUBLE_EQ(t, std::exp(-1.0));
-    EXPECT_EQ(transmittance(500, 0.002, 0), 0);  // underflows to 0, no NaN
+    EXPECT_EQ(transmittance(500, 0.002, 0), 0);                       // underflows to 0, no NaN
     EXPECT_EQ(transmittance(500, 0.002, 1.0000001), std::exp(-1.0));  // |cos| > 1 clamped
 }
 

@@ -16,26 +16,26 @@ namespace {
 // A small consistent legacy file: 2 samples (20000, 19000 cm-1), 2 view angles
 // (-10, 0 deg); line numbers in the comments are what the tests below refer to.
 const std::vector<std::string> kLegacy = {
-    "1",                          // 1 sensor altitude
-    "0.5",                        // 2 min wavelength
-    "0.526316",                   // 3 max wavelength
-    "19000",                      // 4 min wavenumber
-    "20000",                      // 5 max wavenumber
-    "1000",                       // 6 increment
-    "2",                          // 7 N
-    "-10",                        // 8 min view angle
-    "0",                          // 9 max view angle
-    "10",                         // 10 view increment
-    "999.000000 N/A",             // 11 placeholder
-    "2",                          // 12 M
-    "0.5 20000 0.19 0.6",         // 13
-    "0.526316 19000 0.18 0.62",   // 14
-    "-10 2.5",                    // 15
-    "0.8 0 0.003",                // 16
-    "0.81 1e-30 0.0028",          // 17
-    "0 2.4",                      // 18
-    "0.82 0 0.0029",              // 19
-    "0.83 0 0.0027",              // 20
+    "1",                         // 1 sensor altitude
+    "0.5",                       // 2 min wavelength
+    "0.526316",                  // 3 max wavelength
+    "19000",                     // 4 min wavenumber
+    "20000",                     // 5 max wavenumber
+    "1000",                      // 6 increment
+    "2",                         // 7 N
+    "-10",                       // 8 min view angle
+    "0",                         // 9 max view angle
+    "10",                        // 10 view increment
+    "999.000000 N/A",            // 11 placeholder
+    "2",                         // 12 M
+    "0.5 20000 0.19 0.6",        // 13
+    "0.526316 19000 0.18 0.62",  // 14
+    "-10 2.5",                   // 15
+    "0.8 0 0.003",               // 16
+    "0.81 1e-30 0.0028",         // 17
+    "0 2.4",                     // 18
+    "0.82 0 0.0029",             // 19
+    "0.83 0 0.0027",             // 20
 };
 
 // sigchain's additions for kLegacy: one ring of two cells, each half the hemisphere.
@@ -181,9 +181,7 @@ TEST(RadBad, EmptyFile) {
               "t.rad: empty file, expected a radiance table (12 header lines)");
 }
 
-TEST(RadBad, BinaryFile) {
-    EXPECT_THROW(parsed(std::string("1\n0.5\0\n", 7)), DataError);
-}
+TEST(RadBad, BinaryFile) { EXPECT_THROW(parsed(std::string("1\n0.5\0\n", 7)), DataError); }
 
 TEST(RadBad, WrongFieldCount) {
     EXPECT_EQ(error_of(edited(2, "0.5 0.6")),
