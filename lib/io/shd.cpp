@@ -1,5 +1,6 @@
 // .shd sun/shadow history (man shd(5)): reader and writer.
 #include "io/shd.hpp"
+#include "io/tmp.hpp"
 
 #include <cmath>
 #include <map>
@@ -96,6 +97,9 @@ ShdFacet read_facet_line(LineCursor& c, long index, long count) {
                             std::to_string(f.size()) + ": " + sigchain::quoted(line.text));
     ShdFacet facet;
     facet.line = line.number;
+    if (!is_facet_id(f[1]))
+        throw DataError(c.where(line), "expected a facet id such as 1-1-1 or 2.3/1-1-1, found " +
+                                sigchain::quoted(f[1]));
     facet.id = std::string(f[1]);
     facet.sky_view_factor = parse_in_range(f[2], c.where(line), "sky view factor", 0, 1);
     facet.points = parse_count(f[3], c.where(line), "points");

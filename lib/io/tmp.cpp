@@ -45,7 +45,8 @@ FacetTemperature parse_row(const Line& line, const SourceLocation& at) {
         throw DataError(at, "expected 2 fields (facet id, temperature K), found " +
                                 std::to_string(f.size()) + ": " + quoted(line.text));
     if (!is_facet_id(f[0]))
-        throw DataError(at, "expected a facet id such as 1-1-1, found " + quoted(f[0]));
+        throw DataError(at, "expected a facet id such as 1-1-1 or 2.3/1-1-1, found " +
+                                quoted(f[0]));
     double t = parse_double(f[1], at, "temperature (K)");
     if (t <= 0 || t >= kTmpMaxTemperature_k)
         throw DataError(at,
@@ -55,19 +56,30 @@ FacetTemperature parse_row(const Line& line, const SourceLocation& at) {
 
 }  // namespace
 
-bool is_facet_id(std::string_view id) {
+namespace {
+// `count` positive or non-negative integers joined by `sep`, each at most 9 digits.
+bool is_joined_integers(std::string_view text, char sep, int count, bool positive) {
     int parts = 0;
     std::size_t start = 0;
     while (true) {
-        auto dash = id.find('-', start);
-        std::string_view part = id.substr(start, dash == id.npos ? id.npos : dash - start);
+        auto end = text.find(sep, start);
+        std::string_view part = text.substr(start, end == text.npos ? text.npos : end - start);
         if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != part.npos)
             return false;
+        if (positive && part.find_first_not_of('0') == part.npos) return false;
         ++parts;
-        if (dash == id.npos) break;
-        start = dash + 1;
+        if (end == text.npos) break;
+        start = end + 1;
     }
-    return parts == 3;
+    return parts == count;
+}
+}  // namespace
+
+bool is_facet_id(std::string_view id) {
+    auto slash = id.find('/');
+    if (slash == id.npos) return is_joined_integers(id, '-', 3, false);
+    return is_joined_integers(id.substr(0, slash), '.', 2, true) &&
+           is_joined_integers(id.substr(slash + 1), '-', 3, false);
 }
 
 Tmp parse_tmp(const TextInput& in) {

@@ -14,7 +14,7 @@ namespace sigchain::io {
 
 // The surface temperature of one facet, named by its .gdb FACE id ("1-1-1").
 struct FacetTemperature {
-    std::string facet_id;      // OBJECT-PART-FACE, three non-negative integers
+    std::string facet_id;      // facet key: "1-1-1", or "2.3/1-1-1" in an .odb (is_facet_id)
     double temperature_k = 0;  // kelvin, 0 < T < 10000
     int line = 0;              // line in the file it came from (not compared)
 
@@ -44,7 +44,10 @@ void write_tmp(std::ostream& out, const Tmp& tmp);
 inline Tmp read_tmp_file(const std::string& path) { return parse_tmp(TextInput::from_file(path)); }
 FormatHandler tmp_format();
 
-// True for a .gdb facet id: three non-negative integers joined by '-' ("1-1-1").
+// True for a facet key: a .gdb FACE id, three non-negative integers joined by '-'
+// ("1-1-1"), optionally prefixed for .odb scenes by the 1-based object and instance
+// numbers in the .odb, joined by '.', and a '/' ("2.3/1-1-1": object 2, its third
+// instance). Keys are what trace and therm use to name facets in .shd and .tmp.
 bool is_facet_id(std::string_view id);
 
 }  // namespace sigchain::io

@@ -393,6 +393,10 @@ check_golden() {
     check_bad shd duplicate_id.shd "11" "duplicate facet id '1-1-1'"
 }
 
+@test "shd: bad: facet key" {
+    check_bad shd facet_key.shd "6" "expected a facet id such as 1-1-1 or 2.3/1-1-1, found 'roof'"
+}
+
 @test "shd: bad: empty" {
     check_bad shd empty.shd "" "empty file, expected '# sigchain-shd 1'"
 }

@@ -154,7 +154,7 @@ golden() {
 @test "tmp: not a number" { bad tmp not_number 2 "expected temperature (K) (a number), found 'warm'"; }
 @test "tmp: temperature out of range" { bad tmp out_of_range 2 "expected temperature (K) above 0 and below 10000, found '-5'"; }
 @test "tmp: duplicate facet" { bad tmp duplicate 3 "expected each facet once, found '1-1-1' again (first on line 2)"; }
-@test "tmp: not a facet id" { bad tmp bad_id 2 "expected a facet id such as 1-1-1, found 'roof'"; }
+@test "tmp: not a facet id" { bad tmp bad_id 2 "expected a facet id such as 1-1-1 or 2.3/1-1-1, found 'roof'"; }
 @test "tmp: unknown header key" { bad tmp bad_key 2 "expected key time_hours, found 'date'"; }
 
 # --- all six ------------------------------------------------------------------------

@@ -110,7 +110,7 @@ TEST(Shd, RoundTripIsExactAndIdempotent) {
     // A grid whose times are not exact in binary still reads back.
     Shd tenth = parsed(
         "# sigchain-shd 1\nscene_time_hours = 0.3\nsteps = 3\nstep_hours = 0.1\n"
-        "facets = 1\nFACET a 1 1\n0.1 1 1\n0.2 1 1\n0.3 1 1\n");
+        "facets = 1\nFACET 1-1-1 1 1\n0.1 1 1\n0.2 1 1\n0.3 1 1\n");
     expect_same(tenth, parsed(written(tenth)));
 }
 

@@ -67,6 +67,21 @@ TEST(Tmp, FacetIds) {
     EXPECT_FALSE(is_facet_id("1--1"));
     EXPECT_FALSE(is_facet_id("a-1-1"));
     EXPECT_FALSE(is_facet_id("1-1-"));
+    // .odb scenes: object.instance/FACE id, object and instance 1-based.
+    EXPECT_TRUE(is_facet_id("2.3/1-1-1"));
+    EXPECT_TRUE(is_facet_id("1.1/0-0-0"));
+    EXPECT_FALSE(is_facet_id("0.1/1-1-1"));
+    EXPECT_FALSE(is_facet_id("1.0/1-1-1"));
+    EXPECT_FALSE(is_facet_id("2/1-1-1"));
+    EXPECT_FALSE(is_facet_id("2.3/"));
+    EXPECT_FALSE(is_facet_id("2.3.4/1-1-1"));
+    EXPECT_FALSE(is_facet_id("/1-1-1"));
+}
+
+TEST(Tmp, InstancedFacetsAreDistinct) {
+    Tmp t = parse_tmp(TextInput::from_string(kMagic + "1.1/1-1-1 300\n1.2/1-1-1 301\n", "t.tmp"));
+    ASSERT_EQ(t.facets.size(), 2u);
+    EXPECT_EQ(t.facets[1].facet_id, "1.2/1-1-1");
 }
 
 TEST(Tmp, EmptyAndMissingMagic) {
@@ -90,7 +105,7 @@ TEST(Tmp, BadValues) {
     EXPECT_EQ(error_of(kMagic + "1-1-1 -inf\n"),
               "t.tmp:2: expected temperature (K) (a finite number), found '-inf'");
     EXPECT_EQ(error_of(kMagic + "roof 300\n"),
-              "t.tmp:2: expected a facet id such as 1-1-1, found 'roof'");
+              "t.tmp:2: expected a facet id such as 1-1-1 or 2.3/1-1-1, found 'roof'");
 }
 
 TEST(Tmp, DuplicateFacet) {
