@@ -1,0 +1,1 @@
+// Placeholder so the compare library exists until its sources land (issue 5).

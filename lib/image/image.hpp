@@ -1,0 +1,55 @@
+// Raster images for sensorize and compare: radiance cubes (GDAL: ENVI, GeoTIFF) and
+// digital-count or reference images (OpenImageIO: TIFF, PNG, JPEG; GDAL for the rest).
+//
+// Layout: planar float32, channel-major: channel c, row r, column x is
+// data[(c * rows + r) * columns + x]. Row 0 is the top of the image.
+// Thread-safety: plain value type.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sigchain::image {
+
+struct Image {
+    long rows = 0;
+    long columns = 0;
+    int channels = 0;
+    std::vector<float> data;              // channels * rows * columns values
+    std::vector<double> wavelength_um;    // per channel; empty when the file has none
+    std::vector<std::string> channel_names;  // per channel; may be empty
+    std::string units;                    // "W cm-2 sr-1 um-1", "DC", or "" if unknown
+
+    Image() = default;
+    Image(long rows, long columns, int channels, float fill = 0.0f);
+    float& at(int c, long r, long x) { return data[(static_cast<std::size_t>(c) * rows + r) * columns + x]; }
+    float at(int c, long r, long x) const {
+        return data[(static_cast<std::size_t>(c) * rows + r) * columns + x];
+    }
+    std::size_t plane_size() const { return static_cast<std::size_t>(rows) * columns; }
+};
+
+enum class CubeFormat { Envi, GeoTiff };
+
+// Reads any raster: ENVI (.hdr sidecar; the `wavelength` list and `wavelength units`
+// are honoured, nanometres converted to micrometres) and GeoTIFF through GDAL; PNG,
+// JPEG and TIFF through OpenImageIO. Integer pixels are returned as their count values
+// (not normalised). Throws IoError (cannot open) or DataError (unusable content).
+Image read_image(const std::string& path);
+
+// Writes a float32 radiance cube through GDAL with per-band wavelength metadata,
+// atomically (temporary name, then rename; for ENVI both .img and .hdr).
+void write_cube(const std::string& path, const Image& cube, CubeFormat format);
+// The cube format from a file name: .tif/.tiff -> GeoTiff, .img/.hdr/.bsq/.dat -> Envi.
+CubeFormat cube_format_of(const std::string& path);
+
+// Writes digital counts through OpenImageIO as 8- or 16-bit unsigned (12 bits are
+// stored in 16-bit samples) TIFF or PNG, one channel per band, atomically. Values
+// must already be integers within the bit depth.
+void write_counts(const std::string& path, const Image& counts, int bits);
+// Writes float32 channels (unquantised band radiance, error maps) as TIFF through
+// OpenImageIO, atomically.
+void write_float(const std::string& path, const Image& image);
+
+}  // namespace sigchain::image

@@ -1,0 +1,1 @@
+// Placeholder so the image library exists until its sources land (issue 5).

@@ -1,0 +1,1 @@
+// Placeholder so the sensor library exists until its sources land (issue 5).
