@@ -1,0 +1,255 @@
+// Radiance cubes through GDAL: ENVI (.img + .hdr) and GeoTIFF, with per-band wavelengths
+// (man cube(5)).
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <cpl_string.h>
+#include <gdal_priv.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "image/image.hpp"
+#include "image/internal.hpp"
+
+namespace sigchain::image {
+namespace {
+
+// Registers the drivers once and keeps GDAL quiet: its errors become our messages, and
+// no .aux.xml side files are written next to inputs or outputs.
+void gdal_init() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        CPLSetErrorHandler(CPLQuietErrorHandler);
+        CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");
+        GDALAllRegister();
+    });
+}
+
+std::string gdal_message() {
+    const char* m = CPLGetLastErrorMsg();
+    return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
+}
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+// ENVI lists are "{a, b, c}"; a plain number is a one-element list.
+std::vector<double> parse_number_list(const std::string& text) {
+    std::string s = text;
+    for (char& c : s)
+        if (c == '{' || c == '}' || c == ',') c = ' ';
+    std::istringstream in(s);
+    in.imbue(std::locale::classic());
+    std::vector<double> values;
+    double v;
+    while (in >> v) values.push_back(v);
+    return values;
+}
+
+// Micrometres per unit of a wavelength unit name; 0 when unknown.
+double um_per_unit(const std::string& units) {
+    const std::string u = lower(units);
+    if (u.empty() || u == "micrometers" || u == "micrometer" || u == "microns" || u == "micron" ||
+        u == "um" || u == "µm")
+        return 1.0;
+    if (u == "nanometers" || u == "nanometer" || u == "nm") return 1e-3;
+    if (u == "millimeters" || u == "mm") return 1e3;
+    return 0.0;
+}
+
+// The ENVI data file for a .hdr path (GDAL opens the data file, not the header).
+std::string envi_data_file(const std::string& path) {
+    if (detail::extension_of(path) != "hdr") return path;
+    std::filesystem::path stem = std::filesystem::path(path).replace_extension();
+    for (const char* ext : {".img", ".bsq", ".dat", ".IMG", ".BSQ", ".DAT", ""}) {
+        std::filesystem::path candidate = stem;
+        candidate += ext;
+        if (std::filesystem::exists(candidate)) return candidate.string();
+    }
+    throw IoError(path + ": cannot open: no ENVI data file (.img, .bsq, .dat) beside the header");
+}
+
+void read_wavelengths(GDALDataset& ds, const std::string& path, Image& image) {
+    std::vector<double> values;
+    std::string units;
+    if (const char* w = ds.GetMetadataItem("wavelength", "ENVI")) {
+        values = parse_number_list(w);
+        if (const char* u = ds.GetMetadataItem("wavelength_units", "ENVI")) units = u;
+    } else {
+        for (int b = 1; b <= ds.GetRasterCount(); ++b) {
+            GDALRasterBand* band = ds.GetRasterBand(b);
+            const char* w = band->GetMetadataItem("WAVELENGTH_UM");
+            if (!w) break;
+            values.push_back(parse_number_list(w).empty() ? 0.0 : parse_number_list(w)[0]);
+        }
+        if (values.size() != static_cast<std::size_t>(ds.GetRasterCount())) values.clear();
+    }
+    if (values.empty()) return;
+    if (values.size() != static_cast<std::size_t>(image.channels))
+        throw DataError({path, 0}, "the wavelength list has " + std::to_string(values.size()) +
+                                       " values for " + std::to_string(image.channels) + " bands");
+    const double scale = um_per_unit(units);
+    if (scale == 0.0) throw DataError({path, 0}, "unknown wavelength units '" + units + "'");
+    for (double& v : values) v *= scale;
+    image.wavelength_um = values;
+}
+
+void read_units(GDALDataset& ds, Image& image) {
+    if (const char* u = ds.GetMetadataItem("data_units", "ENVI"))
+        image.units = u;
+    else if (const char* u2 = ds.GetMetadataItem("UNITS"))
+        image.units = u2;
+    else if (ds.GetRasterCount() > 0)
+        image.units = ds.GetRasterBand(1)->GetUnitType();
+}
+
+}  // namespace
+
+namespace detail {
+
+Image read_gdal(const std::string& path) {
+    gdal_init();
+    const std::string data_path = envi_data_file(path);
+    std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
+        data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
+    if (ds->GetRasterCount() < 1) throw DataError({path, 0}, "the image has no bands");
+    Image image(ds->GetRasterYSize(), ds->GetRasterXSize(), ds->GetRasterCount());
+    for (int c = 0; c < image.channels; ++c) {
+        GDALRasterBand* band = ds->GetRasterBand(c + 1);
+        float* plane = image.data.data() + c * image.plane_size();
+        if (band->RasterIO(GF_Read, 0, 0, static_cast<int>(image.columns),
+                           static_cast<int>(image.rows), plane, static_cast<int>(image.columns),
+                           static_cast<int>(image.rows), GDT_Float32, 0, 0, nullptr) != CE_None)
+            throw IoError(path + ": read error: " + gdal_message());
+        image.channel_names.emplace_back(band->GetDescription());
+    }
+    read_wavelengths(*ds, path, image);
+    read_units(*ds, image);
+    return image;
+}
+
+}  // namespace detail
+
+namespace {
+
+// Removes the listed files unless released (a failed write leaves nothing behind).
+struct TempFiles {
+    std::vector<std::string> files;
+    ~TempFiles() {
+        for (const auto& f : files) std::remove(f.c_str());
+    }
+};
+
+std::string wavelength_list(const std::vector<double>& wavelength_um) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < wavelength_um.size(); ++i)
+        s += (i ? ", " : "") + format_number(wavelength_um[i]);
+    return s + "}";
+}
+
+void check_cube(const std::string& path, const Image& cube) {
+    if (cube.channels < 1 || cube.rows < 1 || cube.columns < 1)
+        throw DataError({path, 0}, "cannot write an empty cube");
+    if (cube.data.size() != static_cast<std::size_t>(cube.channels) * cube.plane_size())
+        throw DataError({path, 0}, "cube data size does not match its dimensions");
+    if (!cube.wavelength_um.empty() &&
+        cube.wavelength_um.size() != static_cast<std::size_t>(cube.channels))
+        throw DataError({path, 0}, "the wavelength list does not match the band count");
+}
+
+void set_metadata(GDALDataset& ds, const Image& cube, CubeFormat format) {
+    for (int c = 0; c < cube.channels; ++c) {
+        GDALRasterBand* band = ds.GetRasterBand(c + 1);
+        if (static_cast<std::size_t>(c) < cube.channel_names.size())
+            band->SetDescription(cube.channel_names[c].c_str());
+        if (!cube.units.empty()) band->SetUnitType(cube.units.c_str());
+        if (cube.wavelength_um.empty()) continue;
+        const std::string w = format_number(cube.wavelength_um[c]);
+        if (format == CubeFormat::GeoTiff)
+            band->SetMetadataItem("WAVELENGTH_UM", w.c_str());
+        else {
+            band->SetMetadataItem("wavelength", w.c_str());
+            band->SetMetadataItem("wavelength_units", "Micrometers");
+        }
+    }
+    if (format == CubeFormat::GeoTiff) {
+        if (!cube.units.empty()) ds.SetMetadataItem("UNITS", cube.units.c_str());
+        return;
+    }
+    if (!cube.wavelength_um.empty()) {
+        ds.SetMetadataItem("wavelength", wavelength_list(cube.wavelength_um).c_str(), "ENVI");
+        ds.SetMetadataItem("wavelength_units", "Micrometers", "ENVI");
+    }
+    if (!cube.units.empty()) ds.SetMetadataItem("data_units", cube.units.c_str(), "ENVI");
+}
+
+}  // namespace
+
+void write_cube(const std::string& path, const Image& cube, CubeFormat format) {
+    gdal_init();
+    check_cube(path, cube);
+    std::string target = path;
+    if (detail::extension_of(path) == "hdr")
+        target = std::filesystem::path(path).replace_extension(".img").string();
+    const char* driver_name = format == CubeFormat::GeoTiff ? "GTiff" : "ENVI";
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
+    if (!driver) throw IoError(path + ": GDAL has no " + driver_name + " driver");
+    // ENVI names its header by replacing the extension: FILE.tmp.PID.img -> FILE.tmp.PID.hdr.
+    std::string temp = detail::temp_name(target);
+    if (format == CubeFormat::Envi)
+        temp = std::filesystem::path(target).replace_extension().string() + ".tmp." +
+               std::to_string(::getpid()) + ".img";
+    CPLStringList options;
+    options.SetNameValue("INTERLEAVE", format == CubeFormat::Envi ? "BSQ" : "BAND");
+    TempFiles temps;
+    std::vector<std::string> created;
+    {
+        std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(cube.columns),
+                                                       static_cast<int>(cube.rows), cube.channels,
+                                                       GDT_Float32, options.List()));
+        if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
+        if (char** list = ds->GetFileList()) {
+            for (char** f = list; *f; ++f) created.emplace_back(*f);
+            CSLDestroy(list);
+        }
+        temps.files = created;
+        if (created.empty()) temps.files.push_back(temp);
+        set_metadata(*ds, cube, format);
+        for (int c = 0; c < cube.channels; ++c) {
+            float* plane = const_cast<float*>(cube.data.data() + c * cube.plane_size());
+            if (ds->GetRasterBand(c + 1)->RasterIO(
+                    GF_Write, 0, 0, static_cast<int>(cube.columns), static_cast<int>(cube.rows),
+                    plane, static_cast<int>(cube.columns), static_cast<int>(cube.rows), GDT_Float32,
+                    0, 0, nullptr) != CE_None)
+                throw IoError(path + ": write error: " + gdal_message());
+        }
+        CPLErrorReset();
+        ds.reset();  // GDALClose: flushes data and writes the ENVI header
+        if (CPLGetLastErrorType() >= CE_Failure)
+            throw IoError(path + ": write error: " + gdal_message());
+    }
+    for (const std::string& f : temps.files) {
+        std::string final_name = target;
+        if (f != temp) {
+            if (detail::extension_of(f) != "hdr") {  // an unexpected side file: not kept
+                std::remove(f.c_str());
+                continue;
+            }
+            final_name = std::filesystem::path(target).replace_extension(".hdr").string();
+        }
+        if (std::rename(f.c_str(), final_name.c_str()) != 0)
+            throw IoError(final_name + ": cannot rename from " + f);
+    }
+    temps.files.clear();
+}
+
+}  // namespace sigchain::image
