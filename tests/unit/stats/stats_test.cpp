@@ -16,9 +16,7 @@ using V = std::vector<double>;
 // handful of double operations.
 constexpr double kTol = 1e-12;
 
-TEST(Ranks, AscendingFromOne) {
-    EXPECT_EQ(average_ranks(V{30, 10, 20}), (V{3, 1, 2}));
-}
+TEST(Ranks, AscendingFromOne) { EXPECT_EQ(average_ranks(V{30, 10, 20}), (V{3, 1, 2})); }
 
 TEST(Ranks, TiesGetTheMeanOfTheirRanks) {
     // 20 and 20 span ranks 2 and 3 -> 2.5 each; 7,7,7 span 1..3 -> 2.
