@@ -16,14 +16,16 @@ struct Image {
     long rows = 0;
     long columns = 0;
     int channels = 0;
-    std::vector<float> data;              // channels * rows * columns values
-    std::vector<double> wavelength_um;    // per channel; empty when the file has none
+    std::vector<float> data;                 // channels * rows * columns values
+    std::vector<double> wavelength_um;       // per channel; empty when the file has none
     std::vector<std::string> channel_names;  // per channel; may be empty
-    std::string units;                    // "W cm-2 sr-1 um-1", "DC", or "" if unknown
+    std::string units;                       // "W cm-2 sr-1 um-1", "DC", or "" if unknown
 
     Image() = default;
     Image(long rows, long columns, int channels, float fill = 0.0f);
-    float& at(int c, long r, long x) { return data[(static_cast<std::size_t>(c) * rows + r) * columns + x]; }
+    float& at(int c, long r, long x) {
+        return data[(static_cast<std::size_t>(c) * rows + r) * columns + x];
+    }
     float at(int c, long r, long x) const {
         return data[(static_cast<std::size_t>(c) * rows + r) * columns + x];
     }
@@ -46,7 +48,8 @@ CubeFormat cube_format_of(const std::string& path);
 
 // Writes digital counts through OpenImageIO as 8- or 16-bit unsigned (12 bits are
 // stored in 16-bit samples) TIFF or PNG, one channel per band, atomically. Values
-// must already be integers within the bit depth.
+// must already be integers within the bit depth. Also 8-bit plain-text Netpbm (.pgm for
+// 1 channel, .ppm for 3), which tests diff as text. TIFF is written uncompressed.
 void write_counts(const std::string& path, const Image& counts, int bits);
 // Writes float32 channels (unquantised band radiance, error maps) as TIFF through
 // OpenImageIO, atomically.

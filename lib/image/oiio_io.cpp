@@ -58,6 +58,16 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
     if (image.channels > 4 && detail::extension_of(path) == "png")
         throw DataError({path, 0}, "PNG holds at most 4 channels; use a TIFF for " +
                                        std::to_string(image.channels) + " bands");
+    const std::string ext = detail::extension_of(path);
+    if (ext == "pgm" || ext == "ppm" || ext == "pnm") {
+        if (image.channels != 1 && image.channels != 3)
+            throw DataError({path, 0},
+                            "PGM/PPM hold 1 or 3 channels, not " + std::to_string(image.channels));
+        if (type != TypeDesc::UINT8)  // OpenImageIO 2.4 garbles 16-bit plain PNM
+            throw DataError({path, 0}, "PGM/PPM output holds 8-bit counts only");
+        spec.attribute("pnm:binary", 0);  // plain (text) Netpbm: readable and diffable
+    }
+    if (ext == "tif" || ext == "tiff") spec.attribute("compression", "none");
     const std::string temp = detail::temp_name(path);
     bool ok = out->open(temp, spec) && out->write_image(type, pixels) && out->close();
     if (!ok) {

@@ -1,16 +1,103 @@
-// sensorize: turn a radiance cube into the digital counts of a sensor. Skeleton until issue 5
-// lands.
+// sensorize: turn a radiance cube into the digital counts of a sensor (seed 4.2.3.10, 4.2.4).
+#include <iostream>
+
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
+#include "sensor/sensorize_job.hpp"
+
+namespace cli = sigchain::cli;
+namespace sensor = sigchain::sensor;
+
+namespace {
+
+// "N" or "N,N,..." as numbers, for --target1/--target2.
+std::vector<double> parse_targets(const std::string& text, const std::string& option) {
+    std::vector<double> values;
+    for (auto field : sigchain::split_fields(text, true)) {
+        try {
+            values.push_back(sigchain::parse_double(field, {option, 0}, "a count"));
+        } catch (const sigchain::DataError&) {
+            throw sigchain::UsageError(option + ": expected counts, found '" + text + "'");
+        }
+    }
+    if (values.empty()) throw sigchain::UsageError(option + ": expected counts");
+    return values;
+}
+
+void report(const sensor::SensorizeReport& r, const sensor::SensorizeJob& job,
+            const cli::Context& ctx) {
+    if (!r.cube_has_wavelengths)
+        ctx.warn(job.cube_path + ": no wavelength list: spectral samples weighted equally");
+    for (std::size_t b = 0; b < r.bands.size(); ++b) {
+        const auto& band = r.bands[b];
+        const std::string line = "band " + std::to_string(b + 1) + " (" + band.sen_path +
+                                 "): " + std::to_string(band.clipped.low + band.clipped.high) +
+                                 " of " + std::to_string(band.pixels) + " pixels clipped (" +
+                                 std::to_string(band.clipped.low) + " low, " +
+                                 std::to_string(band.clipped.high) + " high)";
+        if (band.clipped.low + band.clipped.high > 0)
+            ctx.warn(line);
+        else
+            ctx.info(line);
+    }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-    sigchain::cli::Cli cli({"sensorize",
-                            "Turn a radiance cube into the digital counts of a sensor.",
-                            "[OPTIONS] CUBE SEN... -o IMAGE"});
-    cli.add_positional("input", -1, "input files");
-    cli.add_output_option();
-    return cli.run(argc, argv, [](const auto&, auto&) -> int {
-        throw sigchain::NotImplemented(
-            "not implemented yet: the sensor model (sensorize) lands with issue 5");
+    cli::Cli tool({"sensorize",
+                   "Turn a radiance cube into the digital counts of a sensor: one channel per\n"
+                   ".sen band, in a TIFF or PNG.",
+                   "[OPTIONS] CUBE SEN... -o IMAGE"});
+    tool.add_positional("input", -1, "radiance cube (ENVI or GeoTIFF) and one .sen per band");
+    tool.add_options()("bits,b", cli::po::value<int>()->default_value(8),
+                       "bits per count: 8, 12 or 16")(
+        "float", "write band radiance unquantised (float TIFF) instead of counts")(
+        "noise-seed", cli::po::value<std::uint64_t>()->default_value(0), "seed of the noise")(
+        "shot-noise", cli::po::value<double>(), "photo-electrons per count E (adds shot noise)")(
+        "read-noise", cli::po::value<double>(), "read noise standard deviation, counts")(
+        "psf-sigma", cli::po::value<double>(), "Gaussian point-spread function, sigma in pixels")(
+        "psf", cli::po::value<std::string>(), "point-spread function kernel file")(
+        "calibrate", "solve gain and bias per band from two gray cards; -o names a directory")(
+        "card1", cli::po::value<std::string>(), "card 1 pixel box ROW0,COL0,ROW1,COL1")(
+        "card2", cli::po::value<std::string>(), "card 2 pixel box ROW0,COL0,ROW1,COL1")(
+        "target1", cli::po::value<std::string>(), "card 1 target counts: C or C1,C2,...")(
+        "target2", cli::po::value<std::string>(), "card 2 target counts: C or C1,C2,...");
+    tool.add_output_option();
+    return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
+        auto inputs = cli::args(vm, "input");
+        if (inputs.size() < 2)
+            throw sigchain::UsageError("expected a cube and at least one .sen file");
+        sensor::SensorizeJob job;
+        job.cube_path = inputs[0];
+        job.sen_paths.assign(inputs.begin() + 1, inputs.end());
+        job.output_path = vm["output"].as<std::string>();
+        job.bits = vm["bits"].as<int>();
+        job.float_output = vm.count("float") > 0;
+        job.noise.seed = vm["noise-seed"].as<std::uint64_t>();
+        if (vm.count("shot-noise")) job.noise.electrons_per_count = vm["shot-noise"].as<double>();
+        if (vm.count("shot-noise") && job.noise.electrons_per_count <= 0)
+            throw sigchain::UsageError("--shot-noise must be positive");
+        if (vm.count("read-noise")) job.noise.read_noise_counts = vm["read-noise"].as<double>();
+        if (vm.count("psf-sigma")) {
+            job.psf_sigma_px = vm["psf-sigma"].as<double>();
+            if (!(job.psf_sigma_px > 0)) throw sigchain::UsageError("--psf-sigma must be positive");
+        }
+        if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
+        job.calibrate = vm.count("calibrate") > 0;
+        if (job.calibrate) {
+            for (const char* o : {"card1", "card2", "target1", "target2"})
+                if (!vm.count(o))
+                    throw sigchain::UsageError(std::string("--calibrate needs --") + o);
+            job.calibration.card1 = sensor::parse_box(vm["card1"].as<std::string>(), "--card1");
+            job.calibration.card2 = sensor::parse_box(vm["card2"].as<std::string>(), "--card2");
+            job.calibration.target1 = parse_targets(vm["target1"].as<std::string>(), "--target1");
+            job.calibration.target2 = parse_targets(vm["target2"].as<std::string>(), "--target2");
+        }
+        const auto result = sensor::run_sensorize(job);
+        report(result, job, ctx);
+        if (job.calibrate) sensor::write_calibration_table(std::cout, result);
+        return 0;
     });
 }

@@ -1,1 +1,0 @@
-// Placeholder so the sensor library exists until its sources land (issue 5).

@@ -1,0 +1,148 @@
+// The sensorize job (seed 4.2.3.10, 4.2.4): cube + .sen files -> counts, radiance or gains.
+#include "sensor/sensorize_job.hpp"
+
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "core/output.hpp"
+#include "core/text.hpp"
+#include "image/image.hpp"
+#include "io/sen.hpp"
+#include "sensor/psf.hpp"
+
+namespace sigchain::sensor {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+std::string stem_of(const std::string& path) {
+    return path == "-" ? std::string("stdin") : std::filesystem::path(path).stem().string();
+}
+
+// The cube's wavelengths for one band's samples (empty when the cube has none).
+std::vector<double> band_wavelengths(const image::Image& cube, BandSamples s) {
+    if (cube.wavelength_um.empty()) return {};
+    return {cube.wavelength_um.begin() + s.first, cube.wavelength_um.begin() + s.first + s.count};
+}
+
+double target_for(const std::vector<double>& targets, std::size_t band) {
+    return targets.size() == 1 ? targets[0] : targets[band];
+}
+
+void calibrate_band(const SensorizeJob& job, std::size_t b, const std::vector<float>& radiance,
+                    const image::Image& cube, SensorizeReport& report) {
+    CalibrationRow row;
+    row.sen_path = job.sen_paths[b];
+    row.radiance1 = box_mean(radiance, cube.rows, cube.columns, job.calibration.card1, "--card1");
+    row.radiance2 = box_mean(radiance, cube.rows, cube.columns, job.calibration.card2, "--card2");
+    row.count1 = target_for(job.calibration.target1, b);
+    row.count2 = target_for(job.calibration.target2, b);
+    row.solved =
+        solve_gain_bias(row.radiance1, row.count1, row.radiance2, row.count2, row.sen_path);
+    row.output_path =
+        (std::filesystem::path(job.output_path) / (stem_of(row.sen_path) + ".sen")).string();
+    report.calibration.push_back(row);
+}
+
+void write_calibrated_sens(const std::vector<io::Sen>& sens, const SensorizeReport& report) {
+    // All bands are solved before any file is written: a failure leaves no partial set.
+    for (std::size_t b = 0; b < sens.size(); ++b) {
+        io::Sen updated = sens[b];
+        updated.gain = report.calibration[b].solved.gain;
+        updated.bias = report.calibration[b].solved.bias;
+        write_atomically(report.calibration[b].output_path,
+                         [&](std::ostream& out) { io::write_sen(out, updated); });
+    }
+}
+
+}  // namespace
+
+void check_job(const SensorizeJob& job) {
+    if (job.sen_paths.empty()) throw UsageError("expected a cube and at least one .sen file");
+    if (job.bits != 8 && job.bits != 12 && job.bits != 16)
+        throw UsageError("--bits must be 8, 12 or 16");
+    if (job.psf_sigma_px > 0 && !job.psf_path.empty())
+        throw UsageError("give --psf-sigma or --psf, not both");
+    if (job.psf_sigma_px < 0) throw UsageError("--psf-sigma must be positive");
+    if (job.noise.electrons_per_count < 0) throw UsageError("--shot-noise must be positive");
+    if (job.noise.read_noise_counts < 0) throw UsageError("--read-noise must not be negative");
+    if (job.output_path.empty() || job.output_path == "-")
+        throw UsageError(job.calibrate ? "--calibrate needs -o DIR for the updated .sen files"
+                                       : "an image cannot go to standard output: give -o FILE");
+    if (job.calibrate) {
+        if (job.float_output) throw UsageError("give --calibrate or --float, not both");
+        const auto& c = job.calibration;
+        for (const auto* t : {&c.target1, &c.target2})
+            if (t->size() != 1 && t->size() != job.sen_paths.size())
+                throw UsageError("--target1 and --target2 take one count or one per band (" +
+                                 std::to_string(job.sen_paths.size()) + ")");
+        if (!std::filesystem::is_directory(job.output_path))
+            throw UsageError("-o " + job.output_path +
+                             ": not a directory (--calibrate writes "
+                             "one .sen per band there)");
+        return;
+    }
+    const std::string ext = lower_extension(job.output_path);
+    const bool tiff = ext == ".tif" || ext == ".tiff";
+    const bool counts_ok = tiff || ext == ".png" || ext == ".pgm" || ext == ".ppm";
+    if (job.float_output ? !tiff : !counts_ok)
+        throw UsageError("-o " + job.output_path + ": the output must be a " +
+                         (job.float_output ? ".tif" : ".tif, .png, .pgm or .ppm") + " file");
+}
+
+SensorizeReport run_sensorize(const SensorizeJob& job) {
+    check_job(job);
+    std::vector<io::Sen> sens;
+    for (const auto& path : job.sen_paths) sens.push_back(io::read_sen_file(path));
+    const image::Image cube = image::read_image(job.cube_path);
+    const auto groups = group_bands(sens, job.sen_paths, cube.channels, job.cube_path);
+    Kernel kernel;
+    const bool blur = job.psf_sigma_px > 0 || !job.psf_path.empty();
+    if (job.psf_sigma_px > 0) kernel = gaussian_kernel(job.psf_sigma_px);
+    if (!job.psf_path.empty()) kernel = read_kernel_file(job.psf_path);
+
+    SensorizeReport report;
+    report.cube_has_wavelengths = !cube.wavelength_um.empty();
+    const int bands = static_cast<int>(sens.size());
+    image::Image out(cube.rows, cube.columns, bands);
+    out.units = job.float_output ? cube.units : "DC";
+    for (int b = 0; b < bands; ++b) {
+        const auto widths = sample_widths_um(band_wavelengths(cube, groups[b]), groups[b].count);
+        std::vector<float> plane =
+            band_radiance(cube, groups[b], sens[b].response, widths, job.sen_paths[b]);
+        if (job.calibrate) {
+            calibrate_band(job, b, plane, cube, report);
+            continue;
+        }
+        if (blur) plane = convolve(plane, cube.rows, cube.columns, kernel);
+        if (!job.float_output) {
+            apply_gain_bias(plane, sens[b].gain, sens[b].bias);
+            add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));
+            report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
+        }
+        std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());
+        out.channel_names.push_back(stem_of(job.sen_paths[b]));
+    }
+    if (job.calibrate)
+        write_calibrated_sens(sens, report);
+    else if (job.float_output)
+        image::write_float(job.output_path, out);
+    else
+        image::write_counts(job.output_path, out, job.bits);
+    return report;
+}
+
+void write_calibration_table(std::ostream& out, const SensorizeReport& report) {
+    out << "# sen radiance1 radiance2 count1 count2 gain bias\n";
+    for (const auto& row : report.calibration)
+        out << row.sen_path << ' ' << format_number(row.radiance1) << ' '
+            << format_number(row.radiance2) << ' ' << format_number(row.count1) << ' '
+            << format_number(row.count2) << ' ' << format_number(row.solved.gain) << ' '
+            << format_number(row.solved.bias) << '\n';
+}
+
+}  // namespace sigchain::sensor

@@ -1,0 +1,145 @@
+#!/usr/bin/env bats
+# Tests: sensorize
+# Also requires: tests/data/cube/* (hand-made ENVI cubes and .sen files),
+# tests/data/bad/sen/not_number.sen, tests/golden/sensorize/*
+load test_helper
+
+CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
+
+# tiny.img: 2 rows x 3 columns, samples at 0.45 0.5 0.55 0.6 um; sample k of pixel p
+# (row-major, 0-based) is (0.001, 0.003, 0.002, 0.004)[k] * (p + 1).
+# blue.sen: samples 1-2, R = 1, 3, gain 10000, bias 5:
+#   L = (0.001 + 3 * 0.003) / 4 * (p + 1) = 0.0025 (p + 1) -> 30 55 80 105 130 155.
+# green1.sen: sample 3, gain 10000: 20 40 60 80 100 120.
+# red1.sen: sample 4, gain 20000: 80 160 240 320 400 480 -> 255 from pixel 3 on.
+
+@test "--help prints usage to stdout and exits 0" {
+    run -0 --separate-stderr sensorize --help
+    assert_output --partial "Usage: sensorize"
+    assert_equal "${lines[-1]}" "See sensorize(1)."
+    assert_equal "$stderr" ""
+}
+
+@test "--version prints the version and exits 0" {
+    run -0 --separate-stderr sensorize --version
+    assert_output --regexp '^sensorize \(sigchain\) [0-9]+\.[0-9]+\.[0-9]+$'
+}
+
+@test "unknown option exits 2" {
+    run -2 --separate-stderr sensorize --no-such-option
+    assert_output ''
+    assert_equal "${stderr##*$'\n'}" "Try 'sensorize --help'."
+}
+
+@test "bad --bits and a missing -o exit 2" {
+    run -2 --separate-stderr sensorize --bits 10 "$CUBE/tiny.img" "$CUBE/red.sen" -o out.png
+    [[ "$stderr" == *"--bits must be 8, 12 or 16"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr sensorize "$CUBE/tiny.img" "$CUBE/red.sen"
+    [[ "$stderr" == *"give -o FILE"* ]] || fail "stderr: $stderr"
+    [ ! -e out.png ]
+}
+
+@test "three bands: golden counts, saturation reported per band" {
+    run -0 --separate-stderr sensorize "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen" \
+        "$CUBE/red1.sen" -o out.ppm
+    assert_output ''
+    assert_equal "$stderr" \
+        "sensorize: warning: band 3 ($CUBE/red1.sen): 3 of 6 pixels clipped (0 low, 3 high)"
+    assert_golden out.ppm "$GOLDEN/sensorize/tiny_8bit.ppm"
+    assert_no_temp_files .
+}
+
+@test "-v reports every band; a band that fits is not a warning" {
+    run -0 --separate-stderr sensorize -v "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o out.png
+    assert_equal "${stderr_lines[0]}" \
+        "sensorize: band 1 ($CUBE/blue.sen): 0 of 6 pixels clipped (0 low, 0 high)"
+    [[ "$stderr" == *"warning: band 2 ($CUBE/red.sen): 2 of 6 pixels clipped (0 low, 2 high)"* ]] ||
+        fail "stderr: $stderr"
+    [ -s out.png ]
+}
+
+@test "a .sen read from standard input" {
+    run -0 --separate-stderr sensorize "$CUBE/tiny.img" - "$CUBE/green1.sen" "$CUBE/red1.sen" \
+        -o out.ppm < "$CUBE/blue.sen"
+    assert_golden out.ppm "$GOLDEN/sensorize/tiny_8bit.ppm"
+}
+
+@test ".sen sample counts that do not fit the cube: exit 1 naming both files, no output" {
+    run -1 --separate-stderr sensorize "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.png
+    assert_equal "$stderr" \
+        "sensorize: $CUBE/tiny.img: 4 bands, but the .sen files ($CUBE/blue.sen) have 2 response samples in all"
+    run -1 --separate-stderr sensorize "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" \
+        "$CUBE/red1.sen" -o out.png
+    assert_equal "$stderr" \
+        "sensorize: $CUBE/red1.sen:1: 1 response samples, but $CUBE/tiny.img has 0 bands left for this band (4 in all)"
+    [ ! -e out.png ]
+    assert_no_temp_files .
+}
+
+@test "a malformed .sen exits 1 naming FILE:LINE" {
+    run -1 --separate-stderr sensorize "$CUBE/tiny.img" "$BAD/sen/not_number.sen" "$CUBE/red.sen" -o out.png
+    assert_equal "$stderr" "sensorize: $BAD/sen/not_number.sen:3: expected bias (a number), found 'zero'"
+    [ ! -e out.png ]
+}
+
+@test "a missing cube exits 1" {
+    run -1 --separate-stderr sensorize absent.img "$CUBE/red.sen" -o out.png
+    [[ "$stderr" == "sensorize: absent.img: cannot open"* ]] || fail "stderr: $stderr"
+}
+
+@test "four one-sample bands go into one PNG" {
+    printf '1\n1000\n0\n1\n' > one.sen
+    run -0 --separate-stderr sensorize "$CUBE/tiny.img" one.sen one.sen one.sen one.sen -o out.png
+    [ -s out.png ]
+    assert_no_temp_files .
+}
+
+@test "noise is reproducible with a seed and --float writes a TIFF" {
+    run -0 --separate-stderr sensorize --shot-noise 2 --read-noise 1 --noise-seed 4 --psf-sigma 0.7 \
+        "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen" "$CUBE/red1.sen" -o a.ppm
+    run -0 --separate-stderr sensorize --shot-noise 2 --read-noise 1 --noise-seed 4 --psf-sigma 0.7 \
+        "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen" "$CUBE/red1.sen" -o b.ppm
+    cmp a.ppm b.ppm
+    run -0 --separate-stderr sensorize --float "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o f.tif
+    [ -s f.tif ]
+    run -2 --separate-stderr sensorize --float "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o f.png
+}
+
+@test "--psf reads a kernel file; a bad one exits 1 naming FILE:LINE" {
+    printf '# box\n1 3\n1 1 1\n' > box.psf
+    run -0 --separate-stderr sensorize --psf box.psf "$CUBE/tiny.img" "$CUBE/blue.sen" \
+        "$CUBE/green1.sen" "$CUBE/red1.sen" -o out.ppm
+    # green row 0 is 20 40 60: blurred with clamped edges (20+20+40)/3, 40, (40+60+60)/3
+    run -0 sed -n 4,12p out.ppm
+    assert_equal "$(sed -n '5p;8p;11p' out.ppm | tr '\n' ' ')" "27 40 53 "
+    printf '2 2\n1 1\n1 1\n' > even.psf
+    run -1 --separate-stderr sensorize --psf even.psf "$CUBE/tiny.img" "$CUBE/blue.sen" \
+        "$CUBE/green1.sen" "$CUBE/red1.sen" -o out2.ppm
+    assert_equal "$stderr" "sensorize: even.psf:1: kernel sizes must be odd, 1 to 99, found 2"
+    [ ! -e out2.ppm ]
+}
+
+@test "--calibrate solves gain and bias from two gray cards and writes .sen files" {
+    mkdir cal
+    run -0 --separate-stderr sensorize --calibrate --card1 0,0,1,1 --card2 0,2,1,3 \
+        --target1 20,30 --target2 220,230 "$CUBE/cards.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o cal
+    # Cards at 2^-8 and 2^-7 W cm-2 sr-1 um-1: gain = 200 / 2^-8 = 51200,
+    # bias = 20 - 51200 * 2^-8 = -180 (blue) and 30 - 200 = -170 (red).
+    assert_line --index 1 "$CUBE/blue.sen 0.00390625 0.0078125 20 220 51200 -180"
+    assert_line --index 2 "$CUBE/red.sen 0.00390625 0.0078125 30 230 51200 -170"
+    assert_equal "$(cat cal/blue.sen | tr '\n' ' ')" "2 51200 -180 1 3 "
+    assert_equal "$(cat cal/red.sen | tr '\n' ' ')" "2 51200 -170 1 1 "
+    assert_no_temp_files .
+}
+
+@test "--calibrate with swapped targets or a box outside the image fails and writes nothing" {
+    mkdir cal
+    run -1 --separate-stderr sensorize --calibrate --card1 0,0,1,1 --card2 0,2,1,3 \
+        --target1 220 --target2 20 "$CUBE/cards.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o cal
+    [[ "$stderr" == *"blue.sen: the solved gain -51200 is not positive"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr sensorize --calibrate --card1 0,0,1,1 --card2 0,2,2,3 \
+        --target1 20 --target2 220 "$CUBE/cards.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o cal
+    [[ "$stderr" == *"--card2: the box reaches outside the 2x4 image"* ]] || fail "stderr: $stderr"
+    run -0 ls cal
+    assert_output ''
+}
