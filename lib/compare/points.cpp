@@ -37,8 +37,22 @@ void fill_whole_image(Side& side, const std::vector<double>& pixels) {
 }
 
 // Ranks, RMS, bias and ROC of one band whose point values are filled in.
+// All control-point values equal: the ranks have no spread and rho is undefined.
+void require_spread(const std::vector<double>& values, const std::string& band,
+                    const std::string& image, const std::string& cpt_path) {
+    for (double v : values)
+        if (v != values.front()) return;
+    throw DataError({cpt_path, 0}, band + ": every control point of " + image + " has the value " +
+                                       format_number(values.front()) +
+                                       ": the rank-order correlation is undefined");
+}
+
 void finish_band(BandComparison& band, const std::vector<double>& syn_pixels,
-                 const std::vector<double>& ref_pixels, int bins, const std::string& cpt_path) {
+                 const std::vector<double>& ref_pixels, int bins, const PointComparison& cmp) {
+    const std::string& cpt_path = cmp.cpt_path;
+    std::string label = band.name == "combined" ? band.name : "band " + band.name;
+    require_spread(band.synthetic.values, label, cmp.synthetic_path, cpt_path);
+    require_spread(band.reference.values, label, cmp.reference_path, cpt_path);
     band.synthetic.ranks = stats::average_ranks(band.synthetic.values);
     band.reference.ranks = stats::average_ranks(band.reference.values);
     band.rms = stats::rms_difference(band.synthetic.values, band.reference.values);
@@ -46,7 +60,7 @@ void finish_band(BandComparison& band, const std::vector<double>& syn_pixels,
     try {
         band.roc = stats::rank_order_correlation(band.synthetic.values, band.reference.values);
     } catch (const std::invalid_argument& e) {
-        throw DataError({cpt_path, 0}, "band " + band.name + ": " + e.what());
+        throw DataError({cpt_path, 0}, label + ": " + e.what());
     }
     fill_whole_image(band.synthetic, syn_pixels);
     fill_whole_image(band.reference, ref_pixels);
@@ -171,7 +185,7 @@ PointComparison compare_points(const NamedImage& synthetic, const NamedImage& re
                 control_point_value(ref, r, p.reference_row, p.reference_column, p.radius_px, at,
                                     "control point '" + p.name + "' of " + reference.path));
         }
-        finish_band(band, band_values(syn, s), band_values(ref, r), histogram_bins, cpt_path);
+        finish_band(band, band_values(syn, s), band_values(ref, r), histogram_bins, out);
         out.bands.push_back(std::move(band));
         syn_channels.push_back(s);
         ref_channels.push_back(r);
@@ -193,7 +207,7 @@ PointComparison compare_points(const NamedImage& synthetic, const NamedImage& re
             combined.reference.values[i] /= static_cast<double>(pairs.size());
         }
         finish_band(combined, combined_values(syn, syn_channels),
-                    combined_values(ref, ref_channels), histogram_bins, cpt_path);
+                    combined_values(ref, ref_channels), histogram_bins, out);
         out.bands.push_back(std::move(combined));
     }
     return out;

@@ -176,3 +176,16 @@ TEST(Report, JsonNumbersRoundTrip) {
     EXPECT_NE(out.str().find("\"rms\": 5.272570530585627"), std::string::npos) << out.str();
     EXPECT_NE(out.str().find("\"roc_method\": \"spearman\""), std::string::npos);
 }
+
+TEST(ComparePoints, AllValuesTiedInOneImageIsAnError) {
+    auto syn = row_image({{7, 7, 7, 7, 7}});
+    auto ref = row_image({{1, 2, 3, 4, 5}});
+    try {
+        compare_points({"s.png", &syn}, {"r", &ref}, five_points(), "p.cpt", {}, 4);
+        FAIL();
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(),
+                     "p.cpt: band 1: every control point of s.png has the value 7: the "
+                     "rank-order correlation is undefined");
+    }
+}
