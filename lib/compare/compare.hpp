@@ -106,7 +106,9 @@ PixelComparison compare_pixels(const NamedImage& synthetic, const NamedImage& re
 std::vector<std::string> threshold_failures(const PointComparison& cmp,
                                             std::optional<double> fail_rms,
                                             std::optional<double> fail_roc);
+// Pixelwise: also `fail_max`, the largest |synthetic - reference| allowed (idiff's -fail).
 std::vector<std::string> threshold_failures(const PixelComparison& cmp,
-                                            std::optional<double> fail_rms);
+                                            std::optional<double> fail_rms,
+                                            std::optional<double> fail_max);
 
 }  // namespace sigchain::compare

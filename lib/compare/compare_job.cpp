@@ -18,7 +18,7 @@ std::vector<std::string> run_pixelwise(const CompareJob& job, const image::Image
     else
         write_text_report(out, cmp);
     if (!job.error_map_path.empty()) image::write_float(job.error_map_path, cmp.error_map);
-    return threshold_failures(cmp, job.fail_rms);
+    return threshold_failures(cmp, job.fail_rms, job.fail_max);
 }
 
 }  // namespace
@@ -28,8 +28,8 @@ std::vector<std::string> run_compare_job(const CompareJob& job, std::ostream& ou
         throw UsageError("--pixelwise takes two images, and no --fail-roc or --plot");
     if (!job.pixelwise && job.cpt_path.empty())
         throw UsageError("expected SYNTHETIC REFERENCE CPT (or --pixelwise IMAGE1 IMAGE2)");
-    if (!job.pixelwise && !job.error_map_path.empty())
-        throw UsageError("--error-map needs --pixelwise");
+    if (!job.pixelwise && (!job.error_map_path.empty() || job.fail_max))
+        throw UsageError("--error-map and --fail-max need --pixelwise");
     auto syn = image::read_image(job.synthetic_path);
     auto ref = image::read_image(job.reference_path);
     if (job.pixelwise) return run_pixelwise(job, syn, ref, out);

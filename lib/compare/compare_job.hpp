@@ -23,6 +23,7 @@ struct CompareJob {
     std::string error_map_path;      // pixelwise: float TIFF of synthetic - reference
     std::optional<double> fail_rms;  // fail when any band's RMS exceeds this
     std::optional<double> fail_roc;  // fail when any band's ROC is below this
+    std::optional<double> fail_max;  // pixelwise: fail when any |difference| exceeds this
 };
 
 // Runs the job, writes the report to `out` and returns the thresholds exceeded, one

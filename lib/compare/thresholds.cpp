@@ -28,12 +28,18 @@ std::vector<std::string> threshold_failures(const PointComparison& cmp,
 }
 
 std::vector<std::string> threshold_failures(const PixelComparison& cmp,
-                                            std::optional<double> fail_rms) {
+                                            std::optional<double> fail_rms,
+                                            std::optional<double> fail_max) {
     std::vector<std::string> failures;
-    for (const auto& b : cmp.bands)
+    for (const auto& b : cmp.bands) {
         if (fail_rms && b.rms > *fail_rms)
             failures.push_back(band_label(b.name) + ": RMS " + format_number(b.rms) +
                                " above --fail-rms " + format_number(*fail_rms));
+        if (fail_max && b.max_abs > *fail_max)
+            failures.push_back(band_label(b.name) + ": largest difference " +
+                               format_number(b.max_abs) + " above --fail-max " +
+                               format_number(*fail_max));
+    }
     return failures;
 }
 

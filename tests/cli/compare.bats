@@ -177,6 +177,14 @@ make_rgb() {
     assert_equal "$stderr" "compare: band 1: RMS 4.168333000133266 above --fail-rms 4"
 }
 
+@test "compare --pixelwise --fail-max bounds the largest difference" {
+    make_gray
+    run -0 --separate-stderr compare --pixelwise --fail-max 9 syn.pgm ref.pgm
+    run -1 --separate-stderr compare --pixelwise --fail-max 8.5 syn.pgm ref.pgm
+    assert_equal "$stderr" "compare: band 1: largest difference 9 above --fail-max 8.5"
+    run -2 --separate-stderr compare --fail-max 1 syn.pgm ref.pgm pts.cpt
+}
+
 @test "compare --plot writes one PNG histogram per band and combined" {
     make_rgb
     run -0 --separate-stderr compare --plot plots --bands 3,2,1 rgb.ppm bgr.ppm row.cpt

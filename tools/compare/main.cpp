@@ -33,6 +33,7 @@ cmp::CompareJob job_from(const cli::po::variables_map& vm) {
     if (vm.count("error-map")) job.error_map_path = vm["error-map"].as<std::string>();
     if (vm.count("fail-rms")) job.fail_rms = vm["fail-rms"].as<double>();
     if (vm.count("fail-roc")) job.fail_roc = vm["fail-roc"].as<double>();
+    if (vm.count("fail-max")) job.fail_max = vm["fail-max"].as<double>();
     return job;
 }
 
@@ -55,7 +56,9 @@ int main(int argc, char** argv) {
         "error-map", cli::po::value<std::string>(),
         "with --pixelwise: write synthetic - reference as a float TIFF")(
         "fail-rms", cli::po::value<double>(), "exit 1 when an RMS difference exceeds X")(
-        "fail-roc", cli::po::value<double>(), "exit 1 when a rank-order correlation is below X");
+        "fail-roc", cli::po::value<double>(), "exit 1 when a rank-order correlation is below X")(
+        "fail-max", cli::po::value<double>(),
+        "with --pixelwise: exit 1 when a pixel differs by more than X");
     tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         auto job = job_from(vm);

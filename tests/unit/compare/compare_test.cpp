@@ -155,7 +155,11 @@ TEST(ComparePixels, ErrorsByHand) {
     EXPECT_EQ(cmp.bands[0].max_abs, 2.0);
     EXPECT_NEAR(cmp.bands[0].mean_relative, 0.5, kTol);
     EXPECT_EQ(cmp.error_map.data, (std::vector<float>{1, -1, 0, 2}));
-    EXPECT_EQ(threshold_failures(cmp, 1.0).size(), 1u);
+    EXPECT_EQ(threshold_failures(cmp, 1.0, std::nullopt).size(), 1u);
+    EXPECT_TRUE(threshold_failures(cmp, std::nullopt, 2.0).empty());
+    auto f = threshold_failures(cmp, std::nullopt, 1.5);
+    ASSERT_EQ(f.size(), 1u);
+    EXPECT_EQ(f[0], "band 1: largest difference 2 above --fail-max 1.5");
 }
 
 TEST(ComparePixels, SizeMismatchIsAnError) {
