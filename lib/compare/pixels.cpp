@@ -1,4 +1,5 @@
 // Pixel-by-pixel comparison of co-registered images (compare --pixelwise).
+#include <algorithm>
 #include <cmath>
 
 #include "compare/compare.hpp"
@@ -46,7 +47,7 @@ PixelComparison compare_pixels(const NamedImage& synthetic, const NamedImage& re
                                                  std::to_string(syn.rows) + " rows, " +
                                                  std::to_string(syn.columns) + " columns");
     auto pairs = band_pairs(map, syn.channels, ref.channels);
-    require_no_nan_pixels(synthetic);
+    require_no_nan_pixels(synthetic);  // also rejects empty images (no division by 0 below)
     require_no_nan_pixels(reference);
     PixelComparison out{synthetic.path, reference.path, syn.rows, syn.columns, {}, {}};
     out.error_map.rows = syn.rows;

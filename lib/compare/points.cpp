@@ -1,6 +1,10 @@
 // Control-point comparison: band mapping, point sampling, ranks, RMS, ROC, statistics.
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "compare/compare.hpp"
 #include "core/error.hpp"
@@ -36,7 +40,6 @@ void fill_whole_image(Side& side, const std::vector<double>& pixels) {
     side.median = stats::median(pixels);
 }
 
-// Ranks, RMS, bias and ROC of one band whose point values are filled in.
 // All control-point values equal: the ranks have no spread and rho is undefined.
 void require_spread(const std::vector<double>& values, const std::string& band,
                     const std::string& image, const std::string& cpt_path) {
@@ -47,6 +50,8 @@ void require_spread(const std::vector<double>& values, const std::string& band,
                                        ": the rank-order correlation is undefined");
 }
 
+// Ranks, RMS, bias and ROC of one band whose point values are filled in, then the
+// whole-image statistics and histograms.
 void finish_band(BandComparison& band, const std::vector<double>& syn_pixels,
                  const std::vector<double>& ref_pixels, int bins, const PointComparison& cmp) {
     const std::string& cpt_path = cmp.cpt_path;
