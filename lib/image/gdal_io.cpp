@@ -185,6 +185,9 @@ void set_metadata(GDALDataset& ds, const Image& cube, CubeFormat format) {
         if (!cube.units.empty()) ds.SetMetadataItem("UNITS", cube.units.c_str());
         return;
     }
+    // GDAL writes the dataset description (by default the temporary file name) as the
+    // header's description: a fixed text keeps reruns identical.
+    ds.SetDescription("sigchain radiance cube");
     if (!cube.wavelength_um.empty()) {
         ds.SetMetadataItem("wavelength", wavelength_list(cube.wavelength_um).c_str(), "ENVI");
         ds.SetMetadataItem("wavelength_units", "Micrometers", "ENVI");
