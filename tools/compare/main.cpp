@@ -47,17 +47,19 @@ int main(int argc, char** argv) {
                    "Exit status: 0 within the thresholds, 1 outside, 2 trouble.",
                    "[OPTIONS] SYNTHETIC REFERENCE CPT | --pixelwise IMAGE1 IMAGE2"});
     tool.add_positional("input", -1, "synthetic image, reference image, control points (.cpt)");
-    tool.add_options()("bands", cli::po::value<std::string>(),
+    tool.add_options()("bands", cli::po::value<std::string>()->value_name("LIST"),
                        "reference band per synthetic band, e.g. 3,2,1")(
-        "bins", cli::po::value<int>()->default_value(16), "histogram bins")(
-        "json", "write the report as JSON")("plot", cli::po::value<std::string>(),
-                                            "write PNG histograms into DIR")(
+        "bins", cli::po::value<int>()->default_value(16)->value_name("N"), "histogram bins")(
+        "json", "write the report as JSON")(
+        "plot", cli::po::value<std::string>()->value_name("DIR"), "write PNG histograms into DIR")(
         "pixelwise", "compare co-registered images pixel by pixel")(
-        "error-map", cli::po::value<std::string>(),
+        "error-map", cli::po::value<std::string>()->value_name("FILE"),
         "with --pixelwise: write synthetic - reference as a float TIFF")(
-        "fail-rms", cli::po::value<double>(), "exit 1 when an RMS difference exceeds X")(
-        "fail-roc", cli::po::value<double>(), "exit 1 when a rank-order correlation is below X")(
-        "fail-max", cli::po::value<double>(),
+        "fail-rms", cli::po::value<double>()->value_name("X"),
+        "exit 1 when an RMS difference exceeds X")(
+        "fail-roc", cli::po::value<double>()->value_name("X"),
+        "exit 1 when a rank-order correlation is below X")(
+        "fail-max", cli::po::value<double>()->value_name("X"),
         "with --pixelwise: exit 1 when a pixel differs by more than X");
     tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
