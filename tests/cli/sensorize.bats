@@ -143,3 +143,18 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
     run -0 ls cal
     assert_output ''
 }
+
+@test "-q hides the saturation warning; 12- and 16-bit TIFF and PNG outputs" {
+    run -0 --separate-stderr sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen" \
+        "$CUBE/red1.sen" -o out.ppm
+    assert_equal "$stderr" ""
+    for out in c12.tif c12.png c16.tif c16.png; do
+        run -0 --separate-stderr sensorize --bits "${out:1:2}" "$CUBE/tiny.hdr" "$CUBE/blue.sen" \
+            "$CUBE/red.sen" -o "$out"
+        assert_equal "$stderr" ""  # 12 and 16 bits hold every count of this cube
+        [ -s "$out" ]
+    done
+    run -2 --separate-stderr sensorize --bits 16 "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o c.jpg
+    [[ "$stderr" == *"must be a .tif, .png, .pgm or .ppm file"* ]] || fail "stderr: $stderr"
+    assert_no_temp_files .
+}
