@@ -54,15 +54,19 @@ std::vector<double> parse_number_list(const std::string& text) {
     return values;
 }
 
-// Micrometres per unit of a wavelength unit name; 0 when unknown.
-double um_per_unit(const std::string& units) {
+// Micrometres per unit of a wavelength unit name. Missing or unrecognised units
+// ("Unknown" is common in ENVI headers) are inferred from the values: all at least 100
+// means nanometres, otherwise micrometres (visible to thermal infrared: 0.3 to 15 um).
+double um_per_unit(const std::string& units, const std::vector<double>& values) {
     const std::string u = lower(units);
-    if (u.empty() || u == "micrometers" || u == "micrometer" || u == "microns" || u == "micron" ||
-        u == "um" || u == "µm")
+    if (u == "micrometers" || u == "micrometer" || u == "microns" || u == "micron" || u == "um" ||
+        u == "µm")
         return 1.0;
     if (u == "nanometers" || u == "nanometer" || u == "nm") return 1e-3;
     if (u == "millimeters" || u == "mm") return 1e3;
-    return 0.0;
+    for (double v : values)
+        if (v < 100) return 1.0;
+    return 1e-3;
 }
 
 // The ENVI data file for a .hdr path (GDAL opens the data file, not the header).
@@ -88,7 +92,11 @@ void read_wavelengths(GDALDataset& ds, const std::string& path, Image& image) {
             GDALRasterBand* band = ds.GetRasterBand(b);
             const char* w = band->GetMetadataItem("WAVELENGTH_UM");
             if (!w) break;
-            values.push_back(parse_number_list(w).empty() ? 0.0 : parse_number_list(w)[0]);
+            const std::vector<double> one = parse_number_list(w);
+            if (one.size() != 1)
+                throw DataError({path, 0}, "band " + std::to_string(b) +
+                                               ": WAVELENGTH_UM is not a number: '" + w + "'");
+            values.push_back(one[0]);
         }
         if (values.size() != static_cast<std::size_t>(ds.GetRasterCount())) values.clear();
     }
@@ -96,8 +104,7 @@ void read_wavelengths(GDALDataset& ds, const std::string& path, Image& image) {
     if (values.size() != static_cast<std::size_t>(image.channels))
         throw DataError({path, 0}, "the wavelength list has " + std::to_string(values.size()) +
                                        " values for " + std::to_string(image.channels) + " bands");
-    const double scale = um_per_unit(units);
-    if (scale == 0.0) throw DataError({path, 0}, "unknown wavelength units '" + units + "'");
+    const double scale = um_per_unit(units, values);
     for (double& v : values) v *= scale;
     image.wavelength_um = values;
 }

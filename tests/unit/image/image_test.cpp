@@ -109,6 +109,21 @@ TEST_F(ImageFiles, EnviNanometresAreConverted) {
     EXPECT_EQ(back.data, (std::vector<float>{1.5f, 2.5f}));
 }
 
+TEST_F(ImageFiles, EnviUnknownUnitsAreInferredFromTheValues) {
+    // "wavelength units = Unknown" (common in ENVI files): >= 100 everywhere means nm.
+    const std::string head =
+        "ENVI\nsamples = 1\nlines = 1\nbands = 2\nheader offset = 0\n"
+        "file type = ENVI Standard\ndata type = 4\ninterleave = bsq\n"
+        "byte order = 0\nwavelength units = Unknown\n";
+    const float values[2] = {1.5f, 2.5f};
+    std::ofstream(file("u.img"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(values), sizeof values);
+    std::ofstream(file("u.hdr")) << head << "wavelength = {450, 550}\n";
+    EXPECT_EQ(read_image(file("u.img")).wavelength_um, (std::vector<double>{0.45, 0.55}));
+    std::ofstream(file("u.hdr")) << head << "wavelength = {0.45, 0.55}\n";
+    EXPECT_EQ(read_image(file("u.img")).wavelength_um, (std::vector<double>{0.45, 0.55}));
+}
+
 TEST_F(ImageFiles, GeoTiffCubeRoundTripKeepsWavelengthsAndUnits) {
     Image cube = sample_cube();
     cube.channel_names = {"blue", "green", "red"};
