@@ -1,7 +1,9 @@
 // The sensorize job (seed 4.2.3.10, 4.2.4): cube + .sen files -> counts, radiance or gains.
 #include "sensor/sensorize_job.hpp"
 
+#include <cctype>
 #include <filesystem>
+#include <set>
 
 #include "core/error.hpp"
 #include "core/output.hpp"
@@ -80,6 +82,11 @@ void check_job(const SensorizeJob& job) {
             if (t->size() != 1 && t->size() != job.sen_paths.size())
                 throw UsageError("--target1 and --target2 take one count or one per band (" +
                                  std::to_string(job.sen_paths.size()) + ")");
+        std::set<std::string> names;
+        for (const auto& path : job.sen_paths)
+            if (!names.insert(stem_of(path)).second)
+                throw UsageError("--calibrate: two .sen files named " + stem_of(path) +
+                                 ".sen would be written to the same file");
         if (!std::filesystem::is_directory(job.output_path))
             throw UsageError("-o " + job.output_path +
                              ": not a directory (--calibrate writes "
