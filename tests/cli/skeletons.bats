@@ -1,4 +1,4 @@
-# Tests: control7 build_radiance therm trace compare
+# Tests: control7 build_radiance therm trace
 # Also requires: CMakeLists.txt (the version in its project() line)
 #
 # The shared behaviour of the skeleton tools until their issues land (3, 4, 5, 6):
@@ -80,14 +80,9 @@ check_not_implemented() {
 @test "trace rejects an unknown option with exit 2" { check_unknown_option trace; }
 @test "trace says not implemented yet and writes nothing" { check_not_implemented trace; }
 
-@test "compare --help prints usage and points to compare(1)" { check_help compare; }
-@test "compare --version prints the project version" { check_version compare; }
-@test "compare rejects an unknown option with exit 2" { check_unknown_option compare; }
-@test "compare says not implemented yet and writes nothing" { check_not_implemented compare; }
-
 @test "every skeleton tool has its section-1 man page" {
     local tool
-    for tool in control7 build_radiance therm trace compare; do
+    for tool in control7 build_radiance therm trace; do
         [ -f "$SIGCHAIN_SOURCE_DIR/man/$tool.1.scd" ] || fail "no man/$tool.1.scd"
     done
 }
