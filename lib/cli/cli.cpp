@@ -71,7 +71,7 @@ void Cli::print_help() const {
     std::cout << "Usage: " << m_info.name << ' ' << m_info.usage << "\n"
               << m_info.purpose << "\n\n";
     if (!m_positional_help.empty()) std::cout << "Arguments:\n" << m_positional_help << '\n';
-    std::cout << m_options << "\nExit status: 0 ok, 1 bad data or I/O error, 2 bad usage.\n"
+    std::cout << m_options << "\nExit status: " << m_info.exit_status << '\n'
               << "See " << m_info.name << "(1).\n";
 }
 

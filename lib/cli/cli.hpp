@@ -53,6 +53,8 @@ struct ToolInfo {
     std::string name;     // binary name
     std::string purpose;  // one line, for --help
     std::string usage;    // e.g. "[OPTIONS] ADV GDB"
+    // The exit-status line of --help; compare follows cmp/diff instead.
+    std::string exit_status = "0 ok, 1 bad data or I/O error, 2 bad usage.";
 };
 
 class Cli {

@@ -29,9 +29,12 @@ CubeFormat cube_format_of(const std::string& path) {
 Image read_image(const std::string& path) {
     detail::require_readable(path);
     const std::string ext = detail::extension_of(path);
-    // PNG and JPEG through OpenImageIO; TIFF through GDAL first (GeoTIFF band metadata),
-    // then OpenImageIO for TIFF layouts GDAL declines; everything else through GDAL.
-    if (ext == "png" || ext == "jpg" || ext == "jpeg") return detail::read_oiio(path);
+    // PNG, JPEG and Netpbm (plain and raw PGM/PPM; GDAL reads only raw) through
+    // OpenImageIO; TIFF through GDAL first (GeoTIFF band metadata), then OpenImageIO
+    // for TIFF layouts GDAL declines; everything else through GDAL.
+    if (ext == "png" || ext == "jpg" || ext == "jpeg" || ext == "pgm" || ext == "ppm" ||
+        ext == "pnm")
+        return detail::read_oiio(path);
     if (ext == "tif" || ext == "tiff") {
         try {
             return detail::read_gdal(path);

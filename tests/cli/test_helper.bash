@@ -16,7 +16,8 @@ setup() {
     cd "$BATS_TEST_TMPDIR" || return 1
 }
 
-# assert_golden ACTUAL_FILE GOLDEN_FILE: text comparison with diff -u;
+# assert_golden ACTUAL_FILE GOLDEN_FILE: text comparison with diff -u, images with
+# compare --pixelwise and a tolerance (GOLDEN_MAX_DIFF);
 # UPDATE_GOLDEN=1 rewrites the golden file instead.
 assert_golden() {
     local actual="$1" golden="$2"
@@ -25,7 +26,14 @@ assert_golden() {
         cp "$actual" "$golden"
         return 0
     fi
-    run diff -u "$golden" "$actual"
+    case "$golden" in
+        *.png | *.tif | *.tiff | *.pgm | *.ppm | *.img)
+            # Images: never byte for byte; our own compare with an explicit tolerance
+            # (largest allowed pixel difference, GOLDEN_MAX_DIFF, default 0).
+            run compare --pixelwise --fail-max "${GOLDEN_MAX_DIFF:-0}" "$actual" "$golden"
+            ;;
+        *) run diff -u "$golden" "$actual" ;;
+    esac
     assert_success
 }
 

@@ -43,9 +43,9 @@ int main(int argc, char** argv) {
     cli::Cli tool({"compare",
                    "Compare a synthetic image with a reference image: control-point values and\n"
                    "ranks, RMS, bias and rank-order correlation per band, image statistics and\n"
-                   "histograms; or, with --pixelwise, co-registered images pixel by pixel.\n"
-                   "Exit status: 0 within the thresholds, 1 outside, 2 trouble.",
-                   "[OPTIONS] SYNTHETIC REFERENCE CPT | --pixelwise IMAGE1 IMAGE2"});
+                   "histograms; or, with --pixelwise, co-registered images pixel by pixel.",
+                   "[OPTIONS] SYNTHETIC REFERENCE CPT | --pixelwise IMAGE1 IMAGE2",
+                   "0 within the thresholds, 1 outside, 2 trouble (bad files or usage)."});
     tool.add_positional("input", -1, "synthetic image, reference image, control points (.cpt)");
     tool.add_options()("bands", cli::po::value<std::string>()->value_name("LIST"),
                        "reference band per synthetic band, e.g. 3,2,1")(
