@@ -1,5 +1,6 @@
 // .shd sun/shadow history (man shd(5)): reader and writer.
 #include "io/shd.hpp"
+#include "io/header_lines.hpp"
 #include "io/tmp.hpp"
 
 #include <cmath>
@@ -17,23 +18,6 @@ namespace {
 // step, well above the rounding of times written with format_number).
 constexpr double kTimeToleranceHours = 1e-6;
 
-// The magic line: "# sigchain-shd 1" or "# sigchain-shd 1.N".
-void check_magic(const TextInput& in) {
-    std::string_view all = in.text();
-    if (trim(all).empty()) throw DataError(in.at(0), "empty file, expected '# sigchain-shd 1'");
-    std::string_view first = trim(all.substr(0, all.find('\n')));
-    constexpr std::string_view prefix = "# sigchain-shd ";
-    if (first.substr(0, prefix.size()) != prefix)
-        throw DataError(in.at(1), "expected '# sigchain-shd 1' on the first line, found " +
-                                      sigchain::quoted(first));
-    std::string_view version = first.substr(prefix.size());
-    bool minor_ok = version.size() > 2 && version.substr(0, 2) == "1." &&
-                    version.find_first_not_of("0123456789", 2) == std::string_view::npos;
-    if (version != "1" && !minor_ok)
-        throw DataError(in.at(1), "expected .shd version 1 (this reader knows 1), found version " +
-                                      sigchain::quoted(version));
-}
-
 struct Header {
     std::map<std::string, std::pair<std::string, SourceLocation>, std::less<>> values;
 };
@@ -45,8 +29,8 @@ Header read_header(LineCursor& c) {
         const Line& line = c.peek("a header line");
         if (line.text.substr(0, 6) == "FACET " || line.text == "FACET") break;
         c.next("a header line");
-        auto eq = line.text.find('=');
-        std::string_view key = eq == std::string_view::npos ? "" : trim(line.text.substr(0, eq));
+        auto kv = split_key_value(line.text, c.where(line));
+        std::string_view key = kv ? kv->key : std::string_view();
         if (key != "scene_time_hours" && key != "steps" && key != "step_hours" && key != "facets")
             throw DataError(c.where(line),
                             "expected a header key (scene_time_hours, steps, "
@@ -56,8 +40,7 @@ Header read_header(LineCursor& c) {
         if (it != h.values.end())
             throw DataError(c.where(line), "repeated key " + std::string(key) + " (first at line " +
                                                std::to_string(it->second.second.line) + ")");
-        h.values.emplace(std::string(key),
-                         std::pair{std::string(trim(line.text.substr(eq + 1))), c.where(line)});
+        h.values.emplace(std::string(key), std::pair{std::string(kv->value), c.where(line)});
     }
     return h;
 }
@@ -141,7 +124,7 @@ void read_row(LineCursor& c, const Shd& shd, long step, ShdFacet& facet) {
 }  // namespace
 
 Shd parse_shd(const TextInput& in) {
-    check_magic(in);
+    require_magic_line(in, "shd", 1);
     Shd shd;
     LineCursor c(in);
     Header h = read_header(c);

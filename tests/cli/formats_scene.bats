@@ -418,7 +418,7 @@ check_golden() {
 }
 
 @test "shd: bad: no magic" {
-    check_bad shd no_magic.shd "1" "expected '# sigchain-shd 1' on the first line, found 'scene_time_hours = 38'"
+    check_bad shd no_magic.shd "1" "expected '# sigchain-shd 1' as the first line, found 'scene_time_hours = 38'"
 }
 
 @test "shd: bad: not number" {
@@ -462,7 +462,7 @@ check_golden() {
 }
 
 @test "shd: bad: version 2" {
-    check_bad shd version_2.shd "1" "expected .shd version 1 (this reader knows 1), found version '2'"
+    check_bad shd version_2.shd "1" "expected sigchain-shd version 1 or 1.N, found '2'"
 }
 
 @test "shd: bad: zero points" {

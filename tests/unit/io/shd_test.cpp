@@ -121,12 +121,12 @@ TEST(Shd, EmptyBinaryAndMagic) {
     EXPECT_EQ(error_of(std::string("# sigchain-shd 1\n\0", 18)),
               "t.shd:2: binary data (NUL byte); expected a text file");
     EXPECT_EQ(error_of(edited("# sigchain-shd 1\n", "")),
-              "t.shd:1: expected '# sigchain-shd 1' on the first line, found "
+              "t.shd:1: expected '# sigchain-shd 1' as the first line, found "
               "'scene_time_hours = 38'");
     EXPECT_EQ(error_of(edited("# sigchain-shd 1", "# sigchain-shd 2")),
-              "t.shd:1: expected .shd version 1 (this reader knows 1), found version '2'");
+              "t.shd:1: expected sigchain-shd version 1 or 1.N, found '2'");
     EXPECT_EQ(error_of(edited("# sigchain-shd 1", "# sigchain-shd 10")),
-              "t.shd:1: expected .shd version 1 (this reader knows 1), found version '10'");
+              "t.shd:1: expected sigchain-shd version 1 or 1.N, found '10'");
 }
 
 TEST(Shd, HeaderErrors) {
