@@ -17,7 +17,9 @@ std::string fixed(double v, int decimals) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
     std::string s = buf;
-    return s == "-0.0000" || s == "-0.00" || s == "-0" ? s.substr(1) : s;
+    // A value that rounds to zero prints as 0, never -0 (at any number of decimals).
+    bool zero = s.find_first_not_of("-0.") == std::string::npos;
+    return zero && s.front() == '-' ? s.substr(1) : s;
 }
 
 int decimals_of(double increment) {

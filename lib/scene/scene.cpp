@@ -22,10 +22,6 @@ void on_embree_error(void* user, RTCError code, const char* message) {
                      (message ? message : ""));
 }
 
-double distance(const io::Vec3& a, const io::Vec3& b) {
-    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-}
-
 }  // namespace
 
 Affine identity_affine() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; }
@@ -42,7 +38,6 @@ struct Scene::Impl {
     Bounds bounds{{1, 1, 1}, {-1, -1, -1}};
     std::size_t placed_triangles = 0;
     std::size_t placed = 0;
-    bool committed = false;
 
     Impl() {
         device = rtcNewDevice("verbose=0");
@@ -70,17 +65,12 @@ Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 
-// Triangulates facet vertices (3 or 4; quads split along the 0-2 diagonal).
-static void triangulate(const io::Gdb& gdb, const io::GdbObject& obj, const io::GdbPart& part,
-                        const io::GdbFacet& f, std::vector<unsigned>& indices,
+// Triangulates facet vertices (3 or 4; quads split along the 0-2 diagonal). Degenerate
+// facets are meshed as they are: Embree never reports a hit on a zero-area triangle;
+// io::gdb_problems() is what names them for the user.
+static void triangulate(const io::GdbFacet& f, std::vector<unsigned>& indices,
                         std::vector<float>& verts, double scale,
                         std::vector<std::uint32_t>& tri_to_facet, std::uint32_t facet) {
-    for (std::size_t i = 0; i < f.vertices.size(); ++i)
-        for (std::size_t j = i + 1; j < f.vertices.size(); ++j)
-            if (f.vertices.size() == 3 && distance(f.vertices[i], f.vertices[j]) == 0)
-                throw DataError({gdb.file, f.line}, "degenerate facet '" + f.name + "' (" + f.id +
-                                                        ") in object '" + obj.name + "' part '" +
-                                                        part.name + "': repeated vertex");
     auto base = static_cast<unsigned>(verts.size() / 3);
     for (const auto& v : f.vertices)
         for (double c : v) verts.push_back(static_cast<float>(c * scale));
@@ -100,7 +90,7 @@ std::size_t Scene::add_mesh(const io::Gdb& gdb, double scale) {
     for (const auto& obj : gdb.objects)
         for (const auto& part : obj.parts)
             for (const auto& f : part.facets)
-                triangulate(gdb, obj, part, f, idx, verts, scale, tri_to_facet, facet++);
+                triangulate(f, idx, verts, scale, tri_to_facet, facet++);
     RTCScene mesh = rtcNewScene(m_impl->device);
     m_impl->meshes.push_back(mesh);
     std::size_t ntri = idx.size() / 3;
@@ -158,7 +148,6 @@ void Scene::place(std::size_t mesh, const Affine& t) {
 void Scene::commit() {
     rtcCommitScene(m_impl->top);
     m_impl->check();
-    m_impl->committed = true;
 }
 
 std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d) const {

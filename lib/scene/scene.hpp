@@ -43,8 +43,8 @@ public:
     Scene& operator=(Scene&&) noexcept;
 
     // Adds a mesh (its facets split into triangles) once; returns its index for
-    // place(). Throws DataError naming the file, object/part/facet and line for a
-    // facet that cannot be meshed (fewer than 3 distinct vertices).
+    // place(). Degenerate facets are kept (they are never hit); io::gdb_problems()
+    // reports them.
     std::size_t add_mesh(const io::Gdb& gdb, double scale_to_scene_units = 1.0);
     // Places a copy of mesh `mesh` with `transform` (an Embree instance).
     void place(std::size_t mesh, const Affine& transform);

@@ -93,6 +93,10 @@ TEST(ViewAngle, SndLineRoundsOutward) {
     EXPECT_EQ(geom::snd_view_angle_line(-4.0447, 4.0447, 0.5), "-4.5 4.5 0.5");
     EXPECT_EQ(geom::snd_view_angle_line(45.0358, 47.7564, 0.2), "45.0 47.8 0.2");
     EXPECT_EQ(geom::snd_view_angle_line(-77, 78, 1), "-77.0 78.0 1.0");
+    // A minimum below zero rounds outward to a whole step; float noise within the
+    // rounding tolerance (1e-9 steps) counts as zero, printed without a sign.
+    EXPECT_EQ(geom::snd_view_angle_line(-0.001, 0.3, 0.1), "-0.1 0.3 0.1");
+    EXPECT_EQ(geom::snd_view_angle_line(-1e-12, 0.3, 0.1), "0.0 0.3 0.1");
 }
 
 // Nadir view from 1000 m over the centre of the square: the bounding-box corners
