@@ -6,19 +6,6 @@
 bats_require_minimum_version 1.5.0
 load test_helper
 
-# check_bad FORMAT NAME LINE MESSAGE: sigchain-check rejects $BAD/FORMAT/NAME with exit 1
-# and a message "NAME:LINE: MESSAGE..." (LINE empty: the whole file).
-check_bad() {
-    run -1 --separate-stderr sigchain-check "$BAD/$1/$2"
-    assert_output ''
-    local want="$2${3:+:$3}: $4"
-    [[ "$stderr" == *"$want"* ]] || {
-        echo "expected stderr to contain: $want"
-        echo "stderr: $stderr"
-        return 1
-    }
-}
-
 # --- .cdk: good input -------------------------------------------------------------------
 
 @test "cdk: the seed deck (fig. 4.31) is valid" {

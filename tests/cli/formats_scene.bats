@@ -7,19 +7,6 @@
 bats_require_minimum_version 1.5.0
 load test_helper
 
-# check_bad FORMAT NAME LINE MESSAGE: sigchain-check rejects $BAD/FORMAT/NAME with exit 1,
-# nothing on stdout, and "NAME:LINE: MESSAGE" on stderr (LINE empty: the whole file).
-check_bad() {
-    run -1 --separate-stderr sigchain-check "$BAD/$1/$2"
-    assert_output ''
-    local want="$2${3:+:$3}: $4"
-    [[ "$stderr" == *"$want"* ]] || {
-        echo "expected stderr to contain: $want"
-        echo "stderr: $stderr"
-        return 1
-    }
-}
-
 # check_golden FORMAT: --rewrite of scene_messy.FORMAT matches its canonical golden, which
 # re-checks and rewrites to itself.
 check_golden() {

@@ -42,3 +42,34 @@ assert_no_temp_files() {
     run find "${1:-.}" -name '*.tmp.*'
     assert_output ''
 }
+
+# check_bad FORMAT FILE LINE MESSAGE: sigchain-check rejects $BAD/FORMAT/FILE with exit 1,
+# nothing on stdout, and "sigchain-check: $BAD/FORMAT/FILE:LINE: MESSAGE..." on stderr
+# (LINE empty for an error about the whole file).
+check_bad() {
+    local file="$BAD/$1/$2"
+    local want="sigchain-check: $file${3:+:$3}: $4"
+    run -1 --separate-stderr sigchain-check "$file"
+    assert_output ''
+    [[ "$stderr" == "$want"* ]] || { echo "stderr: $stderr"; echo "wanted: $want..."; return 1; }
+}
+
+# check_good FILE SUMMARY: sigchain-check accepts FILE with exit 0, printing its summary.
+check_good() {
+    run -0 --separate-stderr sigchain-check "$1"
+    assert_output "$1: ok: $2"
+    assert_equal "$stderr" ''
+}
+
+# check_rewrite_golden FILE: --rewrite gives $GOLDEN/sigchain-check/BASENAME, which itself
+# re-checks and rewrites to itself; nothing half-written is left.
+check_rewrite_golden() {
+    local name
+    name=$(basename "$1")
+    run -0 --separate-stderr sigchain-check --rewrite -o "out.$name" "$1"
+    assert_golden "out.$name" "$GOLDEN/sigchain-check/$name"
+    run -0 sigchain-check -q "$GOLDEN/sigchain-check/$name"
+    run -0 sigchain-check --rewrite -o "again.$name" "$GOLDEN/sigchain-check/$name"
+    run -0 cmp "again.$name" "$GOLDEN/sigchain-check/$name"
+    assert_no_temp_files .
+}
