@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -14,12 +16,7 @@ const std::string kLegacy = "1800 1800 465\n1700 1700 1600\n90 -91 0.0\n40\n512 
 
 // The message of the DataError that parsing `text` (as "t.adv") throws.
 std::string error_of(const std::string& text) {
-    try {
-        parse_adv(TextInput::from_string(text, "t.adv"));
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse_adv(TextInput::from_string(text, "t.adv")); });
 }
 
 std::string written(const Adv& adv) {

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -46,12 +48,7 @@ std::string seed_with(int line, int column, const std::string& text) {
 Cdk parse(const std::string& text) { return parse_cdk(TextInput::from_string(text, "t.cdk")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse(text); });
 }
 
 std::string written(const Cdk& cdk) {

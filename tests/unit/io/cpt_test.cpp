@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -15,12 +17,7 @@ const std::string kMagic = "# sigchain-cpt 1\n";
 Cpt parse(const std::string& text) { return parse_cpt(TextInput::from_string(text, "t.cpt")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse(text); });
 }
 
 std::string written(const Cpt& cpt) {

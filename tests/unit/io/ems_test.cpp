@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -53,12 +55,7 @@ std::string edited(int line, const std::string& text, std::vector<std::string> b
 Ems parsed(const std::string& text) { return parse_ems(TextInput::from_string(text, "t.ems")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parsed(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parsed(text); });
 }
 
 std::string written(const Ems& ems) {

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -38,12 +40,7 @@ std::string edited(int line, const std::string& text, std::vector<std::string> b
 Ext parsed(const std::string& text) { return parse_ext(TextInput::from_string(text, "t.ext")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parsed(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parsed(text); });
 }
 
 std::string written(const Ext& ext) {

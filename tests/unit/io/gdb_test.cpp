@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -40,12 +42,7 @@ std::string edited(const std::string& from, const std::string& to, std::string t
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse_gdb(TextInput::from_string(text, "t.gdb"));
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse_gdb(TextInput::from_string(text, "t.gdb")); });
 }
 
 Gdb parsed(const std::string& text) { return parse_gdb(TextInput::from_string(text, "t.gdb")); }

@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -40,12 +42,7 @@ std::string second(const std::string& name = "asphalt", const std::string& id = 
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse_mat(TextInput::from_string(text, "t.mat"));
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse_mat(TextInput::from_string(text, "t.mat")); });
 }
 
 std::string written(const Mat& mat) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -27,12 +29,7 @@ std::string edited(const std::string& from, const std::string& to, std::string t
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse_odb(TextInput::from_string(text, "t.odb"));
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse_odb(TextInput::from_string(text, "t.odb")); });
 }
 
 Odb parsed(const std::string& text, const std::string& name = "t.odb") {

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <vector>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -72,12 +74,7 @@ std::string edited(int line, const std::string& text, std::vector<std::string> b
 
 // The message of the DataError that parsing `text` (as "t.rad") throws.
 std::string error_of(const std::string& text) {
-    try {
-        parse_rad(TextInput::from_string(text, "t.rad"));
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse_rad(TextInput::from_string(text, "t.rad")); });
 }
 
 std::string written(const Rad& rad) {

@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -13,12 +15,7 @@ namespace {
 Sen parse(const std::string& text) { return parse_sen(TextInput::from_string(text, "t.sen")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse(text); });
 }
 
 std::string written(const Sen& sen) {

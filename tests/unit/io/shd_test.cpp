@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -33,12 +35,7 @@ std::string edited(const std::string& from, const std::string& to, std::string t
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse_shd(TextInput::from_string(text, "t.shd"));
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse_shd(TextInput::from_string(text, "t.shd")); });
 }
 
 Shd parsed(const std::string& text) { return parse_shd(TextInput::from_string(text, "t.shd")); }

@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -16,12 +18,7 @@ const std::string kTail = "-77 78 1\n9 30 95\n19\n5\n";
 Snd parse(const std::string& text) { return parse_snd(TextInput::from_string(text, "t.snd")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse(text); });
 }
 
 std::string written(const Snd& snd) {

@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -15,12 +17,7 @@ const std::string kMagic = "# sigchain-tmp 1\n";
 Tmp parse(const std::string& text) { return parse_tmp(TextInput::from_string(text, "t.tmp")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse(text); });
 }
 
 std::string written(const Tmp& tmp) {

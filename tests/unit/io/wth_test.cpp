@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "data_error.hpp"
+
 using namespace sigchain;
 using namespace sigchain::io;
 
@@ -17,12 +19,7 @@ const std::string kSeedPath = SIGCHAIN_TEST_DATA "/seed/weather_30_Sep_95.wth";
 Wth parse(const std::string& text) { return parse_wth(TextInput::from_string(text, "t.wth")); }
 
 std::string error_of(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const DataError& e) {
-        return e.what();
-    }
-    return "no error";
+    return test::data_error_of([&] { parse(text); });
 }
 
 std::string written(const Wth& w) {
