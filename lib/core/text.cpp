@@ -2,6 +2,7 @@
 #include "core/text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -198,6 +199,20 @@ double parse_in_range(std::string_view token, const SourceLocation& where, std::
         throw DataError(where, "expected " + std::string(what) + " in [" + format_number(lo) +
                                    ", " + format_number(hi) + "], found " + quoted(token));
     return v;
+}
+
+std::string ascii_lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+std::string file_extension(std::string_view path) {
+    auto slash = path.find_last_of('/');
+    auto dot = path.find_last_of('.');
+    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash))
+        return {};
+    return ascii_lower(path.substr(dot + 1));
 }
 
 std::string format_number(double value) {

@@ -93,6 +93,12 @@ double parse_in_range(std::string_view token, const SourceLocation& where, std::
 // Quote a found token for messages, shortened and with control characters escaped.
 std::string quoted(std::string_view token);
 
+// ASCII lower case (file extensions, keywords, unit names).
+std::string ascii_lower(std::string_view text);
+// The extension of a file name in lower case, without the dot ("a/b.TIF" -> "tif"; ""
+// when there is none; a dot in a directory name does not count).
+std::string file_extension(std::string_view path);
+
 // Shortest decimal text that round-trips to the same double (C locale).
 std::string format_number(double value);
 

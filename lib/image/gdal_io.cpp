@@ -36,11 +36,6 @@ std::string gdal_message() {
     return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
 }
 
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // ENVI lists are "{a, b, c}"; a plain number is a one-element list.
 std::vector<double> parse_number_list(const std::string& text) {
     std::string s = text;
@@ -58,7 +53,7 @@ std::vector<double> parse_number_list(const std::string& text) {
 // ("Unknown" is common in ENVI headers) are inferred from the values: all at least 100
 // means nanometres, otherwise micrometres (visible to thermal infrared: 0.3 to 15 um).
 double um_per_unit(const std::string& units, const std::vector<double>& values) {
-    const std::string u = lower(units);
+    const std::string u = ascii_lower(units);
     if (u == "micrometers" || u == "micrometer" || u == "microns" || u == "micron" || u == "um" ||
         u == "µm")
         return 1.0;
@@ -71,7 +66,7 @@ double um_per_unit(const std::string& units, const std::vector<double>& values) 
 
 // The ENVI data file for a .hdr path (GDAL opens the data file, not the header).
 std::string envi_data_file(const std::string& path) {
-    if (detail::extension_of(path) != "hdr") return path;
+    if (file_extension(path) != "hdr") return path;
     std::filesystem::path stem = std::filesystem::path(path).replace_extension();
     for (const char* ext : {".img", ".bsq", ".dat", ".IMG", ".BSQ", ".DAT", ""}) {
         std::filesystem::path candidate = stem;
@@ -208,7 +203,7 @@ void write_cube(const std::string& path, const Image& cube, CubeFormat format) {
     gdal_init();
     check_cube(path, cube);
     std::string target = path;
-    if (detail::extension_of(path) == "hdr")
+    if (file_extension(path) == "hdr")
         target = std::filesystem::path(path).replace_extension(".img").string();
     const char* driver_name = format == CubeFormat::GeoTiff ? "GTiff" : "ENVI";
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
@@ -250,7 +245,7 @@ void write_cube(const std::string& path, const Image& cube, CubeFormat format) {
     for (const std::string& f : temps.files) {
         std::string final_name = target;
         if (f != temp) {
-            if (detail::extension_of(f) != "hdr") {  // an unexpected side file: not kept
+            if (file_extension(f) != "hdr") {  // an unexpected side file: not kept
                 std::remove(f.c_str());
                 continue;
             }

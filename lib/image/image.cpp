@@ -20,7 +20,7 @@ Image::Image(long rows_, long columns_, int channels_, float fill)
       data(static_cast<std::size_t>(channels_) * rows_ * columns_, fill) {}
 
 CubeFormat cube_format_of(const std::string& path) {
-    const std::string ext = detail::extension_of(path);
+    const std::string ext = file_extension(path);
     if (ext == "tif" || ext == "tiff") return CubeFormat::GeoTiff;
     if (ext == "img" || ext == "hdr" || ext == "bsq" || ext == "dat") return CubeFormat::Envi;
     throw UsageError(path + ": unknown cube format (use .img or .hdr for ENVI, .tif for GeoTIFF)");
@@ -28,7 +28,7 @@ CubeFormat cube_format_of(const std::string& path) {
 
 Image read_image(const std::string& path) {
     detail::require_readable(path);
-    const std::string ext = detail::extension_of(path);
+    const std::string ext = file_extension(path);
     // PNG, JPEG and Netpbm (plain and raw PGM/PPM; GDAL reads only raw) through
     // OpenImageIO; TIFF through GDAL first (GeoTIFF band metadata), then OpenImageIO
     // for TIFF layouts GDAL declines; everything else through GDAL.
@@ -46,14 +46,6 @@ Image read_image(const std::string& path) {
 }
 
 namespace detail {
-
-std::string extension_of(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    if (!ext.empty()) ext.erase(0, 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 std::string temp_name(const std::string& path) {
     return path + ".tmp." + std::to_string(::getpid());

@@ -3,12 +3,12 @@
 
 #include <string>
 
+#include "core/text.hpp"
 #include "image/image.hpp"
 
 namespace sigchain::image::detail {
 
 // The lower-case extension of `path` without the dot ("" if none).
-std::string extension_of(const std::string& path);
 // The temporary name used for atomic output: FILE.tmp.PID.
 std::string temp_name(const std::string& path);
 // Throws IoError "PATH: cannot open: No such file or directory" when `path` is absent.

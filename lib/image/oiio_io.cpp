@@ -55,10 +55,10 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
         spec.channelnames[c] = image.channel_names[c];
     // Counts in an alpha position (2- and 4-channel PNG) are data: never premultiplied.
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (image.channels > 4 && detail::extension_of(path) == "png")
+    if (image.channels > 4 && file_extension(path) == "png")
         throw DataError({path, 0}, "PNG holds at most 4 channels; use a TIFF for " +
                                        std::to_string(image.channels) + " bands");
-    const std::string ext = detail::extension_of(path);
+    const std::string ext = file_extension(path);
     if (ext == "pgm" || ext == "ppm" || ext == "pnm") {
         if (image.channels != 1 && image.channels != 3)
             throw DataError({path, 0},

@@ -8,11 +8,7 @@
 namespace sigchain::io {
 
 std::string format_of_path(const std::string& path) {
-    auto slash = path.find_last_of('/');
-    auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-    std::string ext = path.substr(dot + 1);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    std::string ext = file_extension(path);
     // DIRSIG names one radiance file per band "NAME.rad1", "NAME.rad2", ...
     if (ext.size() > 3 && ext.compare(0, 3, "rad") == 0 &&
         ext.find_first_not_of("0123456789", 3) == std::string::npos)

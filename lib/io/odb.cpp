@@ -26,12 +26,6 @@ struct Value {
 };
 using Keys = std::map<std::string, Value, std::less<>>;
 
-std::string lower(std::string_view s) {
-    std::string out(s);
-    for (char& ch : out) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    return out;
-}
-
 // True for "KEYWORD {"; "KEYWORD" without its brace is an error.
 bool is_open(const Line& line, std::string_view keyword, const LineCursor& c) {
     auto f = split_fields(line.text);
@@ -149,7 +143,7 @@ void read_key(const Line& line, const LineCursor& c, std::string_view close_what
 }
 
 OdbUnits units_of(const Value& v) {
-    std::string u = lower(v.text);
+    std::string u = ascii_lower(v.text);
     if (u == "m" || u == "meters" || u == "metres") return OdbUnits::Meters;
     if (u == "ft" || u == "feet") return OdbUnits::Feet;
     throw DataError(v.where, "expected UNITS m or ft, found " + sigchain::quoted(v.text));

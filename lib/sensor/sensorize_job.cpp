@@ -15,12 +15,6 @@
 namespace sigchain::sensor {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
 std::string stem_of(const std::string& path) {
     return path == "-" ? std::string("stdin") : std::filesystem::path(path).stem().string();
 }
@@ -93,9 +87,9 @@ void check_job(const SensorizeJob& job) {
                              "one .sen per band there)");
         return;
     }
-    const std::string ext = lower_extension(job.output_path);
-    const bool tiff = ext == ".tif" || ext == ".tiff";
-    const bool counts_ok = tiff || ext == ".png" || ext == ".pgm" || ext == ".ppm";
+    const std::string ext = file_extension(job.output_path);
+    const bool tiff = ext == "tif" || ext == "tiff";
+    const bool counts_ok = tiff || ext == "png" || ext == "pgm" || ext == "ppm";
     if (job.float_output ? !tiff : !counts_ok)
         throw UsageError("-o " + job.output_path + ": the output must be a " +
                          (job.float_output ? ".tif" : ".tif, .png, .pgm or .ppm") + " file");

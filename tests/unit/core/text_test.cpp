@@ -71,3 +71,11 @@ TEST(Text, Monotonic) {
     EXPECT_THROW(require_monotonic({1, 2, 2}, {}, "grid"), DataError);
     EXPECT_THROW(require_monotonic({1, 3, 2}, {}, "grid"), DataError);
 }
+
+TEST(Text, FileExtension) {
+    EXPECT_EQ(file_extension("scene.GDB"), "gdb");
+    EXPECT_EQ(file_extension("dir.v2/scene"), "");
+    EXPECT_EQ(file_extension("a/b.c/d.TIFF"), "tiff");
+    EXPECT_EQ(file_extension("noext"), "");
+    EXPECT_EQ(ascii_lower("Micrometers"), "micrometers");
+}
