@@ -88,3 +88,11 @@ GEOM="$SIGCHAIN_SOURCE_DIR/tests/data/geom"
     run -0 --separate-stderr sh -c "find_min_max_view_angle --snd - '$GEOM/plane_100m.gdb' < '$GEOM/oblique.adv'"
     assert_output --regexp '^45\.0 47\.8 0\.2'
 }
+
+@test "--grid sets the interior rays; the border alone fixes a nadir view's range" {
+    run -0 --separate-stderr find_min_max_view_angle --grid 2 "$GEOM/nadir.adv" "$GEOM/plane_100m.gdb"
+    # 4 corners + 4 x 100 border pixels + 2 x 2 interior rays all hit the square.
+    assert_output --regexp 'field-of-view +-0\.7292 +0\.7292 +0\.10 +408'
+    run -2 --separate-stderr find_min_max_view_angle --grid 0 "$GEOM/nadir.adv" "$GEOM/plane_100m.gdb"
+    [[ "$stderr" == *"--grid must be at least 1"* ]]
+}
