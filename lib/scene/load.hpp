@@ -1,7 +1,9 @@
 // Loading a scene file (.gdb, or an .odb assembly of .gdb objects) into a Scene.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -13,5 +15,33 @@ namespace sigchain::scene {
 // is meshed once however many objects and instances use it (Embree instances).
 // OBJ and DEM objects are not read yet (NotImplemented; trace's issue adds them).
 Scene load_scene_file(const std::string& path, double scene_meters_per_unit);
+
+// The geodetic point at the scene origin (0, 0, 0): terrain rasters and other
+// georeferenced objects are placed in the local east-north-up frame about it
+// (GeographicLib LocalCartesian on WGS84). trace takes it from the .snd.
+struct GeoOrigin {
+    double latitude_deg = 0;        // north positive
+    double longitude_east_deg = 0;  // east positive
+    double height_m = 0;            // above the ellipsoid
+};
+
+struct LoadOptions {
+    double scene_meters_per_unit = 1;
+    std::optional<GeoOrigin> origin;  // required by DEM objects
+    // Degenerate facets (zero area, repeated vertices) are an error naming file,
+    // line, object, part and facet; with this set they are skipped with a warning.
+    bool allow_degenerate = false;
+};
+
+struct LoadReport {
+    std::vector<std::string> warnings;  // "FILE:LINE: ..." each
+    std::size_t meshes = 0, placements = 0, facets = 0, triangles = 0;  // placed counts
+};
+
+// Loads a .gdb, an .odb (GDB, OBJ with MATERIAL_MAP, DEM with MATERIAL_ID or
+// LANDUSE_FILENAME/LANDUSE_MAP; see odb(5)) or a lone OBJ. Throws DataError/IoError
+// naming the file and line.
+Scene load_scene(const std::string& path, const LoadOptions& options,
+                 LoadReport* report = nullptr);
 
 }  // namespace sigchain::scene

@@ -115,7 +115,7 @@ std::size_t Scene::add_mesh(const io::Gdb& gdb, double scale) {
     return m_impl->meshes.size() - 1;
 }
 
-void Scene::place(std::size_t mesh, const Affine& t) {
+void Scene::place(std::size_t mesh, const Affine& t, std::string /*key_prefix*/) {
     if (mesh >= m_impl->meshes.size()) throw std::out_of_range("Scene::place: no such mesh");
     RTCGeometry inst = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(inst, m_impl->meshes[mesh]);

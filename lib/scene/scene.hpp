@@ -26,8 +26,42 @@ Affine identity_affine();
 struct Hit {
     double distance = 0;       // along the unit ray direction, scene units
     std::uint32_t object = 0;  // index of the placed object (instance order)
-    std::uint32_t facet = 0;   // facet index within its .gdb (file order over parts)
+    std::uint32_t facet = 0;   // facet index within its mesh (.gdb: file order over parts)
+    Vec3 normal{};             // unit geometric normal, scene frame, as the facet is
+                               // wound (not flipped toward the ray)
 };
+
+// What a facet is made of and how to name it in messages and in .tmp/.shd keys.
+struct FacetAttributes {
+    long material_id = 0;
+    double thickness_cm = -1;   // -1: the material's THICKNESS
+    double temperature_c = -1;  // -1: from therm (a .tmp)
+    std::uint32_t texture_curve = 0;  // .ems curve (land use / texture map), 0 default
+};
+
+// Where a facet came from, for messages ("FILE:LINE: object 'N' (ID), part 'N'
+// (ID), facet 'N' (ID): ...") and its key ("1-1-1"; "2.3/1-1-1" in an .odb: object
+// 2 of the .odb, its third instance; see tmp(5)).
+struct FacetOrigin {
+    std::string file;
+    int line = 0;
+    std::string description;  // "object 'house' (1-0-0), part 'roof' (1-1-0), facet 'n' (1-1-1)"
+    std::string id;           // the .gdb FACE id, "1-1-1" (OBJ/DEM: generated, see odb(5))
+};
+
+// A triangle mesh from any source (.gdb, OBJ, DEM): vertices in the mesh's own
+// units, triangles as vertex indices, each triangle's facet, and per facet its
+// attributes and origin.
+struct MeshData {
+    std::vector<float> vertices;             // x y z ...
+    std::vector<std::uint32_t> triangles;    // i j k ...
+    std::vector<std::uint32_t> triangle_facet;
+    std::vector<FacetAttributes> facets;
+    std::vector<FacetOrigin> origins;        // parallel to facets
+};
+
+// Triangulates a .gdb (quads split along the 0-2 diagonal).
+MeshData mesh_from_gdb(const io::Gdb& gdb);
 
 struct Bounds {
     Vec3 lower{};
@@ -46,13 +80,31 @@ public:
     // place(). Degenerate facets are kept (they are never hit); io::gdb_problems()
     // reports them.
     std::size_t add_mesh(const io::Gdb& gdb, double scale_to_scene_units = 1.0);
+    std::size_t add_mesh(MeshData mesh, double scale_to_scene_units = 1.0);
     // Places a copy of mesh `mesh` with `transform` (an Embree instance).
-    void place(std::size_t mesh, const Affine& transform);
+    // `key_prefix` is prepended to facet ids in keys ("2.3/" for .odb object 2,
+    // instance 3; empty for a lone .gdb).
+    void place(std::size_t mesh, const Affine& transform, std::string key_prefix = "");
     // Builds the acceleration structures; call once after adding and placing.
     void commit();
 
     // The nearest hit along origin + t*direction (direction need not be unit), or none.
     std::optional<Hit> intersect(const Vec3& origin, const Vec3& direction) const;
+    // The same between distances tnear and tfar (along the normalised direction).
+    std::optional<Hit> intersect(const Vec3& origin, const Vec3& direction, double tnear,
+                                 double tfar) const;
+    // True if anything lies between tnear and tfar (Embree occlusion query; faster).
+    bool occluded(const Vec3& origin, const Vec3& direction, double tnear, double tfar) const;
+
+    const FacetAttributes& attributes(const Hit& hit) const;  // constant time
+    const FacetOrigin& origin(const Hit& hit) const;
+    std::string facet_key(const Hit& hit) const;  // prefix + id
+    // Every placed facet once: (object, facet) pairs, for validation and .shd.
+    std::size_t placement_count() const;
+    std::size_t mesh_of_placement(std::size_t object) const;
+    std::size_t facet_count(std::size_t mesh) const;
+    const FacetAttributes& attributes(std::size_t mesh, std::uint32_t facet) const;
+    const FacetOrigin& origin(std::size_t mesh, std::uint32_t facet) const;
     // Axis-aligned bounds of everything placed (empty() if nothing was).
     Bounds bounds() const;
     std::size_t triangle_count() const;  // over placed copies

@@ -1,0 +1,101 @@
+// The atmosphere as trace sees it: the .rad tables of every band merged on one
+// spectral grid (seed 3.4 radiometry submodel; rad(5)). Sun direction and ground
+// irradiance, path terms interpolated in view angle, and the downwelled sky.
+//
+// Frames: scene ENU (x east, y north, z up). Units: irradiance W cm-2 um-1, radiance
+// W cm-2 sr-1 um-1, angles degrees, range km.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "io/rad.hpp"
+#include "radiometry/spectral.hpp"
+
+namespace sigchain::radiometry {
+
+using Vec3 = std::array<double, 3>;
+
+// One cell of the downwelled hemisphere, with its centre direction and its
+// radiance on the render's spectral grid.
+struct SkyCell {
+    double zenith_deg = 0, azimuth_deg = 0;  // centre (azimuth clockwise from north)
+    double zenith_lo_deg = 0, zenith_hi_deg = 0;    // ring edges
+    double azimuth_lo_deg = 0, azimuth_hi_deg = 0;  // cell edges (lo may be < 0)
+    double solid_angle_sr = 0;
+    Vec3 direction{};                // unit, ENU, toward the sky
+    std::vector<double> scattered;   // L_ds per grid sample
+    std::vector<double> emitted;     // L_de per grid sample
+};
+
+class Atmosphere {
+public:
+    // Merges the .rad of each band (files[i] names rads[i] in messages). Requires the
+    // same sun (within 0.01 deg) and the same view-angle grid in every file, and
+    // the same sky grid when they have one. Throws DataError ("FILE: ...") when they
+    // disagree. A .rad without the SIGCHAIN_RAD block (a DIRSIG file) has no sun
+    // direction and no sky: then `sun_zenith_deg`/`sun_azimuth_deg` must be given
+    // (from the .snd date and place) or the sun is taken to be absent, and the sky is
+    // zero (`has_sky()` false; trace warns).
+    static Atmosphere from_rads(const std::vector<io::Rad>& rads,
+                                const std::vector<std::string>& files);
+
+    const SpectralGrid& grid() const;
+
+    // Unit vector toward the sun (ENU) and whether it is above the horizon.
+    Vec3 sun_direction() const;
+    bool sun_up() const;
+    double sun_zenith_deg() const;
+    double sun_azimuth_deg() const;
+    // Es * tau1 per grid sample: solar irradiance on a surface normal to the sun at
+    // the ground, W cm-2 um-1 (0 everywhere when the sun is down).
+    std::span<const double> sun_irradiance_at_ground() const;
+
+    // Path terms for a view angle (deg, signed as in the .rad), linear between the
+    // tabulated view angles, clamped at the ends. Each output span has grid().size().
+    void path(double view_angle_deg, std::span<double> tau2, std::span<double> scattered,
+              std::span<double> emitted) const;
+    double range_km(double view_angle_deg) const;
+    double min_view_angle_deg() const;
+    double max_view_angle_deg() const;
+
+    bool has_sky() const;
+    const std::vector<SkyCell>& sky_cells() const;
+    // Index of the sky cell containing unit direction `dir` (ENU, dir[2] > 0), or -1
+    // for a direction at or below the horizon. Constant time.
+    int sky_cell(const Vec3& dir) const;
+    // Adds weight * (L_ds [+ L_de when `emitted`]) of the cell containing `dir` to
+    // `out` (nothing for directions at or below the horizon, or without a sky).
+    void add_sky_radiance(const Vec3& dir, double weight, std::span<double> out,
+                          bool emitted) const;
+    // Downwelled irradiance on a horizontal surface, sum of L cos(zenith) solid angle
+    // over the cells, per grid sample (scattered, and emitted).
+    std::span<const double> sky_irradiance_horizontal() const;
+    std::span<const double> sky_emitted_irradiance_horizontal() const;
+
+    // Replaces the sun with one at the given position (tests, or a DIRSIG .rad).
+    void set_sun(double zenith_deg, double azimuth_deg);
+
+private:
+    struct Data;
+    std::shared_ptr<const Data> m_data;
+};
+
+// A synthetic .rad for tests and benchmarks: `wavelengths_um` samples, sun at the given
+// position with Es*tau1 = `sun_irradiance_at_ground` (so Es = that, tau1 = 1), a sky of
+// uniform radiance `sky_radiance` on a `zenith_rings` x `azimuth_cells` grid (equal
+// zenith steps; solid angles exact, summing to 2 pi), one view angle per entry of
+// `view_angles_deg` with tau2 = `tau2` and L_us = `path_radiance`, no emission.
+io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith_deg,
+                    double sun_azimuth_deg, double sun_irradiance_at_ground,
+                    double sky_radiance, double tau2, double path_radiance,
+                    const std::vector<double>& view_angles_deg = {-60, 0, 60},
+                    int zenith_rings = 18, int azimuth_cells = 36);
+
+// Unit ENU vector for a zenith (from up) and an azimuth (clockwise from north), deg.
+Vec3 direction_from_angles(double zenith_deg, double azimuth_deg);
+
+}  // namespace sigchain::radiometry

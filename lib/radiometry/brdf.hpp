@@ -1,0 +1,78 @@
+// The angular shape of reflection (scalar; the spectral factor is the material's
+// directional reflectance rho(lambda, theta_o)). DESIGN.md section 4, mat(5)
+// REFLECTANCE MODELS, seed 3.6.5 and 5.2.1-5.2.3.
+//
+// Reflected radiance at a facet, for a viewer in direction wo:
+//     L_o(lambda) = rho(lambda, theta_o) * Int w(wi, wo) L_i(lambda, wi) d(omega_i)
+// with the weight (per steradian)
+//     w(wi, wo) = (1 - s) cos(theta_i) / pi  +  s * lobe(alpha) / m(theta_o)
+// where s is the specularity, alpha the angle between wi and the mirror direction of
+// wo, lobe() a distribution over directions about the mirror direction with unit
+// integral over the sphere, and m(theta_o) the part of it above the facet's
+// horizon (so that Int w = 1 over the hemisphere: energy is conserved and a white
+// furnace gives L_o = rho L exactly). The `dirsig` model's lobe is a delta: the
+// specular term is then s * L_i(mirror direction), handled by the caller
+// (is_delta()).
+//
+// Frame: directions are unit vectors in the facet's local frame, z along the facet
+// normal on the viewer's side (wo.z > 0).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace sigchain::radiometry {
+
+using Vec3 = std::array<double, 3>;
+
+enum class LobeShape {
+    None,         // lambertian: no specular part
+    Delta,        // dirsig: mirror direction only
+    Uniform,      // cone: constant within a half angle
+    LinearCone,   // cone with the .ems lobe table: 1 - alpha / radius(specular angle)
+    CosinePower,  // phong: cos^n(alpha), alpha < 90 deg
+    Exponential,  // exp(-alpha / width)
+};
+
+struct BrdfSample {
+    Vec3 wi{};         // sampled direction (local frame); may be below the horizon
+    double pdf = 0;    // density per steradian of the whole mixture (pdf())
+};
+
+class Brdf {
+public:
+    static Brdf lambertian();
+    static Brdf delta();                              // dirsig
+    static Brdf cone(double half_angle_deg);          // uniform within the half angle
+    // White's cone (seed 5.2.3): radius interpolated in the specular angle from the
+    // .ems table rows at 0, 15, ..., 90 deg (base_radius_deg of each row).
+    static Brdf linear_cone(const std::array<double, 7>& base_radius_deg);
+    static Brdf phong(double exponent);
+    static Brdf exponential(double width_deg);
+
+    LobeShape shape() const;
+    bool is_delta() const;
+
+    // w(wi, wo) of the header comment for specularity s (0 below the horizon; the
+    // delta part is not included: 0 for Delta's specular term).
+    double weight(const Vec3& wi, const Vec3& wo, double specularity) const;
+    // The specular part alone: lobe(alpha) / m(theta_o), per sr.
+    double lobe_weight(const Vec3& wi, const Vec3& wo) const;
+    // Importance sampling of w for montecarlo: with probability 1 - s a cosine-
+    // weighted direction, with probability s a direction from the (untruncated)
+    // lobe about the mirror direction; u1, u2, u3 uniform in [0, 1). pdf() is the
+    // density of that mixture, so that w / pdf is an unbiased estimator weight.
+    BrdfSample sample(const Vec3& wo, double specularity, double u1, double u2,
+                      double u3) const;
+    double pdf(const Vec3& wi, const Vec3& wo, double specularity) const;
+
+private:
+    struct Impl;
+    std::shared_ptr<const Impl> m_impl;
+};
+
+// Mirror direction of wo about the local normal (0, 0, 1).
+inline Vec3 mirror(const Vec3& wo) { return {-wo[0], -wo[1], wo[2]}; }
+
+}  // namespace sigchain::radiometry

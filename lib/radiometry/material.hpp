@@ -1,0 +1,73 @@
+// Materials as trace uses them: each .mat entry with its .ems (and .ext) curves
+// sampled on the render's spectral grid, its angular fall-off and its specular lobe.
+#pragma once
+
+#include <array>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "io/ems.hpp"
+#include "io/mat.hpp"
+#include "radiometry/brdf.hpp"
+#include "radiometry/spectral.hpp"
+
+namespace sigchain::radiometry {
+
+struct MaterialOptics {
+    long id = 0;
+    std::string name;
+    std::string mat_file;  // for messages: "FILE:LINE: material 'NAME' (ID): ..."
+    int line = 0;
+
+    // emissivity[c][k]: curve c of the .ems at grid sample k (curve 0 is the
+    // material's own; further curves are texture curves).
+    std::vector<std::vector<double>> emissivity;
+    std::array<double, io::kFallOffCount> fall_off{};  // F(theta) at 0..90 deg
+    double specularity = 0;                           // 0 for lambertian
+    Brdf brdf;                                        // angular shape (brdf.hpp)
+
+    bool transmissive = false;                // UNIFORM/NONUNIFORM_TRANSMISSION
+    std::vector<double> extinction_per_km;    // per grid sample (curve 0 of the .ext)
+    double thickness_cm = 0;                  // THICKNESS (a facet's own overrides)
+    bool double_sided = false;
+    bool gaussian_texture = false;
+
+    // Directional emissivity eps(lambda) * F(theta) of curve `curve` for an angle
+    // `theta_deg` from the normal, into `out` (grid size).
+    void directional_emissivity(int curve, double theta_deg, std::span<double> out) const;
+    // Directional-hemispherical reflectance rho(lambda, theta) = 1 - eps(lambda) F(theta)
+    // for an opaque facet; for a transmissive one (1 - eps F)(1 - t) with t the
+    // slab transmittance at that angle (mat(5): r + a + t = 1). Into `out`.
+    void reflectance(int curve, double theta_deg, double thickness_cm, std::span<double> out) const;
+    // Slab transmittance exp(-k d / |cos theta|) per grid sample (ext(5)), d in cm.
+    void transmittance(double cos_theta, double thickness_cm, std::span<double> out) const;
+};
+
+class MaterialLibrary {
+public:
+    // Reads every .ems (and .ext) the .mat names, resolved against the .mat's
+    // directory, and samples them on `grid`. Throws IoError/DataError naming the .mat
+    // line of the entry whose file is missing or bad ("FILE:LINE: material 'N' (ID):
+    // cannot read EMS_FILE: why").
+    static MaterialLibrary load(const io::Mat& mat, const std::string& mat_path,
+                                const SpectralGrid& grid);
+    // Builds optics directly (tests, generated scenes): one material per entry.
+    static MaterialLibrary from_optics(std::vector<MaterialOptics> materials);
+
+    // The material with this MATERIAL_ID, or nullptr. Constant time.
+    const MaterialOptics* find(long id) const;
+    const std::vector<MaterialOptics>& materials() const { return m_materials; }
+
+private:
+    std::vector<MaterialOptics> m_materials;
+    std::vector<int> m_index;  // id -> index into m_materials, -1 when absent
+};
+
+// A grey Lambertian (or lobed) material for tests: constant emissivity 1 - rho on a
+// grid of `samples` samples, fall-off 1 everywhere.
+MaterialOptics grey_material(long id, double reflectance, std::size_t samples,
+                             double specularity = 0, Brdf brdf = Brdf::lambertian());
+
+}  // namespace sigchain::radiometry

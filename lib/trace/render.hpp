@@ -1,0 +1,103 @@
+// Rendering: primary rays from a ray generator, the radiance at each hit from the
+// hemisphere above it (by a sampling strategy), and the atmosphere's path terms;
+// one geometry pass serves all spectral samples (seed 3.4, 3.6.5, 5.2; DESIGN.md 4).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geom/camera.hpp"
+#include "image/image.hpp"
+#include "radiometry/atmosphere.hpp"
+#include "radiometry/material.hpp"
+#include "scene/scene.hpp"
+
+namespace sigchain::trace {
+
+using Vec3 = std::array<double, 3>;
+
+enum class Sampling { Dirsig, Golfball, MonteCarlo };
+
+// Primary-ray generation, behind an interface so that line scanners and pushbrooms
+// (a later issue) slot in beside the frame camera.
+class RayGenerator {
+public:
+    virtual ~RayGenerator() = default;
+    virtual long rows() const = 0;
+    virtual long columns() const = 0;
+    // Ray through image-plane position (row, column) in pixel units ((0, 0) = top-left
+    // corner of the top-left pixel): origin (scene units) and unit direction.
+    virtual void ray(double row, double column, Vec3& origin, Vec3& direction) const = 0;
+    // Signed view angle (deg, the .rad's convention: find_min_max_view_angle(1)) of a
+    // ray direction, for the path-term lookup.
+    virtual double view_angle_deg(const Vec3& direction) const = 0;
+};
+
+class FrameRayGenerator final : public RayGenerator {
+public:
+    explicit FrameRayGenerator(geom::FrameCamera camera);
+    long rows() const override;
+    long columns() const override;
+    void ray(double row, double column, Vec3& origin, Vec3& direction) const override;
+    double view_angle_deg(const Vec3& direction) const override;
+
+private:
+    geom::FrameCamera m_camera;
+    double m_reference_azimuth_deg = 0;
+};
+
+struct RenderOptions {
+    Sampling sampling = Sampling::Golfball;
+    long samples_per_pixel = 1;   // primary rays per pixel, stratified (seed 5.1.4 rec. 7)
+    long hemisphere_samples = 64; // montecarlo: rays per hit; dirsig: diffuse pattern size
+    int max_transmissions = 8;    // transmissive facets followed per ray
+    int bounces = 1;              // secondary hits take the other facet's radiance one
+                                  // bounce deep (seed 5.2.3 step 4)
+    std::uint64_t seed = 1;       // results depend only on seed (not on threads)
+    unsigned threads = 0;         // 0: all cores
+    long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row
+    bool truth = false;
+    double meters_per_unit = 1;   // scene units -> metres (transmission, range)
+};
+
+// Facet temperatures (kelvin) by facet key ("1-1-1", "2.3/1-1-1"; tmp(5)).
+using Temperatures = std::map<std::string, double>;
+
+struct RenderInputs {
+    const scene::Scene* scene = nullptr;
+    const radiometry::Atmosphere* atmosphere = nullptr;
+    const radiometry::MaterialLibrary* materials = nullptr;
+    const RayGenerator* camera = nullptr;
+    const Temperatures* temperatures = nullptr;  // nullptr: no emission
+};
+
+// Names of the truth layers, in channel order (trace(1) TRUTH LAYERS). Reflectance
+// is one layer per band ("reflectance_BAND").
+std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid);
+
+struct RenderStats {
+    std::uint64_t primary_rays = 0, secondary_rays = 0, shadow_rays = 0;
+    std::uint64_t hits = 0;
+    double seconds = 0;
+    std::vector<std::string> skipped;  // what was not modelled, for --verbose
+};
+
+struct RenderResult {
+    image::Image radiance;  // rows = row_end - row_begin, one channel per grid sample
+    image::Image truth;     // empty unless options.truth
+    RenderStats stats;
+};
+
+// Renders rows [row_begin, row_end). `progress(done, total)` is called from the
+// calling thread now and then (may be empty). Throws DataError for a hit facet whose
+// material is missing (validate_scene() catches those first).
+RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
+                    const std::function<void(long, long)>& progress = {});
+
+// Every placed facet's material exists: else DataError naming the facet's origin.
+void validate_scene(const scene::Scene& scene, const radiometry::MaterialLibrary& materials);
+
+}  // namespace sigchain::trace
