@@ -1,0 +1,355 @@
+// Analytic cases for render(), each against an independent reference (issue 4,
+// "Tests"): white furnace, Lambertian plate under sun and sky, the sky-view factor of
+// an infinite street canyon, the shadow of a box, and the sun in the specular
+// direction of a glossy plate (seed section 5, case 2b).
+//
+// The scenes are built in memory (scene::MeshData) and seen by an orthographic
+// camera defined here, so the expected values follow from geometry alone.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "radiometry/atmosphere.hpp"
+#include "radiometry/brdf.hpp"
+#include "radiometry/material.hpp"
+#include "scene/scene.hpp"
+#include "trace/render.hpp"
+
+namespace sigchain::trace {
+namespace {
+
+using radiometry::Brdf;
+
+constexpr double kPi = 3.14159265358979323846;
+double rad(double deg) { return deg * kPi / 180.0; }
+
+// Parallel rays in direction `dir` through a grid of `rows` x `columns` points of
+// spacing `pitch` on the plane z = `height` ... moved back along -dir from the ground
+// point under each pixel, so pixel (r, c) looks at ground point
+// (x0 + (c + 0.5) pitch, y0 - (r + 0.5) pitch, 0) when the ray is unobstructed.
+class OrthoCamera final : public RayGenerator {
+public:
+    OrthoCamera(long rows, long columns, double pitch, double x0, double y0, Vec3 dir,
+                double distance = 100)
+        : m_rows(rows), m_columns(columns), m_pitch(pitch), m_x0(x0), m_y0(y0), m_dir(dir),
+          m_distance(distance) {
+        double n = std::hypot(dir[0], dir[1], dir[2]);
+        for (double& v : m_dir) v /= n;
+    }
+    long rows() const override { return m_rows; }
+    long columns() const override { return m_columns; }
+    void ray(double row, double column, Vec3& origin, Vec3& direction) const override {
+        Vec3 ground{m_x0 + column * m_pitch, m_y0 - row * m_pitch, 0};
+        for (int i = 0; i < 3; ++i) origin[i] = ground[i] - m_distance * m_dir[i];
+        direction = m_dir;
+    }
+    double view_angle_deg(const Vec3&) const override { return 0; }
+
+private:
+    long m_rows, m_columns;
+    double m_pitch, m_x0, m_y0;
+    Vec3 m_dir;
+    double m_distance;
+};
+
+// Scene geometry from quads (counter-clockwise seen from the side they face).
+struct QuadBuilder {
+    scene::MeshData mesh;
+    void quad(const std::array<Vec3, 4>& v, long material) {
+        auto base = static_cast<std::uint32_t>(mesh.vertices.size() / 3);
+        for (const auto& p : v)
+            for (double c : p) mesh.vertices.push_back(static_cast<float>(c));
+        auto facet = static_cast<std::uint32_t>(mesh.facets.size());
+        mesh.triangles.insert(mesh.triangles.end(),
+                              {base, base + 1, base + 2, base, base + 2, base + 3});
+        mesh.triangle_facet.insert(mesh.triangle_facet.end(), {facet, facet});
+        scene::FacetAttributes a;
+        a.material_id = material;
+        mesh.facets.push_back(a);
+        scene::FacetOrigin o;
+        o.file = "physics_test";
+        o.id = "1-1-" + std::to_string(facet + 1);
+        o.description = "facet " + o.id;
+        mesh.origins.push_back(o);
+    }
+    // Axis-aligned box [lo, hi] with outward faces (no bottom).
+    void box(const Vec3& lo, const Vec3& hi, long material) {
+        double x0 = lo[0], y0 = lo[1], z0 = lo[2], x1 = hi[0], y1 = hi[1], z1 = hi[2];
+        quad({{{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}}, material);  // top
+        quad({{{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}}, material);  // south
+        quad({{{x1, y1, z0}, {x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}}}, material);  // north
+        quad({{{x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}}}, material);  // east
+        quad({{{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}}, material);  // west
+    }
+    scene::Scene build() {
+        scene::Scene s;
+        std::size_t m = s.add_mesh(mesh);
+        s.place(m, scene::identity_affine());
+        s.commit();
+        return s;
+    }
+};
+
+const std::vector<double> kWavelengths{0.5, 0.6, 0.7};
+
+struct Case {
+    scene::Scene scene;
+    radiometry::Atmosphere atmosphere;
+    radiometry::MaterialLibrary materials;
+};
+
+radiometry::Atmosphere atmosphere(double sun_zenith, double sun_azimuth, double sun_e,
+                                  double sky_l, double tau2 = 1, double path_l = 0) {
+    io::Rad r = radiometry::uniform_rad(kWavelengths, sun_zenith, sun_azimuth, sun_e, sky_l,
+                                        tau2, path_l);
+    return radiometry::Atmosphere::from_rads({r}, {"uniform.rad"});
+}
+
+RenderResult run(const Case& c, const RayGenerator& camera, Sampling sampling,
+                 long hemisphere_samples = 64, bool truth = false, long spp = 1) {
+    RenderInputs in;
+    in.scene = &c.scene;
+    in.atmosphere = &c.atmosphere;
+    in.materials = &c.materials;
+    in.camera = &camera;
+    RenderOptions o;
+    o.sampling = sampling;
+    o.hemisphere_samples = hemisphere_samples;
+    o.samples_per_pixel = spp;
+    o.truth = truth;
+    o.threads = 2;
+    return render(in, o);
+}
+
+int truth_channel(const RenderResult& r, const std::string& name) {
+    const auto& names = r.truth.channel_names;
+    auto it = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(it, names.end()) << "no truth layer " << name;
+    return it == names.end() ? 0 : static_cast<int>(it - names.begin());
+}
+
+// A 2 km square ground plate at z = 0 (so hemisphere rays from the imaged middle
+// escape over it, never under its edge), material 1.
+scene::Scene plate() {
+    QuadBuilder q;
+    q.quad({{{-1000, -1000, 0}, {1000, -1000, 0}, {1000, 1000, 0}, {-1000, 1000, 0}}}, 1);
+    return q.build();
+}
+
+// --- White furnace: no sun, uniform sky L, Lambertian r, tau2 = 1, L_us = 0 -> r L. ---
+
+TEST(Physics, WhiteFurnaceGolfballAndDirsigAreExact) {
+    const double r = 0.3, sky = 0.01;
+    Case c{plate(), atmosphere(120, 0, 0.2, sky),
+           radiometry::MaterialLibrary::from_optics(
+               {radiometry::grey_material(1, r, kWavelengths.size())})};
+    OrthoCamera cam(8, 8, 1.0, -4, 4, {0, 0, -1});
+    for (Sampling s : {Sampling::Golfball, Sampling::Dirsig}) {
+        RenderResult res = run(c, cam, s);
+        ASSERT_EQ(res.radiance.channels, 3);
+        // Exact up to float32 storage of the result (relative 1e-6) and the
+        // summation of ~60-100 weights in double (far smaller).
+        for (float v : res.radiance.data) EXPECT_NEAR(v, r * sky, 1e-6 * r * sky);
+    }
+}
+
+TEST(Physics, WhiteFurnaceMonteCarloWithinStatisticalError) {
+    const double r = 0.3, sky = 0.01;
+    Case c{plate(), atmosphere(120, 0, 0.2, sky),
+           radiometry::MaterialLibrary::from_optics(
+               {radiometry::grey_material(1, r, kWavelengths.size())})};
+    OrthoCamera cam(16, 16, 1.0, -8, 8, {0, 0, -1});
+    RenderResult res = run(c, cam, Sampling::MonteCarlo, 32);
+    // Mean over 256 independent pixels: within 4 standard errors of r L, the standard
+    // error estimated from the pixels themselves (plus float rounding); a zero-variance
+    // estimator (cosine sampling of a uniform sky) passes exactly.
+    const auto& d = res.radiance.data;
+    std::size_t n = res.radiance.plane_size();
+    double mean = std::accumulate(d.begin(), d.begin() + n, 0.0) / n;
+    double var = 0;
+    for (std::size_t i = 0; i < n; ++i) var += (d[i] - mean) * (d[i] - mean);
+    double se = std::sqrt(var / (n - 1) / n);
+    EXPECT_NEAR(mean, r * sky, 4 * se + 1e-6 * r * sky);
+    for (float v : d) EXPECT_TRUE(std::isfinite(v) && v >= 0);
+}
+
+// --- Lambertian plate under sun + uniform sky: tau2 r (Es cos(sigma) tau1 / pi + L) + L_us. ---
+
+TEST(Physics, LambertianPlateUnderSunAndSky) {
+    const double r = 0.25, es = 0.15, sky = 0.005, tau2 = 0.8, lus = 0.001, zenith = 30;
+    Case c{plate(), atmosphere(zenith, 135, es, sky, tau2, lus),
+           radiometry::MaterialLibrary::from_optics(
+               {radiometry::grey_material(1, r, kWavelengths.size())})};
+    OrthoCamera cam(6, 6, 1.0, -3, 3, {0, 0, -1});
+    const double expected = tau2 * r * (es * std::cos(rad(zenith)) / kPi + sky) + lus;
+    for (Sampling s : {Sampling::Golfball, Sampling::Dirsig, Sampling::MonteCarlo}) {
+        RenderResult res = run(c, cam, s, 64);
+        // Golfball and dirsig: exact up to float32 output (1e-6). Monte Carlo: the sun
+        // is sampled explicitly (exact) and the sky part is estimated; its relative
+        // spread for 64 samples over a uniform sky is below 5% of the sky term, which
+        // is 0.005/0.0464 of the total: 1% of the total bounds it generously.
+        double tol = s == Sampling::MonteCarlo ? 1e-2 * expected : 1e-6 * expected;
+        for (float v : res.radiance.data) EXPECT_NEAR(v, expected, tol) << static_cast<int>(s);
+    }
+}
+
+// --- Infinite street canyon, H/W = 1, black walls, uniform sky, no sun. ---
+// Sky-view factor of a point on the floor at distance x from the centre line: the view
+// factor of an infinite strip, (sin a1 + sin a2) / 2 with a1, a2 the angles to the two
+// wall tops from the vertical (Modest, Radiative Heat Transfer, 3rd ed., config. 12 of
+// appendix D); floor average sqrt(1 + (H/W)^2) - H/W = 0.41421 (crossed strings).
+double strip_view_factor(double x, double w, double h) {
+    double a1 = std::atan((w / 2 - x) / h), a2 = std::atan((w / 2 + x) / h);
+    return 0.5 * (std::sin(a1) + std::sin(a2));
+}
+
+struct Canyon {
+    Case c;
+    OrthoCamera cam;
+};
+
+Canyon canyon(double w, double h, long columns, double floor_r, double sky) {
+    QuadBuilder q;
+    const double len = 200 * w;  // long enough that the open ends add < 0.1%
+    q.quad({{{-w / 2, -len, 0}, {w / 2, -len, 0}, {w / 2, len, 0}, {-w / 2, len, 0}}}, 1);
+    // West wall faces east, east wall faces west.
+    q.quad({{{-w / 2, len, 0}, {-w / 2, -len, 0}, {-w / 2, -len, h}, {-w / 2, len, h}}}, 2);
+    q.quad({{{w / 2, -len, 0}, {w / 2, len, 0}, {w / 2, len, h}, {w / 2, -len, h}}}, 2);
+    return {Case{q.build(), atmosphere(120, 0, 0.2, sky),
+                 radiometry::MaterialLibrary::from_optics(
+                     {radiometry::grey_material(1, floor_r, kWavelengths.size()),
+                      radiometry::grey_material(2, 0.0, kWavelengths.size())})},
+            OrthoCamera(1, columns, w / columns, -w / 2, 0.5 * w / columns, {0, 0, -1})};
+}
+
+// Floor radiance / (r L) is the floor's sky-view factor (walls are black, so the
+// only light is the sky's). Returns per column.
+std::vector<double> canyon_svf(const Canyon& k, Sampling s, long n, double r, double sky) {
+    RenderResult res = run(k.c, k.cam, s, n);
+    std::vector<double> v;
+    for (long x = 0; x < k.cam.columns(); ++x) v.push_back(res.radiance.at(0, 0, x) / (r * sky));
+    return v;
+}
+
+TEST(Physics, CanyonSkyViewFactorGolfballWithinOnePercent) {
+    const double w = 10, h = 10, r = 0.5, sky = 0.01;
+    const long columns = 41;  // odd: the middle column is the centre line
+    Canyon k = canyon(w, h, columns, r, sky);
+    std::vector<double> svf = canyon_svf(k, Sampling::Golfball, 0, r, sky);
+    double mean = std::accumulate(svf.begin(), svf.end(), 0.0) / columns;
+    double exact_mean = std::sqrt(1 + (h / w) * (h / w)) - h / w;
+    double exact_centre = strip_view_factor(0, w, h);
+    RecordProperty("golfball_centre", std::to_string(svf[columns / 2]));
+    RecordProperty("golfball_mean", std::to_string(mean));
+    // Issue 4: golfball within 1% (a 61-cell estimate; measured values are reported
+    // in the closing note). The mean over 41 columns (midpoint rule) is itself within
+    // 0.05% of the floor average.
+    EXPECT_NEAR(mean, exact_mean, 0.01 * exact_mean);
+    EXPECT_NEAR(svf[columns / 2], exact_centre, 0.01 * exact_centre);
+}
+
+TEST(Physics, CanyonSkyViewFactorMonteCarloConverges) {
+    const double w = 10, h = 10, r = 0.5, sky = 0.01;
+    const long columns = 41;
+    Canyon k = canyon(w, h, columns, r, sky);
+    std::vector<double> svf = canyon_svf(k, Sampling::MonteCarlo, 1024, r, sky);
+    double mean = std::accumulate(svf.begin(), svf.end(), 0.0) / columns;
+    double exact_mean = std::sqrt(1 + (h / w) * (h / w)) - h / w;
+    // Each column is a mean of 1024 Bernoulli-like samples of the cosine-weighted sky
+    // (variance <= 0.25/1024 per column); the 41-column mean then has standard error
+    // <= 0.5/sqrt(41 * 1024) = 0.0024; 4 standard errors plus the midpoint rule's
+    // 0.0005 bound the difference.
+    RecordProperty("montecarlo_mean", std::to_string(mean));
+    EXPECT_NEAR(mean, exact_mean, 4 * 0.0024 + 0.0005);
+    for (long x = 0; x < columns; ++x) {
+        double exact = strip_view_factor(k.cam.columns() > 1 ? -w / 2 + (x + 0.5) * w / columns : 0,
+                                         w, h);
+        EXPECT_NEAR(svf[x], exact, 5 * 0.5 / std::sqrt(1024.0)) << x;
+    }
+}
+
+// --- Shadow of a box: 4 x 4 x 3 m on a plate, sun at zenith 45 deg from the east. ---
+// The shadow on the ground spans x in [-2 - 3 tan(45), -2] = [-5, -2] for y in [-2, 2].
+
+TEST(Physics, BoxShadowMatchesTrigonometry) {
+    QuadBuilder q;
+    q.quad({{{-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}}}, 1);
+    q.box({-2, -2, 0}, {2, 2, 3}, 1);
+    const double r = 0.5, es = 0.2, sky = 0.001;
+    Case c{q.build(), atmosphere(45, 90, es, sky),
+           radiometry::MaterialLibrary::from_optics(
+               {radiometry::grey_material(1, r, kWavelengths.size())})};
+    const double pitch = 0.25;
+    // Rows cover y in [-4, 4], columns x in [-8, 0]: the west half.
+    OrthoCamera cam(32, 32, pitch, -8, 4, {0, 0, -1});
+    RenderResult res = run(c, cam, Sampling::Golfball, 0);
+    // Sunlit ground: r (Es cos45 / pi + ~sky); shadowed: r * sky at most. Threshold halfway.
+    const double lit = r * es * std::cos(rad(45)) / kPi;
+    for (long row = 0; row < 32; ++row) {
+        double y = 4 - (row + 0.5) * pitch;
+        long shadowed = 0;
+        for (long x = 0; x < 32; ++x) {
+            double cx = -8 + (x + 0.5) * pitch;
+            if (cx > -2) continue;  // the box itself (seen from above) is lit
+            if (res.radiance.at(0, row, x) < 0.5 * lit) ++shadowed;
+        }
+        long expected = (y > -2 && y < 2) ? 12 : 0;  // 3 m / 0.25 m
+        // Within one pixel along the edge (issue 4); rows that straddle y = +-2 can
+        // be either.
+        if (std::abs(std::abs(y) - 2) < pitch) continue;
+        EXPECT_NEAR(shadowed, expected, 1) << "row " << row;
+    }
+}
+
+// --- Sun in the specular direction of a glossy plate (seed case 2b). ---
+
+TEST(Physics, SunInSpecularDirectionIsFiniteForEveryStrategy) {
+    const double r = 0.4, s = 0.5, es = 0.15, sky = 0.004, zenith = 30, n = 100;
+    // Sun due north at zenith 30; the view ray goes north-down at 30 deg, so the
+    // mirror direction of the viewer is the sun.
+    Vec3 dir{0, std::sin(rad(zenith)), -std::cos(rad(zenith))};
+    OrthoCamera cam(4, 4, 1.0, -2, 2, dir);
+    for (bool delta : {false, true}) {
+        Brdf brdf = delta ? Brdf::delta() : Brdf::phong(n);
+        Case c{plate(), atmosphere(zenith, 0, es, sky),
+               radiometry::MaterialLibrary::from_optics(
+                   {radiometry::grey_material(1, r, kWavelengths.size(), s, brdf)})};
+        double golf = 0, mc = 0, dirsig = 0;
+        for (Sampling smp : {Sampling::Dirsig, Sampling::Golfball, Sampling::MonteCarlo}) {
+            RenderResult res = run(c, cam, smp, 256);
+            double mean = 0;
+            for (float v : res.radiance.data) {
+                EXPECT_TRUE(std::isfinite(v) && v >= 0);
+                mean += v;
+            }
+            mean /= static_cast<double>(res.radiance.data.size());
+            (smp == Sampling::Golfball ? golf : smp == Sampling::MonteCarlo ? mc : dirsig) = mean;
+        }
+        std::string tag = delta ? "delta_" : "phong_";
+        RecordProperty(tag + "dirsig", std::to_string(dirsig));
+        RecordProperty(tag + "golfball", std::to_string(golf));
+        RecordProperty(tag + "montecarlo", std::to_string(mc));
+        if (!delta) {
+            // Reference (brdf.hpp): diffuse r (1-s)(Es cos/pi + L) plus the lobe's
+            // r s (Es lobe(0)/m + L), with lobe(0) = (n+1)/(2 pi) for cos^n normalised
+            // over the sphere and m(30 deg) = 1 to 1e-6 for n = 100 (the lobe is all
+            // above the horizon).
+            double ref = r * (1 - s) * (es * std::cos(rad(zenith)) / kPi + sky) +
+                         r * s * (es * (n + 1) / (2 * kPi) + sky);
+            RecordProperty("phong_reference", std::to_string(ref));
+            // The sun term (98% of ref) is explicit in golfball and Monte Carlo, so
+            // both are within 2% of the reference; dirsig's scheme is DIRSIG 3's and
+            // is only required to be finite (its error is what the seed measured).
+            EXPECT_NEAR(mc, ref, 0.02 * ref);
+            EXPECT_NEAR(golf, ref, 0.02 * ref);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace sigchain::trace
