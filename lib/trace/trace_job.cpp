@@ -1,0 +1,280 @@
+// The trace job: read the inputs, check that they agree, render, write the cubes.
+#include "trace/trace_job.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "geom/camera.hpp"
+#include "image/image.hpp"
+#include "io/adv.hpp"
+#include "io/mat.hpp"
+#include "io/rad.hpp"
+#include "io/snd.hpp"
+#include "io/tmp.hpp"
+#include "radiometry/atmosphere.hpp"
+#include "radiometry/material.hpp"
+
+namespace sigchain::trace {
+
+namespace {
+
+constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
+
+void say(const std::function<void(const std::string&)>& f, const std::string& message) {
+    if (f) f(message);
+}
+
+std::string format(const char* fmt, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v);
+    return buf;
+}
+
+// A non-negative integer, the whole of `text`.
+bool parse_count(std::string_view text, long& value) {
+    if (text.empty()) return false;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return ec == std::errc() && end == text.data() + text.size() && value >= 0;
+}
+
+// The ENVI data file a cube name stands for (NAME.hdr writes NAME.img), so that two
+// outputs that would overwrite each other are caught.
+std::string written_name(const std::string& path) {
+    std::filesystem::path p(path);
+    if (file_extension(path) == "hdr") p.replace_extension(".img");
+    return std::filesystem::absolute(p).lexically_normal().string();
+}
+
+// The view angles of the image corners and centre against the .rad's table: outside
+// it the path terms are clamped (Atmosphere::path), which trace reports.
+void check_view_angles(const RayGenerator& camera, const radiometry::Atmosphere& atm,
+                       const TraceHooks& hooks) {
+    double lo = 1e9, hi = -1e9;
+    const double r = static_cast<double>(camera.rows()), c = static_cast<double>(camera.columns());
+    const double points[5][2] = {{0, 0}, {0, c}, {r, 0}, {r, c}, {r / 2, c / 2}};
+    for (const auto& p : points) {
+        Vec3 origin{}, direction{};
+        camera.ray(p[0], p[1], origin, direction);
+        double va = camera.view_angle_deg(direction);
+        lo = std::min(lo, va);
+        hi = std::max(hi, va);
+    }
+    // 0.01 deg: below the precision the .rad's view-angle grid is written with.
+    if (lo < atm.min_view_angle_deg() - 0.01 || hi > atm.max_view_angle_deg() + 0.01)
+        say(hooks.warn, "the image spans view angles " + format("%.2f", lo) + " to " +
+                            format("%.2f", hi) + " deg but the .rad files cover " +
+                            format("%.2f", atm.min_view_angle_deg()) + " to " +
+                            format("%.2f", atm.max_view_angle_deg()) +
+                            " deg: path terms are clamped at the ends");
+}
+
+}  // namespace
+
+Sampling parse_sampling(const std::string& name) {
+    if (name == "dirsig") return Sampling::Dirsig;
+    if (name == "golfball") return Sampling::Golfball;
+    if (name == "montecarlo") return Sampling::MonteCarlo;
+    throw UsageError("--sampling: unknown strategy '" + name +
+                     "' (dirsig, golfball or montecarlo)");
+}
+
+std::string sampling_name(Sampling sampling) {
+    switch (sampling) {
+        case Sampling::Dirsig: return "dirsig";
+        case Sampling::Golfball: return "golfball";
+        case Sampling::MonteCarlo: return "montecarlo";
+    }
+    return "?";
+}
+
+std::pair<long, long> parse_rows(const std::string& text, const std::string& option) {
+    const auto colon = text.find(':');
+    long a = 0, b = 0;
+    if (colon == std::string::npos || !parse_count(std::string_view(text).substr(0, colon), a) ||
+        !parse_count(std::string_view(text).substr(colon + 1), b))
+        throw UsageError(option + ": expected A:B (first row, end row), found '" + text + "'");
+    if (b <= a)
+        throw UsageError(option + ": the end row must be greater than the first, found '" + text +
+                         "'");
+    return {a, b};
+}
+
+void check_job(const TraceJob& job) {
+    if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
+    if (job.output_path.empty() || job.output_path == "-")
+        throw UsageError("a radiance cube cannot be written to standard output: give -o CUBE");
+    image::cube_format_of(job.output_path);  // UsageError for an unknown extension
+    if (!job.truth_path.empty()) {
+        if (job.truth_path == "-")
+            throw UsageError("--truth: a truth cube cannot be written to standard output");
+        image::cube_format_of(job.truth_path);
+        if (written_name(job.truth_path) == written_name(job.output_path))
+            throw UsageError("--truth: " + job.truth_path + " would overwrite the output " +
+                             job.output_path);
+    }
+    if (job.samples_per_pixel && (*job.samples_per_pixel < 1 ||
+                                  *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
+        throw UsageError("--samples-per-pixel: expected 1 to " +
+                         std::to_string(io::kAdvMaxSamplesPerPixel));
+    if (job.hemisphere_samples && *job.hemisphere_samples < 1)
+        throw UsageError("--hemisphere-samples: expected at least 1");
+    if (job.max_transmissions && *job.max_transmissions < 0)
+        throw UsageError("--max-transmissions: expected 0 or more");
+    if (job.rows && (job.rows->first < 0 || job.rows->second <= job.rows->first))
+        throw UsageError("--rows: expected 0 <= A < B");
+}
+
+TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
+    check_job(job);
+    TraceReport report;
+
+    // Camera and scene node.
+    const io::Adv adv = io::read_adv_file(job.adv_path);
+    if (adv.sensor != io::SensorKind::Frame)
+        throw NotImplemented(job.adv_path +
+                             ": not implemented yet: line scanner and pushbroom sensors "
+                             "(a later issue); trace renders frame cameras");
+    const io::Snd snd = io::read_snd_file(job.snd_path);
+    if (snd.bands.size() != job.rad_paths.size())
+        throw UsageError(job.snd_path + " has " + std::to_string(snd.bands.size()) +
+                         " band(s) but " + std::to_string(job.rad_paths.size()) +
+                         " .rad file(s) were given (one per band, in band order)");
+    long row_begin = 0, row_end = adv.rows;
+    if (job.rows) {
+        if (job.rows->second > adv.rows)
+            throw UsageError("--rows " + std::to_string(job.rows->first) + ":" +
+                             std::to_string(job.rows->second) + ": the image has " +
+                             std::to_string(adv.rows) + " rows (" + job.adv_path + ")");
+        row_begin = job.rows->first;
+        row_end = job.rows->second;
+    }
+
+    // Atmosphere: one sigchain .rad per band.
+    std::vector<io::Rad> rads;
+    rads.reserve(job.rad_paths.size());
+    for (std::size_t b = 0; b < job.rad_paths.size(); ++b) {
+        const std::string& path = job.rad_paths[b];
+        rads.push_back(io::read_rad_file(path));
+        if (!rads.back().sky)
+            throw DataError({path, 0},
+                            "no SIGCHAIN_RAD block: the sun and the sky need a sigchain .rad "
+                            "(build_radiance(1), issue 3); a DIRSIG .rad has neither");
+        const long want = snd.bands[b].sample_count();
+        if (static_cast<long>(rads.back().samples.size()) != want)
+            say(hooks.warn, path + ": " + std::to_string(rads.back().samples.size()) +
+                                " spectral samples, but band " + std::to_string(b + 1) + " of " +
+                                job.snd_path + " has " + std::to_string(want));
+    }
+    const radiometry::Atmosphere atmosphere = radiometry::Atmosphere::from_rads(rads, job.rad_paths);
+    const radiometry::SpectralGrid& grid = atmosphere.grid();
+    report.spectral_samples = grid.size();
+    report.bands = grid.band_count();
+    say(hooks.info, "spectral grid: " + std::to_string(grid.size()) + " samples in " +
+                        std::to_string(grid.band_count()) + " band(s)");
+    if (!atmosphere.sun_up())
+        say(hooks.info, "the sun is below the horizon (zenith " +
+                            format("%.2f", atmosphere.sun_zenith_deg()) + " deg)");
+
+    // Materials on the render's grid.
+    const io::Mat mat = io::read_mat_file(job.mat_path);
+    const radiometry::MaterialLibrary materials =
+        radiometry::MaterialLibrary::load(mat, job.mat_path, grid);
+    report.materials = materials.materials().size();
+
+    // Scene: scene units from the .adv, geodetic origin from the .snd.
+    scene::LoadOptions load;
+    load.scene_meters_per_unit = io::meters_per_unit(adv.units);
+    load.origin = scene::GeoOrigin{snd.latitude_deg, snd.longitude_east_deg, 0.0};
+    load.allow_degenerate = job.allow_degenerate;
+    const scene::Scene scene = scene::load_scene(job.scene_path, load, &report.load);
+    for (const auto& w : report.load.warnings) say(hooks.warn, w);
+    if (scene.triangle_count() == 0)
+        throw DataError({job.scene_path, 0}, "the scene has no facets");
+    validate_scene(scene, materials);
+    say(hooks.info, "scene: " + std::to_string(report.load.meshes) + " mesh(es), " +
+                        std::to_string(report.load.placements) + " placement(s), " +
+                        std::to_string(report.load.facets) + " facets, " +
+                        std::to_string(report.load.triangles) + " triangles; " +
+                        std::to_string(report.materials) + " material(s)");
+
+    // Temperatures (emission) when given.
+    Temperatures temperatures;
+    if (!job.tmp_path.empty()) {
+        const io::Tmp tmp = io::read_tmp_file(job.tmp_path);
+        for (const auto& f : tmp.facets) temperatures[f.facet_id] = f.temperature_k;
+        say(hooks.info, "temperatures of " + std::to_string(temperatures.size()) +
+                            " facet(s) from " + job.tmp_path);
+    } else {
+        say(hooks.info, "no temperature file (--tmp): emission is left out");
+    }
+
+    const FrameRayGenerator camera(geom::frame_camera(adv, job.adv_path));
+    check_view_angles(camera, atmosphere, hooks);
+
+    RenderOptions options;
+    options.sampling = job.sampling;
+    options.samples_per_pixel = job.samples_per_pixel.value_or(adv.samples_per_pixel);
+    if (job.hemisphere_samples) options.hemisphere_samples = *job.hemisphere_samples;
+    if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
+    options.seed = job.seed;
+    options.threads = job.threads;
+    options.row_begin = row_begin;
+    options.row_end = row_end;
+    options.truth = !job.truth_path.empty();
+    options.meters_per_unit = load.scene_meters_per_unit;
+
+    RenderInputs inputs;
+    inputs.scene = &scene;
+    inputs.atmosphere = &atmosphere;
+    inputs.materials = &materials;
+    inputs.camera = &camera;
+    inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
+    say(hooks.info, "rendering rows " + std::to_string(row_begin) + " to " +
+                        std::to_string(row_end) + " of " + std::to_string(adv.rows) + ", " +
+                        std::to_string(adv.columns) + " columns, " +
+                        std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
+                        sampling_name(job.sampling) + " sampling");
+    RenderResult result = render(inputs, options, hooks.progress);
+    report.stats = result.stats;
+    report.rows = result.radiance.rows;
+    report.columns = result.radiance.columns;
+
+    const auto& s = result.stats;
+    const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
+    say(hooks.info, std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) +
+                        " primary, " + std::to_string(s.secondary_rays) + " secondary, " +
+                        std::to_string(s.shadow_rays) + " shadow), " +
+                        std::to_string(s.hits) + " primary hits, " + format("%.3f", s.seconds) +
+                        " s, " +
+                        format("%.2f", s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6
+                                                     : 0.0) +
+                        " Mrays/s");
+    for (const auto& skipped : s.skipped) say(hooks.info, "not modelled: " + skipped);
+    if (s.hits == 0) say(hooks.warn, "no primary ray hit the scene: check the look angles");
+
+    // The radiance cube: one band per spectral sample, wavelengths and units.
+    image::Image& cube = result.radiance;
+    cube.wavelength_um = grid.wavelength_um;
+    cube.units = kRadianceUnits;
+    if (cube.channel_names.size() != grid.size()) {
+        cube.channel_names.clear();
+        for (std::size_t k = 0; k < grid.size(); ++k)
+            cube.channel_names.push_back(grid.band_names[grid.band_of_sample[k]] + " " +
+                                         format("%.6g", grid.wavelength_um[k]) + " um");
+    }
+    image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path));
+    if (!job.truth_path.empty()) {
+        image::Image& truth = result.truth;
+        truth.channel_names = truth_layer_names(grid);
+        truth.wavelength_um.clear();
+        truth.units.clear();
+        image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path));
+    }
+    return report;
+}
+
+}  // namespace sigchain::trace

@@ -1,0 +1,69 @@
+// The trace job (GDAL-apps style: an options struct and a run function, testable
+// without a process): .adv + .snd + scene + .mat + one .rad per band -> a spectral
+// radiance cube, optionally a truth cube (trace(1)).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/load.hpp"
+#include "trace/render.hpp"
+
+namespace sigchain::trace {
+
+struct TraceJob {
+    std::string adv_path;
+    std::string snd_path;
+    std::string scene_path;              // .gdb or .odb
+    std::string mat_path;
+    std::vector<std::string> rad_paths;  // one per .snd band, in band order
+    std::string output_path;             // .img/.hdr (ENVI) or .tif (GeoTIFF)
+    std::string truth_path;              // empty: no truth cube
+    std::string tmp_path;                // empty: no emission
+    Sampling sampling = Sampling::Golfball;
+    std::optional<long> samples_per_pixel;   // default: the .adv's samples_per_pixel
+    std::optional<long> hemisphere_samples;  // default: RenderOptions's
+    std::optional<int> max_transmissions;    // default: RenderOptions's
+    std::uint64_t seed = 1;
+    unsigned threads = 0;                    // 0: all cores
+    std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
+    bool allow_degenerate = false;
+};
+
+// What happened, for -v: the scene's counts, the render's statistics.
+struct TraceReport {
+    scene::LoadReport load;
+    RenderStats stats;
+    long rows = 0, columns = 0;  // of the written cube (a --rows slice: its rows)
+    std::size_t spectral_samples = 0, bands = 0;
+    std::size_t materials = 0;
+};
+
+// Messages the job emits while it runs (any may be empty).
+struct TraceHooks {
+    std::function<void(const std::string&)> warn;  // a warning (load warnings, ...)
+    std::function<void(const std::string&)> info;  // what is done (for -v)
+    std::function<void(long, long)> progress;      // render progress (done, total)
+};
+
+// "dirsig", "golfball" or "montecarlo"; else UsageError.
+Sampling parse_sampling(const std::string& name);
+std::string sampling_name(Sampling sampling);
+// "A:B" with 0 <= A < B (integers) as [A, B); else UsageError naming `option`.
+std::pair<long, long> parse_rows(const std::string& text, const std::string& option = "--rows");
+
+// Checks what can be checked before any file is read (output names and formats,
+// counts); throws UsageError.
+void check_job(const TraceJob& job);
+
+// Runs the job: reads every input, validates the scene against the materials,
+// renders and writes the cube (and the truth cube) atomically. Throws UsageError
+// (a --rows range outside the image, a .rad count that is not the .snd's band count),
+// DataError/IoError naming the file and line for bad inputs.
+TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks = {});
+
+}  // namespace sigchain::trace
