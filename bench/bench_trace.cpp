@@ -1,0 +1,417 @@
+// Benchmark of trace's render() (issue 4 "Benchmark"): a generated scene of a
+// 1001 x 1001-vertex terrain (2 million triangles) and 3000 instanced trees, a 512 x
+// 512 frame camera, golfball sampling, 3 bands x 7 spectral samples. Prints the total
+// time, the rays cast, Mrays/s, the Mrays/s of a bare Embree loop casting the same
+// number of rays (the same primary rays, then per hit the same share of hemisphere
+// rays in random upward directions and of shadow rays toward the sun) in the same
+// run, their ratio and the peak memory.
+//
+// A plain program (not Google Benchmark): one long run, not repeated timings.
+// Usage: bench_trace [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]] (default 1001 3000 512).
+#include <embree3/rtcore.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "geom/camera.hpp"
+#include "radiometry/atmosphere.hpp"
+#include "radiometry/material.hpp"
+#include "scene/scene.hpp"
+#include "trace/render.hpp"
+
+namespace {
+
+using namespace sigchain;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kTerrainExtentM = 1000;  // terrain side, metres (scene units)
+constexpr int kTerrainBlock = 100;        // terrain cells per facet side
+constexpr double kSunZenithDeg = 35, kSunAzimuthDeg = 150;
+
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+double peak_memory_mib() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+std::uint64_t splitmix64(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+double unit_random(std::uint64_t& state) {
+    state = splitmix64(state);
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+}
+
+// Rolling terrain height (m) at (x, y).
+double terrain_height(double x, double y) {
+    return 8 * std::sin(2 * M_PI * x / 230) * std::cos(2 * M_PI * y / 170) +
+           3 * std::sin(2 * M_PI * (x + y) / 61);
+}
+
+scene::FacetOrigin bench_origin(const std::string& what, std::size_t k) {
+    return {"bench_trace", 0, what + " " + std::to_string(k), "1-1-" + std::to_string(k + 1)};
+}
+
+// A height field of n x n vertices over the terrain extent, two triangles per cell
+// (counter-clockwise from above), one facet per kTerrainBlock^2 cells, materials 1
+// and 2 in a checkerboard of blocks.
+scene::MeshData terrain_mesh(int n) {
+    scene::MeshData m;
+    const double step = kTerrainExtentM / (n - 1);
+    m.vertices.reserve(3 * static_cast<std::size_t>(n) * n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            double x = -kTerrainExtentM / 2 + i * step, y = -kTerrainExtentM / 2 + j * step;
+            m.vertices.insert(m.vertices.end(), {static_cast<float>(x), static_cast<float>(y),
+                                                 static_cast<float>(terrain_height(x, y))});
+        }
+    const int blocks = (n - 2) / kTerrainBlock + 1;
+    for (int b = 0; b < blocks * blocks; ++b) {
+        scene::FacetAttributes a;
+        a.material_id = ((b / blocks + b % blocks) % 2) ? 2 : 1;
+        m.facets.push_back(a);
+        m.origins.push_back(bench_origin("terrain block", static_cast<std::size_t>(b)));
+    }
+    const std::size_t cells = static_cast<std::size_t>(n - 1) * (n - 1);
+    m.triangles.reserve(6 * cells);
+    m.triangle_facet.reserve(2 * cells);
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            std::uint32_t v00 = j * n + i, v10 = v00 + 1, v01 = v00 + n, v11 = v01 + 1;
+            std::uint32_t f = (j / kTerrainBlock) * blocks + i / kTerrainBlock;
+            m.triangles.insert(m.triangles.end(), {v00, v10, v11, v00, v11, v01});
+            m.triangle_facet.insert(m.triangle_facet.end(), {f, f});
+        }
+    return m;
+}
+
+// A tree: an ellipsoidal crown (16 segments x 12 rings, 352 triangles, material 3)
+// on a cylindrical trunk (32 triangles, material 4); base at the origin, metres.
+scene::MeshData tree_mesh() {
+    constexpr int S = 16, R = 12;
+    scene::MeshData m;
+    for (long id : {3L, 4L}) {
+        scene::FacetAttributes a;
+        a.material_id = id;
+        m.facets.push_back(a);
+        m.origins.push_back(bench_origin(id == 3 ? "crown" : "trunk", m.origins.size()));
+    }
+    auto vertex = [&](double x, double y, double z) {
+        m.vertices.insert(m.vertices.end(),
+                          {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
+        return static_cast<std::uint32_t>(m.vertices.size() / 3 - 1);
+    };
+    auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t f) {
+        m.triangles.insert(m.triangles.end(), {a, b, c});
+        m.triangle_facet.push_back(f);
+    };
+    // Crown: centre (0, 0, 6.5), radii 2.5 (horizontal) and 4 (vertical).
+    const std::uint32_t top = vertex(0, 0, 10.5);
+    for (int r = 1; r < R; ++r)
+        for (int s = 0; s < S; ++s) {
+            double th = M_PI * r / R, ph = 2 * M_PI * s / S;
+            vertex(2.5 * std::sin(th) * std::cos(ph), 2.5 * std::sin(th) * std::sin(ph),
+                   6.5 + 4 * std::cos(th));
+        }
+    const std::uint32_t bottom = vertex(0, 0, 2.5);
+    auto ring = [&](int r, int s) { return top + 1 + (r - 1) * S + (s % S); };
+    for (int s = 0; s < S; ++s) {
+        triangle(top, ring(1, s), ring(1, s + 1), 0);
+        triangle(bottom, ring(R - 1, s + 1), ring(R - 1, s), 0);
+        for (int r = 1; r + 1 < R; ++r) {
+            triangle(ring(r, s), ring(r + 1, s), ring(r + 1, s + 1), 0);
+            triangle(ring(r, s), ring(r + 1, s + 1), ring(r, s + 1), 0);
+        }
+    }
+    // Trunk: radius 0.3, from 0 to 3 (into the crown).
+    const std::uint32_t base = static_cast<std::uint32_t>(m.vertices.size() / 3);
+    for (int s = 0; s < S; ++s) {
+        double ph = 2 * M_PI * s / S;
+        vertex(0.3 * std::cos(ph), 0.3 * std::sin(ph), 0);
+        vertex(0.3 * std::cos(ph), 0.3 * std::sin(ph), 3);
+    }
+    for (int s = 0; s < S; ++s) {
+        std::uint32_t a = base + 2 * s, b = base + 2 * ((s + 1) % S);
+        triangle(a, b, b + 1, 1);
+        triangle(a, b + 1, a + 1, 1);
+    }
+    return m;
+}
+
+// Tree placements: random position, heading and size, base on the terrain.
+std::vector<scene::Affine> tree_transforms(int trees) {
+    std::vector<scene::Affine> out;
+    std::uint64_t state = 12345;
+    const double half = kTerrainExtentM / 2 - 20;
+    for (int t = 0; t < trees; ++t) {
+        double x = (2 * unit_random(state) - 1) * half, y = (2 * unit_random(state) - 1) * half;
+        double a = 2 * M_PI * unit_random(state), s = 0.8 + 0.4 * unit_random(state);
+        double c = std::cos(a) * s, sn = std::sin(a) * s;
+        out.push_back({c, -sn, 0, x, sn, c, 0, y, 0, 0, s, terrain_height(x, y) - 0.2});
+    }
+    return out;
+}
+
+// 512 x 512 nadir camera 1500 m above the terrain's centre, north up, 9 um pixels
+// behind a 9 mm lens: a 768 m footprint.
+geom::FrameCamera bench_camera(long side) {
+    geom::FrameCamera cam;
+    cam.position = {0, 0, 1500};
+    cam.forward = {0, 0, -1};
+    cam.right = {1, 0, 0};
+    cam.down = geom::cross(cam.forward, cam.right);
+    cam.focal_length_mm = 9 * 512.0 / static_cast<double>(side);
+    cam.pixel_pitch_mm = 0.009;
+    cam.rows = cam.columns = side;
+    return cam;
+}
+
+// ---- The bare Embree loop: the same geometry, Embree 3 directly. ----
+
+struct BareScene {
+    RTCDevice device = nullptr;
+    RTCScene top = nullptr, tree = nullptr;
+    ~BareScene() {
+        if (tree) rtcReleaseScene(tree);
+        if (top) rtcReleaseScene(top);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+void add_triangles(RTCDevice device, RTCScene scene, const scene::MeshData& m) {
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.vertices.size() / 3));
+    std::copy(m.vertices.begin(), m.vertices.end(), v);
+    auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
+                                                             RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+                                                             m.triangles.size() / 3));
+    std::copy(m.triangles.begin(), m.triangles.end(), t);
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(scene, g);
+    rtcReleaseGeometry(g);
+}
+
+void build_bare(BareScene& b, int n, int trees) {
+    b.device = rtcNewDevice(nullptr);
+    b.top = rtcNewScene(b.device);
+    b.tree = rtcNewScene(b.device);
+    add_triangles(b.device, b.top, terrain_mesh(n));
+    add_triangles(b.device, b.tree, tree_mesh());
+    rtcCommitScene(b.tree);
+    for (const auto& a : tree_transforms(trees)) {
+        RTCGeometry inst = rtcNewGeometry(b.device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(inst, b.tree);
+        float xf[12];
+        for (int k = 0; k < 12; ++k) xf[k] = static_cast<float>(a[k]);
+        rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xf);
+        rtcCommitGeometry(inst);
+        rtcAttachGeometry(b.top, inst);
+        rtcReleaseGeometry(inst);
+    }
+    rtcCommitScene(b.top);
+}
+
+RTCRayHit make_ray(const geom::Vec3& o, const geom::Vec3& d, float tnear) {
+    RTCRayHit rh{};
+    rh.ray.org_x = static_cast<float>(o[0]);
+    rh.ray.org_y = static_cast<float>(o[1]);
+    rh.ray.org_z = static_cast<float>(o[2]);
+    rh.ray.dir_x = static_cast<float>(d[0]);
+    rh.ray.dir_y = static_cast<float>(d[1]);
+    rh.ray.dir_z = static_cast<float>(d[2]);
+    rh.ray.tnear = tnear;
+    rh.ray.tfar = INFINITY;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+// Runs body(i) for i in [0, count) on `threads` threads (dynamic chunks).
+template <class F>
+void parallel_for(std::size_t count, unsigned threads, F body) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (;;) {
+            std::size_t begin = next.fetch_add(1024);
+            if (begin >= count) return;
+            std::size_t end = std::min(count, begin + 1024);
+            for (std::size_t i = begin; i < end; ++i) body(i);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+}
+
+struct BareResult {
+    std::uint64_t rays = 0;
+    double seconds = 0;
+};
+
+// Casts `primary` rays through the pixels (spp per pixel, jittered), then spreads
+// `hemisphere` intersection rays (random upward directions) and `shadow` occlusion
+// rays (toward the sun) evenly over the primary hits.
+BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t primary,
+                     std::uint64_t hemisphere, std::uint64_t shadow, unsigned threads) {
+    const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
+    const std::uint64_t spp = std::max<std::uint64_t>(1, primary / pixels);
+    std::vector<float> hit_point(3 * primary);
+    std::vector<char> hit(primary, 0);
+    const auto t0 = Clock::now();
+    parallel_for(primary, threads, [&](std::size_t k) {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        std::size_t p = (k / spp) % pixels;
+        std::uint64_t state = splitmix64(k);
+        double row = static_cast<double>(p / cam.columns) + unit_random(state);
+        double col = static_cast<double>(p % cam.columns) + unit_random(state);
+        const geom::Vec3 d = cam.direction(row, col);
+        RTCRayHit rh = make_ray(cam.position, d, 0.0f);
+        rtcIntersect1(b.top, &ctx, &rh);
+        if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+            hit[k] = 1;
+            for (int a = 0; a < 3; ++a)
+                hit_point[3 * k + a] = static_cast<float>(cam.position[a] + rh.ray.tfar * d[a]);
+        }
+    });
+    std::vector<std::size_t> hits;
+    for (std::size_t k = 0; k < primary; ++k)
+        if (hit[k]) hits.push_back(k);
+    const std::uint64_t h = hits.size();
+    const geom::Vec3 sun = radiometry::direction_from_angles(kSunZenithDeg, kSunAzimuthDeg);
+    if (h > 0)
+        parallel_for(h, threads, [&](std::size_t i) {
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            const float* q = &hit_point[3 * hits[i]];
+            geom::Vec3 o{q[0], q[1], q[2] + 1e-2};
+            std::uint64_t n_hemi = (i + 1) * hemisphere / h - i * hemisphere / h;
+            std::uint64_t n_shadow = (i + 1) * shadow / h - i * shadow / h;
+            std::uint64_t state = splitmix64(0xABCDEFULL + i);
+            for (std::uint64_t r = 0; r < n_hemi; ++r) {
+                // Uniform on the upper hemisphere.
+                double z = unit_random(state), phi = 2 * M_PI * unit_random(state);
+                double s = std::sqrt(std::max(0.0, 1 - z * z));
+                RTCRayHit rh = make_ray(o, {s * std::cos(phi), s * std::sin(phi), z}, 1e-3f);
+                rtcIntersect1(b.top, &ctx, &rh);
+            }
+            for (std::uint64_t r = 0; r < n_shadow; ++r) {
+                RTCRayHit rh = make_ray(o, sun, 1e-3f);
+                rtcOccluded1(b.top, &ctx, &rh.ray);
+            }
+        });
+    BareResult out;
+    out.seconds = seconds_since(t0);
+    out.rays = primary + hemisphere + shadow;
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int n = argc > 1 ? std::atoi(argv[1]) : 1001;
+    const int trees = argc > 2 ? std::atoi(argv[2]) : 3000;
+    const long side = argc > 3 ? std::atol(argv[3]) : 512;
+    if (n < 2 || trees < 0 || side < 1) {
+        std::fprintf(stderr, "usage: bench_trace [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]]\n");
+        return 2;
+    }
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::printf("bench_trace: terrain %d x %d vertices (%ld triangles), %d trees, %ld x %ld "
+                "pixels, golfball, 3 bands x 7 samples, %u threads\n",
+                n, n, 2L * (n - 1) * (n - 1), trees, side, side, threads);
+    const auto t_start = Clock::now();
+
+    // Scene through sigchain's Scene (Embree instances for the trees).
+    scene::Scene sc;
+    const std::size_t terrain = sc.add_mesh(terrain_mesh(n));
+    sc.place(terrain, scene::identity_affine());
+    const std::size_t tree = sc.add_mesh(tree_mesh());
+    int t = 0;
+    for (const auto& a : tree_transforms(trees)) sc.place(tree, a, "2." + std::to_string(++t) + "/");
+    sc.commit();
+    const double t_scene = seconds_since(t_start);
+
+    // Atmosphere: 3 bands of 7 samples, sun at 35 deg zenith; grey materials.
+    std::vector<io::Rad> rads;
+    std::vector<std::string> names;
+    const double band_start_um[3] = {0.45, 0.53, 0.62};
+    for (int b = 0; b < 3; ++b) {
+        std::vector<double> wl;
+        for (int k = 0; k < 7; ++k) wl.push_back(band_start_um[b] + 0.01 * k);
+        rads.push_back(radiometry::uniform_rad(wl, kSunZenithDeg, kSunAzimuthDeg, 0.15, 0.004,
+                                               0.9, 0.002));
+        names.push_back("band" + std::to_string(b + 1));
+    }
+    const auto atmosphere = radiometry::Atmosphere::from_rads(rads, names);
+    const std::size_t samples = atmosphere.grid().size();
+    const auto materials = radiometry::MaterialLibrary::from_optics(
+        {radiometry::grey_material(1, 0.12, samples), radiometry::grey_material(2, 0.2, samples),
+         radiometry::grey_material(3, 0.08, samples), radiometry::grey_material(4, 0.3, samples)});
+    const geom::FrameCamera cam = bench_camera(side);
+    const trace::FrameRayGenerator generator(cam);
+
+    trace::RenderInputs inputs;
+    inputs.scene = &sc;
+    inputs.atmosphere = &atmosphere;
+    inputs.materials = &materials;
+    inputs.camera = &generator;
+    trace::RenderOptions options;
+    options.sampling = trace::Sampling::Golfball;
+    options.samples_per_pixel = 1;
+    options.threads = threads;
+    const auto t_render0 = Clock::now();
+    const trace::RenderResult result = trace::render(inputs, options);
+    const double t_render = seconds_since(t_render0);
+    const double total = seconds_since(t_start);
+    const double peak_render_mib = peak_memory_mib();
+    const auto& s = result.stats;
+    const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
+    const double mrays = static_cast<double>(rays) / t_render / 1e6;
+
+    // The bare Embree loop, same geometry and the same ray counts.
+    BareScene bare;
+    build_bare(bare, n, trees);
+    const BareResult b = bare_loop(bare, cam, s.primary_rays, s.secondary_rays, s.shadow_rays,
+                                   threads);
+    const double bare_mrays = static_cast<double>(b.rays) / b.seconds / 1e6;
+
+    std::printf("scene build (sigchain Scene)   %10.2f s (%zu triangles placed)\n", t_scene,
+                sc.triangle_count());
+    std::printf("render                         %10.2f s (render's own clock %.2f s)\n", t_render,
+                s.seconds);
+    std::printf("total (scene + render)         %10.2f s\n", total);
+    std::printf("rays cast                      %10llu (%llu primary, %llu secondary, %llu "
+                "shadow; %llu primary hits)\n",
+                static_cast<unsigned long long>(rays),
+                static_cast<unsigned long long>(s.primary_rays),
+                static_cast<unsigned long long>(s.secondary_rays),
+                static_cast<unsigned long long>(s.shadow_rays),
+                static_cast<unsigned long long>(s.hits));
+    std::printf("render Mrays/s                 %10.2f\n", mrays);
+    std::printf("bare Embree loop Mrays/s       %10.2f (%llu rays in %.2f s)\n", bare_mrays,
+                static_cast<unsigned long long>(b.rays), b.seconds);
+    std::printf("ratio render / bare            %10.2f (target >= 0.7)\n", mrays / bare_mrays);
+    std::printf("peak memory after render       %10.1f MiB (target <= 2048)\n", peak_render_mib);
+    std::printf("peak memory with bare scene    %10.1f MiB\n", peak_memory_mib());
+    return 0;
+}
