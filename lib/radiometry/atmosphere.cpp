@@ -1,0 +1,373 @@
+// The atmosphere of a render: the .rad tables of every band merged on one spectral
+// grid; sun, path terms by view angle and the downwelled sky hemisphere (seed 3.4;
+// rad(5); atmosphere.hpp).
+#include "radiometry/atmosphere.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/error.hpp"
+
+namespace sigchain::radiometry {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegToRad = kPi / 180;
+// Two files' sun positions agree when within this (deg; atmosphere.hpp).
+constexpr double kSunTolerance_deg = 0.01;
+// Two files' view angles or sky-cell centres agree when within this (deg): the .rad
+// grids are printed with at least 6 significant digits.
+constexpr double kGridTolerance_deg = 1e-6;
+
+}  // namespace
+
+struct Atmosphere::Data {
+    SpectralGrid grid;
+    bool sun_known = false;
+    double sun_zenith_deg = 0, sun_azimuth_deg = 0;
+    Vec3 sun_direction{0, 0, 1};
+    std::vector<double> es_tau1;        // Es * tau1 per sample
+    std::vector<double> sun_at_ground;  // es_tau1, or zeros when the sun is down
+    // View angles (increasing) and, per view, per sample: tau2, L_us, L_ue.
+    std::vector<double> view_angles_deg, range_km;
+    std::vector<double> tau2, scattered, emitted;  // [view * samples + k]
+    bool has_sky = false;
+    std::vector<SkyCell> cells;                    // ring by ring, azimuth increasing
+    std::vector<double> ring_edges_deg;            // rings + 1 zenith edges, 0 .. 90
+    std::vector<double> azimuth_hi_deg;            // upper azimuth edge of each column
+    int rings = 0, columns = 0;
+    std::vector<double> sky_irradiance, sky_emitted_irradiance;  // horizontal, per sample
+
+    bool sun_up() const { return sun_known && sun_zenith_deg < 90; }
+    void place_sun(double zenith_deg, double azimuth_deg) {
+        sun_known = true;
+        sun_zenith_deg = zenith_deg;
+        sun_azimuth_deg = azimuth_deg;
+        sun_direction = direction_from_angles(zenith_deg, azimuth_deg);
+        sun_at_ground = sun_up() ? es_tau1 : std::vector<double>(es_tau1.size(), 0.0);
+    }
+    void build_sky_grid(const io::RadSky& sky);
+};
+
+namespace {
+
+std::string stem_of(const std::string& file) {
+    return std::filesystem::path(file).stem().string();
+}
+
+double azimuth_difference_deg(double a, double b) {
+    double d = std::fmod(std::abs(a - b), 360.0);
+    return std::min(d, 360 - d);
+}
+
+// The grids of `rad` (file `file`) against those of the first file.
+void check_same_grids(const io::Rad& first, const std::string& first_file, const io::Rad& rad,
+                      const std::string& file) {
+    auto fail = [&](const std::string& what) {
+        throw DataError({file, 0}, what + " differ from those of " + first_file);
+    };
+    if (rad.views.size() != first.views.size()) fail("view angles");
+    for (std::size_t v = 0; v < rad.views.size(); ++v)
+        if (std::abs(rad.views[v].view_angle_deg - first.views[v].view_angle_deg) >
+            kGridTolerance_deg)
+            fail("view angles");
+    if (rad.sky.has_value() != first.sky.has_value())
+        throw DataError({file, 0}, std::string(rad.sky ? "has" : "has no") +
+                                       " SIGCHAIN_RAD block (sun and sky), unlike " + first_file);
+    if (!rad.sky) return;
+    const io::RadSky &a = *first.sky, &b = *rad.sky;
+    if (std::abs(a.sun_zenith_deg - b.sun_zenith_deg) > kSunTolerance_deg ||
+        azimuth_difference_deg(a.sun_azimuth_deg, b.sun_azimuth_deg) > kSunTolerance_deg)
+        fail("sun zenith and azimuth");
+    if (a.zenith_count != b.zenith_count || a.azimuth_count != b.azimuth_count ||
+        a.cells.size() != b.cells.size())
+        fail("sky hemisphere grid");
+    for (std::size_t c = 0; c < a.cells.size(); ++c)
+        if (std::abs(a.cells[c].zenith_deg - b.cells[c].zenith_deg) > kGridTolerance_deg ||
+            std::abs(a.cells[c].azimuth_deg - b.cells[c].azimuth_deg) > kGridTolerance_deg)
+            fail("sky hemisphere grid");
+}
+
+void check_shape(const io::Rad& rad, const std::string& file) {
+    if (rad.samples.empty()) throw DataError({file, 0}, "no spectral samples");
+    if (rad.views.empty()) throw DataError({file, 0}, "no view angles");
+    for (const auto& v : rad.views)
+        if (v.path.size() != rad.samples.size())
+            throw DataError({file, 0}, "a view angle has " + std::to_string(v.path.size()) +
+                                           " path samples for " +
+                                           std::to_string(rad.samples.size()) + " spectral samples");
+    for (std::size_t v = 1; v < rad.views.size(); ++v)
+        if (!(rad.views[v].view_angle_deg > rad.views[v - 1].view_angle_deg))
+            throw DataError({file, 0}, "view angles are not increasing");
+    if (!rad.sky) return;
+    const io::RadSky& s = *rad.sky;
+    if (s.zenith_count < 1 || s.azimuth_count < 1 ||
+        s.cells.size() != static_cast<std::size_t>(s.zenith_count * s.azimuth_count))
+        throw DataError({file, 0}, "sky hemisphere: cell count is not rings x cells per ring");
+    for (const auto& c : s.cells)
+        if (c.scattered_radiance.size() != rad.samples.size() ||
+            c.emitted_radiance.size() != rad.samples.size())
+            throw DataError({file, 0}, "sky hemisphere: a cell's radiances do not match the "
+                                       "spectral samples");
+}
+
+}  // namespace
+
+// Ring edges halfway between ring centres, the first at 0 and the last at 90 deg;
+// azimuth edges halfway between column centres, wrapping round north.
+void Atmosphere::Data::build_sky_grid(const io::RadSky& sky) {
+    Data& d = *this;
+    d.rings = static_cast<int>(sky.zenith_count);
+    d.columns = static_cast<int>(sky.azimuth_count);
+    std::vector<double> zc(d.rings), ac(d.columns);
+    for (int r = 0; r < d.rings; ++r) zc[r] = sky.cells[r * d.columns].zenith_deg;
+    for (int c = 0; c < d.columns; ++c) ac[c] = sky.cells[c].azimuth_deg;
+    d.ring_edges_deg.assign(d.rings + 1, 0.0);
+    for (int r = 1; r < d.rings; ++r) d.ring_edges_deg[r] = 0.5 * (zc[r - 1] + zc[r]);
+    d.ring_edges_deg[d.rings] = 90;
+    d.azimuth_hi_deg.resize(d.columns);
+    for (int c = 0; c < d.columns; ++c) {
+        double next = c + 1 < d.columns ? ac[c + 1] : ac[0] + 360;
+        d.azimuth_hi_deg[c] = 0.5 * (ac[c] + next);
+    }
+}
+
+Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
+                                 const std::vector<std::string>& files) {
+    if (rads.empty() || rads.size() != files.size())
+        throw std::invalid_argument("Atmosphere::from_rads: one file name per .rad, at least one");
+    for (std::size_t i = 0; i < rads.size(); ++i) {
+        check_shape(rads[i], files[i]);
+        if (i > 0) check_same_grids(rads[0], files[0], rads[i], files[i]);
+    }
+    auto d = std::make_shared<Data>();
+    std::size_t n = 0;
+    for (const auto& rad : rads) n += rad.samples.size();
+    for (std::size_t b = 0; b < rads.size(); ++b) {
+        d->grid.band_names.push_back(stem_of(files[b]));
+        for (const auto& s : rads[b].samples) {
+            d->grid.wavelength_um.push_back(s.wavelength_um);
+            d->grid.band_of_sample.push_back(static_cast<int>(b));
+            d->es_tau1.push_back(s.solar_irradiance * s.sun_transmission);
+        }
+    }
+    const auto& views = rads[0].views;
+    std::size_t nv = views.size();
+    d->tau2.resize(nv * n), d->scattered.resize(nv * n), d->emitted.resize(nv * n);
+    for (std::size_t v = 0; v < nv; ++v) {
+        d->view_angles_deg.push_back(views[v].view_angle_deg);
+        d->range_km.push_back(views[v].range_km);
+        std::size_t k = 0;
+        for (const auto& rad : rads)
+            for (const auto& p : rad.views[v].path) {
+                d->tau2[v * n + k] = p.transmission;
+                d->scattered[v * n + k] = p.scattered_radiance;
+                d->emitted[v * n + k] = p.emitted_radiance;
+                ++k;
+            }
+    }
+    d->sky_irradiance.assign(n, 0.0);
+    d->sky_emitted_irradiance.assign(n, 0.0);
+    d->sun_at_ground.assign(n, 0.0);
+    if (rads[0].sky) {
+        const io::RadSky& sky = *rads[0].sky;
+        d->has_sky = true;
+        d->build_sky_grid(sky);
+        for (std::size_t c = 0; c < sky.cells.size(); ++c) {
+            int r = static_cast<int>(c) / d->columns, col = static_cast<int>(c) % d->columns;
+            SkyCell cell;
+            cell.zenith_deg = sky.cells[c].zenith_deg;
+            cell.azimuth_deg = sky.cells[c].azimuth_deg;
+            cell.zenith_lo_deg = d->ring_edges_deg[r];
+            cell.zenith_hi_deg = d->ring_edges_deg[r + 1];
+            cell.azimuth_hi_deg = d->azimuth_hi_deg[col];
+            cell.azimuth_lo_deg = col > 0 ? d->azimuth_hi_deg[col - 1]
+                                          : d->azimuth_hi_deg[d->columns - 1] - 360;
+            cell.solid_angle_sr = sky.cells[c].solid_angle_sr;
+            cell.direction = direction_from_angles(cell.zenith_deg, cell.azimuth_deg);
+            for (const auto& rad : rads) {
+                const auto& src = rad.sky->cells[c];
+                cell.scattered.insert(cell.scattered.end(), src.scattered_radiance.begin(),
+                                      src.scattered_radiance.end());
+                cell.emitted.insert(cell.emitted.end(), src.emitted_radiance.begin(),
+                                    src.emitted_radiance.end());
+            }
+            // Int cos(z) d(omega) over the cell = 0.5 (sin^2 z_hi - sin^2 z_lo) (a_hi - a_lo).
+            double s_hi = std::sin(cell.zenith_hi_deg * kDegToRad);
+            double s_lo = std::sin(cell.zenith_lo_deg * kDegToRad);
+            double projected = 0.5 * (s_hi * s_hi - s_lo * s_lo) *
+                               (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
+            for (std::size_t k = 0; k < n; ++k) {
+                d->sky_irradiance[k] += cell.scattered[k] * projected;
+                d->sky_emitted_irradiance[k] += cell.emitted[k] * projected;
+            }
+            d->cells.push_back(std::move(cell));
+        }
+        d->place_sun(sky.sun_zenith_deg, sky.sun_azimuth_deg);
+    }
+    Atmosphere a;
+    a.m_data = d;
+    return a;
+}
+
+const SpectralGrid& Atmosphere::grid() const { return m_data->grid; }
+Vec3 Atmosphere::sun_direction() const { return m_data->sun_direction; }
+bool Atmosphere::sun_up() const { return m_data->sun_up(); }
+double Atmosphere::sun_zenith_deg() const { return m_data->sun_zenith_deg; }
+double Atmosphere::sun_azimuth_deg() const { return m_data->sun_azimuth_deg; }
+
+std::span<const double> Atmosphere::sun_irradiance_at_ground() const {
+    return m_data->sun_at_ground;
+}
+
+namespace {
+
+// Index i and weight f so that a value at `x` is (1 - f) t[i] + f t[i + 1], clamped.
+void bracket(const std::vector<double>& t, double x, std::size_t& i, double& f) {
+    if (t.size() == 1 || x <= t.front()) {
+        i = 0, f = 0;
+        return;
+    }
+    if (x >= t.back()) {
+        i = t.size() - 2, f = 1;
+        return;
+    }
+    i = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin()) - 1;
+    f = (x - t[i]) / (t[i + 1] - t[i]);
+}
+
+}  // namespace
+
+void Atmosphere::path(double view_angle_deg, std::span<double> tau2, std::span<double> scattered,
+                      std::span<double> emitted) const {
+    const Data& d = *m_data;
+    std::size_t n = d.grid.size(), i = 0;
+    double f = 0;
+    bracket(d.view_angles_deg, view_angle_deg, i, f);
+    std::size_t j = d.view_angles_deg.size() == 1 ? i : i + 1;
+    auto lerp = [&](const std::vector<double>& t, std::span<double> out) {
+        if (out.empty()) return;
+        if (out.size() != n) throw std::invalid_argument("Atmosphere::path: span size");
+        for (std::size_t k = 0; k < n; ++k)
+            out[k] = (1 - f) * t[i * n + k] + f * t[j * n + k];
+    };
+    lerp(d.tau2, tau2);
+    lerp(d.scattered, scattered);
+    lerp(d.emitted, emitted);
+}
+
+double Atmosphere::range_km(double view_angle_deg) const {
+    const Data& d = *m_data;
+    std::size_t i = 0;
+    double f = 0;
+    bracket(d.view_angles_deg, view_angle_deg, i, f);
+    if (d.range_km.size() == 1) return d.range_km[0];
+    return (1 - f) * d.range_km[i] + f * d.range_km[i + 1];
+}
+
+double Atmosphere::min_view_angle_deg() const { return m_data->view_angles_deg.front(); }
+double Atmosphere::max_view_angle_deg() const { return m_data->view_angles_deg.back(); }
+
+bool Atmosphere::has_sky() const { return m_data->has_sky; }
+const std::vector<SkyCell>& Atmosphere::sky_cells() const { return m_data->cells; }
+
+// Ring by binary search over the ring edges (log of <= ~100 rings), column by binary
+// search over the azimuth edges after wrapping the azimuth into [lo_0, lo_0 + 360).
+int Atmosphere::sky_cell(const Vec3& dir) const {
+    const Data& d = *m_data;
+    if (!d.has_sky || !(dir[2] > 0)) return -1;
+    double zenith = std::acos(std::min(dir[2], 1.0)) / kDegToRad;
+    auto rit = std::upper_bound(d.ring_edges_deg.begin() + 1, d.ring_edges_deg.end() - 1, zenith);
+    int ring = static_cast<int>(rit - (d.ring_edges_deg.begin() + 1));
+    double azimuth = std::atan2(dir[0], dir[1]) / kDegToRad;  // clockwise from north
+    double lo = d.azimuth_hi_deg.back() - 360;
+    while (azimuth < lo) azimuth += 360;
+    while (azimuth >= lo + 360) azimuth -= 360;
+    auto ait = std::upper_bound(d.azimuth_hi_deg.begin(), d.azimuth_hi_deg.end() - 1, azimuth);
+    int column = static_cast<int>(ait - d.azimuth_hi_deg.begin());
+    return ring * d.columns + column;
+}
+
+void Atmosphere::add_sky_radiance(const Vec3& dir, double weight, std::span<double> out,
+                                  bool emitted) const {
+    int c = sky_cell(dir);
+    if (c < 0) return;
+    const SkyCell& cell = m_data->cells[c];
+    std::size_t n = std::min(out.size(), cell.scattered.size());
+    if (emitted)
+        for (std::size_t k = 0; k < n; ++k) out[k] += weight * (cell.scattered[k] + cell.emitted[k]);
+    else
+        for (std::size_t k = 0; k < n; ++k) out[k] += weight * cell.scattered[k];
+}
+
+std::span<const double> Atmosphere::sky_irradiance_horizontal() const {
+    return m_data->sky_irradiance;
+}
+
+std::span<const double> Atmosphere::sky_emitted_irradiance_horizontal() const {
+    return m_data->sky_emitted_irradiance;
+}
+
+void Atmosphere::set_sun(double zenith_deg, double azimuth_deg) {
+    auto d = std::make_shared<Data>(*m_data);
+    d->place_sun(zenith_deg, azimuth_deg);
+    m_data = d;
+}
+
+io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith_deg,
+                    double sun_azimuth_deg, double sun_irradiance_at_ground,
+                    double sky_radiance, double tau2, double path_radiance,
+                    const std::vector<double>& view_angles_deg, int zenith_rings,
+                    int azimuth_cells) {
+    if (wavelengths_um.empty() || view_angles_deg.empty() || zenith_rings < 1 ||
+        azimuth_cells < 1)
+        throw std::invalid_argument("uniform_rad: empty grid");
+    std::vector<double> wl = wavelengths_um, va = view_angles_deg;
+    std::sort(wl.begin(), wl.end());
+    std::sort(va.begin(), va.end());
+    io::Rad rad;
+    rad.sensor_altitude_km = 1;
+    rad.min_wavelength_um = wl.front(), rad.max_wavelength_um = wl.back();
+    rad.min_wavenumber_cm1 = 1e4 / wl.back(), rad.max_wavenumber_cm1 = 1e4 / wl.front();
+    rad.wavenumber_increment_cm1 =
+        wl.size() > 1 ? (rad.max_wavenumber_cm1 - rad.min_wavenumber_cm1) / (wl.size() - 1) : 0;
+    rad.min_view_angle_deg = va.front(), rad.max_view_angle_deg = va.back();
+    rad.view_angle_increment_deg = va.size() > 1 ? (va.back() - va.front()) / (va.size() - 1) : 0;
+    for (double w : wl) rad.samples.push_back({w, 1e4 / w, sun_irradiance_at_ground, 1.0});
+    for (double a : va) {
+        io::RadView v;
+        v.view_angle_deg = a;
+        v.range_km = rad.sensor_altitude_km / std::cos(std::min(std::abs(a), 89.0) * kDegToRad);
+        v.path.assign(wl.size(), io::RadPathSample{tau2, 0.0, path_radiance});
+        rad.views.push_back(std::move(v));
+    }
+    io::RadSky sky;
+    sky.sun_zenith_deg = sun_zenith_deg, sky.sun_azimuth_deg = sun_azimuth_deg;
+    sky.zenith_count = zenith_rings, sky.azimuth_count = azimuth_cells;
+    double dz = 90.0 / zenith_rings, da = 360.0 / azimuth_cells;
+    for (int r = 0; r < zenith_rings; ++r)
+        for (int c = 0; c < azimuth_cells; ++c) {
+            io::RadSkyCell cell;
+            cell.zenith_deg = (r + 0.5) * dz;
+            cell.azimuth_deg = (c + 0.5) * da;
+            // Exact: (cos z_lo - cos z_hi)(a_hi - a_lo).
+            cell.solid_angle_sr = (std::cos(r * dz * kDegToRad) - std::cos((r + 1) * dz * kDegToRad)) *
+                                  da * kDegToRad;
+            cell.scattered_radiance.assign(wl.size(), sky_radiance);
+            cell.emitted_radiance.assign(wl.size(), 0.0);
+            sky.cells.push_back(std::move(cell));
+        }
+    rad.sky = std::move(sky);
+    return rad;
+}
+
+Vec3 direction_from_angles(double zenith_deg, double azimuth_deg) {
+    double z = zenith_deg * kDegToRad, a = azimuth_deg * kDegToRad;
+    return {std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)};
+}
+
+}  // namespace sigchain::radiometry

@@ -1,0 +1,326 @@
+// The angular shape of reflection: a cosine (diffuse) part plus a specular lobe about
+// the mirror direction, normalised over the facet's hemisphere (brdf.hpp; DESIGN.md 4,
+// seed 3.6.5 and 5.2.1-5.2.3).
+#include "radiometry/brdf.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace sigchain::radiometry {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegToRad = kPi / 180;
+// m(theta_o) is tabulated on a uniform grid of u = cos(theta_o) in [0, 1]: m is an even
+// function of theta_o, hence smooth in u at normal incidence, and the grid is densest
+// in angle near grazing, where narrow lobes cross the horizon (step 1/2048 in u is
+// 0.028 deg in angle at grazing).
+constexpr int kTableSteps = 2048;
+// Nodes of the quadrature of the part of the lobe that straddles the horizon (m()).
+constexpr int kQuadratureNodes = 256;
+// A LinearCone row radius below this (deg) is raised to it: a zero radius would be a
+// delta lobe, which the `dirsig` model (Delta) represents instead.
+constexpr double kMinConeRadiusDeg = 0.05;
+
+// 1 - sin(r) / r without cancellation for small r (series r^2/6 - r^4/120 + r^6/5040).
+double one_minus_sinc(double r) {
+    if (r < 1e-2) {
+        double r2 = r * r;
+        return r2 / 6 - r2 * r2 / 120 + r2 * r2 * r2 / 5040;
+    }
+    return 1 - std::sin(r) / r;
+}
+
+double clamp_unit(double x) { return std::clamp(x, -1.0, 1.0); }
+
+}  // namespace
+
+// Lobe parameters and tables. A lobe is a density p(alpha) per steradian about the
+// mirror direction with Int p d(omega) = 1 over the sphere; `cdf(alpha)` is the
+// fraction of it within alpha of the mirror direction.
+struct Brdf::Impl {
+    LobeShape shape = LobeShape::None;
+    double half_angle_rad = 0;   // Uniform
+    double cos_half_angle = 1;   // Uniform
+    double uniform_density = 0;  // Uniform: 1 / (2 pi (1 - cos h))
+    std::array<double, 7> radius_rad{};  // LinearCone rows at 0, 15, ..., 90 deg
+    double exponent = 0;         // CosinePower: n
+    double k_per_rad = 0;        // Exponential: 1 / width
+    double exp_norm = 0;         // Exponential: (1 + k^2) / (2 pi (1 + exp(-k pi)))
+    // table[i] for u = i / kTableSteps: 1 / m(theta_o) for the fixed-shape lobes;
+    // LinearCone: 1 / (2 pi (1 - sin r / r) m(theta_o)) with r = r(theta_o), so that
+    // lobe / m = (1 - alpha / r) * table.
+    std::vector<double> table;
+
+    // Cone radius (rad) for a viewer at theta_o (rad): linear between the rows.
+    double cone_radius(double theta_o_rad) const {
+        double x = std::clamp(theta_o_rad / (15 * kDegToRad), 0.0, 6.0);
+        int i = std::min(static_cast<int>(x), 5);
+        double f = x - i;
+        return radius_rad[i] + f * (radius_rad[i + 1] - radius_rad[i]);
+    }
+    // Support of the lobe: p(alpha) = 0 beyond (rad).
+    double alpha_max(double radius) const {
+        switch (shape) {
+        case LobeShape::Uniform: return half_angle_rad;
+        case LobeShape::LinearCone: return radius;
+        case LobeShape::CosinePower: return kPi / 2;
+        default: return kPi;
+        }
+    }
+    // Normalised density per sr at alpha (rad); `radius` for LinearCone.
+    double density(double alpha, double radius) const {
+        switch (shape) {
+        case LobeShape::Uniform: return alpha < half_angle_rad ? uniform_density : 0;
+        case LobeShape::LinearCone:
+            return alpha < radius ? (1 - alpha / radius) / (2 * kPi * one_minus_sinc(radius)) : 0;
+        case LobeShape::CosinePower:
+            return alpha < kPi / 2 ? (exponent + 1) / (2 * kPi) * std::pow(std::cos(alpha), exponent)
+                                   : 0;
+        case LobeShape::Exponential: return exp_norm * std::exp(-k_per_rad * alpha);
+        default: return 0;
+        }
+    }
+    // Fraction of the lobe within alpha (rad) of its axis (closed forms of
+    // Int_0^alpha p 2 pi sin a da).
+    double cdf(double alpha, double radius) const {
+        alpha = std::clamp(alpha, 0.0, alpha_max(radius));
+        switch (shape) {
+        case LobeShape::Uniform:
+            return (1 - std::cos(alpha)) / (1 - cos_half_angle);
+        case LobeShape::LinearCone:
+            // Int_0^a (1 - x/r) sin x dx = 1 - cos a - (sin a - a cos a) / r.
+            return (1 - std::cos(alpha) - (std::sin(alpha) - alpha * std::cos(alpha)) / radius) /
+                   one_minus_sinc(radius);
+        case LobeShape::CosinePower:
+            return 1 - std::pow(std::cos(alpha), exponent + 1);
+        case LobeShape::Exponential: {
+            // Int_0^a e^(-k x) sin x dx = (1 - e^(-k a) (k sin a + cos a)) / (1 + k^2).
+            double k = k_per_rad;
+            return (1 - std::exp(-k * alpha) * (k * std::sin(alpha) + std::cos(alpha))) /
+                   (1 + std::exp(-k * kPi));
+        }
+        default: return 0;
+        }
+    }
+    // alpha (rad) with cdf(alpha) = u: closed form or safeguarded Newton.
+    double inverse_cdf(double u, double radius) const {
+        if (shape == LobeShape::Uniform) return std::acos(1 - u * (1 - cos_half_angle));
+        if (shape == LobeShape::CosinePower)
+            return std::acos(std::pow(u, 1 / (exponent + 1)));
+        double lo = 0, hi = alpha_max(radius), a = 0.5 * (lo + hi);
+        for (int it = 0; it < 60; ++it) {
+            double f = cdf(a, radius) - u;
+            if (f > 0) hi = a; else lo = a;
+            double d = density(a, radius) * 2 * kPi * std::sin(a);
+            double next = d > 0 ? a - f / d : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (std::abs(next - a) < 1e-13) return next;
+            a = next;
+        }
+        return a;
+    }
+    // m(theta_o): the part of the lobe above the horizon, its axis at zenith theta_r.
+    // A ring at alpha about the axis lies above the horizon for the fraction
+    // acos(-cot(theta_r) cot(alpha)) / pi of its azimuths when |90 - theta_r| < alpha
+    // < 90 + theta_r, all of it below that range, none above; the straddling range is
+    // integrated with the substitution alpha = lo + (hi - lo)(1 - cos t)/2, which
+    // removes the square-root behaviour of that fraction at both ends.
+    double mass_above_horizon(double theta_r, double radius) const {
+        double amax = alpha_max(radius);
+        double a1 = kPi / 2 - theta_r, a2 = std::min(kPi / 2 + theta_r, amax);
+        double mass = cdf(std::min(a1, amax), radius);
+        if (a2 <= a1) return mass;
+        double ct = std::cos(theta_r), st = std::sin(theta_r);
+        double dt = kPi / kQuadratureNodes, sum = 0;
+        for (int i = 0; i < kQuadratureNodes; ++i) {
+            double t = (i + 0.5) * dt;
+            double alpha = a1 + (a2 - a1) * 0.5 * (1 - std::cos(t));
+            double dalpha = (a2 - a1) * 0.5 * std::sin(t) * dt;
+            double c = -ct * std::cos(alpha) / (st * std::sin(alpha));
+            double fraction = std::acos(clamp_unit(c)) / kPi;
+            sum += density(alpha, radius) * fraction * 2 * kPi * std::sin(alpha) * dalpha;
+        }
+        return mass + sum;
+    }
+    void build_table() {
+        table.resize(kTableSteps + 1);
+        for (int i = 0; i <= kTableSteps; ++i) {
+            double theta = std::acos(static_cast<double>(i) / kTableSteps);
+            double radius = shape == LobeShape::LinearCone ? cone_radius(theta) : 0;
+            double m = mass_above_horizon(theta, radius);
+            table[i] = 1 / m;
+            if (shape == LobeShape::LinearCone) table[i] /= 2 * kPi * one_minus_sinc(radius);
+        }
+    }
+    double table_at(double u) const {
+        double x = std::clamp(u, 0.0, 1.0) * kTableSteps;
+        int i = std::min(static_cast<int>(x), kTableSteps - 1);
+        double f = x - i;
+        return table[i] + f * (table[i + 1] - table[i]);
+    }
+    bool lobed() const {
+        return shape != LobeShape::None && shape != LobeShape::Delta;
+    }
+    // lobe(alpha) / m(theta_o) for wi, wo in the facet frame (wi above the horizon).
+    double lobe_over_mass(const Vec3& wi, const Vec3& wo) const {
+        double c = clamp_unit(-wi[0] * wo[0] - wi[1] * wo[1] + wi[2] * wo[2]);  // cos alpha
+        double u = wo[2];
+        switch (shape) {
+        case LobeShape::Uniform:
+            return c > cos_half_angle ? uniform_density * table_at(u) : 0;
+        case LobeShape::CosinePower:
+            return c > 0 ? (exponent + 1) / (2 * kPi) * std::pow(c, exponent) * table_at(u) : 0;
+        case LobeShape::Exponential:
+            return exp_norm * std::exp(-k_per_rad * std::acos(c)) * table_at(u);
+        case LobeShape::LinearCone: {
+            double radius = cone_radius(std::acos(std::clamp(u, 0.0, 1.0)));
+            double alpha = std::acos(c);
+            return alpha < radius ? (1 - alpha / radius) * table_at(u) : 0;
+        }
+        default: return 0;
+        }
+    }
+};
+
+Brdf Brdf::lambertian() { return Brdf(); }
+
+Brdf Brdf::delta() {
+    Brdf b;
+    auto impl = std::make_shared<Impl>();
+    impl->shape = LobeShape::Delta;
+    b.m_impl = impl;
+    return b;
+}
+
+Brdf Brdf::cone(double half_angle_deg) {
+    if (!(half_angle_deg > 0 && half_angle_deg <= 180))
+        throw std::invalid_argument("Brdf::cone: half angle must be in (0, 180] deg");
+    auto impl = std::make_shared<Impl>();
+    impl->shape = LobeShape::Uniform;
+    impl->half_angle_rad = half_angle_deg * kDegToRad;
+    impl->cos_half_angle = std::cos(impl->half_angle_rad);
+    impl->uniform_density = 1 / (2 * kPi * (1 - impl->cos_half_angle));
+    impl->build_table();
+    Brdf b;
+    b.m_impl = impl;
+    return b;
+}
+
+Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg) {
+    auto impl = std::make_shared<Impl>();
+    impl->shape = LobeShape::LinearCone;
+    for (int i = 0; i < 7; ++i) {
+        if (!(base_radius_deg[i] >= 0 && base_radius_deg[i] <= 180))
+            throw std::invalid_argument("Brdf::linear_cone: radius must be in [0, 180] deg");
+        impl->radius_rad[i] = std::max(base_radius_deg[i], kMinConeRadiusDeg) * kDegToRad;
+    }
+    impl->build_table();
+    Brdf b;
+    b.m_impl = impl;
+    return b;
+}
+
+Brdf Brdf::phong(double exponent) {
+    if (!(exponent >= 0)) throw std::invalid_argument("Brdf::phong: exponent must be >= 0");
+    auto impl = std::make_shared<Impl>();
+    impl->shape = LobeShape::CosinePower;
+    impl->exponent = exponent;
+    impl->build_table();
+    Brdf b;
+    b.m_impl = impl;
+    return b;
+}
+
+Brdf Brdf::exponential(double width_deg) {
+    if (!(width_deg > 0)) throw std::invalid_argument("Brdf::exponential: width must be > 0");
+    auto impl = std::make_shared<Impl>();
+    impl->shape = LobeShape::Exponential;
+    double k = 1 / (width_deg * kDegToRad);
+    impl->k_per_rad = k;
+    // Int_sphere e^(-k alpha) = 2 pi (1 + e^(-k pi)) / (1 + k^2).
+    impl->exp_norm = (1 + k * k) / (2 * kPi * (1 + std::exp(-k * kPi)));
+    impl->build_table();
+    Brdf b;
+    b.m_impl = impl;
+    return b;
+}
+
+LobeShape Brdf::shape() const { return m_impl ? m_impl->shape : LobeShape::None; }
+
+bool Brdf::is_delta() const { return shape() == LobeShape::Delta; }
+
+// w = (1 - s) cos(theta_i) / pi + s lobe(alpha) / m(theta_o) (brdf.hpp). Lambertian and
+// Delta have no lobe here: Lambertian ignores s (its specularity is 0), Delta leaves
+// the s part to the caller.
+double Brdf::weight(const Vec3& wi, const Vec3& wo, double specularity) const {
+    if (wi[2] <= 0) return 0;
+    if (!m_impl || m_impl->shape == LobeShape::None) return wi[2] / kPi;
+    double diffuse = (1 - specularity) * wi[2] / kPi;
+    if (!m_impl->lobed() || specularity <= 0) return diffuse;
+    return diffuse + specularity * m_impl->lobe_over_mass(wi, wo);
+}
+
+double Brdf::lobe_weight(const Vec3& wi, const Vec3& wo) const {
+    if (wi[2] <= 0 || !m_impl || !m_impl->lobed()) return 0;
+    return m_impl->lobe_over_mass(wi, wo);
+}
+
+namespace {
+
+// Unit vector at (alpha, phi) about unit axis `a`, phi measured from any fixed
+// perpendicular (Frisvad-style branchless basis; the sign avoids the singularity).
+Vec3 about_axis(const Vec3& a, double alpha, double phi) {
+    double sign = std::copysign(1.0, a[2]);
+    double p = -1 / (sign + a[2]);
+    double q = a[0] * a[1] * p;
+    Vec3 t{1 + sign * a[0] * a[0] * p, sign * q, -sign * a[0]};
+    Vec3 b{q, sign + a[1] * a[1] * p, -a[1]};
+    double sa = std::sin(alpha), ca = std::cos(alpha);
+    double cp = std::cos(phi), sp = std::sin(phi);
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = sa * (cp * t[i] + sp * b[i]) + ca * a[i];
+    return v;
+}
+
+}  // namespace
+
+// Mixture sampling: a cosine direction (Malley's method) with probability 1 - s, a lobe
+// direction (alpha by the lobe's inverse CDF, azimuth uniform) with probability s.
+// Lambertian and Delta: cosine only (Delta's mirror term is the caller's).
+BrdfSample Brdf::sample(const Vec3& wo, double specularity, double u1, double u2,
+                        double u3) const {
+    BrdfSample out;
+    bool lobe = m_impl && m_impl->lobed() && u1 < specularity;
+    if (lobe) {
+        Vec3 axis = mirror(wo);
+        double radius = m_impl->shape == LobeShape::LinearCone
+                            ? m_impl->cone_radius(std::acos(std::clamp(wo[2], 0.0, 1.0)))
+                            : 0;
+        double alpha = m_impl->inverse_cdf(u2, radius);
+        out.wi = about_axis(axis, alpha, 2 * kPi * u3);
+    } else {
+        double r = std::sqrt(u2), phi = 2 * kPi * u3;
+        out.wi = {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - u2))};
+    }
+    out.pdf = pdf(out.wi, wo, specularity);
+    return out;
+}
+
+double Brdf::pdf(const Vec3& wi, const Vec3& wo, double specularity) const {
+    double cosine = std::max(0.0, wi[2]) / kPi;
+    if (!m_impl || !m_impl->lobed()) return cosine;
+    double s = std::clamp(specularity, 0.0, 1.0);
+    double p = (1 - s) * cosine;
+    if (s <= 0) return p;
+    double c = clamp_unit(-wi[0] * wo[0] - wi[1] * wo[1] + wi[2] * wo[2]);
+    double radius = m_impl->shape == LobeShape::LinearCone
+                        ? m_impl->cone_radius(std::acos(std::clamp(wo[2], 0.0, 1.0)))
+                        : 0;
+    return p + s * m_impl->density(std::acos(c), radius);
+}
+
+}  // namespace sigchain::radiometry

@@ -1,0 +1,200 @@
+// Materials as trace uses them: .mat entries with their .ems/.ext curves sampled on the
+// render's spectral grid, fall-off, specularity and lobe (material.hpp; mat(5), ems(5),
+// ext(5)).
+#include "radiometry/material.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "io/ext.hpp"
+
+namespace sigchain::radiometry {
+
+namespace {
+
+// Ids above this are refused: the id -> material index is a plain vector (constant time).
+constexpr long kMaxMaterialId = 1L << 24;
+constexpr double kKmPerCm = 1e-5;
+
+std::string resolve(const std::string& mat_path, const std::string& file) {
+    std::filesystem::path p(file);
+    if (p.is_absolute() || mat_path.empty() || mat_path == "-") return file;
+    return (std::filesystem::path(mat_path).parent_path() / p).string();
+}
+
+std::string label(const io::Material& m) {
+    return "material '" + m.name + "' (" + std::to_string(m.id) + ")";
+}
+
+// Reads a curve file with `read`, turning its failure into an error at the entry's line.
+template <class T, class Read>
+const T& cached(std::map<std::string, T>& cache, const std::string& path, const io::Material& m,
+                const std::string& mat_path, const char* tag, Read read) {
+    auto it = cache.find(path);
+    if (it != cache.end()) return it->second;
+    std::string prefix = label(m) + ": cannot read " + std::string(tag) + " " + path + ": ";
+    try {
+        return cache.emplace(path, read(path)).first->second;
+    } catch (const IoError& e) {
+        // The reader's message starts with the path, already in ours.
+        std::string why = e.what();
+        if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
+        throw IoError(SourceLocation{mat_path, m.line}.str() + ": " + prefix + why);
+    } catch (const Error& e) {
+        throw DataError({mat_path, m.line}, prefix + e.what());
+    }
+}
+
+// The Brdf of the entry's effective model (mat(5) REFLECTANCE MODELS).
+Brdf brdf_of(const io::Material& m, const io::Ems& ems, const std::string& mat_path) {
+    switch (io::effective_model(m)) {
+    case io::ReflectanceModel::Lambertian: return Brdf::lambertian();
+    case io::ReflectanceModel::Dirsig: return Brdf::delta();
+    case io::ReflectanceModel::Cone:
+        if (ems.specular_lobe.size() == static_cast<std::size_t>(io::kLobeRowCount)) {
+            std::array<double, 7> radii{};
+            for (int i = 0; i < io::kLobeRowCount; ++i)
+                radii[i] = ems.specular_lobe[i].base_radius_deg;
+            return Brdf::linear_cone(radii);
+        }
+        return Brdf::cone(m.cone_half_angle_deg.value_or(0));
+    case io::ReflectanceModel::Phong: return Brdf::phong(m.phong_exponent.value_or(0));
+    case io::ReflectanceModel::Exponential:
+        return Brdf::exponential(m.exponential_width_deg.value_or(0));
+    case io::ReflectanceModel::Table:
+        throw DataError({mat_path, m.line},
+                        label(m) + ": REFLECTANCE_MODEL table is not supported yet");
+    }
+    throw std::logic_error("brdf_of: unknown model");
+}
+
+// Fall-off F(theta): linear between the values at whole degrees, theta clamped to [0, 90].
+double fall_off_at(const std::array<double, io::kFallOffCount>& f, double theta_deg) {
+    double x = std::clamp(theta_deg, 0.0, 90.0);
+    int i = std::min(static_cast<int>(x), io::kFallOffCount - 2);
+    double t = x - i;
+    return f[i] + t * (f[i + 1] - f[i]);
+}
+
+}  // namespace
+
+MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat_path,
+                                      const SpectralGrid& grid) {
+    std::map<std::string, io::Ems> ems_cache;
+    std::map<std::string, io::Ext> ext_cache;
+    std::vector<MaterialOptics> out;
+    for (const auto& m : mat.materials) {
+        MaterialOptics o;
+        o.id = m.id, o.name = m.name, o.mat_file = mat_path, o.line = m.line;
+        const io::Ems& ems = cached(ems_cache, resolve(mat_path, m.emissivity_file), m, mat_path,
+                                    "EMISSIVITY_FILE", io::read_ems_file);
+        for (std::size_t c = 0; c < ems.curves.size(); ++c) {
+            std::vector<double> e(grid.size());
+            for (std::size_t k = 0; k < grid.size(); ++k)
+                e[k] = io::emissivity(ems, static_cast<int>(c), grid.wavelength_um[k]);
+            o.emissivity.push_back(std::move(e));
+        }
+        o.fall_off = ems.fall_off;
+        o.brdf = brdf_of(m, ems, mat_path);
+        o.specularity = o.brdf.shape() == LobeShape::None ? 0 : m.specularity;
+        o.transmissive = m.optical != io::OpticalDescription::Opaque;
+        if (o.transmissive) {
+            const io::Ext& ext = cached(ext_cache, resolve(mat_path, m.extinction_file), m,
+                                        mat_path, "EXTINCTION_FILE", io::read_ext_file);
+            o.extinction_per_km.resize(grid.size());
+            for (std::size_t k = 0; k < grid.size(); ++k)
+                o.extinction_per_km[k] = io::extinction_per_km(ext, 0, grid.wavelength_um[k]);
+        }
+        o.thickness_cm = m.thickness_cm.value_or(0);
+        o.double_sided = m.double_sided.value_or(false);
+        o.gaussian_texture = m.use_gaussian_texture.value_or(false);
+        out.push_back(std::move(o));
+    }
+    return from_optics(std::move(out));
+}
+
+MaterialLibrary MaterialLibrary::from_optics(std::vector<MaterialOptics> materials) {
+    MaterialLibrary lib;
+    long max_id = -1;
+    for (const auto& m : materials) {
+        if (m.id < 0 || m.id > kMaxMaterialId)
+            throw DataError({m.mat_file, m.line}, "material '" + m.name + "' (" +
+                                                      std::to_string(m.id) +
+                                                      "): MATERIAL_ID outside [0, " +
+                                                      std::to_string(kMaxMaterialId) + "]");
+        max_id = std::max(max_id, m.id);
+    }
+    lib.m_index.assign(static_cast<std::size_t>(max_id + 1), -1);
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        int& slot = lib.m_index[static_cast<std::size_t>(materials[i].id)];
+        if (slot >= 0)
+            throw DataError({materials[i].mat_file, materials[i].line},
+                            "material '" + materials[i].name + "' (" +
+                                std::to_string(materials[i].id) + "): MATERIAL_ID used twice");
+        slot = static_cast<int>(i);
+    }
+    lib.m_materials = std::move(materials);
+    return lib;
+}
+
+const MaterialOptics* MaterialLibrary::find(long id) const {
+    if (id < 0 || id >= static_cast<long>(m_index.size()) || m_index[id] < 0) return nullptr;
+    return &m_materials[m_index[id]];
+}
+
+void MaterialOptics::directional_emissivity(int curve, double theta_deg,
+                                            std::span<double> out) const {
+    const std::vector<double>& e = emissivity.at(curve);
+    double f = fall_off_at(fall_off, theta_deg);
+    std::size_t n = std::min(out.size(), e.size());
+    for (std::size_t k = 0; k < n; ++k) out[k] = e[k] * f;
+}
+
+// rho = 1 - eps F (opaque); (1 - eps F)(1 - t) for a transmissive slab (mat(5):
+// r + a + t = 1). A negative thickness means the material's own THICKNESS.
+void MaterialOptics::reflectance(int curve, double theta_deg, double thickness,
+                                 std::span<double> out) const {
+    const std::vector<double>& e = emissivity.at(curve);
+    double f = fall_off_at(fall_off, theta_deg);
+    std::size_t n = std::min(out.size(), e.size());
+    if (!transmissive) {
+        for (std::size_t k = 0; k < n; ++k) out[k] = 1 - e[k] * f;
+        return;
+    }
+    double d_km = (thickness < 0 ? thickness_cm : thickness) * kKmPerCm;
+    double c = std::cos(theta_deg * std::numbers::pi / 180);
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = (1 - e[k] * f) * (1 - io::transmittance(extinction_per_km[k], d_km, c));
+}
+
+// t = exp(-k d / |cos theta|) (ext(5); io::transmittance clamps |cos| at grazing). 0 for
+// an opaque material. A negative thickness means the material's own THICKNESS.
+void MaterialOptics::transmittance(double cos_theta, double thickness,
+                                   std::span<double> out) const {
+    if (!transmissive) {
+        std::fill(out.begin(), out.end(), 0.0);
+        return;
+    }
+    double d_km = (thickness < 0 ? thickness_cm : thickness) * kKmPerCm;
+    std::size_t n = std::min(out.size(), extinction_per_km.size());
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = io::transmittance(extinction_per_km[k], d_km, cos_theta);
+}
+
+MaterialOptics grey_material(long id, double reflectance, std::size_t samples,
+                             double specularity, Brdf brdf) {
+    MaterialOptics m;
+    m.id = id;
+    m.name = "grey";
+    m.emissivity.assign(1, std::vector<double>(samples, 1 - reflectance));
+    m.fall_off.fill(1.0);
+    m.specularity = specularity;
+    m.brdf = std::move(brdf);
+    return m;
+}
+
+}  // namespace sigchain::radiometry
