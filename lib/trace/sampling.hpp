@@ -1,0 +1,47 @@
+// Deterministic sampling helpers of the renderer: counter-based random numbers (so
+// a pixel's result depends only on the seed and its position, not on threads or row
+// slices), stratified pixel positions, and the fixed cosine-distributed pattern of
+// the `dirsig` strategy.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sigchain::trace {
+
+// splitmix64's output function (Steele, Lea, Flood 2014, "Fast splittable
+// pseudorandom number generators"): a bijective 64-bit mix.
+constexpr std::uint64_t mix64(std::uint64_t z) {
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+// Uniform in [0, 1) from (seed, row, column, sample, index): each coordinate is
+// folded in through mix64, so neighbouring counters give unrelated numbers.
+inline double uniform01(std::uint64_t seed, std::uint64_t row, std::uint64_t column,
+                        std::uint64_t sample, std::uint64_t index) {
+    std::uint64_t h = mix64(seed);
+    h = mix64(h ^ row);
+    h = mix64(h ^ (column + 0x632be59bd9b4e019ULL));
+    h = mix64(h ^ (sample + 0x8cb92ba72f3d8dd7ULL));
+    h = mix64(h ^ (index + 0x3c6ef372fe94f82aULL));
+    return static_cast<double>(h >> 11) * 0x1.0p-53;
+}
+
+// Offset (row, column) in [0, 1)^2 of primary sample `i` of `n` in a pixel: the unit
+// square is cut into floor(sqrt n) horizontal strips, strip k holding c_k of the
+// samples side by side with height c_k / n, so every stratum has area 1/n exactly
+// (a sqrt(n) x sqrt(n) grid when n is a square); jittered by (u_row, u_col). n = 1
+// is the pixel centre (no jitter), so single-sample renders are reproducible by hand.
+std::array<double, 2> stratified_offset(long i, long n, double u_row, double u_col);
+
+// The `dirsig` strategy's diffuse pattern: n directions (local frame, z = normal)
+// distributed as cos(theta)/pi, deterministic: the disk points r = sqrt((k + 1/2)/n),
+// phi = k * golden angle (a Vogel spiral, equal area per point) lifted to the
+// hemisphere (Malley's method: uniform on the disk -> cosine on the hemisphere).
+std::vector<std::array<double, 3>> cosine_pattern(long n);
+
+}  // namespace sigchain::trace
