@@ -46,7 +46,10 @@ std::string snd_view_angle_line(double min_deg, double max_deg, double inc) {
 void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
     io::Adv adv = io::read_adv_file(job.adv_path);
     FrameCamera cam = frame_camera(adv, job.adv_path);
-    scene::Scene sc = scene::load_scene_file(job.scene_path, io::meters_per_unit(adv.units));
+    scene::LoadOptions load;
+    load.scene_meters_per_unit = io::meters_per_unit(adv.units);
+    load.allow_degenerate = true;  // geometry only: a degenerate facet is never hit
+    scene::Scene sc = scene::load_scene(job.scene_path, load);
     if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
     ViewAngleReport rep = find_view_angles(cam, sc, job.grid);
     if (job.method == ViewAngleMethod::FieldOfView && !rep.field_of_view)

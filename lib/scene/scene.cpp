@@ -1,4 +1,5 @@
-// Embree 3 scene: meshes from .gdb facets, instances, nearest-hit queries.
+// Embree 3 scene: meshes with per-facet attributes, instances, nearest-hit and
+// occlusion queries.
 #include "scene/scene.hpp"
 
 #include <embree3/rtcore.h>
@@ -9,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "scene/mesh_build.hpp"
 
 namespace sigchain::scene {
 
@@ -22,22 +24,71 @@ void on_embree_error(void* user, RTCError code, const char* message) {
                      (message ? message : ""));
 }
 
+using Matrix3 = std::array<double, 9>;  // row-major
+
+// The inverse transpose of the 3x3 part of `t`: it maps object-space normals to scene
+// normals (normals are covectors: n' = M^-T n keeps n' orthogonal to every transformed
+// tangent M v). A mirroring transform (det < 0) keeps the normal on the same side of
+// the surface (outward stays outward), the opposite of the transformed winding.
+Matrix3 normal_matrix(const Affine& t) {
+    auto m = [&](int r, int c) { return t[4 * r + c]; };
+    // Cofactor matrix C (C_rc = cofactor of m_rc); M^-T = C / det.
+    Matrix3 c{m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1), m(1, 2) * m(2, 0) - m(1, 0) * m(2, 2),
+              m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0), m(0, 2) * m(2, 1) - m(0, 1) * m(2, 2),
+              m(0, 0) * m(2, 2) - m(0, 2) * m(2, 0), m(0, 1) * m(2, 0) - m(0, 0) * m(2, 1),
+              m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1), m(0, 2) * m(1, 0) - m(0, 0) * m(1, 2),
+              m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0)};
+    double det = m(0, 0) * c[0] + m(0, 1) * c[1] + m(0, 2) * c[2];
+    if (!(std::abs(det) > 0) || !std::isfinite(det))
+        throw std::invalid_argument("Scene::place: the transform's 3x3 part is singular");
+    for (double& v : c) v /= det;
+    return c;
+}
+
+// Drops vertices no triangle uses (an OBJ's unused `v`, a DEM cell whose triangles all
+// have a nodata corner): they would widen the exact bounds.
+void drop_unused_vertices(MeshData& m) {
+    constexpr auto kUnused = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> remap(m.vertices.size() / 3, kUnused);
+    for (std::uint32_t i : m.triangles) remap[i] = 0;
+    std::uint32_t next = 0;
+    for (std::size_t i = 0; i < remap.size(); ++i) {
+        if (remap[i] == kUnused) continue;
+        for (int k = 0; k < 3; ++k) m.vertices[3 * next + k] = m.vertices[3 * i + k];
+        remap[i] = next++;
+    }
+    if (next == remap.size()) return;
+    m.vertices.resize(3 * static_cast<std::size_t>(next));
+    for (std::uint32_t& i : m.triangles) i = remap[i];
+}
+
+struct Mesh {
+    RTCScene scene = nullptr;
+    MeshData data;  // vertices (scaled to scene units), triangle_facet, facets, origins
+};
+
+struct Placement {
+    std::size_t mesh = 0;
+    std::string prefix;
+    Matrix3 normal{};
+};
+
 }  // namespace
 
 Affine identity_affine() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; }
+
+MeshData mesh_from_gdb(const io::Gdb& gdb) {
+    return mesh_from_gdb(gdb, DegeneratePolicy::Keep, nullptr);
+}
 
 struct Scene::Impl {
     std::string error;
     RTCDevice device = nullptr;
     RTCScene top = nullptr;
-    std::vector<RTCScene> meshes;
-    std::vector<std::size_t> mesh_triangles;
-    std::vector<std::vector<float>> mesh_vertices;         // per mesh, xyz
-    std::vector<std::vector<std::uint32_t>> tri_to_facet;  // per mesh
-    std::vector<std::size_t> placed_mesh;                  // per placement
+    std::vector<Mesh> meshes;
+    std::vector<Placement> placements;
     Bounds bounds{{1, 1, 1}, {-1, -1, -1}};
     std::size_t placed_triangles = 0;
-    std::size_t placed = 0;
 
     Impl() {
         device = rtcNewDevice("verbose=0");
@@ -47,7 +98,7 @@ struct Scene::Impl {
         check();
     }
     ~Impl() {
-        for (RTCScene s : meshes) rtcReleaseScene(s);
+        for (Mesh& m : meshes) rtcReleaseScene(m.scene);
         if (top) rtcReleaseScene(top);
         if (device) rtcReleaseDevice(device);
     }
@@ -58,6 +109,8 @@ struct Scene::Impl {
             throw Error(e);
         }
     }
+    void grow_bounds(const std::vector<float>& v, const Affine& t);
+    std::optional<Hit> query(const Vec3& o, const Vec3& d, double tnear, double tfar) const;
 };
 
 Scene::Scene() : m_impl(std::make_unique<Impl>()) {}
@@ -65,84 +118,81 @@ Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 
-// Triangulates facet vertices (3 or 4; quads split along the 0-2 diagonal). Degenerate
-// facets are meshed as they are: Embree never reports a hit on a zero-area triangle;
-// io::gdb_problems() is what names them for the user.
-static void triangulate(const io::GdbFacet& f, std::vector<unsigned>& indices,
-                        std::vector<float>& verts, double scale,
-                        std::vector<std::uint32_t>& tri_to_facet, std::uint32_t facet) {
-    auto base = static_cast<unsigned>(verts.size() / 3);
-    for (const auto& v : f.vertices)
-        for (double c : v) verts.push_back(static_cast<float>(c * scale));
-    indices.insert(indices.end(), {base, base + 1, base + 2});
-    tri_to_facet.push_back(facet);
-    if (f.vertices.size() == 4) {
-        indices.insert(indices.end(), {base, base + 2, base + 3});
-        tri_to_facet.push_back(facet);
-    }
+std::size_t Scene::add_mesh(const io::Gdb& gdb, double scale) {
+    return add_mesh(mesh_from_gdb(gdb), scale);
 }
 
-std::size_t Scene::add_mesh(const io::Gdb& gdb, double scale) {
-    std::vector<unsigned> idx;
-    std::vector<float> verts;
-    std::vector<std::uint32_t> tri_to_facet;
-    std::uint32_t facet = 0;
-    for (const auto& obj : gdb.objects)
-        for (const auto& part : obj.parts)
-            for (const auto& f : part.facets)
-                triangulate(f, idx, verts, scale, tri_to_facet, facet++);
-    RTCScene mesh = rtcNewScene(m_impl->device);
-    m_impl->meshes.push_back(mesh);
-    std::size_t ntri = idx.size() / 3;
+std::size_t Scene::add_mesh(MeshData data, double scale) {
+    if (data.triangles.size() != 3 * data.triangle_facet.size() ||
+        data.origins.size() != data.facets.size())
+        throw std::invalid_argument("Scene::add_mesh: inconsistent MeshData sizes");
+    std::size_t nvert = data.vertices.size() / 3;
+    for (std::uint32_t i : data.triangles)
+        if (i >= nvert) throw std::invalid_argument("Scene::add_mesh: vertex index out of range");
+    for (std::uint32_t f : data.triangle_facet)
+        if (f >= data.facets.size())
+            throw std::invalid_argument("Scene::add_mesh: facet index out of range");
+    drop_unused_vertices(data);
+    nvert = data.vertices.size() / 3;
+    if (scale != 1.0)
+        for (float& c : data.vertices) c = static_cast<float>(c * scale);
+    Mesh mesh;
+    mesh.scene = rtcNewScene(m_impl->device);
+    m_impl->meshes.push_back(mesh);  // owned from here (released by ~Impl)
+    std::size_t ntri = data.triangle_facet.size();
     if (ntri > 0) {
         RTCGeometry g = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), verts.size() / 3));
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), nvert));
         auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
             g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), ntri));
+        if (!vb || !ib) rtcReleaseGeometry(g);
         m_impl->check();
-        std::copy(verts.begin(), verts.end(), vb);
-        std::copy(idx.begin(), idx.end(), ib);
+        std::copy(data.vertices.begin(), data.vertices.end(), vb);
+        std::copy(data.triangles.begin(), data.triangles.end(), ib);
         rtcCommitGeometry(g);
-        rtcAttachGeometry(mesh, g);
+        rtcAttachGeometry(mesh.scene, g);
         rtcReleaseGeometry(g);
     }
-    rtcCommitScene(mesh);
+    rtcCommitScene(mesh.scene);
     m_impl->check();
-    m_impl->mesh_triangles.push_back(ntri);
-    m_impl->mesh_vertices.push_back(std::move(verts));
-    m_impl->tri_to_facet.push_back(std::move(tri_to_facet));
+    data.triangles.clear();  // Embree holds its own copy
+    data.triangles.shrink_to_fit();
+    m_impl->meshes.back().data = std::move(data);
     return m_impl->meshes.size() - 1;
 }
 
-void Scene::place(std::size_t mesh, const Affine& t, std::string /*key_prefix*/) {
-    if (mesh >= m_impl->meshes.size()) throw std::out_of_range("Scene::place: no such mesh");
-    RTCGeometry inst = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(inst, m_impl->meshes[mesh]);
-    float m[12];
-    for (int i = 0; i < 12; ++i) m[i] = static_cast<float>(t[i]);
-    rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
-    rtcCommitGeometry(inst);
-    rtcAttachGeometryByID(m_impl->top, inst, static_cast<unsigned>(m_impl->placed));
-    rtcReleaseGeometry(inst);
-    m_impl->check();
-    ++m_impl->placed;
-    m_impl->placed_mesh.push_back(mesh);
-    m_impl->placed_triangles += m_impl->mesh_triangles[mesh];
-    // Exact bounds: transform every vertex (Embree's instance bounds are conservative).
-    const auto& v = m_impl->mesh_vertices[mesh];
-    Bounds& b = m_impl->bounds;
+// Exact bounds: transform every vertex (Embree's instance bounds are conservative).
+void Scene::Impl::grow_bounds(const std::vector<float>& v, const Affine& t) {
     for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
         Vec3 p;
         for (int r = 0; r < 3; ++r)
             p[r] =
                 t[4 * r] * v[i] + t[4 * r + 1] * v[i + 1] + t[4 * r + 2] * v[i + 2] + t[4 * r + 3];
-        bool first = b.empty();
+        bool first = bounds.empty();
         for (int r = 0; r < 3; ++r) {
-            b.lower[r] = first ? p[r] : std::min(b.lower[r], p[r]);
-            b.upper[r] = first ? p[r] : std::max(b.upper[r], p[r]);
+            bounds.lower[r] = first ? p[r] : std::min(bounds.lower[r], p[r]);
+            bounds.upper[r] = first ? p[r] : std::max(bounds.upper[r], p[r]);
         }
     }
+}
+
+void Scene::place(std::size_t mesh, const Affine& t, std::string key_prefix) {
+    if (mesh >= m_impl->meshes.size()) throw std::out_of_range("Scene::place: no such mesh");
+    Placement p{mesh, std::move(key_prefix), normal_matrix(t)};
+    RTCGeometry inst = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(inst, m_impl->meshes[mesh].scene);
+    float m[12];
+    for (int i = 0; i < 12; ++i) m[i] = static_cast<float>(t[i]);
+    rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+    rtcCommitGeometry(inst);
+    rtcAttachGeometryByID(m_impl->top, inst, static_cast<unsigned>(m_impl->placements.size()));
+    rtcReleaseGeometry(inst);
+    m_impl->check();
+    const MeshData& data = m_impl->meshes[mesh].data;
+    m_impl->placements.push_back(std::move(p));
+    m_impl->placed_triangles += data.triangle_facet.size();
+    m_impl->grow_bounds(data.vertices, t);
 }
 
 void Scene::commit() {
@@ -150,30 +200,105 @@ void Scene::commit() {
     m_impl->check();
 }
 
-std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d) const {
+namespace {
+
+void set_ray(RTCRay& ray, const Vec3& o, const Vec3& d, double len, double tnear, double tfar) {
+    ray.org_x = static_cast<float>(o[0]);
+    ray.org_y = static_cast<float>(o[1]);
+    ray.org_z = static_cast<float>(o[2]);
+    ray.dir_x = static_cast<float>(d[0] / len);
+    ray.dir_y = static_cast<float>(d[1] / len);
+    ray.dir_z = static_cast<float>(d[2] / len);
+    ray.tnear = static_cast<float>(std::max(0.0, tnear));
+    ray.tfar = tfar >= static_cast<double>(std::numeric_limits<float>::max())
+                   ? std::numeric_limits<float>::infinity()
+                   : static_cast<float>(tfar);
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+}
+
+}  // namespace
+
+std::optional<Hit> Scene::Impl::query(const Vec3& o, const Vec3& d, double tnear,
+                                      double tfar) const {
     double len = std::hypot(d[0], d[1], d[2]);
-    if (!(len > 0)) return std::nullopt;
+    if (!(len > 0) || !(tfar >= tnear)) return std::nullopt;
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    RTCRayHit rh{};
-    rh.ray.org_x = static_cast<float>(o[0]);
-    rh.ray.org_y = static_cast<float>(o[1]);
-    rh.ray.org_z = static_cast<float>(o[2]);
-    rh.ray.dir_x = static_cast<float>(d[0] / len);
-    rh.ray.dir_y = static_cast<float>(d[1] / len);
-    rh.ray.dir_z = static_cast<float>(d[2] / len);
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = std::numeric_limits<float>::infinity();
-    rh.ray.mask = 0xFFFFFFFFu;
+    RTCRayHit rh;
+    set_ray(rh.ray, o, d, len, tnear, tfar);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->top, &ctx, &rh);
+    rtcIntersect1(top, &ctx, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     Hit h;
     h.distance = rh.ray.tfar;
     h.object = rh.hit.instID[0];
-    h.facet = m_impl->tri_to_facet[m_impl->placed_mesh[h.object]][rh.hit.primID];
+    const Placement& p = placements[h.object];
+    h.facet = meshes[p.mesh].data.triangle_facet[rh.hit.primID];
+    // Embree 3 returns the unnormalised geometric normal of the instanced triangle in
+    // its object space, (v1 - v0) x (v2 - v0): to the scene frame with M^-T.
+    const double ng[3] = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+    for (int r = 0; r < 3; ++r)
+        h.normal[r] = p.normal[3 * r] * ng[0] + p.normal[3 * r + 1] * ng[1] +
+                      p.normal[3 * r + 2] * ng[2];
+    double n = std::hypot(h.normal[0], h.normal[1], h.normal[2]);
+    if (n > 0)
+        for (double& c : h.normal) c /= n;
     return h;
+}
+
+std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d) const {
+    return m_impl->query(o, d, 0.0, std::numeric_limits<double>::infinity());
+}
+
+std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d, double tnear,
+                                    double tfar) const {
+    return m_impl->query(o, d, tnear, tfar);
+}
+
+bool Scene::occluded(const Vec3& o, const Vec3& d, double tnear, double tfar) const {
+    double len = std::hypot(d[0], d[1], d[2]);
+    if (!(len > 0) || !(tfar >= tnear)) return false;
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRay ray;
+    set_ray(ray, o, d, len, tnear, tfar);
+    rtcOccluded1(m_impl->top, &ctx, &ray);
+    // Embree sets tfar to -inf when it finds an occluder.
+    return ray.tfar < 0;
+}
+
+const FacetAttributes& Scene::attributes(const Hit& hit) const {
+    return attributes(mesh_of_placement(hit.object), hit.facet);
+}
+
+const FacetOrigin& Scene::origin(const Hit& hit) const {
+    return origin(mesh_of_placement(hit.object), hit.facet);
+}
+
+std::string Scene::facet_key(const Hit& hit) const {
+    return m_impl->placements.at(hit.object).prefix + origin(hit).id;
+}
+
+std::size_t Scene::placement_count() const { return m_impl->placements.size(); }
+
+std::size_t Scene::mesh_of_placement(std::size_t object) const {
+    return m_impl->placements.at(object).mesh;
+}
+
+std::size_t Scene::facet_count(std::size_t mesh) const {
+    return m_impl->meshes.at(mesh).data.facets.size();
+}
+
+const FacetAttributes& Scene::attributes(std::size_t mesh, std::uint32_t facet) const {
+    return m_impl->meshes.at(mesh).data.facets.at(facet);
+}
+
+const FacetOrigin& Scene::origin(std::size_t mesh, std::uint32_t facet) const {
+    return m_impl->meshes.at(mesh).data.origins.at(facet);
 }
 
 Bounds Scene::bounds() const { return m_impl->bounds; }

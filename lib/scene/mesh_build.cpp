@@ -1,0 +1,115 @@
+// MeshBuilder: polygons to triangles with per-facet attributes, degenerate facets.
+#include "scene/mesh_build.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+
+namespace sigchain::scene {
+
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+}  // namespace
+
+std::string polygon_degeneracy(const std::vector<Vec3>& v) {
+    double size = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (std::size_t j = i + 1; j < v.size(); ++j) size = std::max(size, distance(v[i], v[j]));
+    if (size == 0) return "all vertices coincide";
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (std::size_t j = i + 1; j < v.size(); ++j)
+            if (distance(v[i], v[j]) <= 1e-9 * size)
+                return "vertices " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                       " coincide";
+    // Newell's normal: twice the polygon's vector area (as io::gdb_problems).
+    Vec3 n{};
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Vec3& a = v[i];
+        const Vec3& b = v[(i + 1) % v.size()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    if (std::hypot(n[0], n[1], n[2]) <= 1e-9 * size * size) return "zero area (collinear vertices)";
+    return "";
+}
+
+std::string facet_where(const FacetOrigin& origin) {
+    std::string where = SourceLocation{origin.file, origin.line}.str();
+    return origin.description.empty() ? where : where + ": " + origin.description;
+}
+
+MeshBuilder::MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings)
+    : m_policy(policy), m_warnings(warnings) {}
+
+std::uint32_t MeshBuilder::add_vertex(const Vec3& p) {
+    for (double c : p) m_mesh.vertices.push_back(static_cast<float>(c));
+    m_points.push_back(p);
+    return static_cast<std::uint32_t>(m_points.size() - 1);
+}
+
+bool MeshBuilder::faces_up(const std::vector<std::uint32_t>& t) const {
+    const Vec3& a = m_points.at(t.at(0));
+    const Vec3& b = m_points.at(t.at(1));
+    const Vec3& c = m_points.at(t.at(2));
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) >= 0;
+}
+
+bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
+                            const FacetAttributes& attributes, FacetOrigin origin) {
+    if (polygon.size() < 3)
+        throw DataError({origin.file, origin.line},
+                        origin.description + ": a facet needs at least 3 vertices");
+    if (m_policy != DegeneratePolicy::Keep) {
+        m_polygon.clear();
+        for (std::uint32_t i : polygon) m_polygon.push_back(m_points.at(i));
+        std::string why = polygon_degeneracy(m_polygon);
+        if (!why.empty()) {
+            if (m_policy == DegeneratePolicy::Error)
+                throw DataError({origin.file, origin.line},
+                                (origin.description.empty() ? "" : origin.description + ": ") +
+                                    why + " (a degenerate facet; trace --allow-degenerate skips it)");
+            if (m_warnings) m_warnings->push_back(facet_where(origin) + ": " + why + " (skipped)");
+            return false;
+        }
+    }
+    auto facet = static_cast<std::uint32_t>(m_mesh.facets.size());
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+        m_mesh.triangles.insert(m_mesh.triangles.end(), {polygon[0], polygon[k], polygon[k + 1]});
+        m_mesh.triangle_facet.push_back(facet);
+    }
+    m_mesh.facets.push_back(attributes);
+    m_mesh.origins.push_back(std::move(origin));
+    return true;
+}
+
+MeshData mesh_from_gdb(const io::Gdb& gdb, DegeneratePolicy policy,
+                       std::vector<std::string>* warnings) {
+    MeshBuilder b(policy, warnings);
+    std::vector<std::uint32_t> polygon;
+    for (const auto& obj : gdb.objects)
+        for (const auto& part : obj.parts)
+            for (const auto& f : part.facets) {
+                polygon.clear();
+                for (const auto& v : f.vertices) polygon.push_back(b.add_vertex(v));
+                FacetAttributes a;
+                a.material_id = f.material_id;
+                a.thickness_cm = f.thickness_cm;
+                a.temperature_c = f.temperature_c;
+                FacetOrigin o{gdb.file, f.line,
+                              "object " + quoted(obj.name) + " (" + obj.id + "), part " +
+                                  quoted(part.name) + " (" + part.id + "), facet " +
+                                  quoted(f.name) + " (" + f.id + ")",
+                              f.id};
+                b.add_facet(polygon, a, std::move(o));
+            }
+    return b.take();
+}
+
+}  // namespace sigchain::scene

@@ -1,0 +1,64 @@
+// Building a MeshData from polygons (any source: .gdb, OBJ, DEM), with the degenerate
+// facet policy of load_scene (error, skip with a warning, or keep).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace sigchain::scene {
+
+// What to do with a degenerate facet (coincident vertices or zero area).
+enum class DegeneratePolicy {
+    Keep,   // mesh it as it is (Embree never reports a hit on a zero-area triangle)
+    Skip,   // leave it out and add a warning
+    Error,  // throw DataError naming it
+};
+
+// Why a polygon (3 or more vertices, in order) is degenerate, or "" when it is not.
+// The criteria of io::gdb_problems (lib/io/gdb.cpp): all vertices coincide; two
+// vertices closer than 1e-9 x the polygon's size (its largest vertex distance); a
+// Newell area vector shorter than 1e-9 x size^2 ("zero area (collinear vertices)").
+std::string polygon_degeneracy(const std::vector<Vec3>& polygon);
+
+// Appends facets to a MeshData. Vertices are added once and shared by index.
+class MeshBuilder {
+public:
+    // `warnings` receives one "FILE:LINE: DESCRIPTION: why (skipped)" per skipped facet
+    // (may be null with Keep or Error).
+    MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings);
+
+    // Adds a vertex (mesh units) and returns its index.
+    std::uint32_t add_vertex(const Vec3& p);
+    // Adds one facet: the polygon of vertex indices (3 or more, fan-triangulated from the
+    // first vertex, so a quad is split along its 0-2 diagonal). Returns false when the
+    // facet was skipped as degenerate. Throws DataError (policy Error) naming `origin`.
+    bool add_facet(const std::vector<std::uint32_t>& polygon, const FacetAttributes& attributes,
+                   FacetOrigin origin);
+
+    // True if the triangle (3 vertex indices) winds counter-clockwise seen from +z
+    // (its normal (v1 - v0) x (v2 - v0) has z >= 0).
+    bool faces_up(const std::vector<std::uint32_t>& triangle) const;
+
+    std::size_t facet_count() const { return m_mesh.facets.size(); }
+    MeshData take() { return std::move(m_mesh); }
+
+private:
+    DegeneratePolicy m_policy;
+    std::vector<std::string>* m_warnings;
+    MeshData m_mesh;
+    std::vector<Vec3> m_points;   // double copies of the vertices, for the degeneracy test
+    std::vector<Vec3> m_polygon;  // scratch
+};
+
+// Triangulates a .gdb (quads split along the 0-2 diagonal) with per-facet attributes
+// (MATERIAL_ID, thickness, temperature) and origins, under `policy`.
+MeshData mesh_from_gdb(const io::Gdb& gdb, DegeneratePolicy policy,
+                       std::vector<std::string>* warnings);
+
+// "FILE:LINE: DESCRIPTION" (FILE alone when line is 0) of a facet, for messages.
+std::string facet_where(const FacetOrigin& origin);
+
+}  // namespace sigchain::scene
