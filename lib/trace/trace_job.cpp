@@ -248,7 +248,7 @@ TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
     say(hooks.info, std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) +
                         " primary, " + std::to_string(s.secondary_rays) + " secondary, " +
                         std::to_string(s.shadow_rays) + " shadow), " +
-                        std::to_string(s.hits) + " primary hits, " + format("%.3f", s.seconds) +
+                        std::to_string(s.hits) + " hits, " + format("%.3f", s.seconds) +
                         " s, " +
                         format("%.2f", s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6
                                                      : 0.0) +

@@ -1,4 +1,4 @@
-# Tests: control7 build_radiance therm trace
+# Tests: control7 build_radiance therm
 # Also requires: CMakeLists.txt (the version in its project() line)
 #
 # The shared behaviour of the skeleton tools until their issues land (3, 4, 5, 6):
@@ -75,14 +75,9 @@ check_not_implemented() {
 @test "therm rejects an unknown option with exit 2" { check_unknown_option therm; }
 @test "therm says not implemented yet and writes nothing" { check_not_implemented therm; }
 
-@test "trace --help prints usage and points to trace(1)" { check_help trace; }
-@test "trace --version prints the project version" { check_version trace; }
-@test "trace rejects an unknown option with exit 2" { check_unknown_option trace; }
-@test "trace says not implemented yet and writes nothing" { check_not_implemented trace; }
-
 @test "every skeleton tool has its section-1 man page" {
     local tool
-    for tool in control7 build_radiance therm trace; do
+    for tool in control7 build_radiance therm; do
         [ -f "$SIGCHAIN_SOURCE_DIR/man/$tool.1.scd" ] || fail "no man/$tool.1.scd"
     done
 }
