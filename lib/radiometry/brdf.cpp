@@ -50,9 +50,8 @@ struct Brdf::Impl {
     double exponent = 0;         // CosinePower: n
     double k_per_rad = 0;        // Exponential: 1 / width
     double exp_norm = 0;         // Exponential: (1 + k^2) / (2 pi (1 + exp(-k pi)))
-    // table[i] for u = i / kTableSteps: 1 / m(theta_o) for the fixed-shape lobes;
-    // LinearCone: 1 / (2 pi (1 - sin r / r) m(theta_o)) with r = r(theta_o), so that
-    // lobe / m = (1 - alpha / r) * table.
+    // table[i] for u = i / kTableSteps: 1 / m(theta_o) (LinearCone: with its radius
+    // r(theta_o) at that u).
     std::vector<double> table;
 
     // Cone radius (rad) for a viewer at theta_o (rad): linear between the rows.
@@ -153,7 +152,6 @@ struct Brdf::Impl {
             double radius = shape == LobeShape::LinearCone ? cone_radius(theta) : 0;
             double m = mass_above_horizon(theta, radius);
             table[i] = 1 / m;
-            if (shape == LobeShape::LinearCone) table[i] /= 2 * kPi * one_minus_sinc(radius);
         }
     }
     double table_at(double u) const {
@@ -179,7 +177,7 @@ struct Brdf::Impl {
         case LobeShape::LinearCone: {
             double radius = cone_radius(std::acos(std::clamp(u, 0.0, 1.0)));
             double alpha = std::acos(c);
-            return alpha < radius ? (1 - alpha / radius) * table_at(u) : 0;
+            return alpha < radius ? density(alpha, radius) * table_at(u) : 0;
         }
         default: return 0;
         }
