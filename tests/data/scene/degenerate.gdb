@@ -1,0 +1,51 @@
+# degenerate.gdb: plate.gdb with a second facet whose vertices are collinear (zero
+# area). Test data for the degenerate-facet policy of load_scene.
+OBJECT
+plate
+1-0-0
+PART
+top
+1-1-0
+FACE
+square
+1-1-1
+metal
+3
+plate
+25
+2
+-1
+-1
+null
+null
+null
+4
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+0
+0
+null
+FACE
+wedge
+1-1-2
+paint
+4
+plate
+-1
+-1
+-1
+-1
+null
+null
+null
+3
+2 0 0
+4 0 0
+3 0 0
+0 0 1
+0
+0
+null
