@@ -68,13 +68,13 @@ double azimuth_difference_deg(double a, double b) {
 void check_same_grids(const io::Rad& first, const std::string& first_file, const io::Rad& rad,
                       const std::string& file) {
     auto fail = [&](const std::string& what) {
-        throw DataError({file, 0}, what + " differ from those of " + first_file);
+        throw DataError({file, 0}, what + " " + first_file);
     };
-    if (rad.views.size() != first.views.size()) fail("view angles");
+    if (rad.views.size() != first.views.size()) fail("view angles differ from those of");
     for (std::size_t v = 0; v < rad.views.size(); ++v)
         if (std::abs(rad.views[v].view_angle_deg - first.views[v].view_angle_deg) >
             kGridTolerance_deg)
-            fail("view angles");
+            fail("view angles differ from those of");
     if (rad.sky.has_value() != first.sky.has_value())
         throw DataError({file, 0}, std::string(rad.sky ? "has" : "has no") +
                                        " SIGCHAIN_RAD block (sun and sky), unlike " + first_file);
@@ -82,14 +82,14 @@ void check_same_grids(const io::Rad& first, const std::string& first_file, const
     const io::RadSky &a = *first.sky, &b = *rad.sky;
     if (std::abs(a.sun_zenith_deg - b.sun_zenith_deg) > kSunTolerance_deg ||
         azimuth_difference_deg(a.sun_azimuth_deg, b.sun_azimuth_deg) > kSunTolerance_deg)
-        fail("sun zenith and azimuth");
+        fail("sun position differs from that of");
     if (a.zenith_count != b.zenith_count || a.azimuth_count != b.azimuth_count ||
         a.cells.size() != b.cells.size())
-        fail("sky hemisphere grid");
+        fail("sky hemisphere grid differs from that of");
     for (std::size_t c = 0; c < a.cells.size(); ++c)
         if (std::abs(a.cells[c].zenith_deg - b.cells[c].zenith_deg) > kGridTolerance_deg ||
             std::abs(a.cells[c].azimuth_deg - b.cells[c].azimuth_deg) > kGridTolerance_deg)
-            fail("sky hemisphere grid");
+            fail("sky hemisphere grid differs from that of");
 }
 
 void check_shape(const io::Rad& rad, const std::string& file) {
