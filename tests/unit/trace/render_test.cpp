@@ -1,0 +1,359 @@
+// render(): determinism across threads and row slices, instancing, Monte Carlo
+// convergence rate, truth layers and the missing-material error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "radiometry/atmosphere.hpp"
+#include "radiometry/brdf.hpp"
+#include "radiometry/material.hpp"
+#include "scene/scene.hpp"
+#include "trace/render.hpp"
+
+namespace sigchain::trace {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const std::vector<double> kWl{0.5, 0.6, 0.7};
+
+// Parallel rays along `dir`, pixel (r, c) aimed at ground point
+// (x0 + c pitch, y0 - r pitch, 0) from `distance` back along the ray.
+class Ortho final : public RayGenerator {
+public:
+    Ortho(long rows, long cols, double pitch, double x0, double y0, Vec3 dir)
+        : m_rows(rows), m_cols(cols), m_pitch(pitch), m_x0(x0), m_y0(y0), m_dir(dir) {
+        double n = std::hypot(dir[0], dir[1], dir[2]);
+        for (double& v : m_dir) v /= n;
+    }
+    long rows() const override { return m_rows; }
+    long columns() const override { return m_cols; }
+    void ray(double row, double col, Vec3& o, Vec3& d) const override {
+        Vec3 g{m_x0 + col * m_pitch, m_y0 - row * m_pitch, 0};
+        for (int i = 0; i < 3; ++i) o[i] = g[i] - 100 * m_dir[i];
+        d = m_dir;
+    }
+    double view_angle_deg(const Vec3& d) const override {
+        return std::acos(std::clamp(-d[2], -1.0, 1.0)) * 180 / kPi;
+    }
+
+private:
+    long m_rows, m_cols;
+    double m_pitch, m_x0, m_y0;
+    Vec3 m_dir;
+};
+
+struct Mesh {
+    scene::MeshData data;
+    void quad(const std::array<Vec3, 4>& v, long material, const Vec3& shift = {0, 0, 0}) {
+        auto base = static_cast<std::uint32_t>(data.vertices.size() / 3);
+        for (const auto& p : v)
+            for (int i = 0; i < 3; ++i) data.vertices.push_back(static_cast<float>(p[i] + shift[i]));
+        auto facet = static_cast<std::uint32_t>(data.facets.size());
+        data.triangles.insert(data.triangles.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        data.triangle_facet.insert(data.triangle_facet.end(), {facet, facet});
+        scene::FacetAttributes a;
+        a.material_id = material;
+        data.facets.push_back(a);
+        scene::FacetOrigin o;
+        o.file = "render_test.gdb";
+        o.line = static_cast<int>(10 + facet);
+        o.id = "1-1-" + std::to_string(facet + 1);
+        o.description = "object 'o' (1-0-0), part 'p' (1-1-0), facet 'f" + std::to_string(facet + 1) +
+                        "' (" + o.id + ")";
+        data.origins.push_back(o);
+    }
+    void box(const Vec3& lo, const Vec3& hi, long material, const Vec3& shift = {0, 0, 0}) {
+        double x0 = lo[0], y0 = lo[1], z0 = lo[2], x1 = hi[0], y1 = hi[1], z1 = hi[2];
+        quad({{{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}}, material, shift);
+        quad({{{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}}, material, shift);
+        quad({{{x1, y1, z0}, {x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}}}, material, shift);
+        quad({{{x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}}}, material, shift);
+        quad({{{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}}, material, shift);
+    }
+};
+
+scene::Scene single(scene::MeshData m) {
+    scene::Scene s;
+    s.place(s.add_mesh(std::move(m)), scene::identity_affine());
+    s.commit();
+    return s;
+}
+
+// A plate with two boxes (one glossy), sun and sky: shadows, neighbours, lobes.
+scene::Scene busy_scene() {
+    Mesh m;
+    m.quad({{{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}}}, 1);
+    m.box({-3, -2, 0}, {-1, 2, 3}, 2);
+    m.box({1, -1, 0}, {3, 1, 1.5}, 1);
+    return single(m.data);
+}
+
+radiometry::MaterialLibrary busy_materials() {
+    return radiometry::MaterialLibrary::from_optics(
+        {radiometry::grey_material(1, 0.3, kWl.size()),
+         radiometry::grey_material(2, 0.5, kWl.size(), 0.4, radiometry::Brdf::phong(20))});
+}
+
+radiometry::Atmosphere atmosphere(double sun_zenith, double sun_e, double sky) {
+    return radiometry::Atmosphere::from_rads(
+        {radiometry::uniform_rad(kWl, sun_zenith, 120, sun_e, sky, 0.9, 0.001)}, {"u.rad"});
+}
+
+RenderResult run(const scene::Scene& s, const radiometry::MaterialLibrary& mats,
+                 const radiometry::Atmosphere& atm, const RayGenerator& cam, RenderOptions o) {
+    RenderInputs in;
+    in.scene = &s;
+    in.materials = &mats;
+    in.atmosphere = &atm;
+    in.camera = &cam;
+    return render(in, o);
+}
+
+void expect_bit_identical(const image::Image& a, const image::Image& b) {
+    ASSERT_EQ(a.data.size(), b.data.size());
+    for (std::size_t i = 0; i < a.data.size(); ++i)
+        ASSERT_EQ(a.data[i], b.data[i]) << "at " << i;
+}
+
+TEST(Render, ThreadCountDoesNotChangeTheResult) {
+    scene::Scene s = busy_scene();
+    auto mats = busy_materials();
+    auto atm = atmosphere(40, 0.2, 0.004);
+    Ortho cam(12, 12, 0.7, -4, 4, {0.2, 0.1, -1});
+    for (Sampling smp : {Sampling::MonteCarlo, Sampling::Golfball, Sampling::Dirsig}) {
+        RenderOptions o;
+        o.sampling = smp;
+        o.samples_per_pixel = 4;
+        o.hemisphere_samples = 16;
+        o.truth = true;
+        o.threads = 1;
+        RenderResult one = run(s, mats, atm, cam, o);
+        o.threads = 3;
+        RenderResult three = run(s, mats, atm, cam, o);
+        expect_bit_identical(one.radiance, three.radiance);
+        expect_bit_identical(one.truth, three.truth);
+        EXPECT_EQ(one.stats.secondary_rays, three.stats.secondary_rays);
+    }
+}
+
+TEST(Render, RowSlicesMergeBitIdentically) {
+    scene::Scene s = busy_scene();
+    auto mats = busy_materials();
+    auto atm = atmosphere(40, 0.2, 0.004);
+    Ortho cam(10, 9, 0.8, -4, 4, {0.1, -0.2, -1});
+    RenderOptions o;
+    o.sampling = Sampling::MonteCarlo;
+    o.samples_per_pixel = 3;
+    o.hemisphere_samples = 8;
+    o.truth = true;
+    o.threads = 2;
+    RenderResult whole = run(s, mats, atm, cam, o);
+    ASSERT_EQ(whole.radiance.rows, 10);
+    image::Image merged(10, 9, whole.radiance.channels);
+    image::Image merged_truth(10, 9, whole.truth.channels);
+    for (auto [a, b] : {std::pair{0L, 3L}, std::pair{3L, 4L}, std::pair{4L, 10L}}) {
+        o.row_begin = a;
+        o.row_end = b;
+        RenderResult part = run(s, mats, atm, cam, o);
+        ASSERT_EQ(part.radiance.rows, b - a);
+        for (int c = 0; c < part.radiance.channels; ++c)
+            for (long r = a; r < b; ++r)
+                for (long x = 0; x < 9; ++x) merged.at(c, r, x) = part.radiance.at(c, r - a, x);
+        for (int c = 0; c < part.truth.channels; ++c)
+            for (long r = a; r < b; ++r)
+                for (long x = 0; x < 9; ++x) merged_truth.at(c, r, x) = part.truth.at(c, r - a, x);
+    }
+    expect_bit_identical(whole.radiance, merged);
+    expect_bit_identical(whole.truth, merged_truth);
+}
+
+TEST(Render, ThousandInstancesRenderAsThousandFlattenedCopies) {
+    // A 1 m cube on a 40 x 25 grid of 2 m spacing, as instances of one mesh and as one
+    // mesh holding 1000 translated copies. Translations are small integers, exact in
+    // float in both forms, so the geometry is the same; Embree's instance path
+    // transforms the ray instead of the vertices, so hit distances may differ in the
+    // last float bits: radiance within 1e-5 relative (float rounding of positions
+    // near 50 m is 4e-6 m, moving a shadow edge by at most that fraction of a pixel
+    // sample), and every categorical truth equal.
+    Mesh ground;
+    ground.quad({{{-10, -10, 0}, {90, -10, 0}, {90, 60, 0}, {-10, 60, 0}}}, 1);
+    Mesh cube;
+    cube.box({0, 0, 0}, {1, 1, 1}, 2);
+    Mesh flat = ground;
+    scene::Scene inst;
+    std::size_t g = inst.add_mesh(ground.data);
+    inst.place(g, scene::identity_affine());
+    std::size_t c = inst.add_mesh(cube.data);
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 25; ++j) {
+            scene::Affine t = scene::identity_affine();
+            // Offsets are multiples of 1/64 (exact in float), irregular so that no
+            // secondary ray grazes a whole row of cube edges at once (a ray through an
+            // edge may take either face, a tie that Embree breaks by traversal order).
+            double dx = 2.0 * i + ((i * 7 + j * 3) % 11) / 64.0;
+            double dy = 2.0 * j + ((i * 5 + j * 13) % 17) / 64.0;
+            t[3] = dx, t[7] = dy;
+            inst.place(c, t, std::to_string(i * 25 + j + 2) + "/");
+            flat.box({0, 0, 0}, {1, 1, 1}, 2, {dx, dy, 0});
+        }
+    inst.commit();
+    scene::Scene flattened = single(flat.data);
+    ASSERT_EQ(inst.triangle_count(), flattened.triangle_count());
+    auto mats = busy_materials();
+    auto atm = atmosphere(35, 0.2, 0.004);
+    Ortho cam(40, 64, 1.2345, 0.2345, 49.75, {0.0512, 0.1134, -1});
+    RenderOptions o;
+    o.truth = true;
+    o.threads = 2;
+    RenderResult a = run(inst, mats, atm, cam, o);
+    RenderResult b = run(flattened, mats, atm, cam, o);
+    ASSERT_EQ(a.radiance.data.size(), b.radiance.data.size());
+    long differing = 0;
+    double worst = 0;
+    for (std::size_t i = 0; i < a.radiance.data.size(); ++i) {
+        double d = std::abs(a.radiance.data[i] - b.radiance.data[i]) / std::abs(b.radiance.data[i]);
+        worst = std::max(worst, d);
+        if (d > 1e-5) ++differing;
+    }
+    EXPECT_EQ(differing, 0) << "worst relative difference " << worst;
+    RecordProperty("worst_relative_difference", std::to_string(worst));
+    int hit = 0, material = 1;
+    for (long r = 0; r < 40; ++r)
+        for (long x = 0; x < 64; ++x) {
+            EXPECT_EQ(a.truth.at(hit, r, x), b.truth.at(hit, r, x));
+            EXPECT_EQ(a.truth.at(material, r, x), b.truth.at(material, r, x));
+        }
+    EXPECT_EQ(a.stats.secondary_rays, b.stats.secondary_rays);
+}
+
+TEST(Render, MonteCarloErrorHalvesWithFourTimesTheSamples) {
+    // Floor centre line of an infinite street canyon (H = W = 10, black walls, no
+    // sun): radiance / (r L) is the strip view factor sin(atan(W / 2H)) = 1/sqrt(5)
+    // (Modest, Radiative Heat Transfer, config. 12 of appendix D). RMS error over 400
+    // independent pixels at N and 4N hemisphere samples: ratio 1/2 for a 1/sqrt(N)
+    // estimator. Each RMS is itself uncertain by ~1/sqrt(2 * 400) = 3.5%, so the
+    // ratio by ~5%; [0.4, 0.6] is three of those either side.
+    const double w = 10, h = 10, r = 0.5, sky = 0.01;
+    Mesh m;
+    const double len = 4000;
+    m.quad({{{-w / 2, -len, 0}, {w / 2, -len, 0}, {w / 2, len, 0}, {-w / 2, len, 0}}}, 1);
+    m.quad({{{-w / 2, len, 0}, {-w / 2, -len, 0}, {-w / 2, -len, h}, {-w / 2, len, h}}}, 2);
+    m.quad({{{w / 2, -len, 0}, {w / 2, len, 0}, {w / 2, len, h}, {w / 2, -len, h}}}, 2);
+    scene::Scene s = single(m.data);
+    auto mats = radiometry::MaterialLibrary::from_optics(
+        {radiometry::grey_material(1, r, kWl.size()), radiometry::grey_material(2, 0, kWl.size())});
+    auto atm = radiometry::Atmosphere::from_rads(
+        {radiometry::uniform_rad(kWl, 120, 0, 0.2, sky, 1, 0)}, {"u.rad"});
+    // 400 pixels in one column on the centre line x = 0, 1 m apart along y.
+    Ortho cam(400, 1, 1.0, -0.5, 200, {0, 0, -1});
+    const double exact = 1 / std::sqrt(5.0);
+    auto rms = [&](long n) {
+        RenderOptions o;
+        o.sampling = Sampling::MonteCarlo;
+        o.hemisphere_samples = n;
+        o.threads = 2;
+        RenderResult res = run(s, mats, atm, cam, o);
+        double e2 = 0;
+        for (long row = 0; row < 400; ++row) {
+            double e = res.radiance.at(0, row, 0) / (r * sky) - exact;
+            e2 += e * e / 400;
+        }
+        return std::sqrt(e2);
+    };
+    double e16 = rms(16), e64 = rms(64);
+    RecordProperty("rms16", std::to_string(e16));
+    RecordProperty("rms64", std::to_string(e64));
+    EXPECT_GT(e16, 0);
+    EXPECT_NEAR(e64 / e16, 0.5, 0.1);
+}
+
+TEST(Render, MissingMaterialNamesTheFacet) {
+    Mesh m;
+    m.quad({{{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}}, 1);
+    m.quad({{{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}}, 7);  // material 7 is absent
+    scene::Scene s = single(m.data);
+    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto atm = atmosphere(30, 0.2, 0.004);
+    Ortho cam(4, 4, 0.5, -1, 1, {0, 0, -1});
+    try {
+        validate_scene(s, mats);
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_EQ(e.where().file, "render_test.gdb");
+        EXPECT_EQ(e.where().line, 11);
+        EXPECT_NE(std::string(e.what()).find("facet 'f2' (1-1-2)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("material 7"), std::string::npos) << e.what();
+    }
+    RenderOptions o;
+    o.threads = 2;
+    try {
+        run(s, mats, atm, cam, o);
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("(1-1-2)"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Render, TruthLayersOfASunlitPlate) {
+    // Flat Lambertian plate, sun at zenith 40, uniform sky: hit 1, shadow 0, sky-view
+    // factor 1 (every hemisphere ray escapes), reflectance r, solar tau2 r Es cos/pi,
+    // downwelled tau2 r L, upwelled and transmission from the .rad; exact up to float.
+    Mesh m;
+    m.quad({{{-500, -500, 0}, {500, -500, 0}, {500, 500, 0}, {-500, 500, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    const double r = 0.3, es = 0.2, sky = 0.004, zen = 40;
+    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, kWl.size())});
+    auto atm = atmosphere(zen, es, sky);
+    Ortho cam(3, 3, 1, -1.5, 1.5, {0, 0, -1});
+    RenderOptions o;
+    o.truth = true;
+    o.threads = 1;
+    RenderResult res = run(s, mats, atm, cam, o);
+    const auto& names = res.truth.channel_names;
+    auto layer = [&](const std::string& n) {
+        auto it = std::find(names.begin(), names.end(), n);
+        EXPECT_NE(it, names.end()) << n;
+        return static_cast<int>(it - names.begin());
+    };
+    ASSERT_EQ(names, truth_layer_names(atm.grid()));
+    std::string band = atm.grid().band_names.at(0);
+    const float tol = 1e-6f;
+    EXPECT_EQ(res.truth.at(layer("hit"), 1, 1), 1.0f);
+    EXPECT_EQ(res.truth.at(layer("material_id"), 1, 1), 1.0f);
+    EXPECT_EQ(res.truth.at(layer("facet"), 1, 1), 0.0f);
+    EXPECT_EQ(res.truth.at(layer("shadow_fraction"), 1, 1), 0.0f);
+    EXPECT_NEAR(res.truth.at(layer("sky_view_factor"), 1, 1), 1.0, tol);
+    EXPECT_NEAR(res.truth.at(layer("range_m"), 1, 1), 100.0, 1e-4);
+    EXPECT_EQ(res.truth.at(layer("temperature_k"), 1, 1), -1.0f);
+    EXPECT_NEAR(res.truth.at(layer("reflectance_" + band), 1, 1), r, tol);
+    EXPECT_NEAR(res.truth.at(layer("solar_" + band), 1, 1),
+                0.9 * r * es * std::cos(zen * kPi / 180) / kPi, tol);
+    EXPECT_NEAR(res.truth.at(layer("downwelled_" + band), 1, 1), 0.9 * r * sky, tol);
+    EXPECT_NEAR(res.truth.at(layer("upwelled_" + band), 1, 1), 0.001, tol);
+    EXPECT_NEAR(res.truth.at(layer("transmission_" + band), 1, 1), 0.9, tol);
+    EXPECT_FALSE(res.stats.skipped.empty());
+    EXPECT_EQ(res.stats.primary_rays, 9u);
+}
+
+TEST(Render, MissesAreZero) {
+    Mesh m;
+    m.quad({{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto atm = atmosphere(30, 0.2, 0.004);
+    Ortho cam(2, 2, 10, 20, 20, {0, 0, -1});  // looks at (25..45, 15..-5): off the plate
+    RenderOptions o;
+    o.truth = true;
+    RenderResult res = run(s, mats, atm, cam, o);
+    for (float v : res.radiance.data) EXPECT_EQ(v, 0.0f);
+    EXPECT_EQ(res.truth.at(0, 0, 0), 0.0f);
+    EXPECT_EQ(res.truth.at(3, 0, 0), -1.0f);
+}
+
+}  // namespace
+}  // namespace sigchain::trace
