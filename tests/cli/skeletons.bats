@@ -1,4 +1,4 @@
-# Tests: control7 build_radiance therm
+# Tests: build_radiance therm
 # Also requires: CMakeLists.txt (the version in its project() line)
 #
 # The shared behaviour of the skeleton tools until their issues land (3, 4, 5, 6):
@@ -54,11 +54,6 @@ check_not_implemented() {
     assert_no_temp_files .
 }
 
-@test "control7 --help prints usage and points to control7(1)" { check_help control7; }
-@test "control7 --version prints the project version" { check_version control7; }
-@test "control7 rejects an unknown option with exit 2" { check_unknown_option control7; }
-@test "control7 says not implemented yet and writes nothing" { check_not_implemented control7; }
-
 @test "build_radiance --help prints usage and points to build_radiance(1)" {
     check_help build_radiance
 }
@@ -77,7 +72,7 @@ check_not_implemented() {
 
 @test "every skeleton tool has its section-1 man page" {
     local tool
-    for tool in control7 build_radiance therm; do
+    for tool in build_radiance therm; do
         [ -f "$SIGCHAIN_SOURCE_DIR/man/$tool.1.scd" ] || fail "no man/$tool.1.scd"
     done
 }

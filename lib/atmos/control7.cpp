@@ -1,0 +1,678 @@
+// control7's questions and the deck they build (seed 4.2.3.4-4.2.3.5, figs. 4.29-4.31).
+#include "atmos/control7.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "io/rsd.hpp"
+
+namespace sigchain::atmos {
+
+// ---- Answer sources ----
+
+LineAnswers::LineAnswers(TextInput input) : m_input(std::move(input)), m_cursor(m_input) {}
+
+std::optional<std::string> LineAnswers::next(const std::string&) {
+    if (m_cursor.at_end()) return std::nullopt;
+    return std::string(m_cursor.next("an answer").text);
+}
+
+SourceLocation LineAnswers::where() const { return m_cursor.where(); }
+
+std::optional<std::string> LineAnswers::leftover() {
+    if (m_cursor.at_end()) return std::nullopt;
+    return std::string(m_cursor.next("an answer").text);
+}
+
+std::optional<std::string> TerminalAnswers::next(const std::string& prompt) {
+    m_out << prompt << ' ' << std::flush;
+    std::string line;
+    if (!std::getline(m_in, line)) return std::nullopt;
+    ++m_line;
+    return std::string(trim(line));
+}
+
+void TerminalAnswers::complain(const std::string& message) {
+    m_out << "control7: " << message << "; please answer again\n";
+}
+
+void TerminalAnswers::inform(const std::string& text) { m_out << text << '\n'; }
+
+namespace {
+
+// A bad answer: the message after "WHERE: ".
+struct BadAnswer : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+std::string range_text(double lo, double hi, bool open_lo = false) {
+    return std::string(open_lo ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + "]";
+}
+
+const std::vector<QuestionInfo> kQuestions = {
+    {"deck", "ENTER FILE NAME FOR PRODUCED CARD DECK:"},
+    {"model", "CHOOSE A MODEL NUMBER: (MODEL 0-7)"},
+    {"radiosonde", "IS THE INPUT RADIOSONDE DATA (Y OR N)? (MODEL 0 AND 7)"},
+    {"itype", "CHOOSE A TYPE: (ITYPE 1-3)"},
+    {"iemsct", "ENTER EXECUTION MODE: (IEMSCT 0-3)"},
+    {"imult", "MULTIPLE SCATTERING MODE: (IMULT 0-1)"},
+    {"modify_tp", "DO YOU WANT TO MODIFY THE DEFAULT ALTITUDE PROFILES OF TEMPERATURE AND PRESSURE (Y OR N)?"},
+    {"m1", "MODEL FOR TEMPERATURE AND PRESSURE (1-6)? (if modify_tp)"},
+    {"modify_h2o", "DO YOU WANT TO MODIFY THE DEFAULT ALTITUDE PROFILE OF WATER VAPOR (Y OR N)?"},
+    {"m2", "MODEL FOR WATER VAPOR (1-6)? (if modify_h2o)"},
+    {"modify_o3", "DO YOU WANT TO MODIFY THE DEFAULT ALTITUDE PROFILES OF OZONE (Y OR N)?"},
+    {"m3", "MODEL FOR OZONE (1-6)? (if modify_o3)"},
+    {"modify_ch4", "DO YOU WANT TO MODIFY THE DEFAULT SEASONAL DEPENDENCE OF CH4 (Y OR N)?"},
+    {"m4", "MODEL FOR CH4 (1-6)? (if modify_ch4)"},
+    {"modify_n2o", "DO YOU WANT TO MODIFY THE DEFAULT SEASONAL DEPENDENCE OF N2O (Y OR N)?"},
+    {"m5", "MODEL FOR N2O (1-6)? (if modify_n2o)"},
+    {"modify_co", "DO YOU WANT TO MODIFY THE DEFAULT SEASONAL DEPENDENCE OF CO (Y OR N)?"},
+    {"m6", "MODEL FOR CO (1-6)? (if modify_co)"},
+    {"print_profiles", "DO YOU WANT TO PRINT THE ATMOSPHERIC PROFILES (Y OR N)?"},
+    {"tbound", "WHAT IS THE TEMPERATURE OF THE EARTH (BOUNDARY LAYER) IN DEGREES K (0.0 USES THE FIRST RADIOSONDE READING)?"},
+    {"salb", "ENTER THE SURFACE ALBEDO (0.00 IS A BLACKBODY)"},
+    {"ihaze", "CHOOSE AEROSOL EXTINCTION TYPE: (IHAZE 0-10, not 7)"},
+    {"icstl", "AIR MASS CHARACTER (1 OPEN OCEAN TO 10 STRONG CONTINENTAL INFLUENCE)? (IHAZE 3)"},
+    {"wss", "WHAT IS THE CURRENT WIND SPEED? (M/S) (IHAZE 3 AND 10)"},
+    {"whh", "WHAT IS THE 24-HOUR AVERAGE WIND SPEED? (M/S) (IHAZE 3)"},
+    {"iseasn", "CHOOSE A SEASON: (ISEASN 0-2)"},
+    {"ivulcn", "CHOOSE A VOLCANIC EXTINCTION: (IVULCN 0-8)"},
+    {"icld", "CHOOSE A CLOUD MODEL: (ICLD 0-10 OR 18-20)"},
+    {"cirrus_thickness", "CIRRUS THICKNESS (KM, 0 FOR THE MODEL'S)? (ICLD 18-20)"},
+    {"cirrus_base", "CIRRUS BASE ALTITUDE (KM, 0 FOR THE MODEL'S)? (ICLD 18-20)"},
+    {"cirrus_extinction", "CIRRUS EXTINCTION AT 0.55 MICRONS (KM-1, 0 FOR THE MODEL'S)? (ICLD 18-20)"},
+    {"ivsa", "DO YOU WANT TO USE ARMY VERTICAL STRUCTURE ALGORITHM FOR AEROSOLS IN BOUNDARY LAYER (Y OR N)?"},
+    {"vsa_ceiling", "CLOUD CEILING HEIGHT (KM)? (IVSA 1)"},
+    {"vsa_thickness", "CLOUD THICKNESS (KM)? (IVSA 1)"},
+    {"vsa_inversion", "HEIGHT OF THE INVERSION OR BOUNDARY LAYER (KM)? (IVSA 1)"},
+    {"override_vis", "DO YOU WANT TO OVERRIDE THE DEFAULT VISIBILITY (Y OR N)?"},
+    {"vis", "VISIBILITY (KM)? (if override_vis)"},
+    {"rain_rate", "WHAT IS THE RAIN RATE? (MM/HR)"},
+    {"gndalt", "WHAT IS THE GROUND ALTITUDE ABOVE SEA LEVEL? (KM)"},
+    {"levels", "ENTER NUMBER OF ATMOSPHERIC LEVELS TO BE INSERTED: (MODEL 0 AND 7)"},
+    {"title", "ENTER NAME OF NEW ATMOSPHERE: (MODEL 0 AND 7)"},
+    {"aerosol_by_layer", "DO YOU WANT TO READ IN AEROSOL CONTROL BY LAYER (Y OR N)? (MODEL 0 AND 7)"},
+    {"rsd", "WHAT FILE CONTAINS THE RADIOSONDE DATA? (MODEL 0 AND 7)"},
+    {"h1", "ENTER H1, INITIAL ALTITUDE (KM) (OBSERVER POSITION):"},
+    {"h2", "ENTER H2, FINAL ALTITUDE (KM): (ITYPE 2 AND 3, IEMSCT 3)"},
+    {"angle", "ENTER INITIAL ZENITH ANGLE (DEGREES) AS MEASURED FROM INITIAL ALTITUDE: (ITYPE 2 AND 3)"},
+    {"range", "ENTER PATH (RANGE) LENGTH (KM): (ITYPE 1 AND 2)"},
+    {"beta", "ENTER EARTH CENTER ANGLE SUBTENDED BY H1 AND H2 (DEGREES, N FOR NONE): (ITYPE 2)"},
+    {"override_radius", "DO YOU WANT TO OVERRIDE THE DEFAULT EARTH RADIUS (Y OR N)? (ITYPE 2 AND 3)"},
+    {"radius", "EARTH RADIUS (KM)? (if override_radius)"},
+    {"short_path", "USE THE SHORT PATH FROM OBSERVER'S TO FINAL ALTITUDE (Y OR N)? (ITYPE 2)"},
+    {"isourc", "SOURCE: 0 SUN, 1 MOON? (IEMSCT 3)"},
+    {"anglem", "MOON PHASE ANGLE (DEGREES, 0 IS FULL MOON)? (ISOURC 1)"},
+    {"iparm", "CHOOSE A TYPE OF GEOMETRY SPECIFICATION: (IPARM 0-2, IEMSCT 2)"},
+    {"iph", "ENTER PHASE FUNCTION TYPE: (IPH 0 OR 2, IEMSCT 2)"},
+    {"g", "ENTER THE HENYEY-GREENSTEIN ASYMMETRY PARAMETER G (-1 TO 1): (IPH 0)"},
+    {"iday", "ENTER THE DAY OF THE YEAR (I.E. FROM 1 TO 365): (IEMSCT 2 AND 3)"},
+    {"obs_lat", "ENTER OBSERVER LATITUDE (-90 TO 90): (IPARM 0 AND 1)"},
+    {"obs_lon", "ENTER OBSERVER LONGITUDE (0 TO 360, DEGREES WEST): (IPARM 0 AND 1)"},
+    {"src_lat", "ENTER SOURCE LATITUDE (-90 TO 90): (IPARM 0)"},
+    {"src_lon", "ENTER SOURCE LONGITUDE (0 TO 360, DEGREES WEST): (IPARM 0)"},
+    {"rel_azimuth", "ENTER AZIMUTH ANGLE BETWEEN THE LINE OF SIGHT AND THE SUN (-180 TO 180): (IPARM 2)"},
+    {"sun_zenith", "ENTER THE ZENITH ANGLE OF THE SUN (0 TO 180): (IPARM 2)"},
+    {"time", "ENTER TIME OF DAY IN DECIMAL HOURS: (GREENWICH, IPARM 1)"},
+    {"psipo", "ENTER PATH AZIMUTH AS DEGREES EAST OF NORTH: (IPARM 0 AND 1)"},
+    {"units", "WHAT UNITS ARE YOU USING FOR WAVELENGTH? (MICRONS OR NANOMETERS):"},
+    {"wavelengths", "INPUT STARTING AND ENDING WAVELENGTH ON BANDPASS"},
+    {"intervals", "HOW MANY INTERVALS ACROSS BANDPASS? (MAXIMUM 396)"},
+    {"irpt", "SELECT IRPT: (0, 1, 3 OR 4)"},
+};
+
+// The menus printed before some questions on a terminal (fig. 4.30).
+const std::map<std::string, std::string> kMenus = {
+    {"model",
+     "INPUT ATMOSPHERIC MODEL TYPE\n"
+     "MODEL= 0 IF METEOROLOGICAL DATA ARE SPECIFIED (HORIZONTAL PATH ONLY)\n"
+     "       1 TROPICAL ATMOSPHERE\n       2 MID-LATITUDE SUMMER\n"
+     "       3 MID-LATITUDE WINTER\n       4 SUB-ARCTIC SUMMER\n       5 SUB-ARCTIC WINTER\n"
+     "       6 1976 U.S. STANDARD ATMOSPHERE\n       7 NEW MODEL ATMOSPHERE (RADIOSONDE DATA)"},
+    {"itype",
+     "INPUT THE TYPE OF ATMOSPHERIC PATH\n"
+     "ITYPE= 1 FOR A HORIZONTAL (CONSTANT PRESSURE) PATH\n"
+     "       2 VERTICAL OR SLANT PATH BETWEEN TWO ALTITUDES\n"
+     "       3 VERTICAL OR SLANT PATH TO SPACE"},
+    {"iemsct",
+     "PROGRAM EXECUTION MODE\n"
+     "IEMSCT= 0 PROGRAM EXECUTION IN TRANSMITTANCE MODE\n"
+     "        1 PROGRAM EXECUTION IN RADIANCE MODE\n"
+     "        2 PROGRAM EXECUTION IN RADIANCE MODE WITH SOLAR/LUNAR SCATTERED RADIANCE "
+     "INCLUDED\n        3 DIRECT SOLAR IRRADIANCE"},
+    {"imult",
+     "MULTIPLE SCATTERING EXECUTION MODE\n"
+     "IMULT= 0 PROGRAM EXECUTED W/OUT MULTIPLE SCATTERING\n"
+     "       1 PROGRAM EXECUTED WITH MULTIPLE SCATTERING"},
+    {"ihaze",
+     "SELECT AN AEROSOL EXTINCTION\n"
+     "IHAZE= 0 NO AEROSOL ATTENUATION INCLUDED IN CALCULATION\n"
+     "       1 RURAL EXTINCTION, 23-KM VIS.\n       2 RURAL EXTINCTION, 5-KM VIS.\n"
+     "       3 NAVY MARITIME EXTINCTION, SETS OWN VIS.\n"
+     "       4 MARITIME EXTINCTION, 23-KM VIS.\n       5 URBAN EXTINCTION, 5-KM VIS.\n"
+     "       6 TROPOSPHERIC EXTINCTION, 50-KM VIS.\n"
+     "       7 USER DEFINED AEROSOL EXTINCTION (NOT SUPPORTED)\n"
+     "       8 ADVECTION FOG EXTINCTION, 0.2-KM VIS.\n"
+     "       9 RADIATION FOG EXTINCTION, 0.5-KM VIS.\n"
+     "      10 DESERT EXTINCTION SETS OWN VISIBILITY FROM WIND SPEED"},
+    {"iseasn",
+     "SELECT A SEASON\n"
+     "ISEASN= 0 DEFAULT SEASON FOR MODEL (SUMMER FOR MODELS 0,1,2,4,6,7; WINTER FOR 3,5)\n"
+     "        1 SPRING-SUMMER\n        2 FALL-WINTER"},
+    {"ivulcn",
+     "SELECT A VOLCANIC AEROSOL EXTINCTION\n"
+     "IVULCN= 0 DEFAULT TO STRATOSPHERIC BACKGROUND\n        1 STRATOSPHERIC BACKGROUND\n"
+     "        2 AGED VOLCANIC TYPE/MODERATE VOLCANIC PROFILE\n"
+     "        3 FRESH VOLCANIC TYPE/HIGH VOLCANIC PROFILE\n"
+     "        4 AGED VOLCANIC TYPE/HIGH VOLCANIC PROFILE\n"
+     "        5 FRESH VOLCANIC TYPE/MODERATE VOLCANIC PROFILE\n"
+     "        6 BACKGROUND STRATOSPHERIC TYPE/MODERATE VOLCANIC PROFILE\n"
+     "        7 BACKGROUND STRATOSPHERIC TYPE/HIGH VOLCANIC PROFILE\n"
+     "        8 FRESH VOLCANIC TYPE/EXTREME VOLCANIC PROFILE"},
+    {"icld",
+     "SPECIFY CLOUD/RAIN RATE MODEL\n"
+     "ICLD = 0 NO CLOUDS OR RAIN\n       1 CUMULUS CLOUD BASE .66KM TOP 2.7KM\n"
+     "       2 ALTOSTRATUS CLOUD BASE 2.4KM TOP 3.0KM\n"
+     "       3 STRATUS CLOUD BASE .33KM TOP 1.0KM\n"
+     "       4 STRATUS/STRATO CUMULUS BASE .66KM TOP 2.0KM\n"
+     "       5 NIMBOSTRATUS CLOUD BASE .16KM TOP .66KM\n"
+     "       6 2.0MM/HR DRIZZLE (MODELED WITH CLOUD 3)\n"
+     "       7 5.0MM/HR LIGHT RAIN (MODELED WITH CLOUD 5)\n"
+     "       8 12.5MM/HR MODERATE RAIN (MODELED WITH CLOUD 5)\n"
+     "       9 25.0MM/HR HEAVY RAIN (MODELED WITH CLOUD 1)\n"
+     "      10 75.0MM/HR EXTREME RAIN (MODELED WITH CLOUD 1)\n"
+     "      11 USER DEFINED CLOUD EXTINCTION (NOT SUPPORTED)\n"
+     "      18 STANDARD CIRRUS MODEL\n      19 SUB VISUAL CIRRUS MODEL\n"
+     "      20 NOAA CIRRUS MODEL (LOWTRAN 6)"},
+    {"iparm",
+     "SPECIFY THE GEOMETRY OF THE OBSERVATION\n"
+     "IPARM = 0 SPECIFY OBSERVER LATITUDE, OBSERVER LONGITUDE, SOURCE LATITUDE, SOURCE "
+     "LONGITUDE\n"
+     "        1 SPECIFY OBSERVER LATITUDE, OBSERVER LONGITUDE (AND THE TIME)\n"
+     "        2 SPECIFY AZIMUTHAL ANGLE, ZENITH ANGLE OF THE SUN"},
+    {"iph",
+     "IPH = 0 HENYEY-GREENSTEIN AEROSOL PHASE FUNCTION\n"
+     "      1 USER SUPPLIED AEROSOL PHASE FUNCTION (NOT SUPPORTED)\n"
+     "      2 MIE GENERATED DATA BASE OF AEROSOL PHASE FUNCTIONS FOR THE LOWTRAN MODELS"},
+    {"irpt",
+     "IRPT= 0 TO END LOWTRAN RUN\n      1 TO READ ALL DATA CARDS AGAIN\n"
+     "      3 TO READ ONLY CARD 3 AGAIN (GEOMETRY DATA)\n"
+     "      4 TO READ ONLY CARD 4 AGAIN (WAVELENGTH RANGE)"},
+};
+
+// Asks one question at a time: overrides first, then the source; a parser turns the
+// text into a value or throws BadAnswer.
+class Asker {
+public:
+    Asker(AnswerSource& src, const std::map<std::string, std::string>& overrides)
+        : m_src(src), m_overrides(overrides) {}
+
+    template <class T>
+    T ask(const std::string& key, const std::function<T(const std::string&)>& parse) {
+        const std::string prompt = prompt_of(key);
+        auto ov = m_overrides.find(key);
+        if (ov != m_overrides.end()) {
+            m_used.insert(key);
+            if (!m_src.interactive()) m_src.next(prompt);  // its line is replaced
+            try {
+                return parse(ov->second);
+            } catch (const BadAnswer& e) {
+                throw DataError({"--answer " + key, 0}, e.what());
+            }
+        }
+        for (;;) {
+            auto text = m_src.next(prompt);
+            if (!text)
+                throw DataError(m_src.where(), "unexpected end of the answers, expected the "
+                                               "answer to '" + key + "'");
+            try {
+                return parse(*text);
+            } catch (const BadAnswer& e) {
+                if (!m_src.interactive()) throw DataError(m_src.where(), e.what());
+                m_src.complain(e.what());
+            }
+        }
+    }
+
+    int integer(const std::string& key, const std::string& what, int lo, int hi,
+                const std::set<int>& unsupported = {}, const std::string& note = "") {
+        return ask<int>(key, [&](const std::string& t) {
+            double v = number(t, what);
+            if (v != std::floor(v) || v < lo || v > hi || unsupported.count(static_cast<int>(v)))
+                throw BadAnswer("expected " + what + " in " + range_text(lo, hi) + note +
+                                ", found " + quoted(t));
+            return static_cast<int>(v);
+        });
+    }
+
+    double real(const std::string& key, const std::string& what, double lo, double hi,
+                bool open_lo = false) {
+        return ask<double>(key, [&](const std::string& t) {
+            double v = number(t, what);
+            if (v < lo || v > hi || (open_lo && v == lo))
+                throw BadAnswer("expected " + what + " in " + range_text(lo, hi, open_lo) +
+                                ", found " + quoted(t));
+            return v;
+        });
+    }
+
+    bool yes_no(const std::string& key, const std::string& what) {
+        return ask<bool>(key, [&](const std::string& t) { return parse_yes_no(t, what); });
+    }
+
+    void inform(const std::string& text) { m_src.inform(text); }
+    const std::set<std::string>& used() const { return m_used; }
+    AnswerSource& source() { return m_src; }
+
+    static double number(const std::string& t, const std::string& what) {
+        try {
+            return parse_double(t, {}, what);
+        } catch (const DataError& e) {
+            throw BadAnswer(e.message());
+        }
+    }
+    static bool parse_yes_no(const std::string& t, const std::string& what) {
+        std::string l = ascii_lower(t);
+        if (l == "y" || l == "yes") return true;
+        if (l == "n" || l == "no") return false;
+        throw BadAnswer("expected " + what + " in [y, n], found " + quoted(t));
+    }
+
+private:
+    static std::string prompt_of(const std::string& key) {
+        std::string text;
+        for (const auto& q : kQuestions)
+            if (q.key == key) text = q.text;
+        auto menu = kMenus.find(key);
+        return menu == kMenus.end() ? text : menu->second + "\n" + text;
+    }
+
+    AnswerSource& m_src;
+    const std::map<std::string, std::string>& m_overrides;
+    std::set<std::string> m_used;
+};
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+struct State {
+    bool radiosonde = false;
+};
+
+void ask_profile(Asker& a, io::CdkRun& run) {
+    const int levels = a.integer("levels", "number of atmospheric levels", 1, io::kCdkMaxLayers);
+    const SourceLocation levels_at = a.source().where();
+    std::string title = a.ask<std::string>("title", [](const std::string& t) {
+        if (t.empty() || t.size() > 72)
+            throw BadAnswer("expected the name of the new atmosphere (1 to 72 characters), "
+                            "found " + quoted(t));
+        return upper(t);  // CONTROL7 writes the name in capitals (fig. 4.31)
+    });
+    a.ask<bool>("aerosol_by_layer", [](const std::string& t) {
+        if (Asker::parse_yes_no(t, "aerosol control by layer"))
+            throw BadAnswer("expected aerosol control by layer in [n] (CARD 2C3 input is not "
+                            "supported), found " + quoted(t));
+        return false;
+    });
+    io::Rsd rsd = a.ask<io::Rsd>("rsd", [](const std::string& path) {
+        if (path.empty()) throw BadAnswer("expected the radiosonde file name, found ''");
+        try {
+            io::Rsd raw = io::read_rsd_file(path);
+            return fill_missing_dew_points(raw, {path, 0});
+        } catch (const Error& e) {
+            throw BadAnswer("radiosonde: " + std::string(e.what()));
+        }
+    });
+    if (static_cast<std::size_t>(levels) > rsd.levels.size()) {
+        std::string msg = "expected number of atmospheric levels in " +
+                          range_text(1, static_cast<double>(rsd.levels.size())) +
+                          " (the levels of the radiosonde file), found " + std::to_string(levels);
+        if (a.used().count("levels")) throw DataError({"--answer levels", 0}, msg);
+        throw DataError(levels_at, msg);
+    }
+    run.profile = radiosonde_profile(rsd, levels, title);
+    for (int i = 0; i < levels; ++i) {
+        std::ostringstream line;
+        line << "ENTERING DATA FOR LAYER " << (i + 1)
+             << ": ALTITUDE " << format_number(run.profile->layers[i].altitude_km);
+        a.inform(line.str());
+    }
+}
+
+void ask_geometry(Asker& a, io::CdkRun& run) {
+    io::CdkGeometry g;
+    const double gnd = run.card2.ground_altitude_km;
+    const int itype = run.card1.itype, iemsct = run.card1.iemsct;
+    const std::string alt_range = "altitude (km, ground to 100)";
+    g.h1_km = a.real("h1", "H1, initial " + alt_range, gnd, 100);
+    auto ask_radius = [&] {
+        if (a.yes_no("override_radius", "override the earth radius"))
+            g.earth_radius_km = a.real("radius", "earth radius (km)", 6000, 7000);
+    };
+    if (iemsct == 3) {  // alternate CARD 3
+        g.h2_km = a.real("h2", "H2, final " + alt_range, gnd, 100);
+        g.zenith_angle_deg = a.real("angle", "initial zenith angle (deg)", 0, 180);
+        g.iday = a.integer("iday", "day of the year", 1, 366);
+        ask_radius();
+        g.isourc = a.integer("isourc", "source (0 sun, 1 moon)", 0, 1);
+        if (g.isourc == 1)
+            g.moon_phase_angle_deg = a.real("anglem", "moon phase angle (deg)", 0, 180);
+        run.geometry = g;
+        return;
+    }
+    if (itype == 1) {
+        g.range_km = a.real("range", "path length (km)", 0, 100000, true);
+    } else {
+        g.h2_km = a.real("h2", "H2, final " + alt_range, itype == 3 ? 0 : gnd, 100);
+        g.zenith_angle_deg = a.real("angle", "initial zenith angle (deg)", 0, 180);
+        if (itype == 2) {
+            g.range_km = a.real("range", "path length (km, 0 from the angles)", 0, 100000);
+            g.earth_center_angle_deg = a.ask<double>("beta", [](const std::string& t) {
+                std::string l = ascii_lower(t);
+                if (l == "n" || l == "no") return 0.0;  // not given (the seed's answer "n")
+                double v = Asker::number(t, "earth center angle (deg)");
+                if (v < 0 || v > 180)
+                    throw BadAnswer("expected earth center angle (deg) in [0, 180], found " +
+                                    quoted(t));
+                return v;
+            });
+        }
+        ask_radius();
+        if (itype == 2) g.len = a.yes_no("short_path", "use the short path") ? 0 : 1;
+    }
+    if (iemsct == 2) {  // CARD 3A1, 3A2
+        g.iparm = a.integer("iparm", "geometry type IPARM", 0, 2);
+        g.iph = a.integer("iph", "phase function type IPH", 0, 2, {1},
+                          " except 1 (user supplied, not supported)");
+        if (g.iph == 0) g.asymmetry_g = a.real("g", "asymmetry parameter g", -1, 1);
+        g.iday = a.integer("iday", "day of the year", 1, 366);
+        g.isourc = 0;
+        if (g.iparm <= 1) {
+            g.parm[0] = a.real("obs_lat", "observer latitude (deg north)", -90, 90);
+            g.parm[1] = a.real("obs_lon", "observer longitude (deg west)", 0, 360);
+            if (g.iparm == 0) {
+                g.parm[2] = a.real("src_lat", "source latitude (deg north)", -90, 90);
+                g.parm[3] = a.real("src_lon", "source longitude (deg west)", 0, 360);
+            } else {
+                g.time_h = a.ask<double>("time", [](const std::string& t) {
+                    double v = Asker::number(t, "time of day (hours)");
+                    try {
+                        return time_answer_hours(v);
+                    } catch (const std::invalid_argument&) {
+                        throw BadAnswer("expected time of day in [0, 24] (decimal hours) or "
+                                        "[100, 2400] (HHMM), found " + quoted(t));
+                    }
+                });
+            }
+            g.path_azimuth_deg = a.real("psipo", "path azimuth (deg east of north)", 0, 360);
+        } else {
+            g.parm[0] = a.real("rel_azimuth", "relative azimuth (deg)", -180, 180);
+            g.parm[1] = a.real("sun_zenith", "solar zenith angle (deg)", 0, 180);
+        }
+    }
+    run.geometry = g;
+}
+
+void ask_spectral(Asker& a, io::CdkRun& run) {
+    const double scale = a.ask<double>("units", [](const std::string& t) {
+        std::string l = ascii_lower(t);
+        if (l == "microns" || l == "micron" || l == "um") return 1.0;
+        if (l == "nanometers" || l == "nanometer" || l == "nanometres" || l == "nanometre" ||
+            l == "nm")
+            return 1e-3;
+        throw BadAnswer("expected wavelength units in [microns, nanometers], found " +
+                        quoted(t));
+    });
+    const bool nm = scale < 1;
+    const double lo = nm ? 200 : 0.2, hi = nm ? 1e6 : 1000;  // V2 <= 50000 cm-1
+    const std::string unit = nm ? "nm" : "microns";
+    auto range = a.ask<std::pair<double, double>>("wavelengths", [&](const std::string& t) {
+        std::string s = t;
+        // "0.4-0.7" (fig. 4.30), "0.4 0.7" or "0.4,0.7": a '-' after a digit separates.
+        for (std::size_t i = 1; i < s.size(); ++i)
+            if (s[i] == '-' && (std::isdigit(static_cast<unsigned char>(s[i - 1])) ||
+                                s[i - 1] == '.'))
+                s[i] = ' ';
+        auto f = split_fields(s, true);
+        if (f.size() != 2)
+            throw BadAnswer("expected starting and ending wavelength (two numbers), found " +
+                            quoted(t));
+        double w1 = Asker::number(std::string(f[0]), "starting wavelength");
+        double w2 = Asker::number(std::string(f[1]), "ending wavelength");
+        for (double w : {w1, w2})
+            if (w < lo || w > hi)
+                throw BadAnswer("expected wavelength (" + unit + ") in " + range_text(lo, hi) +
+                                ", found " + quoted(t));
+        if (!(w1 < w2))
+            throw BadAnswer("expected a starting wavelength below the ending wavelength, "
+                            "found " + quoted(t));
+        return std::pair{w1 * scale, w2 * scale};
+    });
+    const int n = a.integer("intervals", "number of intervals", 1, 396);
+    run.spectral = wavelength_to_card4(range.first, range.second, n);
+}
+
+void ask_full(Asker& a, io::CdkRun& run, State& st) {
+    io::CdkCard1& c1 = run.card1;
+    io::CdkCard2& c2 = run.card2;
+    c1 = {};
+    c2 = {};
+    run.cirrus.reset();
+    run.vsa.reset();
+    run.profile.reset();
+    c1.model = a.integer("model", "model atmosphere", 0, 7);
+    const bool user_profile = c1.model == 0 || c1.model == 7;
+    if (user_profile) {
+        st.radiosonde = a.ask<bool>("radiosonde", [](const std::string& t) {
+            if (!Asker::parse_yes_no(t, "radiosonde input"))
+                throw BadAnswer("expected radiosonde input in [y] (model 0 and 7 layers are "
+                                "read from an .rsd file), found " + quoted(t));
+            return true;
+        });
+    }
+    if (c1.model == 0)
+        c1.itype = a.integer("itype", "path type", 1, 1, {},
+                             " (model 0 is for a horizontal path only)");
+    else
+        c1.itype = a.integer("itype", "path type", 1, 3);
+    c1.iemsct = a.integer("iemsct", "execution mode", 0, 3);
+    c1.imult = a.integer("imult", "multiple scattering mode", 0, 1);
+    static const char* kGases[6][2] = {{"modify_tp", "temperature and pressure"},
+                                       {"modify_h2o", "water vapor"},
+                                       {"modify_o3", "ozone"},
+                                       {"modify_ch4", "CH4"},
+                                       {"modify_n2o", "N2O"},
+                                       {"modify_co", "CO"}};
+    for (int i = 0; i < 6; ++i) {
+        if (a.yes_no(kGases[i][0], std::string("modify ") + kGases[i][1]))
+            c1.m[i] = a.integer("m" + std::to_string(i + 1),
+                                std::string("model for ") + kGases[i][1], 1, 6);
+    }
+    c1.mdef = 1;  // default profiles for the other gases (fig. 4.31)
+    c1.im = user_profile ? 1 : 0;
+    c1.noprt = a.yes_no("print_profiles", "print the profiles") ? 0 : 1;
+    c1.boundary_temperature_k = a.real("tbound", "boundary temperature (K, 0 first level)", 0, 400);
+    c1.surface_albedo = a.real("salb", "surface albedo", 0, 1);
+
+    c2.ihaze = a.integer("ihaze", "aerosol model IHAZE", 0, 10, {7},
+                         " except 7 (user defined, not supported)");
+    c2.icstl = 1;  // CONTROL7 writes 1 unless asked (fig. 4.31); LOWTRAN reads it for IHAZE 3
+    if (c2.ihaze == 3) {
+        c2.icstl = a.integer("icstl", "air mass character", 1, 10);
+        c2.wind_speed_m_s = a.real("wss", "current wind speed (m/s)", 0, 50);
+        c2.wind_speed_24h_m_s = a.real("whh", "24-hour average wind speed (m/s)", 0, 50);
+    } else if (c2.ihaze == 10) {
+        c2.wind_speed_m_s = a.real("wss", "current wind speed (m/s)", 0, 50);
+    }
+    c2.iseasn = a.integer("iseasn", "season", 0, 2);
+    c2.ivulcn = a.integer("ivulcn", "volcanic extinction", 0, 8);
+    c2.icld = a.ask<int>("icld", [](const std::string& t) {
+        double v = Asker::number(t, "cloud model");
+        if (v != std::floor(v) || !((v >= 0 && v <= 10) || (v >= 18 && v <= 20)))
+            throw BadAnswer("expected cloud model in [0, 10] or [18, 20] (11, user defined, "
+                            "is not supported), found " + quoted(t));
+        return static_cast<int>(v);
+    });
+    if (c2.icld >= 18) {
+        io::CdkCirrus c;
+        c.thickness_km = a.real("cirrus_thickness", "cirrus thickness (km)", 0, 20);
+        c.base_altitude_km = a.real("cirrus_base", "cirrus base altitude (km)", 0, 30);
+        c.extinction_km1 = a.real("cirrus_extinction", "cirrus extinction (km-1)", 0, 10);
+        run.cirrus = c;
+    }
+    c2.ivsa = a.yes_no("ivsa", "army vertical structure algorithm") ? 1 : 0;
+    if (c2.ivsa == 1) {
+        io::CdkVsa v;
+        v.cloud_ceiling_km = a.real("vsa_ceiling", "cloud ceiling height (km)", 0, 3);
+        v.cloud_thickness_km = a.real("vsa_thickness", "cloud thickness (km)", 0, 3);
+        v.inversion_km = a.real("vsa_inversion", "inversion height (km)", 0, 3);
+        run.vsa = v;
+    }
+    if (a.yes_no("override_vis", "override the visibility"))
+        c2.visibility_km = a.real("vis", "visibility (km)", 0, 1000, true);
+    c2.rain_rate_mm_h = a.real("rain_rate", "rain rate (mm/h)", 0, 200);
+    c2.ground_altitude_km = a.ask<double>("gndalt", [](const std::string& t) {
+        double v = Asker::number(t, "ground altitude (km)");
+        if (v < 0 || v >= 6)
+            throw BadAnswer("expected ground altitude (km) in [0, 6), found " + quoted(t));
+        return v;
+    });
+    if (user_profile) ask_profile(a, run);
+    ask_geometry(a, run);
+    ask_spectral(a, run);
+}
+
+int ask_irpt(Asker& a, const io::CdkRun& run) {
+    return a.ask<int>("irpt", [&](const std::string& t) {
+        double v = Asker::number(t, "IRPT");
+        const bool no_card3 = run.card1.imult == 1 && run.card1.iemsct == 2;
+        if (v == 0 || v == 1 || v == 4 || (v == 3 && !no_card3)) return static_cast<int>(v);
+        if (v == 3)
+            throw BadAnswer("expected IRPT in [0, 1, 4] (LOWTRAN 7 cannot repeat CARD 3 with "
+                            "multiple and solar scattering), found " + quoted(t));
+        throw BadAnswer("expected IRPT in [0, 1, 3, 4], found " + quoted(t));
+    });
+}
+
+}  // namespace
+
+const std::vector<QuestionInfo>& control7_questions() { return kQuestions; }
+
+double time_answer_hours(double value) {
+    if (value >= 0 && value <= 24) return value;
+    if (value >= 100 && value <= 2400) {
+        double hh = std::floor(value / 100), mm = value - 100 * hh;
+        if (mm < 60 && hh * 60 + mm <= 24 * 60) return hh + mm / 60.0;
+    }
+    throw std::invalid_argument("time out of range");
+}
+
+io::CdkSpectral wavelength_to_card4(double start_um, double end_um, int intervals) {
+    io::CdkSpectral s;
+    s.v1_cm1 = 1e4 / end_um;
+    s.v2_cm1 = 1e4 / start_um;
+    double dv = (s.v2_cm1 - s.v1_cm1) / intervals;
+    s.dv_cm1 = std::max(5.0, 5.0 * std::round(dv / 5.0));
+    return s;
+}
+
+io::Rsd fill_missing_dew_points(const io::Rsd& rsd, const SourceLocation& where) {
+    io::Rsd out = rsd;
+    std::vector<std::size_t> valid;
+    for (std::size_t i = 0; i < out.levels.size(); ++i) {
+        const auto& l = out.levels[i];
+        if (!l.temperature_c)
+            throw DataError(where, "level " + std::to_string(i + 1) + " (" +
+                                       format_number(l.altitude_km) +
+                                       " km) has no temperature (-999)");
+        if (l.dew_point_c) valid.push_back(i);
+    }
+    if (valid.empty()) throw DataError(where, "no level has a dew point (all -999)");
+    auto depression = [&](std::size_t i) {
+        return *out.levels[i].temperature_c - *out.levels[i].dew_point_c;
+    };
+    for (std::size_t i = 0; i < out.levels.size(); ++i) {
+        auto& l = out.levels[i];
+        if (l.dew_point_c) continue;
+        double d;
+        if (i > valid.back()) {
+            d = depression(valid.back());  // seed 4.2.3.4: keep the last depression
+        } else if (i < valid.front()) {
+            d = depression(valid.front());
+        } else {
+            auto hi = *std::upper_bound(valid.begin(), valid.end(), i);
+            auto lo = *(std::upper_bound(valid.begin(), valid.end(), i) - 1);
+            double t = (l.altitude_km - out.levels[lo].altitude_km) /
+                       (out.levels[hi].altitude_km - out.levels[lo].altitude_km);
+            d = depression(lo) + t * (depression(hi) - depression(lo));
+        }
+        l.dew_point_c = *l.temperature_c - d;
+    }
+    return out;
+}
+
+io::CdkProfile radiosonde_profile(const io::Rsd& rsd, int levels, const std::string& title) {
+    io::CdkProfile p;
+    p.title = title;
+    for (int i = 0; i < levels; ++i) {
+        const io::RsdLevel& l = rsd.levels.at(static_cast<std::size_t>(i));
+        io::CdkLayer layer;
+        layer.altitude_km = l.altitude_km;
+        layer.pressure = l.pressure_mb;
+        layer.temperature = l.temperature_c.value();
+        layer.wmol = {l.dew_point_c.value(), 0, 0};
+        layer.jchar = "ABG";  // mb, deg C, dew point in deg C (fig. 4.31)
+        p.layers.push_back(layer);
+    }
+    return p;
+}
+
+Control7Result run_control7(AnswerSource& answers,
+                            const std::map<std::string, std::string>& overrides) {
+    std::set<std::string> known;
+    for (const auto& q : kQuestions) known.insert(q.key);
+    for (const auto& [key, value] : overrides)
+        if (!known.count(key))
+            throw UsageError("--answer: unknown question '" + key +
+                             "' (control7(1) lists the keys)");
+    Asker a(answers, overrides);
+    Control7Result result;
+    result.deck_path = a.ask<std::string>("deck", [](const std::string& t) {
+        if (t.empty()) throw BadAnswer("expected a file name for the card deck, found ''");
+        return t;
+    });
+    State st;
+    io::CdkRun run;
+    run.kind = io::CdkRunKind::Full;
+    ask_full(a, run, st);
+    for (;;) {
+        run.irpt = ask_irpt(a, run);
+        result.cdk.runs.push_back(run);
+        if (run.irpt == 0) break;
+        io::CdkRun next = run;
+        if (run.irpt == 1) {
+            next.kind = io::CdkRunKind::Full;
+            ask_full(a, next, st);
+        } else if (run.irpt == 3) {
+            next.kind = io::CdkRunKind::Geometry;
+            ask_geometry(a, next);
+        } else {
+            next.kind = io::CdkRunKind::Spectral;
+            ask_spectral(a, next);
+        }
+        run = next;
+    }
+    for (const auto& [key, value] : overrides)
+        if (!a.used().count(key)) result.unused_overrides.push_back(key);
+    return result;
+}
+
+}  // namespace sigchain::atmos
