@@ -49,3 +49,4 @@ null
 0
 0
 null
+END

@@ -50,3 +50,4 @@ null
 0
 0
 null
+END
