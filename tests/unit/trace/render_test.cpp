@@ -12,6 +12,7 @@
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/brdf.hpp"
 #include "radiometry/material.hpp"
+#include "radiometry/planck.hpp"
 #include "scene/scene.hpp"
 #include "trace/render.hpp"
 
@@ -338,6 +339,75 @@ TEST(Render, TruthLayersOfASunlitPlate) {
     EXPECT_NEAR(res.truth.at(layer("transmission_" + band), 1, 1), 0.9, tol);
     EXPECT_FALSE(res.stats.skipped.empty());
     EXPECT_EQ(res.stats.primary_rays, 9u);
+}
+
+TEST(Render, TransmissiveSlabAttenuatesTwice) {
+    // A black (rho = 0) transmissive slab at z = 1 over a Lambertian plate, sun at the
+    // zenith, no sky, nadir view: the plate is lit through the slab (t) and seen
+    // through it (t), so L = tau2 r Es t^2 / pi + L_us with t = exp(-k d) (ext(5)),
+    // exact up to float output. The plate's hemisphere rays pass the slab to a black
+    // sky.
+    const double r = 0.4, es = 0.2, k_per_km = 20000, d_cm = 2;
+    Mesh m;
+    m.quad({{{-900, -900, 0}, {900, -900, 0}, {900, 900, 0}, {-900, 900, 0}}}, 1);
+    m.quad({{{-900, -900, 1}, {900, -900, 1}, {900, 900, 1}, {-900, 900, 1}}}, 3);
+    scene::Scene s = single(m.data);
+    radiometry::MaterialOptics slab = radiometry::grey_material(3, 0.0, kWl.size());
+    slab.transmissive = true;
+    slab.extinction_per_km.assign(kWl.size(), k_per_km);
+    slab.thickness_cm = d_cm;
+    auto mats = radiometry::MaterialLibrary::from_optics(
+        {radiometry::grey_material(1, r, kWl.size()), slab});
+    auto atm = atmosphere(0, es, 0.0);
+    Ortho cam(2, 2, 1, -1, 1, {0, 0, -1});
+    const double t = std::exp(-k_per_km * d_cm * 1e-5);
+    const double expected = 0.9 * r * es * t * t / kPi + 0.001;
+    for (Sampling smp : {Sampling::Golfball, Sampling::Dirsig, Sampling::MonteCarlo}) {
+        RenderOptions o;
+        o.sampling = smp;
+        o.hemisphere_samples = 16;
+        RenderResult res = run(s, mats, atm, cam, o);
+        for (float v : res.radiance.data) EXPECT_NEAR(v, expected, 1e-6 * expected);
+        // Stopping before the slab: no transmission at all, only the slab's (zero)
+        // reflection and the path radiance.
+        o.max_transmissions = 0;
+        res = run(s, mats, atm, cam, o);
+        for (float v : res.radiance.data) EXPECT_NEAR(v, 0.001, 1e-6 * 0.001);
+    }
+}
+
+TEST(Render, EmissionFromFacetTemperatures) {
+    // A grey plate at 300 K, no sun, no sky: L = tau2 (1 - r) B(lambda, 300 K) + L_us
+    // (Kirchhoff: emissivity 1 - r, fall-off 1), exact up to float output; without
+    // temperatures the emission is left out and listed in stats.skipped.
+    const double r = 0.2;
+    Mesh m;
+    m.quad({{{-900, -900, 0}, {900, -900, 0}, {900, 900, 0}, {-900, 900, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, kWl.size())});
+    auto atm = atmosphere(120, 0.2, 0.0);
+    Ortho cam(1, 1, 1, 0, 0, {0, 0, -1});
+    Temperatures temps{{"1-1-1", 300.0}};
+    RenderInputs in;
+    in.scene = &s;
+    in.materials = &mats;
+    in.atmosphere = &atm;
+    in.camera = &cam;
+    in.temperatures = &temps;
+    RenderOptions o;
+    o.truth = true;
+    RenderResult res = render(in, o);
+    for (std::size_t k = 0; k < kWl.size(); ++k) {
+        double expected = 0.9 * (1 - r) * radiometry::planck_radiance(kWl[k], 300) + 0.001;
+        EXPECT_NEAR(res.radiance.at(static_cast<int>(k), 0, 0), expected, 1e-6 * expected);
+    }
+    EXPECT_EQ(res.truth.at(8, 0, 0), 300.0f);  // temperature_k
+    in.temperatures = nullptr;
+    res = render(in, o);
+    EXPECT_NEAR(res.radiance.at(0, 0, 0), 0.001, 1e-9);
+    bool listed = false;
+    for (const auto& what : res.stats.skipped) listed |= what.find("emission") != std::string::npos;
+    EXPECT_TRUE(listed);
 }
 
 TEST(Render, MissesAreZero) {
