@@ -401,7 +401,7 @@ int main(int argc, char** argv) {
                 s.seconds);
     std::printf("total (scene + render)         %10.2f s\n", total);
     std::printf("rays cast                      %10llu (%llu primary, %llu secondary, %llu "
-                "shadow; %llu primary hits)\n",
+                "shadow; %llu hits)\n",
                 static_cast<unsigned long long>(rays),
                 static_cast<unsigned long long>(s.primary_rays),
                 static_cast<unsigned long long>(s.secondary_rays),
