@@ -117,24 +117,30 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
     return from_optics(std::move(out));
 }
 
+namespace {
+
+// An error about material `m`: DataError at its .mat line, or std::invalid_argument for
+// optics built in code (no file).
+[[noreturn]] void material_error(const MaterialOptics& m, const std::string& what) {
+    std::string message = "material '" + m.name + "' (" + std::to_string(m.id) + "): " + what;
+    if (m.mat_file.empty()) throw std::invalid_argument(message);
+    throw DataError({m.mat_file, m.line}, message);
+}
+
+}  // namespace
+
 MaterialLibrary MaterialLibrary::from_optics(std::vector<MaterialOptics> materials) {
     MaterialLibrary lib;
     long max_id = -1;
     for (const auto& m : materials) {
         if (m.id < 0 || m.id > kMaxMaterialId)
-            throw DataError({m.mat_file, m.line}, "material '" + m.name + "' (" +
-                                                      std::to_string(m.id) +
-                                                      "): MATERIAL_ID outside [0, " +
-                                                      std::to_string(kMaxMaterialId) + "]");
+            material_error(m, "MATERIAL_ID outside [0, " + std::to_string(kMaxMaterialId) + "]");
         max_id = std::max(max_id, m.id);
     }
     lib.m_index.assign(static_cast<std::size_t>(max_id + 1), -1);
     for (std::size_t i = 0; i < materials.size(); ++i) {
         int& slot = lib.m_index[static_cast<std::size_t>(materials[i].id)];
-        if (slot >= 0)
-            throw DataError({materials[i].mat_file, materials[i].line},
-                            "material '" + materials[i].name + "' (" +
-                                std::to_string(materials[i].id) + "): MATERIAL_ID used twice");
+        if (slot >= 0) material_error(materials[i], "MATERIAL_ID used twice");
         slot = static_cast<int>(i);
     }
     lib.m_materials = std::move(materials);
