@@ -55,157 +55,6 @@ std::string range_text(double lo, double hi, bool open_lo = false) {
     return std::string(open_lo ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + "]";
 }
 
-const std::vector<QuestionInfo> kQuestions = {
-    {"deck", "ENTER FILE NAME FOR PRODUCED CARD DECK:"},
-    {"model", "CHOOSE A MODEL NUMBER: (MODEL 0-7)"},
-    {"radiosonde", "IS THE INPUT RADIOSONDE DATA (Y OR N)? (MODEL 0 AND 7)"},
-    {"itype", "CHOOSE A TYPE: (ITYPE 1-3)"},
-    {"iemsct", "ENTER EXECUTION MODE: (IEMSCT 0-3)"},
-    {"imult", "MULTIPLE SCATTERING MODE: (IMULT 0-1)"},
-    {"modify_tp", "DO YOU WANT TO MODIFY THE DEFAULT ALTITUDE PROFILES OF TEMPERATURE AND PRESSURE (Y OR N)?"},
-    {"m1", "MODEL FOR TEMPERATURE AND PRESSURE (1-6)? (if modify_tp)"},
-    {"modify_h2o", "DO YOU WANT TO MODIFY THE DEFAULT ALTITUDE PROFILE OF WATER VAPOR (Y OR N)?"},
-    {"m2", "MODEL FOR WATER VAPOR (1-6)? (if modify_h2o)"},
-    {"modify_o3", "DO YOU WANT TO MODIFY THE DEFAULT ALTITUDE PROFILES OF OZONE (Y OR N)?"},
-    {"m3", "MODEL FOR OZONE (1-6)? (if modify_o3)"},
-    {"modify_ch4", "DO YOU WANT TO MODIFY THE DEFAULT SEASONAL DEPENDENCE OF CH4 (Y OR N)?"},
-    {"m4", "MODEL FOR CH4 (1-6)? (if modify_ch4)"},
-    {"modify_n2o", "DO YOU WANT TO MODIFY THE DEFAULT SEASONAL DEPENDENCE OF N2O (Y OR N)?"},
-    {"m5", "MODEL FOR N2O (1-6)? (if modify_n2o)"},
-    {"modify_co", "DO YOU WANT TO MODIFY THE DEFAULT SEASONAL DEPENDENCE OF CO (Y OR N)?"},
-    {"m6", "MODEL FOR CO (1-6)? (if modify_co)"},
-    {"print_profiles", "DO YOU WANT TO PRINT THE ATMOSPHERIC PROFILES (Y OR N)?"},
-    {"tbound", "WHAT IS THE TEMPERATURE OF THE EARTH (BOUNDARY LAYER) IN DEGREES K (0.0 USES THE FIRST RADIOSONDE READING)?"},
-    {"salb", "ENTER THE SURFACE ALBEDO (0.00 IS A BLACKBODY)"},
-    {"ihaze", "CHOOSE AEROSOL EXTINCTION TYPE: (IHAZE 0-10, not 7)"},
-    {"icstl", "AIR MASS CHARACTER (1 OPEN OCEAN TO 10 STRONG CONTINENTAL INFLUENCE)? (IHAZE 3)"},
-    {"wss", "WHAT IS THE CURRENT WIND SPEED? (M/S) (IHAZE 3 AND 10)"},
-    {"whh", "WHAT IS THE 24-HOUR AVERAGE WIND SPEED? (M/S) (IHAZE 3)"},
-    {"iseasn", "CHOOSE A SEASON: (ISEASN 0-2)"},
-    {"ivulcn", "CHOOSE A VOLCANIC EXTINCTION: (IVULCN 0-8)"},
-    {"icld", "CHOOSE A CLOUD MODEL: (ICLD 0-10 OR 18-20)"},
-    {"cirrus_thickness", "CIRRUS THICKNESS (KM, 0 FOR THE MODEL'S)? (ICLD 18-20)"},
-    {"cirrus_base", "CIRRUS BASE ALTITUDE (KM, 0 FOR THE MODEL'S)? (ICLD 18-20)"},
-    {"cirrus_extinction", "CIRRUS EXTINCTION AT 0.55 MICRONS (KM-1, 0 FOR THE MODEL'S)? (ICLD 18-20)"},
-    {"ivsa", "DO YOU WANT TO USE ARMY VERTICAL STRUCTURE ALGORITHM FOR AEROSOLS IN BOUNDARY LAYER (Y OR N)?"},
-    {"vsa_ceiling", "CLOUD CEILING HEIGHT (KM)? (IVSA 1)"},
-    {"vsa_thickness", "CLOUD THICKNESS (KM)? (IVSA 1)"},
-    {"vsa_inversion", "HEIGHT OF THE INVERSION OR BOUNDARY LAYER (KM)? (IVSA 1)"},
-    {"override_vis", "DO YOU WANT TO OVERRIDE THE DEFAULT VISIBILITY (Y OR N)?"},
-    {"vis", "VISIBILITY (KM)? (if override_vis)"},
-    {"rain_rate", "WHAT IS THE RAIN RATE? (MM/HR)"},
-    {"gndalt", "WHAT IS THE GROUND ALTITUDE ABOVE SEA LEVEL? (KM)"},
-    {"levels", "ENTER NUMBER OF ATMOSPHERIC LEVELS TO BE INSERTED: (MODEL 0 AND 7)"},
-    {"title", "ENTER NAME OF NEW ATMOSPHERE: (MODEL 0 AND 7)"},
-    {"aerosol_by_layer", "DO YOU WANT TO READ IN AEROSOL CONTROL BY LAYER (Y OR N)? (MODEL 0 AND 7)"},
-    {"rsd", "WHAT FILE CONTAINS THE RADIOSONDE DATA? (MODEL 0 AND 7)"},
-    {"h1", "ENTER H1, INITIAL ALTITUDE (KM) (OBSERVER POSITION):"},
-    {"h2", "ENTER H2, FINAL ALTITUDE (KM): (ITYPE 2 AND 3, IEMSCT 3)"},
-    {"angle", "ENTER INITIAL ZENITH ANGLE (DEGREES) AS MEASURED FROM INITIAL ALTITUDE: (ITYPE 2 AND 3)"},
-    {"range", "ENTER PATH (RANGE) LENGTH (KM): (ITYPE 1 AND 2)"},
-    {"beta", "ENTER EARTH CENTER ANGLE SUBTENDED BY H1 AND H2 (DEGREES, N FOR NONE): (ITYPE 2)"},
-    {"override_radius", "DO YOU WANT TO OVERRIDE THE DEFAULT EARTH RADIUS (Y OR N)? (ITYPE 2 AND 3)"},
-    {"radius", "EARTH RADIUS (KM)? (if override_radius)"},
-    {"short_path", "USE THE SHORT PATH FROM OBSERVER'S TO FINAL ALTITUDE (Y OR N)? (ITYPE 2)"},
-    {"isourc", "SOURCE: 0 SUN, 1 MOON? (IEMSCT 3)"},
-    {"anglem", "MOON PHASE ANGLE (DEGREES, 0 IS FULL MOON)? (ISOURC 1)"},
-    {"iparm", "CHOOSE A TYPE OF GEOMETRY SPECIFICATION: (IPARM 0-2, IEMSCT 2)"},
-    {"iph", "ENTER PHASE FUNCTION TYPE: (IPH 0 OR 2, IEMSCT 2)"},
-    {"g", "ENTER THE HENYEY-GREENSTEIN ASYMMETRY PARAMETER G (-1 TO 1): (IPH 0)"},
-    {"iday", "ENTER THE DAY OF THE YEAR (I.E. FROM 1 TO 365): (IEMSCT 2 AND 3)"},
-    {"obs_lat", "ENTER OBSERVER LATITUDE (-90 TO 90): (IPARM 0 AND 1)"},
-    {"obs_lon", "ENTER OBSERVER LONGITUDE (0 TO 360, DEGREES WEST): (IPARM 0 AND 1)"},
-    {"src_lat", "ENTER SOURCE LATITUDE (-90 TO 90): (IPARM 0)"},
-    {"src_lon", "ENTER SOURCE LONGITUDE (0 TO 360, DEGREES WEST): (IPARM 0)"},
-    {"rel_azimuth", "ENTER AZIMUTH ANGLE BETWEEN THE LINE OF SIGHT AND THE SUN (-180 TO 180): (IPARM 2)"},
-    {"sun_zenith", "ENTER THE ZENITH ANGLE OF THE SUN (0 TO 180): (IPARM 2)"},
-    {"time", "ENTER TIME OF DAY IN DECIMAL HOURS: (GREENWICH, IPARM 1)"},
-    {"psipo", "ENTER PATH AZIMUTH AS DEGREES EAST OF NORTH: (IPARM 0 AND 1)"},
-    {"units", "WHAT UNITS ARE YOU USING FOR WAVELENGTH? (MICRONS OR NANOMETERS):"},
-    {"wavelengths", "INPUT STARTING AND ENDING WAVELENGTH ON BANDPASS"},
-    {"intervals", "HOW MANY INTERVALS ACROSS BANDPASS? (MAXIMUM 396)"},
-    {"irpt", "SELECT IRPT: (0, 1, 3 OR 4)"},
-};
-
-// The menus printed before some questions on a terminal (fig. 4.30).
-const std::map<std::string, std::string> kMenus = {
-    {"model",
-     "INPUT ATMOSPHERIC MODEL TYPE\n"
-     "MODEL= 0 IF METEOROLOGICAL DATA ARE SPECIFIED (HORIZONTAL PATH ONLY)\n"
-     "       1 TROPICAL ATMOSPHERE\n       2 MID-LATITUDE SUMMER\n"
-     "       3 MID-LATITUDE WINTER\n       4 SUB-ARCTIC SUMMER\n       5 SUB-ARCTIC WINTER\n"
-     "       6 1976 U.S. STANDARD ATMOSPHERE\n       7 NEW MODEL ATMOSPHERE (RADIOSONDE DATA)"},
-    {"itype",
-     "INPUT THE TYPE OF ATMOSPHERIC PATH\n"
-     "ITYPE= 1 FOR A HORIZONTAL (CONSTANT PRESSURE) PATH\n"
-     "       2 VERTICAL OR SLANT PATH BETWEEN TWO ALTITUDES\n"
-     "       3 VERTICAL OR SLANT PATH TO SPACE"},
-    {"iemsct",
-     "PROGRAM EXECUTION MODE\n"
-     "IEMSCT= 0 PROGRAM EXECUTION IN TRANSMITTANCE MODE\n"
-     "        1 PROGRAM EXECUTION IN RADIANCE MODE\n"
-     "        2 PROGRAM EXECUTION IN RADIANCE MODE WITH SOLAR/LUNAR SCATTERED RADIANCE "
-     "INCLUDED\n        3 DIRECT SOLAR IRRADIANCE"},
-    {"imult",
-     "MULTIPLE SCATTERING EXECUTION MODE\n"
-     "IMULT= 0 PROGRAM EXECUTED W/OUT MULTIPLE SCATTERING\n"
-     "       1 PROGRAM EXECUTED WITH MULTIPLE SCATTERING"},
-    {"ihaze",
-     "SELECT AN AEROSOL EXTINCTION\n"
-     "IHAZE= 0 NO AEROSOL ATTENUATION INCLUDED IN CALCULATION\n"
-     "       1 RURAL EXTINCTION, 23-KM VIS.\n       2 RURAL EXTINCTION, 5-KM VIS.\n"
-     "       3 NAVY MARITIME EXTINCTION, SETS OWN VIS.\n"
-     "       4 MARITIME EXTINCTION, 23-KM VIS.\n       5 URBAN EXTINCTION, 5-KM VIS.\n"
-     "       6 TROPOSPHERIC EXTINCTION, 50-KM VIS.\n"
-     "       7 USER DEFINED AEROSOL EXTINCTION (NOT SUPPORTED)\n"
-     "       8 ADVECTION FOG EXTINCTION, 0.2-KM VIS.\n"
-     "       9 RADIATION FOG EXTINCTION, 0.5-KM VIS.\n"
-     "      10 DESERT EXTINCTION SETS OWN VISIBILITY FROM WIND SPEED"},
-    {"iseasn",
-     "SELECT A SEASON\n"
-     "ISEASN= 0 DEFAULT SEASON FOR MODEL (SUMMER FOR MODELS 0,1,2,4,6,7; WINTER FOR 3,5)\n"
-     "        1 SPRING-SUMMER\n        2 FALL-WINTER"},
-    {"ivulcn",
-     "SELECT A VOLCANIC AEROSOL EXTINCTION\n"
-     "IVULCN= 0 DEFAULT TO STRATOSPHERIC BACKGROUND\n        1 STRATOSPHERIC BACKGROUND\n"
-     "        2 AGED VOLCANIC TYPE/MODERATE VOLCANIC PROFILE\n"
-     "        3 FRESH VOLCANIC TYPE/HIGH VOLCANIC PROFILE\n"
-     "        4 AGED VOLCANIC TYPE/HIGH VOLCANIC PROFILE\n"
-     "        5 FRESH VOLCANIC TYPE/MODERATE VOLCANIC PROFILE\n"
-     "        6 BACKGROUND STRATOSPHERIC TYPE/MODERATE VOLCANIC PROFILE\n"
-     "        7 BACKGROUND STRATOSPHERIC TYPE/HIGH VOLCANIC PROFILE\n"
-     "        8 FRESH VOLCANIC TYPE/EXTREME VOLCANIC PROFILE"},
-    {"icld",
-     "SPECIFY CLOUD/RAIN RATE MODEL\n"
-     "ICLD = 0 NO CLOUDS OR RAIN\n       1 CUMULUS CLOUD BASE .66KM TOP 2.7KM\n"
-     "       2 ALTOSTRATUS CLOUD BASE 2.4KM TOP 3.0KM\n"
-     "       3 STRATUS CLOUD BASE .33KM TOP 1.0KM\n"
-     "       4 STRATUS/STRATO CUMULUS BASE .66KM TOP 2.0KM\n"
-     "       5 NIMBOSTRATUS CLOUD BASE .16KM TOP .66KM\n"
-     "       6 2.0MM/HR DRIZZLE (MODELED WITH CLOUD 3)\n"
-     "       7 5.0MM/HR LIGHT RAIN (MODELED WITH CLOUD 5)\n"
-     "       8 12.5MM/HR MODERATE RAIN (MODELED WITH CLOUD 5)\n"
-     "       9 25.0MM/HR HEAVY RAIN (MODELED WITH CLOUD 1)\n"
-     "      10 75.0MM/HR EXTREME RAIN (MODELED WITH CLOUD 1)\n"
-     "      11 USER DEFINED CLOUD EXTINCTION (NOT SUPPORTED)\n"
-     "      18 STANDARD CIRRUS MODEL\n      19 SUB VISUAL CIRRUS MODEL\n"
-     "      20 NOAA CIRRUS MODEL (LOWTRAN 6)"},
-    {"iparm",
-     "SPECIFY THE GEOMETRY OF THE OBSERVATION\n"
-     "IPARM = 0 SPECIFY OBSERVER LATITUDE, OBSERVER LONGITUDE, SOURCE LATITUDE, SOURCE "
-     "LONGITUDE\n"
-     "        1 SPECIFY OBSERVER LATITUDE, OBSERVER LONGITUDE (AND THE TIME)\n"
-     "        2 SPECIFY AZIMUTHAL ANGLE, ZENITH ANGLE OF THE SUN"},
-    {"iph",
-     "IPH = 0 HENYEY-GREENSTEIN AEROSOL PHASE FUNCTION\n"
-     "      1 USER SUPPLIED AEROSOL PHASE FUNCTION (NOT SUPPORTED)\n"
-     "      2 MIE GENERATED DATA BASE OF AEROSOL PHASE FUNCTIONS FOR THE LOWTRAN MODELS"},
-    {"irpt",
-     "IRPT= 0 TO END LOWTRAN RUN\n      1 TO READ ALL DATA CARDS AGAIN\n"
-     "      3 TO READ ONLY CARD 3 AGAIN (GEOMETRY DATA)\n"
-     "      4 TO READ ONLY CARD 4 AGAIN (WAVELENGTH RANGE)"},
-};
-
 // Asks one question at a time: overrides first, then the source; a parser turns the
 // text into a value or throws BadAnswer.
 class Asker {
@@ -215,7 +64,7 @@ public:
 
     template <class T>
     T ask(const std::string& key, const std::function<T(const std::string&)>& parse) {
-        const std::string prompt = prompt_of(key);
+        const std::string prompt = control7_prompt(key);
         auto ov = m_overrides.find(key);
         if (ov != m_overrides.end()) {
             m_used.insert(key);
@@ -229,8 +78,10 @@ public:
         for (;;) {
             auto text = m_src.next(prompt);
             if (!text)
-                throw DataError(m_src.where(), "unexpected end of the answers, expected the "
-                                               "answer to '" + key + "'");
+                throw DataError(m_src.where(),
+                                "unexpected end of the answers, expected the "
+                                "answer to '" +
+                                    key + "'");
             try {
                 return parse(*text);
             } catch (const BadAnswer& e) {
@@ -285,14 +136,6 @@ public:
     }
 
 private:
-    static std::string prompt_of(const std::string& key) {
-        std::string text;
-        for (const auto& q : kQuestions)
-            if (q.key == key) text = q.text;
-        auto menu = kMenus.find(key);
-        return menu == kMenus.end() ? text : menu->second + "\n" + text;
-    }
-
     AnswerSource& m_src;
     const std::map<std::string, std::string>& m_overrides;
     std::set<std::string> m_used;
@@ -303,23 +146,23 @@ std::string upper(std::string s) {
     return s;
 }
 
-struct State {
-    bool radiosonde = false;
-};
-
 void ask_profile(Asker& a, io::CdkRun& run) {
     const int levels = a.integer("levels", "number of atmospheric levels", 1, io::kCdkMaxLayers);
     const SourceLocation levels_at = a.source().where();
     std::string title = a.ask<std::string>("title", [](const std::string& t) {
         if (t.empty() || t.size() > 72)
-            throw BadAnswer("expected the name of the new atmosphere (1 to 72 characters), "
-                            "found " + quoted(t));
+            throw BadAnswer(
+                "expected the name of the new atmosphere (1 to 72 characters), "
+                "found " +
+                quoted(t));
         return upper(t);  // CONTROL7 writes the name in capitals (fig. 4.31)
     });
     a.ask<bool>("aerosol_by_layer", [](const std::string& t) {
         if (Asker::parse_yes_no(t, "aerosol control by layer"))
-            throw BadAnswer("expected aerosol control by layer in [n] (CARD 2C3 input is not "
-                            "supported), found " + quoted(t));
+            throw BadAnswer(
+                "expected aerosol control by layer in [n] (CARD 2C3 input is not "
+                "supported), found " +
+                quoted(t));
         return false;
     });
     io::Rsd rsd = a.ask<io::Rsd>("rsd", [](const std::string& path) {
@@ -341,8 +184,8 @@ void ask_profile(Asker& a, io::CdkRun& run) {
     run.profile = radiosonde_profile(rsd, levels, title);
     for (int i = 0; i < levels; ++i) {
         std::ostringstream line;
-        line << "ENTERING DATA FOR LAYER " << (i + 1)
-             << ": ALTITUDE " << format_number(run.profile->layers[i].altitude_km);
+        line << "ENTERING DATA FOR LAYER " << (i + 1) << ": ALTITUDE "
+             << format_number(run.profile->layers[i].altitude_km);
         a.inform(line.str());
     }
 }
@@ -407,8 +250,10 @@ void ask_geometry(Asker& a, io::CdkRun& run) {
                     try {
                         return time_answer_hours(v);
                     } catch (const std::invalid_argument&) {
-                        throw BadAnswer("expected time of day in [0, 24] (decimal hours) or "
-                                        "[100, 2400] (HHMM), found " + quoted(t));
+                        throw BadAnswer(
+                            "expected time of day in [0, 24] (decimal hours) or "
+                            "[100, 2400] (HHMM), found " +
+                            quoted(t));
                     }
                 });
             }
@@ -428,8 +273,7 @@ void ask_spectral(Asker& a, io::CdkRun& run) {
         if (l == "nanometers" || l == "nanometer" || l == "nanometres" || l == "nanometre" ||
             l == "nm")
             return 1e-3;
-        throw BadAnswer("expected wavelength units in [microns, nanometers], found " +
-                        quoted(t));
+        throw BadAnswer("expected wavelength units in [microns, nanometers], found " + quoted(t));
     });
     const bool nm = scale < 1;
     const double lo = nm ? 200 : 0.2, hi = nm ? 1e6 : 1000;  // V2 <= 50000 cm-1
@@ -438,8 +282,8 @@ void ask_spectral(Asker& a, io::CdkRun& run) {
         std::string s = t;
         // "0.4-0.7" (fig. 4.30), "0.4 0.7" or "0.4,0.7": a '-' after a digit separates.
         for (std::size_t i = 1; i < s.size(); ++i)
-            if (s[i] == '-' && (std::isdigit(static_cast<unsigned char>(s[i - 1])) ||
-                                s[i - 1] == '.'))
+            if (s[i] == '-' &&
+                (std::isdigit(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '.'))
                 s[i] = ' ';
         auto f = split_fields(s, true);
         if (f.size() != 2)
@@ -452,35 +296,33 @@ void ask_spectral(Asker& a, io::CdkRun& run) {
                 throw BadAnswer("expected wavelength (" + unit + ") in " + range_text(lo, hi) +
                                 ", found " + quoted(t));
         if (!(w1 < w2))
-            throw BadAnswer("expected a starting wavelength below the ending wavelength, "
-                            "found " + quoted(t));
+            throw BadAnswer(
+                "expected a starting wavelength below the ending wavelength, "
+                "found " +
+                quoted(t));
         return std::pair{w1 * scale, w2 * scale};
     });
     const int n = a.integer("intervals", "number of intervals", 1, 396);
     run.spectral = wavelength_to_card4(range.first, range.second, n);
 }
 
-void ask_full(Asker& a, io::CdkRun& run, State& st) {
-    io::CdkCard1& c1 = run.card1;
-    io::CdkCard2& c2 = run.card2;
+// CARD 1: model, path, mode, profiles, boundary (fig. 4.30, first questions).
+void ask_card1(Asker& a, io::CdkCard1& c1) {
     c1 = {};
-    c2 = {};
-    run.cirrus.reset();
-    run.vsa.reset();
-    run.profile.reset();
     c1.model = a.integer("model", "model atmosphere", 0, 7);
-    const bool user_profile = c1.model == 0 || c1.model == 7;
-    if (user_profile) {
-        st.radiosonde = a.ask<bool>("radiosonde", [](const std::string& t) {
+    if (c1.model == 0 || c1.model == 7) {
+        a.ask<bool>("radiosonde", [](const std::string& t) {
             if (!Asker::parse_yes_no(t, "radiosonde input"))
-                throw BadAnswer("expected radiosonde input in [y] (model 0 and 7 layers are "
-                                "read from an .rsd file), found " + quoted(t));
+                throw BadAnswer(
+                    "expected radiosonde input in [y] (model 0 and 7 layers are "
+                    "read from an .rsd file), found " +
+                    quoted(t));
             return true;
         });
     }
     if (c1.model == 0)
-        c1.itype = a.integer("itype", "path type", 1, 1, {},
-                             " (model 0 is for a horizontal path only)");
+        c1.itype =
+            a.integer("itype", "path type", 1, 1, {}, " (model 0 is for a horizontal path only)");
     else
         c1.itype = a.integer("itype", "path type", 1, 3);
     c1.iemsct = a.integer("iemsct", "execution mode", 0, 3);
@@ -497,11 +339,18 @@ void ask_full(Asker& a, io::CdkRun& run, State& st) {
                                 std::string("model for ") + kGases[i][1], 1, 6);
     }
     c1.mdef = 1;  // default profiles for the other gases (fig. 4.31)
-    c1.im = user_profile ? 1 : 0;
+    c1.im = (c1.model == 0 || c1.model == 7) ? 1 : 0;
     c1.noprt = a.yes_no("print_profiles", "print the profiles") ? 0 : 1;
     c1.boundary_temperature_k = a.real("tbound", "boundary temperature (K, 0 first level)", 0, 400);
     c1.surface_albedo = a.real("salb", "surface albedo", 0, 1);
+}
 
+// CARD 2 aerosols, clouds and ground, with CARD 2A (cirrus) and 2B (VSA) when asked for.
+void ask_card2(Asker& a, io::CdkRun& run) {
+    io::CdkCard2& c2 = run.card2;
+    c2 = {};
+    run.cirrus.reset();
+    run.vsa.reset();
     c2.ihaze = a.integer("ihaze", "aerosol model IHAZE", 0, 10, {7},
                          " except 7 (user defined, not supported)");
     c2.icstl = 1;  // CONTROL7 writes 1 unless asked (fig. 4.31); LOWTRAN reads it for IHAZE 3
@@ -517,8 +366,10 @@ void ask_full(Asker& a, io::CdkRun& run, State& st) {
     c2.icld = a.ask<int>("icld", [](const std::string& t) {
         double v = Asker::number(t, "cloud model");
         if (v != std::floor(v) || !((v >= 0 && v <= 10) || (v >= 18 && v <= 20)))
-            throw BadAnswer("expected cloud model in [0, 10] or [18, 20] (11, user defined, "
-                            "is not supported), found " + quoted(t));
+            throw BadAnswer(
+                "expected cloud model in [0, 10] or [18, 20] (11, user defined, "
+                "is not supported), found " +
+                quoted(t));
         return static_cast<int>(v);
     });
     if (c2.icld >= 18) {
@@ -545,7 +396,14 @@ void ask_full(Asker& a, io::CdkRun& run, State& st) {
             throw BadAnswer("expected ground altitude (km) in [0, 6), found " + quoted(t));
         return v;
     });
-    if (user_profile) ask_profile(a, run);
+}
+
+// Every question of a run, in fig. 4.30's order.
+void ask_full(Asker& a, io::CdkRun& run) {
+    ask_card1(a, run.card1);
+    ask_card2(a, run);
+    run.profile.reset();
+    if (run.card1.model == 0 || run.card1.model == 7) ask_profile(a, run);
     ask_geometry(a, run);
     ask_spectral(a, run);
 }
@@ -556,15 +414,15 @@ int ask_irpt(Asker& a, const io::CdkRun& run) {
         const bool no_card3 = run.card1.imult == 1 && run.card1.iemsct == 2;
         if (v == 0 || v == 1 || v == 4 || (v == 3 && !no_card3)) return static_cast<int>(v);
         if (v == 3)
-            throw BadAnswer("expected IRPT in [0, 1, 4] (LOWTRAN 7 cannot repeat CARD 3 with "
-                            "multiple and solar scattering), found " + quoted(t));
+            throw BadAnswer(
+                "expected IRPT in [0, 1, 4] (LOWTRAN 7 cannot repeat CARD 3 with "
+                "multiple and solar scattering), found " +
+                quoted(t));
         throw BadAnswer("expected IRPT in [0, 1, 3, 4], found " + quoted(t));
     });
 }
 
 }  // namespace
-
-const std::vector<QuestionInfo>& control7_questions() { return kQuestions; }
 
 double time_answer_hours(double value) {
     if (value >= 0 && value <= 24) return value;
@@ -638,7 +496,7 @@ io::CdkProfile radiosonde_profile(const io::Rsd& rsd, int levels, const std::str
 Control7Result run_control7(AnswerSource& answers,
                             const std::map<std::string, std::string>& overrides) {
     std::set<std::string> known;
-    for (const auto& q : kQuestions) known.insert(q.key);
+    for (const auto& q : control7_questions()) known.insert(q.key);
     for (const auto& [key, value] : overrides)
         if (!known.count(key))
             throw UsageError("--answer: unknown question '" + key +
@@ -649,10 +507,9 @@ Control7Result run_control7(AnswerSource& answers,
         if (t.empty()) throw BadAnswer("expected a file name for the card deck, found ''");
         return t;
     });
-    State st;
     io::CdkRun run;
     run.kind = io::CdkRunKind::Full;
-    ask_full(a, run, st);
+    ask_full(a, run);
     for (;;) {
         run.irpt = ask_irpt(a, run);
         result.cdk.runs.push_back(run);
@@ -660,7 +517,7 @@ Control7Result run_control7(AnswerSource& answers,
         io::CdkRun next = run;
         if (run.irpt == 1) {
             next.kind = io::CdkRunKind::Full;
-            ask_full(a, next, st);
+            ask_full(a, next);
         } else if (run.irpt == 3) {
             next.kind = io::CdkRunKind::Geometry;
             ask_geometry(a, next);

@@ -74,10 +74,13 @@ struct QuestionInfo {
 };
 // Every question control7 can ask, in order of first appearance.
 const std::vector<QuestionInfo>& control7_questions();
+// The question `key` as printed on a terminal: its menu of codes (fig. 4.30), if it has
+// one, then the question.
+std::string control7_prompt(const std::string& key);
 
 struct Control7Result {
     io::Cdk cdk;
-    std::string deck_path;                  // the answer to "FILE NAME FOR PRODUCED CARD DECK"
+    std::string deck_path;                      // the answer to "FILE NAME FOR PRODUCED CARD DECK"
     std::vector<std::string> unused_overrides;  // --answer keys whose question was not asked
 };
 

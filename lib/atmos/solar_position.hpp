@@ -11,28 +11,28 @@ namespace sigchain::atmos {
 
 // A moment and a place. Time is Universal Time (UT, the seed's "GMT").
 struct SolarPositionInput {
-    int year = 2000;  // full year; the Gregorian calendar from 1582-10-15 on, Julian before
-    int month = 1;    // 1-12
-    int day = 1;      // 1-31
-    double ut_hours = 0;          // decimal hours UT, [0, 24)
-    double delta_ut1_s = 0;       // UT1 - UTC, seconds (|x| < 1)
-    double delta_t_s = 67;        // TT - UT1, seconds (see default_delta_t_s)
-    double latitude_deg = 0;      // geodetic, north positive, [-90, 90]
-    double longitude_east_deg = 0;  // east positive, [-180, 180]
-    double elevation_m = 0;       // above mean sea level
-    double pressure_mb = 1013.25;  // annual mean local pressure, for refraction
-    double temperature_c = 12;     // annual mean local temperature, for refraction
+    int year = 2000;          // full year; the Gregorian calendar from 1582-10-15 on, Julian before
+    int month = 1;            // 1-12
+    int day = 1;              // 1-31
+    double ut_hours = 0;      // decimal hours UT, [0, 24)
+    double delta_ut1_s = 0;   // UT1 - UTC, seconds (|x| < 1)
+    double delta_t_s = 67;    // TT - UT1, seconds (see default_delta_t_s)
+    double latitude_deg = 0;  // geodetic, north positive, [-90, 90]
+    double longitude_east_deg = 0;              // east positive, [-180, 180]
+    double elevation_m = 0;                     // above mean sea level
+    double pressure_mb = 1013.25;               // annual mean local pressure, for refraction
+    double temperature_c = 12;                  // annual mean local temperature, for refraction
     double refraction_at_sunrise_deg = 0.5667;  // SPA's atmos_refract (sunrise/sunset only)
 };
 
 struct SolarPosition {
-    double julian_day = 0;                 // JD (UT)
-    double earth_sun_distance_au = 0;      // R, heliocentric radius vector (AU)
-    double declination_deg = 0;            // topocentric declination delta'
-    double hour_angle_deg = 0;             // topocentric local hour angle H'
-    double zenith_deg = 0;                 // topocentric zenith with refraction (theta)
-    double zenith_no_refraction_deg = 0;   // topocentric zenith without refraction (90 - e0)
-    double azimuth_deg = 0;                // topocentric azimuth, clockwise from north, [0, 360)
+    double julian_day = 0;                // JD (UT)
+    double earth_sun_distance_au = 0;     // R, heliocentric radius vector (AU)
+    double declination_deg = 0;           // topocentric declination delta'
+    double hour_angle_deg = 0;            // topocentric local hour angle H'
+    double zenith_deg = 0;                // topocentric zenith with refraction (theta)
+    double zenith_no_refraction_deg = 0;  // topocentric zenith without refraction (90 - e0)
+    double azimuth_deg = 0;               // topocentric azimuth, clockwise from north, [0, 360)
 };
 
 // The Julian day of a UT date and time (SPA eq. 4); the Gregorian correction applies

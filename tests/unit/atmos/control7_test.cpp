@@ -116,27 +116,27 @@ TEST(Control7, DewPointsAboveTheLastValidKeepItsDepression) {
 
 TEST(Control7, DewPointGapsBelowAndBetweenValidLevels) {
     io::Rsd raw = sonde({{0, 1000, 20, std::nullopt},
-                         {1, 900, 15, 10},       // depression 5
+                         {1, 900, 15, 10},  // depression 5
                          {2, 800, 10, std::nullopt},
-                         {3, 700, 5, -5}});      // depression 10
+                         {3, 700, 5, -5}});  // depression 10
     io::Rsd filled = fill_missing_dew_points(raw, {"t.rsd", 0});
     EXPECT_DOUBLE_EQ(*filled.levels[0].dew_point_c, 15);   // first depression kept
     EXPECT_DOUBLE_EQ(*filled.levels[2].dew_point_c, 2.5);  // depression 7.5 halfway
 }
 
 TEST(Control7, RadiosondeWithoutTemperatureOrDewPointsIsRejected) {
-    EXPECT_THROW(fill_missing_dew_points(sonde({{0, 1000, std::nullopt, 5}, {1, 900, 10, 5}}),
-                                         {"t.rsd", 0}),
-                 DataError);
-    EXPECT_THROW(fill_missing_dew_points(
-                     sonde({{0, 1000, 20, std::nullopt}, {1, 900, 10, std::nullopt}}),
-                     {"t.rsd", 0}),
-                 DataError);
+    EXPECT_THROW(
+        fill_missing_dew_points(sonde({{0, 1000, std::nullopt, 5}, {1, 900, 10, 5}}), {"t.rsd", 0}),
+        DataError);
+    EXPECT_THROW(
+        fill_missing_dew_points(sonde({{0, 1000, 20, std::nullopt}, {1, 900, 10, std::nullopt}}),
+                                {"t.rsd", 0}),
+        DataError);
 }
 
 TEST(Control7, RadiosondeLayersAreCard2C1WithUnitFlags) {
-    io::CdkProfile p = radiosonde_profile(sonde({{0.218, 998, 23.8, 7.8}, {0.639, 950, 14.7, 6.4}}),
-                                          1, "X");
+    io::CdkProfile p =
+        radiosonde_profile(sonde({{0.218, 998, 23.8, 7.8}, {0.639, 950, 14.7, 6.4}}), 1, "X");
     ASSERT_EQ(p.layers.size(), 1u);
     EXPECT_EQ(p.layers[0].jchar, "ABG");
     EXPECT_DOUBLE_EQ(p.layers[0].pressure, 998);
@@ -153,7 +153,8 @@ TEST(Control7, WavelengthsBecomeWavenumbers) {
     EXPECT_DOUBLE_EQ(wavelength_to_card4(3, 5, 396).dv_cm1, 5);
     // Nanometres: the same range.
     LineAnswers in(TextInput::from_file(SIGCHAIN_TEST_DATA "/control7/hawkeye.answers"));
-    Control7Result r = run_control7(in, seed_overrides({{"units", "nm"}, {"wavelengths", "400 700"}}));
+    Control7Result r =
+        run_control7(in, seed_overrides({{"units", "nm"}, {"wavelengths", "400 700"}}));
     EXPECT_NEAR(r.cdk.runs[0].spectral.v1_cm1, 1e4 / 0.7, 1e-9);
     EXPECT_NEAR(r.cdk.runs[0].spectral.v2_cm1, 25000, 1e-9);
 }
@@ -181,7 +182,8 @@ TEST(Control7, EveryOutOfRangeAnswerNamesItsRange) {
               "--answer imult: expected multiple scattering mode in [0, 1], found '2'");
     EXPECT_EQ(error_with("modify_o3", "maybe"),
               "--answer modify_o3: expected modify ozone in [y, n], found 'maybe'");
-    EXPECT_EQ(error_with("salb", "1.5"), "--answer salb: expected surface albedo in [0, 1], found '1.5'");
+    EXPECT_EQ(error_with("salb", "1.5"),
+              "--answer salb: expected surface albedo in [0, 1], found '1.5'");
     EXPECT_EQ(error_with("ihaze", "7"),
               "--answer ihaze: expected aerosol model IHAZE in [0, 10] except 7 (user defined, "
               "not supported), found '7'");
@@ -194,7 +196,8 @@ TEST(Control7, EveryOutOfRangeAnswerNamesItsRange) {
     EXPECT_EQ(error_with("icld", "11"),
               "--answer icld: expected cloud model in [0, 10] or [18, 20] (11, user defined, is "
               "not supported), found '11'");
-    EXPECT_EQ(error_with("vis", "0"), "--answer vis: expected visibility (km) in (0, 1000], found '0'");
+    EXPECT_EQ(error_with("vis", "0"),
+              "--answer vis: expected visibility (km) in (0, 1000], found '0'");
     EXPECT_EQ(error_with("gndalt", "6"),
               "--answer gndalt: expected ground altitude (km) in [0, 6), found '6'");
     EXPECT_EQ(error_with("levels", "35"),
@@ -264,8 +267,9 @@ TEST(Control7, MissingRadiosondeAndTruncatedAnswers) {
         run_control7(in);
         FAIL() << "no error";
     } catch (const DataError& err) {
-        EXPECT_STREQ(err.what(), "short.answers:3: unexpected end of the answers, expected the "
-                                 "answer to 'itype'");
+        EXPECT_STREQ(err.what(),
+                     "short.answers:3: unexpected end of the answers, expected the "
+                     "answer to 'itype'");
     }
 }
 
@@ -313,7 +317,7 @@ TEST(Control7, StandardModelWithRepeatedRuns) {
     // Model 6, slant path to space, transmittance; IRPT 4 then 3 then 0.
     const std::string text =
         "us.cdk\n6\n3\n0\n0\nn\nn\nn\nn\nn\nn\nn\n0\n0.1\n1\n0\n0\n0\nn\nn\n0\n0\n"
-        "10\n0\n0\nn\n"          // H1, H2 (0), angle, no radius override
+        "10\n0\n0\nn\n"  // H1, H2 (0), angle, no radius override
         "nanometers\n400-700\n10\n"
         "4\nmicrons\n3-5\n100\n"  // CARD 4 again
         "3\n5\n0\n30\nn\n"        // CARD 3 again
@@ -328,8 +332,7 @@ TEST(Control7, StandardModelWithRepeatedRuns) {
     EXPECT_DOUBLE_EQ(r.cdk.runs[2].geometry.zenith_angle_deg, 30);
     EXPECT_FALSE(r.cdk.runs[0].profile.has_value());
     EXPECT_EQ(r.cdk.runs[0].card1.im, 0);
-    EXPECT_EQ(deck_of(io::parse_cdk(TextInput::from_string(deck_of(r.cdk), "d"))),
-              deck_of(r.cdk));
+    EXPECT_EQ(deck_of(io::parse_cdk(TextInput::from_string(deck_of(r.cdk), "d"))), deck_of(r.cdk));
 }
 
 TEST(Control7, QuestionKeysAreUnique) {

@@ -59,11 +59,12 @@ AlmanacSun almanac_sun(double jd, double ut_hours, double lat_deg, double lon_ea
     const double lmst = (gmst_h * 15.0 + lon_east_deg) * kDeg;
     const double ha = lmst - ra;
     const double lat = lat_deg * kDeg;
-    const double el = std::asin(std::sin(dec) * std::sin(lat) +
-                                std::cos(dec) * std::cos(lat) * std::cos(ha));
-    double az = std::atan2(-std::cos(dec) * std::sin(ha),
-                           std::sin(dec) * std::cos(lat) - std::cos(dec) * std::cos(ha) *
-                                                               std::sin(lat)) / kDeg;
+    const double el =
+        std::asin(std::sin(dec) * std::sin(lat) + std::cos(dec) * std::cos(lat) * std::cos(ha));
+    double az =
+        std::atan2(-std::cos(dec) * std::sin(ha),
+                   std::sin(dec) * std::cos(lat) - std::cos(dec) * std::cos(ha) * std::sin(lat)) /
+        kDeg;
     if (az < 0) az += 360;
     const double r = 1.00014 - 0.01671 * std::cos(g) - 0.00014 * std::cos(2 * g);
     return {90 - el / kDeg, az, dec / kDeg, r};
@@ -173,8 +174,8 @@ TEST(SolarPosition, RefractionLiftsTheSunOnlyAboveTheHorizon) {
 
 TEST(SolarPosition, EarthSunDistanceAtPerihelionAndAphelion) {
     // Scanning January to November 2003 hourly (the 2004 perihelion, Jan 4 2004, is
-    // nearer than 2003's, so December is left out): the perihelion falls on Jan 4 and the aphelion on Jul 4 (US
-    // Naval Observatory: Jan 4 05 UT, Jul 4 06 UT), at 0.9833 and 1.0167 AU (the
+    // nearer than 2003's, so December is left out): the perihelion falls on Jan 4 and the aphelion
+    // on Jul 4 (US Naval Observatory: Jan 4 05 UT, Jul 4 06 UT), at 0.9833 and 1.0167 AU (the
     // published values, 4 decimals: tolerance 1e-4 AU).
     SolarPositionInput in;
     in.year = 2003;
