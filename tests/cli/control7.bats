@@ -237,3 +237,16 @@ bad_answer() {
     run -1 --separate-stderr control7 --answers no_such.answers -o out.cdk
     [[ "$stderr" == "control7: "*"no_such.answers"* ]] || fail "$stderr"
 }
+
+@test "on a terminal the questions are asked and a bad answer is asked again" {
+    command -v script > /dev/null || skip "script(1) (util-linux) is needed for a terminal"
+    seed_setup
+    # The seed's answers typed on a pseudo-terminal, with a bad model number first.
+    { printf 'flyover.cdk\n12\n'; sed -e 's/#.*//' -e '/^ *$/d' "$ANSWERS/hawkeye.answers" | tail -n +2; } > typed
+    run -0 sh -c "script -qec 'control7 -o tty.cdk' /dev/null < typed"
+    assert_output --partial "ENTER FILE NAME FOR PRODUCED CARD DECK:"
+    assert_output --partial "7 NEW MODEL ATMOSPHERE (RADIOSONDE DATA)"
+    assert_output --partial "control7: expected model atmosphere in [0, 7], found '12'; please answer again"
+    assert_output --partial "ENTERING DATA FOR LAYER 19: ALTITUDE 16.493"
+    assert_golden tty.cdk "$GOLDEN/control7/hawkeye.cdk"
+}
