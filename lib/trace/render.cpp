@@ -63,6 +63,11 @@ struct Frame {
     }
 };
 
+// A lambertian material has no specular part whatever its SPECULARITY (brdf.hpp:
+// w = cos/pi for LobeShape::None).
+double specularity_of(const MaterialOptics& m) {
+    return m.brdf.shape() == LobeShape::None ? 0.0 : m.specularity;
+}
 bool has_lobe(const MaterialOptics& m) {
     return m.specularity > 0 && m.brdf.shape() != LobeShape::None &&
            m.brdf.shape() != LobeShape::Delta;
@@ -337,7 +342,7 @@ private:
         double theta_o = std::acos(cos_o) * kDeg;
         m.reflectance(static_cast<int>(a.texture_curve), theta_o, thickness_of(a, m),
                       {rho, m_c.n});
-        double s = m.specularity;
+        double s = specularity_of(m);
         double sky_factor = (1 - s) / kPi * (1 + n[2]) / 2;
         for (std::size_t k = 0; k < m_c.n; ++k) in[k] = sky_factor * m_c.sky_e[k];
         double cos_sun = dot3(n, m_c.sun);
@@ -426,7 +431,7 @@ private:
     // `dirsig` strategy uses DIRSIG 3's weighting instead (dirsig_sun_weight).
     double sun_weight(const MaterialOptics& m, const Vec3& sun_l, const Vec3& wo_l,
                       double cos_sun) const {
-        double s = m.specularity;
+        double s = specularity_of(m);
         if (m_c.opt.sampling == Sampling::Dirsig) {
             // DIRSIG 3 (seed 3.6.5, 3.4 secondary-ray logic): the sun sample of the
             // diffuse part weighted (1 - s) cos/pi; that of the specular part by s and
@@ -457,7 +462,7 @@ private:
                     double* acc) {
         ArenaScope scope(m_arena);
         double* li = m_arena.take();
-        double s = m.specularity;
+        double s = specularity_of(m);
         bool lobe = has_lobe(m);
         Vec3 mir = radiometry::mirror(wo_l);
         double h = std::hypot(mir[0], mir[1]);
@@ -484,7 +489,7 @@ private:
                   double* acc) {
         ArenaScope scope(m_arena);
         double* li = m_arena.take();
-        double s = m.specularity;
+        double s = specularity_of(m);
         const auto& pattern = m_c.dirsig_pattern;
         double w = (1 - s) / static_cast<double>(pattern.size());
         long escaped = 0;
@@ -526,7 +531,7 @@ private:
                       double* acc) {
         ArenaScope scope(m_arena);
         double* li = m_arena.take();
-        double s = m.specularity;
+        double s = specularity_of(m);
         bool delta = m.brdf.shape() == LobeShape::Delta || m.brdf.shape() == LobeShape::None;
         double s_sample = delta ? 0.0 : s;  // the delta part is not sampled
         long total = std::max(1L, m_c.opt.hemisphere_samples);
@@ -737,7 +742,7 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
     if (no_temperature) skipped.push_back("emission of facets without a temperature");
     if (!c.any_transmissive) skipped.push_back("transmission (no transmissive material)");
     bool lobes = false;
-    for (const auto& m : inputs.materials->materials()) lobes |= m.specularity > 0;
+    for (const auto& m : inputs.materials->materials()) lobes |= specularity_of(m) > 0;
     if (!lobes) skipped.push_back("specular lobes (every specularity is 0)");
     if (!inputs.atmosphere->has_sky()) skipped.push_back("downwelled sky (no sky in the .rad)");
     if (options.bounces > 1) skipped.push_back("bounces beyond 1 (secondary hits are one bounce deep)");
