@@ -129,6 +129,10 @@ struct Context {
     // Light sampling of the sky (montecarlo): cell probabilities and their CDF.
     std::vector<double> sky_prob, sky_cdf;
     bool light_sampling = false;
+    // Facet temperatures (K, -1 unknown) by placement and facet, with emission only:
+    // looked up once here so that no key string is built per hit.
+    std::vector<std::vector<double>> temperatures_k;
+    bool missing_temperature = false;
 };
 
 double cell_weight(const radiometry::SkyCell& c, bool emitted) {
@@ -164,6 +168,28 @@ Context make_context(const RenderInputs& in, const RenderOptions& opt) {
         auto ske = atm.sky_emitted_irradiance_horizontal();
         for (std::size_t k = 0; k < c.n && k < ske.size(); ++k) c.sky_e[k] += ske[k];
     }
+    if (c.emission) {
+        const scene::Scene& sc = *in.scene;
+        c.temperatures_k.resize(sc.placement_count());
+        for (std::size_t object = 0; object < sc.placement_count(); ++object) {
+            std::size_t mesh = sc.mesh_of_placement(object);
+            auto& t = c.temperatures_k[object];
+            t.assign(sc.facet_count(mesh), -1.0);
+            for (std::uint32_t f = 0; f < t.size(); ++f) {
+                scene::Hit h;
+                h.object = static_cast<std::uint32_t>(object);
+                h.facet = f;
+                auto it = in.temperatures->find(sc.facet_key(h));
+                double celsius = sc.attributes(mesh, f).temperature_c;
+                if (it != in.temperatures->end())
+                    t[f] = it->second;
+                else if (celsius != -1)
+                    t[f] = celsius + 273.15;
+                else
+                    c.missing_temperature = true;
+            }
+        }
+    }
     if (opt.sampling == Sampling::Dirsig)
         for (const auto& d : cosine_pattern(std::max(1L, opt.hemisphere_samples)))
             c.dirsig_pattern.push_back({d[0], d[1], d[2]});
@@ -186,8 +212,6 @@ Context make_context(const RenderInputs& in, const RenderOptions& opt) {
 
 struct Counters {
     std::uint64_t primary = 0, secondary = 0, shadow = 0, hits = 0;
-    bool no_temperature = false;
-    bool deep_bounces = false;
 };
 
 // One thread's renderer.
@@ -237,13 +261,9 @@ private:
         return a.thickness_cm >= 0 ? a.thickness_cm : m.thickness_cm;
     }
 
-    double temperature_k(const scene::Hit& hit, const scene::FacetAttributes& a) {
-        if (!m_c.in.temperatures) return -1;
-        auto it = m_c.in.temperatures->find(m_c.in.scene->facet_key(hit));
-        if (it != m_c.in.temperatures->end()) return it->second;
-        if (a.temperature_c != -1) return a.temperature_c + 273.15;
-        counters.no_temperature = true;
-        return -1;
+    double temperature_k(const scene::Hit& hit) const {
+        if (!m_c.emission) return -1;
+        return m_c.temperatures_k[hit.object][hit.facet];
     }
 
     // eps(lambda) F(theta_o) B(lambda, T) added to `out` (seed 3.4 big equation,
@@ -359,7 +379,7 @@ private:
         }
         for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * in[k];
         if (m_c.emission)
-            add_emission(m, static_cast<int>(a.texture_curve), theta_o, temperature_k(hit, a),
+            add_emission(m, static_cast<int>(a.texture_curve), theta_o, temperature_k(hit),
                          out);
     }
 
@@ -405,7 +425,7 @@ private:
         case Sampling::MonteCarlo: sky_view = montecarlo(m, f, p, wo_l, down); break;
         }
         for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * (solar[k] + down[k]);
-        double t_k = m_c.emission ? temperature_k(hit, a) : -1;
+        double t_k = m_c.emission ? temperature_k(hit) : -1;
         if (m_c.emission) add_emission(m, curve, theta_o, t_k, out);
         if (truth) {
             // The truth buffers outlive this scope: they are copied now.
@@ -729,17 +749,15 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
     if (error) std::rethrow_exception(error);
     if (progress) progress(rows, rows);
 
-    bool no_temperature = false;
     for (const Counters& k : counters) {
         res.stats.primary_rays += k.primary;
         res.stats.secondary_rays += k.secondary;
         res.stats.shadow_rays += k.shadow;
         res.stats.hits += k.hits;
-        no_temperature |= k.no_temperature;
     }
     auto& skipped = res.stats.skipped;
     if (!c.emission) skipped.push_back("emission (no facet temperatures given)");
-    if (no_temperature) skipped.push_back("emission of facets without a temperature");
+    if (c.missing_temperature) skipped.push_back("emission of facets without a temperature");
     if (!c.any_transmissive) skipped.push_back("transmission (no transmissive material)");
     bool lobes = false;
     for (const auto& m : inputs.materials->materials()) lobes |= specularity_of(m) > 0;
