@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "geom/view_angle.hpp"
 #include "io/adv.hpp"
 #include "scene/load.hpp"
@@ -43,12 +44,33 @@ std::string snd_view_angle_line(double min_deg, double max_deg, double inc) {
     return fixed(lo, d) + " " + fixed(hi, d) + " " + fixed(inc, d);
 }
 
+scene::GeoOrigin parse_geo_origin(const std::string& text, const std::string& option) {
+    auto fields = split_fields(text, true);
+    auto bad = [&](const std::string& why) {
+        return UsageError(option + " expects LAT,LON or LAT,LON,HEIGHT (" + why + "), found '" +
+                          text + "'");
+    };
+    if (fields.size() != 2 && fields.size() != 3) throw bad("two or three numbers");
+    double v[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        try {
+            v[i] = parse_double(fields[i], {option, 0}, "a number");
+        } catch (const DataError&) {
+            throw bad("numbers");
+        }
+    }
+    if (std::abs(v[0]) > 90) throw bad("latitude within -90..90 deg");
+    if (std::abs(v[1]) > 360) throw bad("longitude within -360..360 deg");
+    return {v[0], v[1], v[2]};
+}
+
 void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
     io::Adv adv = io::read_adv_file(job.adv_path);
     FrameCamera cam = frame_camera(adv, job.adv_path);
     scene::LoadOptions load;
     load.scene_meters_per_unit = io::meters_per_unit(adv.units);
     load.allow_degenerate = true;  // geometry only: a degenerate facet is never hit
+    load.origin = job.origin;
     scene::Scene sc = scene::load_scene(job.scene_path, load);
     if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
     ViewAngleReport rep = find_view_angles(cam, sc, job.grid);

@@ -1,8 +1,11 @@
 // The find_min_max_view_angle job: load an .adv and a scene, report both methods.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
+
+#include "scene/load.hpp"
 
 namespace sigchain::geom {
 
@@ -14,7 +17,13 @@ struct ViewAngleJob {
     bool snd_line = false;   // print only the .snd line of `method`
     ViewAngleMethod method = ViewAngleMethod::FieldOfView;
     int grid = 256;  // interior rays per image axis (field-of-view)
+    // The scene's geodetic origin, needed by DEM objects in an .odb (--origin).
+    std::optional<scene::GeoOrigin> origin{};
 };
+
+// "LAT,LON" or "LAT,LON,HEIGHT" (deg north, deg east, metres above the WGS84
+// ellipsoid) as an origin; throws UsageError naming `option` otherwise.
+scene::GeoOrigin parse_geo_origin(const std::string& text, const std::string& option);
 
 // Runs the job and writes the report (or the .snd line) to `out`. Throws DataError
 // or IoError for bad inputs, including a field of view that misses the scene.

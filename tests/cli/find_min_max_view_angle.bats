@@ -1,9 +1,11 @@
 #!/usr/bin/env bats
 # Tests: find_min_max_view_angle
-# Also requires: tests/data/geom/*.adv, tests/data/geom/*.gdb, tests/data/seed/box_on_plane.gdb
+# Also requires: tests/data/geom/*.adv, tests/data/geom/*.gdb, tests/data/seed/box_on_plane.gdb,
+#   tests/data/scene/{flat.odb,flat.asc,flat.prj,quad_tri.odb,quad_tri.obj,quad_tri.map}
 load test_helper
 
 GEOM="$SIGCHAIN_SOURCE_DIR/tests/data/geom"
+SCENE="$SIGCHAIN_SOURCE_DIR/tests/data/scene"
 
 @test "--help prints usage to stdout and exits 0" {
     run -0 --separate-stderr find_min_max_view_angle --help
@@ -95,4 +97,27 @@ GEOM="$SIGCHAIN_SOURCE_DIR/tests/data/geom"
     assert_output --regexp 'field-of-view +-0\.7292 +0\.7292 +0\.10 +408'
     run -2 --separate-stderr find_min_max_view_angle --grid 0 "$GEOM/nadir.adv" "$GEOM/plane_100m.gdb"
     [[ "$stderr" == *"--grid must be at least 1"* ]]
+}
+
+@test "an .odb with an OBJ object is read (its material map too)" {
+    run -0 --separate-stderr find_min_max_view_angle --snd -m scene-bounding-box "$GEOM/nadir.adv" "$SCENE/quad_tri.odb"
+    # The two copies span x 0..6, y 0..12 at z = 0, south-west of the camera at
+    # (50, 50, 1000) (reference azimuth north, so negative): the box corners give
+    # -atan(hypot(50, 50) / 1000) = -4.05 to -atan(hypot(44, 38) / 1000) = -3.33 deg,
+    # rounded outward to the 0.05 increment.
+    assert_output --regexp '^-4\.05 -3\.30 0\.05'
+}
+
+@test "a DEM object needs --origin; with it the terrain is placed about that point" {
+    run -1 --separate-stderr find_min_max_view_angle "$GEOM/nadir.adv" "$SCENE/flat.odb"
+    [[ "$stderr" == *"flat.odb:3: a DEM object needs the scene's geodetic origin"* ]]
+    # The flat DEM covers about 0..105 m east and 0..111 m north of 43 N 77.6 W: the
+    # nadir image (+-12.7 m about (50, 50)) sees terrain in every ray.
+    run -0 --separate-stderr find_min_max_view_angle --origin 43,-77.6 "$GEOM/nadir.adv" "$SCENE/flat.odb"
+    assert_output --regexp 'field-of-view +-0\.7292 +0\.7292 +0\.10 +10404'
+    run -0 --separate-stderr find_min_max_view_angle --origin 43,-77.6,0 "$GEOM/nadir.adv" "$SCENE/flat.odb"
+    run -2 --separate-stderr find_min_max_view_angle --origin 43 "$GEOM/nadir.adv" "$SCENE/flat.odb"
+    [[ "$stderr" == *"--origin expects LAT,LON or LAT,LON,HEIGHT"* ]]
+    run -2 --separate-stderr find_min_max_view_angle --origin 95,0 "$GEOM/nadir.adv" "$SCENE/flat.odb"
+    [[ "$stderr" == *"latitude within -90..90 deg"* ]]
 }

@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
         "method,m", cli::po::value<std::string>()->default_value("field-of-view"),
         "method for --snd: field-of-view or scene-bounding-box")(
         "grid", cli::po::value<int>()->default_value(256),
-        "interior rays per image axis for the field-of-view method (>= 1)");
+        "interior rays per image axis for the field-of-view method (>= 1)")(
+        "origin", cli::po::value<std::string>()->value_name("LAT,LON[,H]"),
+        "geodetic scene origin for DEM objects (deg N, deg E, m above the ellipsoid)");
     tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
         auto inputs = cli::args(vm, "input");
@@ -32,6 +34,8 @@ int main(int argc, char** argv) {
                                        "' (field-of-view or scene-bounding-box)");
         job.grid = vm["grid"].as<int>();
         if (job.grid < 1) throw sigchain::UsageError("--grid must be at least 1");
+        if (vm.count("origin"))
+            job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
         sigchain::AtomicOutput out(vm["output"].as<std::string>());
         geom::run_view_angle_job(job, out.stream());
         out.commit();
