@@ -124,6 +124,8 @@ void check_job(const TraceJob& job) {
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)
         throw UsageError("--max-transmissions: expected 0 or more");
+    if (job.bounces && (*job.bounces < 0 || *job.bounces > 1))
+        throw UsageError("--bounces: expected 0 or 1");
     if (job.rows && (job.rows->first < 0 || job.rows->second <= job.rows->first))
         throw UsageError("--rows: expected 0 <= A < B");
 }
@@ -220,6 +222,7 @@ TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
     options.samples_per_pixel = job.samples_per_pixel.value_or(adv.samples_per_pixel);
     if (job.hemisphere_samples) options.hemisphere_samples = *job.hemisphere_samples;
     if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
+    if (job.bounces) options.bounces = *job.bounces;
     options.seed = job.seed;
     options.threads = job.threads;
     options.row_begin = row_begin;

@@ -158,6 +158,15 @@ band_bytes() {
     run -0 cmp a.img b.img
 }
 
+@test "trace --bounces 0 changes the image; only 0 or 1 are accepted" {
+    trace_ok $(inputs) -o one.img
+    trace_ok $(inputs) --bounces 1 -o one_again.img
+    run -0 cmp one.img one_again.img
+    trace_ok $(inputs) --bounces 0 -o zero.img
+    run -1 cmp -s one.img zero.img
+    trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces 2 -o out.img
+}
+
 @test "trace --truth writes the truth layers with their channel names" {
     trace_ok $(inputs) -o out.img --truth truth.img
     run -0 grep -i '^lines *= 16' truth.hdr

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
         "montecarlo: rays per hit; dirsig: diffuse pattern size (default 64)")(
         "max-transmissions", cli::po::value<int>(),
         "transmissive facets followed per ray (default 8)")(
+        "bounces", cli::po::value<int>(),
+        "1: hemisphere rays see other facets lit one bounce deep (default); 0: black")(
         "seed", cli::po::value<std::uint64_t>()->default_value(1), "random seed")(
         "threads", cli::po::value<unsigned>()->default_value(0), "threads (0: all cores)")(
         "rows", cli::po::value<std::string>(), "render rows A to B-1 only (A:B)")(
@@ -46,6 +48,7 @@ int main(int argc, char** argv) {
             job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
         if (vm.count("max-transmissions"))
             job.max_transmissions = vm["max-transmissions"].as<int>();
+        if (vm.count("bounces")) job.bounces = vm["bounces"].as<int>();
         job.seed = vm["seed"].as<std::uint64_t>();
         job.threads = vm["threads"].as<unsigned>();
         if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
