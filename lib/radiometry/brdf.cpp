@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
+#include <tuple>
 #include <stdexcept>
 
 namespace sigchain::radiometry {
@@ -19,8 +22,9 @@ constexpr double kDegToRad = kPi / 180;
 // in angle near grazing, where narrow lobes cross the horizon (step 1/2048 in u is
 // 0.028 deg in angle at grazing).
 constexpr int kTableSteps = 2048;
-// Nodes of the quadrature of the part of the lobe that straddles the horizon (m()).
-constexpr int kQuadratureNodes = 256;
+// Gauss-Legendre nodes per piece of the quadrature of the part of the lobe that
+// straddles the horizon (m()).
+constexpr int kQuadratureNodes = 20;
 // A LinearCone row radius below this (deg) is raised to it: a zero radius would be a
 // delta lobe, which the `dirsig` model (Delta) represents instead.
 constexpr double kMinConeRadiusDeg = 0.05;
@@ -35,6 +39,36 @@ double one_minus_sinc(double r) {
 }
 
 double clamp_unit(double x) { return std::clamp(x, -1.0, 1.0); }
+
+// Gauss-Legendre nodes and weights on [-1, 1]: roots of P_n by Newton's method from
+// the Chebyshev-like guesses cos(pi (i + 0.75) / (n + 0.5)) (Abramowitz & Stegun 25.4.29).
+struct GaussLegendre {
+    std::array<double, kQuadratureNodes> x{}, w{};
+    GaussLegendre() {
+        const int n = kQuadratureNodes;
+        for (int i = 0; i < n; ++i) {
+            double z = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1;
+            for (int it = 0; it < 100; ++it) {
+                double p0 = 1, p1 = z;  // P_0, P_1, then the three-term recurrence
+                for (int k = 2; k <= n; ++k) {
+                    double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+                    p0 = p1, p1 = p2;
+                }
+                dp = n * (z * p1 - p0) / (z * z - 1);  // P_n'
+                double dz = p1 / dp;
+                z -= dz;
+                if (std::abs(dz) < 1e-15) break;
+            }
+            x[i] = z;
+            w[i] = 2 / ((1 - z * z) * dp * dp);
+        }
+    }
+};
+
+const GaussLegendre& gauss_legendre() {
+    static const GaussLegendre g;
+    return g;
+}
 
 }  // namespace
 
@@ -125,32 +159,54 @@ struct Brdf::Impl {
     // m(theta_o): the part of the lobe above the horizon, its axis at zenith theta_r.
     // A ring at alpha about the axis lies above the horizon for the fraction
     // acos(-cot(theta_r) cot(alpha)) / pi of its azimuths when |90 - theta_r| < alpha
-    // < 90 + theta_r, all of it below that range, none above; the straddling range is
-    // integrated with the substitution alpha = lo + (hi - lo)(1 - cos t)/2, which
-    // removes the square-root behaviour of that fraction at both ends.
-    double mass_above_horizon(double theta_r, double radius) const {
+    // < 90 + theta_r, all of it below that range, none above. The straddling range is
+    // cut at the lobe's quantiles `quantile_alpha` (so a narrow lobe gets its own
+    // pieces) and geometrically near its start, and each piece integrated with the substitution alpha = lo + (hi - lo)
+    // (1 - cos t)/2 and Gauss-Legendre in t, which removes the square-root
+    // behaviour of the fraction at the ends of the range.
+    double mass_above_horizon(double theta_r, double radius,
+                              const std::vector<double>& quantile_alpha) const {
         double amax = alpha_max(radius);
         double a1 = kPi / 2 - theta_r, a2 = std::min(kPi / 2 + theta_r, amax);
         double mass = cdf(std::min(a1, amax), radius);
         if (a2 <= a1) return mass;
         double ct = std::cos(theta_r), st = std::sin(theta_r);
-        double dt = kPi / kQuadratureNodes, sum = 0;
-        for (int i = 0; i < kQuadratureNodes; ++i) {
-            double t = (i + 0.5) * dt;
-            double alpha = a1 + (a2 - a1) * 0.5 * (1 - std::cos(t));
-            double dalpha = (a2 - a1) * 0.5 * std::sin(t) * dt;
-            double c = -ct * std::cos(alpha) / (st * std::sin(alpha));
-            double fraction = std::acos(clamp_unit(c)) / kPi;
-            sum += density(alpha, radius) * fraction * 2 * kPi * std::sin(alpha) * dalpha;
+        std::vector<double> edges{a1};
+        for (double a : quantile_alpha)
+            if (a > a1 && a < a2) edges.push_back(a);
+        // Near grazing (a1 small) the fraction falls from 1 to about 1/2 within a few
+        // a1 of a1: pieces at 2, 8, 32, ... a1 resolve that.
+        for (double a = 2 * a1; a1 > 0 && a < a2; a *= 4) edges.push_back(a);
+        edges.push_back(a2);
+        std::sort(edges.begin(), edges.end());
+        const GaussLegendre& gl = gauss_legendre();
+        double sum = 0;
+        for (std::size_t p = 0; p + 1 < edges.size(); ++p) {
+            double lo = edges[p], hi = edges[p + 1];
+            for (int i = 0; i < kQuadratureNodes; ++i) {
+                double t = 0.5 * kPi * (gl.x[i] + 1), dt = 0.5 * kPi * gl.w[i];
+                double alpha = lo + (hi - lo) * 0.5 * (1 - std::cos(t));
+                double dalpha = (hi - lo) * 0.5 * std::sin(t) * dt;
+                double c = -ct * std::cos(alpha) / (st * std::sin(alpha));
+                double fraction = std::acos(clamp_unit(c)) / kPi;
+                sum += density(alpha, radius) * fraction * 2 * kPi * std::sin(alpha) * dalpha;
+            }
         }
         return mass + sum;
     }
+    std::vector<double> quantiles(double radius) const {
+        std::vector<double> out;
+        for (double q : {0.3, 0.6, 0.85, 0.95, 0.99, 0.999}) out.push_back(inverse_cdf(q, radius));
+        return out;
+    }
     void build_table() {
         table.resize(kTableSteps + 1);
+        std::vector<double> q;
         for (int i = 0; i <= kTableSteps; ++i) {
             double theta = std::acos(static_cast<double>(i) / kTableSteps);
             double radius = shape == LobeShape::LinearCone ? cone_radius(theta) : 0;
-            double m = mass_above_horizon(theta, radius);
+            if (i == 0 || shape == LobeShape::LinearCone) q = quantiles(radius);
+            double m = mass_above_horizon(theta, radius, q);
             table[i] = 1 / m;
         }
     }
@@ -184,6 +240,25 @@ struct Brdf::Impl {
     }
 };
 
+namespace {
+
+// Lobes already built, by shape and parameters: building one costs some ms (its m
+// table), and a scene's materials often share a lobe. Built under the lock, so
+// concurrent loads are safe. Stored type-erased (Brdf::Impl is private).
+using LobeKey = std::tuple<LobeShape, std::array<double, 7>>;
+
+template <class Build>
+std::shared_ptr<const void> cached_lobe(const LobeKey& key, Build build) {
+    static std::mutex mutex;
+    static std::map<LobeKey, std::shared_ptr<const void>> cache;
+    std::lock_guard lock(mutex);
+    auto& slot = cache[key];
+    if (!slot) slot = build();
+    return slot;
+}
+
+}  // namespace
+
 Brdf Brdf::lambertian() { return Brdf(); }
 
 Brdf Brdf::delta() {
@@ -197,53 +272,65 @@ Brdf Brdf::delta() {
 Brdf Brdf::cone(double half_angle_deg) {
     if (!(half_angle_deg > 0 && half_angle_deg <= 180))
         throw std::invalid_argument("Brdf::cone: half angle must be in (0, 180] deg");
-    auto impl = std::make_shared<Impl>();
-    impl->shape = LobeShape::Uniform;
-    impl->half_angle_rad = half_angle_deg * kDegToRad;
-    impl->cos_half_angle = std::cos(impl->half_angle_rad);
-    impl->uniform_density = 1 / (2 * kPi * (1 - impl->cos_half_angle));
-    impl->build_table();
     Brdf b;
-    b.m_impl = impl;
+    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
+        {LobeShape::Uniform, {half_angle_deg}}, [&] {
+            auto impl = std::make_shared<Impl>();
+            impl->shape = LobeShape::Uniform;
+            impl->half_angle_rad = half_angle_deg * kDegToRad;
+            impl->cos_half_angle = std::cos(impl->half_angle_rad);
+            impl->uniform_density = 1 / (2 * kPi * (1 - impl->cos_half_angle));
+            impl->build_table();
+            return std::shared_ptr<const void>(impl);
+        }));
     return b;
 }
 
 Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg) {
-    auto impl = std::make_shared<Impl>();
-    impl->shape = LobeShape::LinearCone;
-    for (int i = 0; i < 7; ++i) {
-        if (!(base_radius_deg[i] >= 0 && base_radius_deg[i] <= 180))
+    for (double r : base_radius_deg)
+        if (!(r >= 0 && r <= 180))
             throw std::invalid_argument("Brdf::linear_cone: radius must be in [0, 180] deg");
-        impl->radius_rad[i] = std::max(base_radius_deg[i], kMinConeRadiusDeg) * kDegToRad;
-    }
-    impl->build_table();
     Brdf b;
-    b.m_impl = impl;
+    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
+        {LobeShape::LinearCone, base_radius_deg}, [&] {
+            auto impl = std::make_shared<Impl>();
+            impl->shape = LobeShape::LinearCone;
+            for (int i = 0; i < 7; ++i)
+                impl->radius_rad[i] = std::max(base_radius_deg[i], kMinConeRadiusDeg) * kDegToRad;
+            impl->build_table();
+            return std::shared_ptr<const void>(impl);
+        }));
     return b;
 }
 
 Brdf Brdf::phong(double exponent) {
     if (!(exponent >= 0)) throw std::invalid_argument("Brdf::phong: exponent must be >= 0");
-    auto impl = std::make_shared<Impl>();
-    impl->shape = LobeShape::CosinePower;
-    impl->exponent = exponent;
-    impl->build_table();
     Brdf b;
-    b.m_impl = impl;
+    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
+        {LobeShape::CosinePower, {exponent}}, [&] {
+            auto impl = std::make_shared<Impl>();
+            impl->shape = LobeShape::CosinePower;
+            impl->exponent = exponent;
+            impl->build_table();
+            return std::shared_ptr<const void>(impl);
+        }));
     return b;
 }
 
 Brdf Brdf::exponential(double width_deg) {
     if (!(width_deg > 0)) throw std::invalid_argument("Brdf::exponential: width must be > 0");
-    auto impl = std::make_shared<Impl>();
-    impl->shape = LobeShape::Exponential;
-    double k = 1 / (width_deg * kDegToRad);
-    impl->k_per_rad = k;
-    // Int_sphere e^(-k alpha) = 2 pi (1 + e^(-k pi)) / (1 + k^2).
-    impl->exp_norm = (1 + k * k) / (2 * kPi * (1 + std::exp(-k * kPi)));
-    impl->build_table();
     Brdf b;
-    b.m_impl = impl;
+    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
+        {LobeShape::Exponential, {width_deg}}, [&] {
+            auto impl = std::make_shared<Impl>();
+            impl->shape = LobeShape::Exponential;
+            double k = 1 / (width_deg * kDegToRad);
+            impl->k_per_rad = k;
+            // Int_sphere e^(-k alpha) = 2 pi (1 + e^(-k pi)) / (1 + k^2).
+            impl->exp_norm = (1 + k * k) / (2 * kPi * (1 + std::exp(-k * kPi)));
+            impl->build_table();
+            return std::shared_ptr<const void>(impl);
+        }));
     return b;
 }
 
