@@ -13,7 +13,7 @@ namespace sigchain::scene {
 // be in scene units. An .odb object's coordinates and translations are in its
 // UNITS and are scaled to scene units with `scene_meters_per_unit`. Each .gdb file
 // is meshed once however many objects and instances use it (Embree instances).
-// OBJ and DEM objects are not read yet (NotImplemented; trace's issue adds them).
+// Same as load_scene() with allow_degenerate and no origin (DEM objects refused).
 Scene load_scene_file(const std::string& path, double scene_meters_per_unit);
 
 // The geodetic point at the scene origin (0, 0, 0): terrain rasters and other

@@ -28,7 +28,9 @@ struct Hit {
     std::uint32_t object = 0;  // index of the placed object (instance order)
     std::uint32_t facet = 0;   // facet index within its mesh (.gdb: file order over parts)
     Vec3 normal{};             // unit geometric normal, scene frame, as the facet is
-                               // wound (not flipped toward the ray)
+                               // wound (not flipped toward the ray); a mirroring
+                               // placement (det < 0) keeps it on the same side of the
+                               // surface (M^-T n), not the mirrored winding
 };
 
 // What a facet is made of and how to name it in messages and in .tmp/.shd keys.
