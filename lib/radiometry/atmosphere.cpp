@@ -39,6 +39,8 @@ struct Atmosphere::Data {
     std::vector<SkyCell> cells;                    // ring by ring, azimuth increasing
     std::vector<double> ring_edges_deg;            // rings + 1 zenith edges, 0 .. 90
     std::vector<double> azimuth_hi_deg;            // upper azimuth edge of each column
+    std::vector<double> ring_cos_edges;            // cos of the inner ring edges, decreasing
+    double uniform_azimuth_step_deg = 0;           // > 0 when every column has this width
     int rings = 0, columns = 0;
     std::vector<double> sky_irradiance, sky_emitted_irradiance;  // horizontal, per sample
 
@@ -133,6 +135,14 @@ void Atmosphere::Data::build_sky_grid(const io::RadSky& sky) {
     for (int c = 0; c < d.columns; ++c) {
         double next = c + 1 < d.columns ? ac[c + 1] : ac[0] + 360;
         d.azimuth_hi_deg[c] = 0.5 * (ac[c] + next);
+    }
+    for (int r = 1; r < d.rings; ++r)
+        d.ring_cos_edges.push_back(std::cos(d.ring_edges_deg[r] * kDegToRad));
+    d.uniform_azimuth_step_deg = 360.0 / d.columns;
+    for (int c = 0; c < d.columns; ++c) {
+        double lo = c > 0 ? d.azimuth_hi_deg[c - 1] : d.azimuth_hi_deg.back() - 360;
+        if (std::abs(d.azimuth_hi_deg[c] - lo - 360.0 / d.columns) > 1e-9)
+            d.uniform_azimuth_step_deg = 0;
     }
 }
 
@@ -275,20 +285,29 @@ double Atmosphere::max_view_angle_deg() const { return m_data->view_angles_deg.b
 bool Atmosphere::has_sky() const { return m_data->has_sky; }
 const std::vector<SkyCell>& Atmosphere::sky_cells() const { return m_data->cells; }
 
-// Ring by binary search over the ring edges (log of <= ~100 rings), column by binary
-// search over the azimuth edges after wrapping the azimuth into [lo_0, lo_0 + 360).
+// Ring by binary search over the cosines of the ring edges (log of <= ~100 rings, no
+// acos); column directly on a uniform azimuth grid, else by binary search over the
+// azimuth edges after wrapping the azimuth into [lo_0, lo_0 + 360).
 int Atmosphere::sky_cell(const Vec3& dir) const {
     const Data& d = *m_data;
     if (!d.has_sky || !(dir[2] > 0)) return -1;
-    double zenith = std::acos(std::min(dir[2], 1.0)) / kDegToRad;
-    auto rit = std::upper_bound(d.ring_edges_deg.begin() + 1, d.ring_edges_deg.end() - 1, zenith);
-    int ring = static_cast<int>(rit - (d.ring_edges_deg.begin() + 1));
-    double azimuth = std::atan2(dir[0], dir[1]) / kDegToRad;  // clockwise from north
+    // Zenith beyond edge r <=> dir.z < cos(edge r): count the edges with cos > dir.z.
+    auto rit = std::upper_bound(d.ring_cos_edges.begin(), d.ring_cos_edges.end(), dir[2],
+                                [](double z, double edge) { return z >= edge; });
+    int ring = static_cast<int>(rit - d.ring_cos_edges.begin());
+    if (d.columns == 1) return ring;
     double lo = d.azimuth_hi_deg.back() - 360;
+    double azimuth = std::atan2(dir[0], dir[1]) / kDegToRad;  // clockwise from north
     while (azimuth < lo) azimuth += 360;
     while (azimuth >= lo + 360) azimuth -= 360;
-    auto ait = std::upper_bound(d.azimuth_hi_deg.begin(), d.azimuth_hi_deg.end() - 1, azimuth);
-    int column = static_cast<int>(ait - d.azimuth_hi_deg.begin());
+    int column;
+    if (d.uniform_azimuth_step_deg > 0) {
+        column = std::min(static_cast<int>((azimuth - lo) / d.uniform_azimuth_step_deg),
+                          d.columns - 1);
+    } else {
+        auto ait = std::upper_bound(d.azimuth_hi_deg.begin(), d.azimuth_hi_deg.end() - 1, azimuth);
+        column = static_cast<int>(ait - d.azimuth_hi_deg.begin());
+    }
     return ring * d.columns + column;
 }
 
