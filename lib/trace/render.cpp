@@ -634,6 +634,7 @@ void render_row(const Context& c, Tracer& tr, long row, long out_row, RenderResu
                 std::size_t k = centre[static_cast<std::size_t>(b)];
                 double* t = &truth_acc[kFixedLayers + kPerBand * b];
                 t[0] += ht.rho[k];
+                // At the sensor: pixel = solar + downwelled + upwelled (+ emission).
                 t[1] += tau2[k] * ht.solar[k];
                 t[2] += tau2[k] * ht.downwelled[k];
                 t[3] += lus[k];

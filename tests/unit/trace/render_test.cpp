@@ -302,8 +302,9 @@ TEST(Render, MissingMaterialNamesTheFacet) {
 
 TEST(Render, TruthLayersOfASunlitPlate) {
     // Flat Lambertian plate, sun at zenith 40, uniform sky: hit 1, shadow 0, sky-view
-    // factor 1 (every hemisphere ray escapes), reflectance r, solar tau2 r Es cos/pi,
-    // downwelled tau2 r L, upwelled and transmission from the .rad; exact up to float.
+    // factor 1 (every hemisphere ray escapes), reflectance r, solar tau2 r Es cos/pi
+    // and downwelled tau2 r L at the sensor, upwelled and transmission from the .rad;
+    // exact up to float.
     Mesh m;
     m.quad({{{-500, -500, 0}, {500, -500, 0}, {500, 500, 0}, {-500, 500, 0}}}, 1);
     scene::Scene s = single(m.data);
@@ -335,6 +336,11 @@ TEST(Render, TruthLayersOfASunlitPlate) {
     EXPECT_NEAR(res.truth.at(layer("solar_" + band), 1, 1),
                 0.9 * r * es * std::cos(zen * kPi / 180) / kPi, tol);
     EXPECT_NEAR(res.truth.at(layer("downwelled_" + band), 1, 1), 0.9 * r * sky, tol);
+    // The layers add up to the pixel: solar + downwelled + upwelled.
+    EXPECT_NEAR(res.radiance.at(static_cast<int>(atm.grid().band_centre_sample(0)), 1, 1),
+                res.truth.at(layer("solar_" + band), 1, 1) +
+                    res.truth.at(layer("downwelled_" + band), 1, 1) + 0.001,
+                tol);
     EXPECT_NEAR(res.truth.at(layer("upwelled_" + band), 1, 1), 0.001, tol);
     EXPECT_NEAR(res.truth.at(layer("transmission_" + band), 1, 1), 0.9, tol);
     EXPECT_FALSE(res.stats.skipped.empty());
