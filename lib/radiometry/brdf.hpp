@@ -63,6 +63,8 @@ public:
     // weighted direction, with probability s a direction from the (untruncated)
     // lobe about the mirror direction; u1, u2, u3 uniform in [0, 1). pdf() is the
     // density of that mixture, so that w / pdf is an unbiased estimator weight.
+    // Lambertian and Delta: cosine samples only, pdf = cos/pi (Delta's mirror term
+    // s * L_i(mirror) is the caller's, one exact ray; weight() excludes it).
     BrdfSample sample(const Vec3& wo, double specularity, double u1, double u2,
                       double u3) const;
     double pdf(const Vec3& wi, const Vec3& wo, double specularity) const;
