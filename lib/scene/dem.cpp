@@ -87,34 +87,41 @@ void require_same_grid(const Raster& dem, const Raster& lu, const std::string& l
         throw DataError({lu_path, 0}, "land use CRS differs from the DEM's");
 }
 
-// Material id per DEM cell from the land-use raster and its map (-1: not needed).
-std::vector<long> landuse_ids(const DemSource& s, const Raster& dem) {
-    Raster lu = open_raster(s.landuse_path, "land-use");
-    require_same_grid(dem, lu, s.landuse_path);
-    std::vector<long> ids(lu.values.size());
-    std::unordered_map<long, long> cache;
-    for (std::size_t i = 0; i < lu.values.size(); ++i) {
-        double v = lu.values[i];
-        int row = static_cast<int>(i / lu.cols) + 1, col = static_cast<int>(i % lu.cols) + 1;
-        std::string cell = "(row " + std::to_string(row) + ", column " + std::to_string(col) + ")";
-        if (!std::isfinite(v) || v != std::round(v))
-            throw DataError({s.landuse_path, 0}, "cell " + cell + ": class " + format_number(v) +
-                                                     " is not an integer");
-        auto c = static_cast<long>(v);
-        auto it = cache.find(c);
-        if (it == cache.end()) {
-            const IdMap::Entry* e = s.landuse_map->find(std::to_string(c));
-            if (!e)
-                throw DataError({s.landuse_path, 0}, "cell " + cell + ": class " +
-                                                         std::to_string(c) +
-                                                         " is not in the land-use map " +
-                                                         s.landuse_map->file);
-            it = cache.emplace(c, e->id).first;
-        }
-        ids[i] = it->second;
+// Material ids of land-use classes, looked up as blocks use them (a class that no
+// triangle uses, such as the land use under nodata terrain, need not be mapped).
+class LandUse {
+public:
+    LandUse(const DemSource& s, const Raster& dem)
+        : m_source(s), m_raster(open_raster(s.landuse_path, "land-use")) {
+        require_same_grid(dem, m_raster, s.landuse_path);
     }
-    return ids;
-}
+
+    // The material of cell i (row-major), by the map.
+    long material(std::size_t i) {
+        double v = m_raster.values[i];
+        if (std::isfinite(v) && v == std::round(v)) {
+            auto it = m_cache.find(static_cast<long>(v));
+            if (it != m_cache.end()) return it->second;
+        }
+        std::string cell = "cell (row " + std::to_string(i / m_raster.cols + 1) + ", column " +
+                           std::to_string(i % m_raster.cols + 1) + ")";
+        if (!std::isfinite(v) || v != std::round(v))
+            throw DataError({m_source.landuse_path, 0},
+                            cell + ": class " + format_number(v) + " is not an integer");
+        auto c = static_cast<long>(v);
+        const IdMap::Entry* e = m_source.landuse_map->find(std::to_string(c));
+        if (!e)
+            throw DataError({m_source.landuse_path, 0},
+                            cell + ": class " + std::to_string(c) +
+                                " is not in the land-use map " + m_source.landuse_map->file);
+        return m_cache.emplace(c, e->id).first->second;
+    }
+
+private:
+    const DemSource& m_source;
+    Raster m_raster;
+    std::unordered_map<long, long> m_cache;
+};
 
 std::unique_ptr<OGRCoordinateTransformation> to_wgs84(const Raster& r, const std::string& path) {
     const OGRSpatialReference* src = r.ds->GetSpatialRef();
@@ -172,8 +179,8 @@ MeshData read_dem_mesh(const DemSource& s, DegeneratePolicy policy,
     Raster dem = open_raster(s.dem_path, "DEM");
     if (dem.rows < 2 || dem.cols < 2)
         throw DataError({s.dem_path, 0}, "a DEM needs at least 2 x 2 cells");
-    std::vector<long> lu;
-    if (!s.landuse_path.empty()) lu = landuse_ids(s, dem);
+    std::optional<LandUse> lu;
+    if (!s.landuse_path.empty()) lu.emplace(s, dem);
     MeshBuilder b(policy, warnings);
     std::vector<std::uint32_t> index = cell_vertices(s, dem, b);
     std::vector<std::uint32_t> tri(3);
@@ -184,9 +191,10 @@ MeshData read_dem_mesh(const DemSource& s, DegeneratePolicy policy,
                           e = index[i + dem.cols + 1];
             const std::array<std::array<std::uint32_t, 3>, 2> tris{{{a, d, e}, {a, e, bb}}};
             FacetAttributes attr;
-            attr.material_id = lu.empty() ? s.material_id.value_or(0) : lu[i];
+            attr.material_id = s.material_id.value_or(0);
             for (int k = 0; k < 2; ++k) {
                 if (tris[k][0] == kNone || tris[k][1] == kNone || tris[k][2] == kNone) continue;
+                if (lu) attr.material_id = lu->material(i);
                 tri.assign(tris[k].begin(), tris[k].end());
                 if (!b.faces_up(tri)) std::swap(tri[1], tri[2]);
                 std::string id = "1-" + std::to_string(i + 1) + "-" + std::to_string(k + 1);

@@ -229,6 +229,13 @@ TEST(Dem, LandUseAssignsMaterialsPerBlock) {
     s.landuse_map = &partial;
     EXPECT_EQ(data_error_of([&] { scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr); }),
               dir + "lu.tif: cell (row 1, column 3): class 2 is not in the land-use map lu.map");
+    // A class no triangle uses (the last column is no block's upper-left cell) need
+    // not be mapped.
+    for (int r = 0; r < 5; ++r) classes[r * 5 + 4] = 3;
+    write_raster(dir + "lu_edge.tif", 5, 5, kGeoGt, 4326, classes);
+    s.landuse_map = &map;
+    s.landuse_path = dir + "lu_edge.tif";
+    EXPECT_EQ(scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr).facets.size(), 32u);
     // A land-use raster on another grid is refused.
     write_raster(dir + "lu_shifted.tif", 5, 5, {-77.6004, 0.0002, 0, 43.0005, 0, -0.0002}, 4326,
                  classes);

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <thread>
+#include <tuple>
 
 #include "scene/mesh_build.hpp"
 
@@ -231,4 +233,37 @@ TEST(SceneBounds, ExactBoundsOfPlacedCopiesAndEmptyScene) {
     EXPECT_FALSE(s.intersect({9.5, 1, 10}, {0, 0, -5}, 0, 7.9));
     EXPECT_FALSE(s.intersect({9.5, 1, 10}, {0, 0, -5}, 8.1, 9.9));  // misses the top, not yet the bottom
     EXPECT_TRUE(s.occluded({9.5, 1, 10}, {0, 0, -5}, 8.1, 10.1));    // the bottom at 10
+}
+
+TEST(SceneThreads, ConcurrentQueriesMatchSerialOnes) {
+    scene::Scene s;
+    std::size_t m = s.add_mesh(box_mesh());
+    for (int i = 0; i < 1000; ++i) s.place(m, tree_placement(i), "1." + std::to_string(i + 1) + "/");
+    s.commit();
+    const int kRays = 20000;
+    auto ray = [](int i) {
+        return std::pair<Vec3, Vec3>{{-5 + 130.0 * ((i * 7919) % kRays) / kRays, -5 + 85.0 * i / kRays, 30},
+                                     {0.2, 0.1, -1}};
+    };
+    using Answer = std::tuple<bool, double, std::uint32_t, std::uint32_t>;
+    auto answer = [](const std::optional<scene::Hit>& h) {
+        return h ? Answer{true, h->distance, h->object, h->facet} : Answer{false, 0, 0, 0};
+    };
+    std::vector<Answer> serial(kRays), parallel(kRays);
+    for (int i = 0; i < kRays; ++i) {
+        auto [o, d] = ray(i);
+        auto h = s.intersect(o, d);
+        serial[i] = answer(h);
+    }
+    std::vector<std::thread> workers;
+    for (int t = 0; t < 4; ++t)
+        workers.emplace_back([&, t] {
+            for (int i = t; i < kRays; i += 4) {
+                auto [o, d] = ray(i);
+                auto h = s.intersect(o, d);
+                parallel[i] = answer(h);
+            }
+        });
+    for (auto& w : workers) w.join();
+    EXPECT_EQ(serial, parallel);  // the same query gives the same answer, bit for bit
 }
