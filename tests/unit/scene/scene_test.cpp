@@ -267,3 +267,19 @@ TEST(SceneThreads, ConcurrentQueriesMatchSerialOnes) {
     for (auto& w : workers) w.join();
     EXPECT_EQ(serial, parallel);  // the same query gives the same answer, bit for bit
 }
+
+TEST(SceneNormals, MirroringPlacementKeepsNormalsOutward) {
+    scene::Scene s;
+    std::size_t m = s.add_mesh(box_mesh());
+    s.place(m, make_affine({-1, 1, 1}, 0, 0, {0, 0, 0}));  // x mirrored: box x -1..0
+    s.commit();
+    // M^-T n: the outward normals of the box stay outward (top +z, west wall -x),
+    // although the mirrored triangles wind the other way round.
+    auto top = s.intersect({-0.5, 0.5, 10}, {0, 0, -1});
+    ASSERT_TRUE(top);
+    EXPECT_NEAR(top->normal[2], 1, 1e-12);
+    auto west = s.intersect({-10, 0.5, 1}, {1, 0, 0});
+    ASSERT_TRUE(west);
+    EXPECT_NEAR(west->distance, 9, 1e-6);
+    EXPECT_NEAR(west->normal[0], -1, 1e-12);
+}
