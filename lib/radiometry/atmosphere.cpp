@@ -36,11 +36,11 @@ struct Atmosphere::Data {
     std::vector<double> view_angles_deg, range_km;
     std::vector<double> tau2, scattered, emitted;  // [view * samples + k]
     bool has_sky = false;
-    std::vector<SkyCell> cells;                    // ring by ring, azimuth increasing
-    std::vector<double> ring_edges_deg;            // rings + 1 zenith edges, 0 .. 90
-    std::vector<double> azimuth_hi_deg;            // upper azimuth edge of each column
-    std::vector<double> ring_cos_edges;            // cos of the inner ring edges, decreasing
-    double uniform_azimuth_step_deg = 0;           // > 0 when every column has this width
+    std::vector<SkyCell> cells;           // ring by ring, azimuth increasing
+    std::vector<double> ring_edges_deg;   // rings + 1 zenith edges, 0 .. 90
+    std::vector<double> azimuth_hi_deg;   // upper azimuth edge of each column
+    std::vector<double> ring_cos_edges;   // cos of the inner ring edges, decreasing
+    double uniform_azimuth_step_deg = 0;  // > 0 when every column has this width
     int rings = 0, columns = 0;
     std::vector<double> sky_irradiance, sky_emitted_irradiance;  // horizontal, per sample
 
@@ -57,9 +57,7 @@ struct Atmosphere::Data {
 
 namespace {
 
-std::string stem_of(const std::string& file) {
-    return std::filesystem::path(file).stem().string();
-}
+std::string stem_of(const std::string& file) { return std::filesystem::path(file).stem().string(); }
 
 double azimuth_difference_deg(double a, double b) {
     double d = std::fmod(std::abs(a - b), 360.0);
@@ -101,7 +99,8 @@ void check_shape(const io::Rad& rad, const std::string& file) {
         if (v.path.size() != rad.samples.size())
             throw DataError({file, 0}, "a view angle has " + std::to_string(v.path.size()) +
                                            " path samples for " +
-                                           std::to_string(rad.samples.size()) + " spectral samples");
+                                           std::to_string(rad.samples.size()) +
+                                           " spectral samples");
     for (std::size_t v = 1; v < rad.views.size(); ++v)
         if (!(rad.views[v].view_angle_deg > rad.views[v - 1].view_angle_deg))
             throw DataError({file, 0}, "view angles are not increasing");
@@ -113,8 +112,9 @@ void check_shape(const io::Rad& rad, const std::string& file) {
     for (const auto& c : s.cells)
         if (c.scattered_radiance.size() != rad.samples.size() ||
             c.emitted_radiance.size() != rad.samples.size())
-            throw DataError({file, 0}, "sky hemisphere: a cell's radiances do not match the "
-                                       "spectral samples");
+            throw DataError({file, 0},
+                            "sky hemisphere: a cell's radiances do not match the "
+                            "spectral samples");
 }
 
 }  // namespace
@@ -195,9 +195,16 @@ Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
             cell.zenith_lo_deg = d->ring_edges_deg[r];
             cell.zenith_hi_deg = d->ring_edges_deg[r + 1];
             cell.azimuth_hi_deg = d->azimuth_hi_deg[col];
-            cell.azimuth_lo_deg = col > 0 ? d->azimuth_hi_deg[col - 1]
-                                          : d->azimuth_hi_deg[d->columns - 1] - 360;
-            cell.solid_angle_sr = sky.cells[c].solid_angle_sr;
+            cell.azimuth_lo_deg =
+                col > 0 ? d->azimuth_hi_deg[col - 1] : d->azimuth_hi_deg[d->columns - 1] - 360;
+            // The solid angle of the cell's edges, exactly: (cos z_lo - cos z_hi)(a_hi -
+            // a_lo), so that lookup (sky_cell), solid angles and irradiance describe one
+            // partition of the hemisphere (the file's values agree when its centres lie
+            // midway, as build_radiance and uniform_rad write them).
+            double c_lo = std::cos(cell.zenith_lo_deg * kDegToRad);
+            double c_hi = std::cos(cell.zenith_hi_deg * kDegToRad);
+            cell.solid_angle_sr =
+                (c_lo - c_hi) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
             cell.direction = direction_from_angles(cell.zenith_deg, cell.azimuth_deg);
             for (const auto& rad : rads) {
                 const auto& src = rad.sky->cells[c];
@@ -262,8 +269,7 @@ void Atmosphere::path(double view_angle_deg, std::span<double> tau2, std::span<d
     auto lerp = [&](const std::vector<double>& t, std::span<double> out) {
         if (out.empty()) return;
         if (out.size() != n) throw std::invalid_argument("Atmosphere::path: span size");
-        for (std::size_t k = 0; k < n; ++k)
-            out[k] = (1 - f) * t[i * n + k] + f * t[j * n + k];
+        for (std::size_t k = 0; k < n; ++k) out[k] = (1 - f) * t[i * n + k] + f * t[j * n + k];
     };
     lerp(d.tau2, tau2);
     lerp(d.scattered, scattered);
@@ -302,8 +308,8 @@ int Atmosphere::sky_cell(const Vec3& dir) const {
     while (azimuth >= lo + 360) azimuth -= 360;
     int column;
     if (d.uniform_azimuth_step_deg > 0) {
-        column = std::min(static_cast<int>((azimuth - lo) / d.uniform_azimuth_step_deg),
-                          d.columns - 1);
+        column =
+            std::min(static_cast<int>((azimuth - lo) / d.uniform_azimuth_step_deg), d.columns - 1);
     } else {
         auto ait = std::upper_bound(d.azimuth_hi_deg.begin(), d.azimuth_hi_deg.end() - 1, azimuth);
         column = static_cast<int>(ait - d.azimuth_hi_deg.begin());
@@ -318,7 +324,8 @@ void Atmosphere::add_sky_radiance(const Vec3& dir, double weight, std::span<doub
     const SkyCell& cell = m_data->cells[c];
     std::size_t n = std::min(out.size(), cell.scattered.size());
     if (emitted)
-        for (std::size_t k = 0; k < n; ++k) out[k] += weight * (cell.scattered[k] + cell.emitted[k]);
+        for (std::size_t k = 0; k < n; ++k)
+            out[k] += weight * (cell.scattered[k] + cell.emitted[k]);
     else
         for (std::size_t k = 0; k < n; ++k) out[k] += weight * cell.scattered[k];
 }
@@ -338,12 +345,10 @@ void Atmosphere::set_sun(double zenith_deg, double azimuth_deg) {
 }
 
 io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith_deg,
-                    double sun_azimuth_deg, double sun_irradiance_at_ground,
-                    double sky_radiance, double tau2, double path_radiance,
-                    const std::vector<double>& view_angles_deg, int zenith_rings,
-                    int azimuth_cells) {
-    if (wavelengths_um.empty() || view_angles_deg.empty() || zenith_rings < 1 ||
-        azimuth_cells < 1)
+                    double sun_azimuth_deg, double sun_irradiance_at_ground, double sky_radiance,
+                    double tau2, double path_radiance, const std::vector<double>& view_angles_deg,
+                    int zenith_rings, int azimuth_cells) {
+    if (wavelengths_um.empty() || view_angles_deg.empty() || zenith_rings < 1 || azimuth_cells < 1)
         throw std::invalid_argument("uniform_rad: empty grid");
     std::vector<double> wl = wavelengths_um, va = view_angles_deg;
     std::sort(wl.begin(), wl.end());
@@ -374,8 +379,9 @@ io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith
             cell.zenith_deg = (r + 0.5) * dz;
             cell.azimuth_deg = (c + 0.5) * da;
             // Exact: (cos z_lo - cos z_hi)(a_hi - a_lo).
-            cell.solid_angle_sr = (std::cos(r * dz * kDegToRad) - std::cos((r + 1) * dz * kDegToRad)) *
-                                  da * kDegToRad;
+            cell.solid_angle_sr =
+                (std::cos(r * dz * kDegToRad) - std::cos((r + 1) * dz * kDegToRad)) * da *
+                kDegToRad;
             cell.scattered_radiance.assign(wl.size(), sky_radiance);
             cell.emitted_radiance.assign(wl.size(), 0.0);
             sky.cells.push_back(std::move(cell));

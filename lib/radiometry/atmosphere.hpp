@@ -25,7 +25,8 @@ struct SkyCell {
     double zenith_deg = 0, azimuth_deg = 0;  // centre (azimuth clockwise from north)
     double zenith_lo_deg = 0, zenith_hi_deg = 0;    // ring edges
     double azimuth_lo_deg = 0, azimuth_hi_deg = 0;  // cell edges (lo may be < 0)
-    double solid_angle_sr = 0;
+    double solid_angle_sr = 0;  // of the edges above, exact (the .rad's own value
+                                // agrees when its centres lie midway between edges)
     Vec3 direction{};                // unit, ENU, toward the sky
     std::vector<double> scattered;   // L_ds per grid sample
     std::vector<double> emitted;     // L_de per grid sample

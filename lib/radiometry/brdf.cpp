@@ -8,8 +8,8 @@
 #include <map>
 #include <mutex>
 #include <numbers>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 
 namespace sigchain::radiometry {
 
@@ -77,13 +77,13 @@ const GaussLegendre& gauss_legendre() {
 // fraction of it within alpha of the mirror direction.
 struct Brdf::Impl {
     LobeShape shape = LobeShape::None;
-    double half_angle_rad = 0;   // Uniform
-    double cos_half_angle = 1;   // Uniform
-    double uniform_density = 0;  // Uniform: 1 / (2 pi (1 - cos h))
+    double half_angle_rad = 0;           // Uniform
+    double cos_half_angle = 1;           // Uniform
+    double uniform_density = 0;          // Uniform: 1 / (2 pi (1 - cos h))
     std::array<double, 7> radius_rad{};  // LinearCone rows at 0, 15, ..., 90 deg
-    double exponent = 0;         // CosinePower: n
-    double k_per_rad = 0;        // Exponential: 1 / width
-    double exp_norm = 0;         // Exponential: (1 + k^2) / (2 pi (1 + exp(-k pi)))
+    double exponent = 0;                 // CosinePower: n
+    double k_per_rad = 0;                // Exponential: 1 / width
+    double exp_norm = 0;                 // Exponential: (1 + k^2) / (2 pi (1 + exp(-k pi)))
     // table[i] for u = i / kTableSteps: 1 / m(theta_o) (LinearCone: with its radius
     // r(theta_o) at that u).
     std::vector<double> table;
@@ -98,23 +98,32 @@ struct Brdf::Impl {
     // Support of the lobe: p(alpha) = 0 beyond (rad).
     double alpha_max(double radius) const {
         switch (shape) {
-        case LobeShape::Uniform: return half_angle_rad;
-        case LobeShape::LinearCone: return radius;
-        case LobeShape::CosinePower: return kPi / 2;
-        default: return kPi;
+            case LobeShape::Uniform:
+                return half_angle_rad;
+            case LobeShape::LinearCone:
+                return radius;
+            case LobeShape::CosinePower:
+                return kPi / 2;
+            default:
+                return kPi;
         }
     }
     // Normalised density per sr at alpha (rad); `radius` for LinearCone.
     double density(double alpha, double radius) const {
         switch (shape) {
-        case LobeShape::Uniform: return alpha < half_angle_rad ? uniform_density : 0;
-        case LobeShape::LinearCone:
-            return alpha < radius ? (1 - alpha / radius) / (2 * kPi * one_minus_sinc(radius)) : 0;
-        case LobeShape::CosinePower:
-            return alpha < kPi / 2 ? (exponent + 1) / (2 * kPi) * std::pow(std::cos(alpha), exponent)
-                                   : 0;
-        case LobeShape::Exponential: return exp_norm * std::exp(-k_per_rad * alpha);
-        default: return 0;
+            case LobeShape::Uniform:
+                return alpha < half_angle_rad ? uniform_density : 0;
+            case LobeShape::LinearCone:
+                return alpha < radius ? (1 - alpha / radius) / (2 * kPi * one_minus_sinc(radius))
+                                      : 0;
+            case LobeShape::CosinePower:
+                return alpha < kPi / 2
+                           ? (exponent + 1) / (2 * kPi) * std::pow(std::cos(alpha), exponent)
+                           : 0;
+            case LobeShape::Exponential:
+                return exp_norm * std::exp(-k_per_rad * alpha);
+            default:
+                return 0;
         }
     }
     // Fraction of the lobe within alpha (rad) of its axis (closed forms of
@@ -122,32 +131,36 @@ struct Brdf::Impl {
     double cdf(double alpha, double radius) const {
         alpha = std::clamp(alpha, 0.0, alpha_max(radius));
         switch (shape) {
-        case LobeShape::Uniform:
-            return (1 - std::cos(alpha)) / (1 - cos_half_angle);
-        case LobeShape::LinearCone:
-            // Int_0^a (1 - x/r) sin x dx = 1 - cos a - (sin a - a cos a) / r.
-            return (1 - std::cos(alpha) - (std::sin(alpha) - alpha * std::cos(alpha)) / radius) /
-                   one_minus_sinc(radius);
-        case LobeShape::CosinePower:
-            return 1 - std::pow(std::cos(alpha), exponent + 1);
-        case LobeShape::Exponential: {
-            // Int_0^a e^(-k x) sin x dx = (1 - e^(-k a) (k sin a + cos a)) / (1 + k^2).
-            double k = k_per_rad;
-            return (1 - std::exp(-k * alpha) * (k * std::sin(alpha) + std::cos(alpha))) /
-                   (1 + std::exp(-k * kPi));
-        }
-        default: return 0;
+            case LobeShape::Uniform:
+                return (1 - std::cos(alpha)) / (1 - cos_half_angle);
+            case LobeShape::LinearCone:
+                // Int_0^a (1 - x/r) sin x dx = 1 - cos a - (sin a - a cos a) / r.
+                return (1 - std::cos(alpha) -
+                        (std::sin(alpha) - alpha * std::cos(alpha)) / radius) /
+                       one_minus_sinc(radius);
+            case LobeShape::CosinePower:
+                return 1 - std::pow(std::cos(alpha), exponent + 1);
+            case LobeShape::Exponential: {
+                // Int_0^a e^(-k x) sin x dx = (1 - e^(-k a) (k sin a + cos a)) / (1 + k^2).
+                double k = k_per_rad;
+                return (1 - std::exp(-k * alpha) * (k * std::sin(alpha) + std::cos(alpha))) /
+                       (1 + std::exp(-k * kPi));
+            }
+            default:
+                return 0;
         }
     }
     // alpha (rad) with cdf(alpha) = u: closed form or safeguarded Newton.
     double inverse_cdf(double u, double radius) const {
         if (shape == LobeShape::Uniform) return std::acos(1 - u * (1 - cos_half_angle));
-        if (shape == LobeShape::CosinePower)
-            return std::acos(std::pow(u, 1 / (exponent + 1)));
+        if (shape == LobeShape::CosinePower) return std::acos(std::pow(u, 1 / (exponent + 1)));
         double lo = 0, hi = alpha_max(radius), a = 0.5 * (lo + hi);
         for (int it = 0; it < 60; ++it) {
             double f = cdf(a, radius) - u;
-            if (f > 0) hi = a; else lo = a;
+            if (f > 0)
+                hi = a;
+            else
+                lo = a;
             double d = density(a, radius) * 2 * kPi * std::sin(a);
             double next = d > 0 ? a - f / d : 0.5 * (lo + hi);
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -161,8 +174,8 @@ struct Brdf::Impl {
     // acos(-cot(theta_r) cot(alpha)) / pi of its azimuths when |90 - theta_r| < alpha
     // < 90 + theta_r, all of it below that range, none above. The straddling range is
     // cut at the lobe's quantiles `quantile_alpha` (so a narrow lobe gets its own
-    // pieces) and geometrically near its start, and each piece integrated with the substitution alpha = lo + (hi - lo)
-    // (1 - cos t)/2 and Gauss-Legendre in t, which removes the square-root
+    // pieces) and geometrically near its start, and each piece integrated with the substitution
+    // alpha = lo + (hi - lo) (1 - cos t)/2 and Gauss-Legendre in t, which removes the square-root
     // behaviour of the fraction at the ends of the range.
     double mass_above_horizon(double theta_r, double radius,
                               const std::vector<double>& quantile_alpha) const {
@@ -216,26 +229,25 @@ struct Brdf::Impl {
         double f = x - i;
         return table[i] + f * (table[i + 1] - table[i]);
     }
-    bool lobed() const {
-        return shape != LobeShape::None && shape != LobeShape::Delta;
-    }
+    bool lobed() const { return shape != LobeShape::None && shape != LobeShape::Delta; }
     // lobe(alpha) / m(theta_o) for wi, wo in the facet frame (wi above the horizon).
     double lobe_over_mass(const Vec3& wi, const Vec3& wo) const {
         double c = clamp_unit(-wi[0] * wo[0] - wi[1] * wo[1] + wi[2] * wo[2]);  // cos alpha
         double u = wo[2];
         switch (shape) {
-        case LobeShape::Uniform:
-            return c > cos_half_angle ? uniform_density * table_at(u) : 0;
-        case LobeShape::CosinePower:
-            return c > 0 ? (exponent + 1) / (2 * kPi) * std::pow(c, exponent) * table_at(u) : 0;
-        case LobeShape::Exponential:
-            return exp_norm * std::exp(-k_per_rad * std::acos(c)) * table_at(u);
-        case LobeShape::LinearCone: {
-            double radius = cone_radius(std::acos(std::clamp(u, 0.0, 1.0)));
-            double alpha = std::acos(c);
-            return alpha < radius ? density(alpha, radius) * table_at(u) : 0;
-        }
-        default: return 0;
+            case LobeShape::Uniform:
+                return c > cos_half_angle ? uniform_density * table_at(u) : 0;
+            case LobeShape::CosinePower:
+                return c > 0 ? (exponent + 1) / (2 * kPi) * std::pow(c, exponent) * table_at(u) : 0;
+            case LobeShape::Exponential:
+                return exp_norm * std::exp(-k_per_rad * std::acos(c)) * table_at(u);
+            case LobeShape::LinearCone: {
+                double radius = cone_radius(std::acos(std::clamp(u, 0.0, 1.0)));
+                double alpha = std::acos(c);
+                return alpha < radius ? density(alpha, radius) * table_at(u) : 0;
+            }
+            default:
+                return 0;
         }
     }
 };
@@ -273,8 +285,8 @@ Brdf Brdf::cone(double half_angle_deg) {
     if (!(half_angle_deg > 0 && half_angle_deg <= 180))
         throw std::invalid_argument("Brdf::cone: half angle must be in (0, 180] deg");
     Brdf b;
-    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
-        {LobeShape::Uniform, {half_angle_deg}}, [&] {
+    b.m_impl = std::static_pointer_cast<const Impl>(
+        cached_lobe({LobeShape::Uniform, {half_angle_deg}}, [&] {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::Uniform;
             impl->half_angle_rad = half_angle_deg * kDegToRad;
@@ -291,8 +303,8 @@ Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg) {
         if (!(r >= 0 && r <= 180))
             throw std::invalid_argument("Brdf::linear_cone: radius must be in [0, 180] deg");
     Brdf b;
-    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
-        {LobeShape::LinearCone, base_radius_deg}, [&] {
+    b.m_impl = std::static_pointer_cast<const Impl>(
+        cached_lobe({LobeShape::LinearCone, base_radius_deg}, [&] {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::LinearCone;
             for (int i = 0; i < 7; ++i)
@@ -306,8 +318,8 @@ Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg) {
 Brdf Brdf::phong(double exponent) {
     if (!(exponent >= 0)) throw std::invalid_argument("Brdf::phong: exponent must be >= 0");
     Brdf b;
-    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
-        {LobeShape::CosinePower, {exponent}}, [&] {
+    b.m_impl =
+        std::static_pointer_cast<const Impl>(cached_lobe({LobeShape::CosinePower, {exponent}}, [&] {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::CosinePower;
             impl->exponent = exponent;
@@ -320,8 +332,8 @@ Brdf Brdf::phong(double exponent) {
 Brdf Brdf::exponential(double width_deg) {
     if (!(width_deg > 0)) throw std::invalid_argument("Brdf::exponential: width must be > 0");
     Brdf b;
-    b.m_impl = std::static_pointer_cast<const Impl>(cached_lobe(
-        {LobeShape::Exponential, {width_deg}}, [&] {
+    b.m_impl = std::static_pointer_cast<const Impl>(
+        cached_lobe({LobeShape::Exponential, {width_deg}}, [&] {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::Exponential;
             double k = 1 / (width_deg * kDegToRad);
@@ -376,8 +388,7 @@ Vec3 about_axis(const Vec3& a, double alpha, double phi) {
 // Mixture sampling: a cosine direction (Malley's method) with probability 1 - s, a lobe
 // direction (alpha by the lobe's inverse CDF, azimuth uniform) with probability s.
 // Lambertian and Delta: cosine only (Delta's mirror term is the caller's).
-BrdfSample Brdf::sample(const Vec3& wo, double specularity, double u1, double u2,
-                        double u3) const {
+BrdfSample Brdf::sample(const Vec3& wo, double specularity, double u1, double u2, double u3) const {
     BrdfSample out;
     bool lobe = m_impl && m_impl->lobed() && u1 < specularity;
     if (lobe) {

@@ -52,22 +52,25 @@ const T& cached(std::map<std::string, T>& cache, const std::string& path, const 
 // The Brdf of the entry's effective model (mat(5) REFLECTANCE MODELS).
 Brdf brdf_of(const io::Material& m, const io::Ems& ems, const std::string& mat_path) {
     switch (io::effective_model(m)) {
-    case io::ReflectanceModel::Lambertian: return Brdf::lambertian();
-    case io::ReflectanceModel::Dirsig: return Brdf::delta();
-    case io::ReflectanceModel::Cone:
-        if (ems.specular_lobe.size() == static_cast<std::size_t>(io::kLobeRowCount)) {
-            std::array<double, 7> radii{};
-            for (int i = 0; i < io::kLobeRowCount; ++i)
-                radii[i] = ems.specular_lobe[i].base_radius_deg;
-            return Brdf::linear_cone(radii);
-        }
-        return Brdf::cone(m.cone_half_angle_deg.value_or(0));
-    case io::ReflectanceModel::Phong: return Brdf::phong(m.phong_exponent.value_or(0));
-    case io::ReflectanceModel::Exponential:
-        return Brdf::exponential(m.exponential_width_deg.value_or(0));
-    case io::ReflectanceModel::Table:
-        throw DataError({mat_path, m.line},
-                        label(m) + ": REFLECTANCE_MODEL table is not supported yet");
+        case io::ReflectanceModel::Lambertian:
+            return Brdf::lambertian();
+        case io::ReflectanceModel::Dirsig:
+            return Brdf::delta();
+        case io::ReflectanceModel::Cone:
+            if (ems.specular_lobe.size() == static_cast<std::size_t>(io::kLobeRowCount)) {
+                std::array<double, 7> radii{};
+                for (int i = 0; i < io::kLobeRowCount; ++i)
+                    radii[i] = ems.specular_lobe[i].base_radius_deg;
+                return Brdf::linear_cone(radii);
+            }
+            return Brdf::cone(m.cone_half_angle_deg.value_or(0));
+        case io::ReflectanceModel::Phong:
+            return Brdf::phong(m.phong_exponent.value_or(0));
+        case io::ReflectanceModel::Exponential:
+            return Brdf::exponential(m.exponential_width_deg.value_or(0));
+        case io::ReflectanceModel::Table:
+            throw DataError({mat_path, m.line},
+                            label(m) + ": REFLECTANCE_MODEL table is not supported yet");
     }
     throw std::logic_error("brdf_of: unknown model");
 }
@@ -191,8 +194,8 @@ void MaterialOptics::transmittance(double cos_theta, double thickness,
         out[k] = io::transmittance(extinction_per_km[k], d_km, cos_theta);
 }
 
-MaterialOptics grey_material(long id, double reflectance, std::size_t samples,
-                             double specularity, Brdf brdf) {
+MaterialOptics grey_material(long id, double reflectance, std::size_t samples, double specularity,
+                             Brdf brdf) {
     MaterialOptics m;
     m.id = id;
     m.name = "grey";

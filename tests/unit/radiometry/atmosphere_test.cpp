@@ -29,13 +29,14 @@ TEST(UniformRad, SolidAnglesSumToTwoPiAndIrradianceIsPiL) {
     // horizontal irradiance of a uniform sky is pi L (Int cos d(omega) over the
     // hemisphere = pi). Both are sums of a few hundred rounded terms: 1e-12 relative.
     for (auto [rings, cells] : {std::pair{18, 36}, std::pair{7, 5}, std::pair{1, 1}}) {
-        io::Rad rad = uniform_rad({0.5, 0.6}, 30, 90, 0.1, 0.02, 0.9, 0.001, {-60, 0, 60},
-                                  rings, cells);
+        io::Rad rad =
+            uniform_rad({0.5, 0.6}, 30, 90, 0.1, 0.02, 0.9, 0.001, {-60, 0, 60}, rings, cells);
         Atmosphere a = Atmosphere::from_rads({rad}, {"uniform.rad"});
         double total = 0;
         for (const auto& c : a.sky_cells()) total += c.solid_angle_sr;
         EXPECT_NEAR(total, 2 * kPi, 1e-12 * 2 * kPi);
-        for (double e : a.sky_irradiance_horizontal()) EXPECT_NEAR(e, kPi * 0.02, 1e-12 * kPi * 0.02);
+        for (double e : a.sky_irradiance_horizontal())
+            EXPECT_NEAR(e, kPi * 0.02, 1e-12 * kPi * 0.02);
         for (double e : a.sky_emitted_irradiance_horizontal()) EXPECT_EQ(e, 0.0);
     }
 }
@@ -43,8 +44,8 @@ TEST(UniformRad, SolidAnglesSumToTwoPiAndIrradianceIsPiL) {
 TEST(UniformRad, WritesAFileThatParsesBack) {
     // rad(5) validation (grids, 2 pi within 0.1 %) is the independent check of the layout.
     // The wavelengths must be equally spaced in wavenumber for the file to be valid.
-    io::Rad rad = uniform_rad({1e4 / 20000, 1e4 / 19000, 1e4 / 18000}, 30, 90, 0.1, 0.02, 0.9,
-                              0.001);
+    io::Rad rad =
+        uniform_rad({1e4 / 20000, 1e4 / 19000, 1e4 / 18000}, 30, 90, 0.1, 0.02, 0.9, 0.001);
     std::ostringstream out;
     io::write_rad(out, rad);
     EXPECT_NO_THROW(io::parse_rad(TextInput::from_string(out.str(), "u.rad")));
@@ -91,6 +92,9 @@ TEST(Atmosphere, ExampleSkyCellsEdgesAndIrradiance) {
     EXPECT_DOUBLE_EQ(c3.azimuth_lo_deg, 180);
     EXPECT_DOUBLE_EQ(c3.azimuth_hi_deg, 360);
     EXPECT_DOUBLE_EQ(a.sky_cells()[0].azimuth_lo_deg, 0);
+    // Solid angles from the edges agree with the file's (printed to 7 digits).
+    EXPECT_NEAR(a.sky_cells()[0].solid_angle_sr, 0.9201511, 1e-7);
+    EXPECT_NEAR(c3.solid_angle_sr, 2.2214415, 1e-7);
     EXPECT_NEAR(a.sky_irradiance_horizontal()[0], kPi / 4 * (0.0042 + 0.0040 + 0.0061 + 0.0058),
                 1e-15);
     EXPECT_NEAR(a.sky_irradiance_horizontal()[2], kPi / 4 * (0.0034 + 0.0032 + 0.0049 + 0.0047),
@@ -175,8 +179,9 @@ TEST(Atmosphere, MismatchedFilesAreErrorsNamingTheFile) {
     io::Rad no_sky = b1;
     no_sky.sky.reset();
     auto error = [&](const io::Rad& second) {
-        return test::data_error_of(
-            [&] { Atmosphere::from_rads({b1, second}, {"b1.rad", "b2.rad"}); });
+        return test::data_error_of([&] {
+            Atmosphere::from_rads({b1, second}, {"b1.rad", "b2.rad"});
+        });
     };
     EXPECT_EQ(error(views), "b2.rad: view angles differ from those of b1.rad");
     EXPECT_EQ(error(sun), "b2.rad: sun position differs from that of b1.rad");

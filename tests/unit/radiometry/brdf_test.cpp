@@ -51,7 +51,8 @@ Vec3 about(const Vec3& a, double alpha, double phi) {
     t = {t[0] / n, 0, t[2] / n};
     Vec3 v;
     for (int i = 0; i < 3; ++i)
-        v[i] = std::sin(alpha) * (std::cos(phi) * t[i] + std::sin(phi) * b[i]) + std::cos(alpha) * a[i];
+        v[i] = std::sin(alpha) * (std::cos(phi) * t[i] + std::sin(phi) * b[i]) +
+               std::cos(alpha) * a[i];
     return v;
 }
 
@@ -60,8 +61,7 @@ Vec3 about(const Vec3& a, double alpha, double phi) {
 // support (so its edge is a cell edge and narrow lobes get dense nodes), n_alpha nodes
 // per piece. f takes a direction.
 template <class F>
-double sphere_integral(const Vec3& axis, const Case& c, F f, int n_alpha = 300,
-                       int n_phi = 2000) {
+double sphere_integral(const Vec3& axis, const Case& c, F f, int n_alpha = 300, int n_phi = 2000) {
     double sum = 0, dphi = 2 * kPi / n_phi;
     std::vector<double> edges{0};
     for (double k : {1.0, 3.0, 10.0, 30.0})
@@ -94,9 +94,8 @@ TEST(Brdf, EveryLobeConservesEnergyOverTheHemisphere) {
             Vec3 wo = viewer(theta_o);
             for (double s : {0.0, 1.0, 0.4}) {
                 if (s == 0.4 && theta_o != 80.0) continue;
-                double w = sphere_integral(mirror(wo), c, [&](const Vec3& wi) {
-                    return c.brdf.weight(wi, wo, s);
-                }, 150);
+                double w = sphere_integral(
+                    mirror(wo), c, [&](const Vec3& wi) { return c.brdf.weight(wi, wo, s); }, 150);
                 EXPECT_NEAR(w, 1.0, 1e-3) << c.name << " theta_o " << theta_o << " s " << s;
                 worst = std::max(worst, std::abs(w - 1));
             }
@@ -124,12 +123,13 @@ double reference_mass(const Case& c, double theta_r) {
             double t = (i + 0.5) * kPi / n;
             double alpha = lo + (hi - lo) * 0.5 * (1 - std::cos(t));
             double dalpha = (hi - lo) * 0.5 * std::sin(t) * kPi / n;
-            double f = alpha <= kPi / 2 - theta_r   ? 1
-                       : alpha >= kPi / 2 + theta_r ? 0
-                                                    : std::acos(std::clamp(
-                                                          -std::cos(theta_r) * std::cos(alpha) /
-                                                              (std::sin(theta_r) * std::sin(alpha)),
-                                                          -1.0, 1.0)) / kPi;
+            double f = alpha <= kPi / 2 - theta_r ? 1
+                       : alpha >= kPi / 2 + theta_r
+                           ? 0
+                           : std::acos(std::clamp(-std::cos(theta_r) * std::cos(alpha) /
+                                                      (std::sin(theta_r) * std::sin(alpha)),
+                                                  -1.0, 1.0)) /
+                                 kPi;
             sum += c.brdf.pdf(about(m, alpha, 0), wo, 1.0) * f * 2 * kPi * std::sin(alpha) * dalpha;
         }
     }
@@ -218,7 +218,8 @@ TEST(Brdf, SampledLobeAnglesFollowThePdf) {
             double lo = b * support / bins, hi = (b + 1) * support / bins, p = 0;
             for (int i = 0; i < 200; ++i) {
                 double a = lo + (i + 0.5) * (hi - lo) / 200;
-                p += c.brdf.pdf(about(m, a, 0.3), wo, 1.0) * 2 * kPi * std::sin(a) * (hi - lo) / 200;
+                p +=
+                    c.brdf.pdf(about(m, a, 0.3), wo, 1.0) * 2 * kPi * std::sin(a) * (hi - lo) / 200;
             }
             double expected = p * n, sd = std::sqrt(n * p * (1 - p));
             EXPECT_NEAR(count[b], expected, 5 * sd + 1) << c.name << " bin " << b;

@@ -36,8 +36,8 @@ void write(const std::filesystem::path& p, const std::string& text) { std::ofstr
 
 std::string entry(const std::string& name, long id, const std::string& ems,
                   const std::string& extra = "", double specularity = 0.3) {
-    return "MATERIAL_ENTRY_BEGIN\nMATERIAL_NAME = " + name + "\nMATERIAL_ID = " +
-           std::to_string(id) +
+    return "MATERIAL_ENTRY_BEGIN\nMATERIAL_NAME = " + name +
+           "\nMATERIAL_ID = " + std::to_string(id) +
            "\nSPECIFIC_HEAT = 1\nTHERMAL_CONDUCTIVITY = 1\nMASS_DENSITY = 1\nSPECULARITY = " +
            std::to_string(specularity) +
            "\nVISIBLE_EMISSIVITY = 0.5\nTHERMAL_EMISSIVITY = 0.9\nEXPOSED_AREA = -0.25\n"
@@ -115,19 +115,18 @@ TEST(MaterialLibrary, ModelsBecomeLobes) {
     auto dir = scratch("models");
     write(dir / "plain.ems", ems_text(false));
     write(dir / "lobed.ems", ems_text(true));
-    write(dir / "m.mat",
-          entry("lam", 1, "plain.ems", "REFLECTANCE_MODEL = lambertian\n") +
-              entry("dirsig", 2, "plain.ems") +
-              entry("cone", 3, "plain.ems",
-                    "REFLECTANCE_MODEL = cone\nCONE_HALF_ANGLE_DEG = 10\n") +
-              entry("white", 4, "lobed.ems",
-                    "REFLECTANCE_MODEL = cone\nCONE_HALF_ANGLE_DEG = 10\n") +
-              entry("phong", 5, "plain.ems", "REFLECTANCE_MODEL = phong\nPHONG_EXPONENT = 20\n") +
-              entry("exp", 6, "plain.ems",
-                    "REFLECTANCE_MODEL = exponential\nEXPONENTIAL_WIDTH_DEG = 4\n"));
+    write(
+        dir / "m.mat",
+        entry("lam", 1, "plain.ems", "REFLECTANCE_MODEL = lambertian\n") +
+            entry("dirsig", 2, "plain.ems") +
+            entry("cone", 3, "plain.ems", "REFLECTANCE_MODEL = cone\nCONE_HALF_ANGLE_DEG = 10\n") +
+            entry("white", 4, "lobed.ems", "REFLECTANCE_MODEL = cone\nCONE_HALF_ANGLE_DEG = 10\n") +
+            entry("phong", 5, "plain.ems", "REFLECTANCE_MODEL = phong\nPHONG_EXPONENT = 20\n") +
+            entry("exp", 6, "plain.ems",
+                  "REFLECTANCE_MODEL = exponential\nEXPONENTIAL_WIDTH_DEG = 4\n"));
     std::string mat_path = (dir / "m.mat").string();
-    MaterialLibrary lib = MaterialLibrary::load(io::read_mat_file(mat_path), mat_path,
-                                                grid_of({0.4, 0.7, 2.0}));
+    MaterialLibrary lib =
+        MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid_of({0.4, 0.7, 2.0}));
     EXPECT_EQ(lib.find(1)->brdf.shape(), LobeShape::None);
     EXPECT_EQ(lib.find(1)->specularity, 0.0);  // lambertian ignores SPECULARITY
     EXPECT_EQ(lib.find(2)->brdf.shape(), LobeShape::Delta);
@@ -148,8 +147,8 @@ TEST(MaterialLibrary, ModelsBecomeLobes) {
 TEST(MaterialLibrary, TableModelIsNotSupportedYet) {
     auto dir = scratch("table");
     write(dir / "plain.ems", ems_text(false));
-    write(dir / "m.mat", entry("tab", 9, "plain.ems",
-                               "REFLECTANCE_MODEL = table\nTABLE_FILE = brdf.txt\n"));
+    write(dir / "m.mat",
+          entry("tab", 9, "plain.ems", "REFLECTANCE_MODEL = table\nTABLE_FILE = brdf.txt\n"));
     std::string mat_path = (dir / "m.mat").string();
     EXPECT_EQ(test::data_error_of([&] {
                   MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid_of({0.5}));
@@ -164,13 +163,13 @@ TEST(MaterialLibrary, TransmissiveMaterialSamplesItsExtinction) {
     std::filesystem::copy_file(kSeed + "tree_canopy.ext", dir / "tree_canopy.ext",
                                std::filesystem::copy_options::overwrite_existing);
     write(dir / "plain.ems", ems_text(false));
-    std::string e = entry("leaves", 4, "plain.ems",
-                          "EXTINCTION_FILE = tree_canopy.ext\nTHICKNESS = 100\n");
+    std::string e =
+        entry("leaves", 4, "plain.ems", "EXTINCTION_FILE = tree_canopy.ext\nTHICKNESS = 100\n");
     e.replace(e.find("OPAQUE"), 6, "UNIFORM_TRANSMISSION");
     write(dir / "m.mat", e);
     std::string mat_path = (dir / "m.mat").string();
-    MaterialLibrary lib = MaterialLibrary::load(io::read_mat_file(mat_path), mat_path,
-                                                grid_of({0.55, 0.75}));
+    MaterialLibrary lib =
+        MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid_of({0.55, 0.75}));
     const MaterialOptics* m = lib.find(4);
     ASSERT_TRUE(m->transmissive);
     EXPECT_EQ(m->extinction_per_km, (std::vector<double>{520, 300}));

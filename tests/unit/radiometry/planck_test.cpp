@@ -28,7 +28,10 @@ double peak_wavelength_um(double t_k) {
     const double g = (std::sqrt(5.0) - 1) / 2;
     for (int i = 0; i < 200; ++i) {
         double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-        if (planck_radiance(a, t_k) > planck_radiance(b, t_k)) hi = b; else lo = a;
+        if (planck_radiance(a, t_k) > planck_radiance(b, t_k))
+            hi = b;
+        else
+            lo = a;
     }
     return 0.5 * (lo + hi);
 }
