@@ -77,10 +77,11 @@ void require_same_grid(const Raster& dem, const Raster& lu, const std::string& l
                                           std::to_string(dem.rows) + "; expected the same grid");
     for (int i = 0; i < 6; ++i)
         if (std::abs(lu.gt[i] - dem.gt[i]) > 1e-9 * std::max(1.0, std::abs(dem.gt[i])))
-            throw DataError({lu_path, 0}, "land use geotransform differs from the DEM's "
-                                          "(coefficient " + std::to_string(i) + ": " +
-                                              format_number(lu.gt[i]) + " vs " +
-                                              format_number(dem.gt[i]) + ")");
+            throw DataError({lu_path, 0},
+                            "land use geotransform differs from the DEM's "
+                            "(coefficient " +
+                                std::to_string(i) + ": " + format_number(lu.gt[i]) + " vs " +
+                                format_number(dem.gt[i]) + ")");
     const OGRSpatialReference* a = dem.ds->GetSpatialRef();
     const OGRSpatialReference* b = lu.ds->GetSpatialRef();
     if (a && b && !a->IsSame(b))
@@ -111,9 +112,9 @@ public:
         auto c = static_cast<long>(v);
         const IdMap::Entry* e = m_source.landuse_map->find(std::to_string(c));
         if (!e)
-            throw DataError({m_source.landuse_path, 0},
-                            cell + ": class " + std::to_string(c) +
-                                " is not in the land-use map " + m_source.landuse_map->file);
+            throw DataError({m_source.landuse_path, 0}, cell + ": class " + std::to_string(c) +
+                                                            " is not in the land-use map " +
+                                                            m_source.landuse_map->file);
         return m_cache.emplace(c, e->id).first->second;
     }
 
@@ -131,7 +132,8 @@ std::unique_ptr<OGRCoordinateTransformation> to_wgs84(const Raster& r, const std
     from.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = easting or longitude
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    std::unique_ptr<OGRCoordinateTransformation> t(OGRCreateCoordinateTransformation(&from, &wgs84));
+    std::unique_ptr<OGRCoordinateTransformation> t(
+        OGRCreateCoordinateTransformation(&from, &wgs84));
     if (!t)
         throw DataError({path, 0}, "cannot transform the DEM's CRS to WGS84: " + gdal_message());
     return t;
@@ -140,8 +142,7 @@ std::unique_ptr<OGRCoordinateTransformation> to_wgs84(const Raster& r, const std
 // ENU vertices (object units) of the valid cells; index kNone for nodata cells.
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-std::vector<std::uint32_t> cell_vertices(const DemSource& s, const Raster& dem,
-                                         MeshBuilder& b) {
+std::vector<std::uint32_t> cell_vertices(const DemSource& s, const Raster& dem, MeshBuilder& b) {
     auto t = to_wgs84(dem, s.dem_path);
     GeographicLib::LocalCartesian enu(s.origin.latitude_deg, s.origin.longitude_east_deg,
                                       s.origin.height_m);
@@ -165,8 +166,8 @@ std::vector<std::uint32_t> cell_vertices(const DemSource& s, const Raster& dem,
                                                      ") cannot be transformed to WGS84");
             double e = 0, n = 0, u = 0;
             enu.Forward(y[c], x[c], dem.values[i] * s.meters_per_unit, e, n, u);
-            index[i] = b.add_vertex(
-                {e / s.meters_per_unit, n / s.meters_per_unit, u / s.meters_per_unit});
+            index[i] =
+                b.add_vertex({e / s.meters_per_unit, n / s.meters_per_unit, u / s.meters_per_unit});
         }
     }
     return index;

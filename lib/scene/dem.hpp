@@ -13,12 +13,12 @@
 namespace sigchain::scene {
 
 struct DemSource {
-    std::string dem_path;              // GDAL raster; band 1 = elevation in object units
-    std::optional<long> material_id;   // without land use
-    std::string landuse_path;          // with `landuse_map`: band 1 = class (an integer)
+    std::string dem_path;             // GDAL raster; band 1 = elevation in object units
+    std::optional<long> material_id;  // without land use
+    std::string landuse_path;         // with `landuse_map`: band 1 = class (an integer)
     const IdMap* landuse_map = nullptr;
-    double meters_per_unit = 1;        // the object's UNITS (elevations and output)
-    GeoOrigin origin;                  // the scene origin (ENU about it, WGS84)
+    double meters_per_unit = 1;  // the object's UNITS (elevations and output)
+    GeoOrigin origin;            // the scene origin (ENU about it, WGS84)
 };
 
 // Every valid cell centre becomes a vertex: its (x, y) in the raster's CRS is turned to

@@ -71,17 +71,17 @@ MeshData build_dem(const io::Odb& odb, const io::OdbObject& obj, const LoadOptio
 ObjectMesh object_mesh(const io::Odb& odb, const io::OdbObject& obj) {
     std::string path = io::resolve_odb_path(odb, obj.path);
     switch (obj.source) {
-    case io::OdbSource::Gdb:
-        return {"gdb\n" + path, build_gdb};
-    case io::OdbSource::Obj:
-        return {"obj\n" + path + "\n" + io::resolve_odb_path(odb, obj.material_map), build_obj};
-    case io::OdbSource::Dem:
-        // The DEM's vertices depend on its units and materials: key on all of them.
-        return {"dem\n" + path + "\n" +
-                    (obj.landuse_file.empty()
-                         ? "id " + std::to_string(obj.material_id.value_or(-1))
-                         : io::resolve_odb_path(odb, obj.landuse_file) + "\n" +
-                               io::resolve_odb_path(odb, obj.landuse_map)) +
+        case io::OdbSource::Gdb:
+            return {"gdb\n" + path, build_gdb};
+        case io::OdbSource::Obj:
+            return {"obj\n" + path + "\n" + io::resolve_odb_path(odb, obj.material_map), build_obj};
+        case io::OdbSource::Dem:
+            // The DEM's vertices depend on its units and materials: key on all of them.
+            return {
+                "dem\n" + path + "\n" +
+                    (obj.landuse_file.empty() ? "id " + std::to_string(obj.material_id.value_or(-1))
+                                              : io::resolve_odb_path(odb, obj.landuse_file) + "\n" +
+                                                    io::resolve_odb_path(odb, obj.landuse_map)) +
                     "\n" + format_number(io::meters_per_odb_unit(obj.units)),
                 build_dem};
     }
@@ -98,8 +98,8 @@ Scene load_odb(const std::string& path, const LoadOptions& options,
         ObjectMesh om = object_mesh(odb, obj);
         auto it = meshes.find(om.key);
         if (it == meshes.end())
-            it = meshes.emplace(om.key, scene.add_mesh(om.build(odb, obj, options, warnings)))
-                     .first;
+            it =
+                meshes.emplace(om.key, scene.add_mesh(om.build(odb, obj, options, warnings))).first;
         double scale = io::meters_per_odb_unit(obj.units) / options.scene_meters_per_unit;
         auto placed = io::placements(obj);
         for (std::size_t i = 0; i < placed.size(); ++i)

@@ -74,7 +74,8 @@ bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
             if (m_policy == DegeneratePolicy::Error)
                 throw DataError({origin.file, origin.line},
                                 (origin.description.empty() ? "" : origin.description + ": ") +
-                                    why + " (a degenerate facet; trace --allow-degenerate skips it)");
+                                    why +
+                                    " (a degenerate facet; trace --allow-degenerate skips it)");
             if (m_warnings) m_warnings->push_back(facet_where(origin) + ": " + why + " (skipped)");
             return false;
         }

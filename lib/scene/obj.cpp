@@ -13,7 +13,7 @@ namespace {
 // Statements that describe free-form curves and surfaces, which sigchain does not mesh.
 bool is_free_form(std::string_view k) {
     static constexpr std::array<std::string_view, 14> kFreeForm{
-        "cstype", "deg", "bmat", "step", "curv", "curv2", "surf",
+        "cstype", "deg",  "bmat", "step", "curv", "curv2", "surf",
         "parm",   "trim", "hole", "scrv", "sp",   "end",   "con"};
     for (auto f : kFreeForm)
         if (k == f) return true;
@@ -31,8 +31,10 @@ std::uint32_t vertex_ref(std::string_view token, std::size_t defined, const Sour
     long n = 0;
     auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
     if (ec != std::errc() || end != v.data() + v.size() || n == 0)
-        throw DataError(at, "expected a vertex reference (a non-zero integer, optionally "
-                            "followed by /vt/vn), found " + quoted(token));
+        throw DataError(at,
+                        "expected a vertex reference (a non-zero integer, optionally "
+                        "followed by /vt/vn), found " +
+                            quoted(token));
     long index = n > 0 ? n - 1 : static_cast<long>(defined) + n;
     if (index < 0 || index >= static_cast<long>(defined))
         throw DataError(at, "vertex " + std::to_string(n) + " is not defined (" +
@@ -73,8 +75,8 @@ MeshData parse_obj_mesh(const TextInput& in, const IdMap& materials, DegenerateP
         } else if (k == "f") {
             ++s.face_number;
             if (f.size() < 4)
-                throw DataError(at, "expected a face of at least 3 vertices, found " +
-                                        quoted(line.text));
+                throw DataError(
+                    at, "expected a face of at least 3 vertices, found " + quoted(line.text));
             if (s.material_id < 0)
                 throw DataError(at, "a face before any usemtl: its material is unknown");
             polygon.clear();

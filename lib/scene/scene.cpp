@@ -242,8 +242,8 @@ std::optional<Hit> Scene::Impl::query(const Vec3& o, const Vec3& d, double tnear
     // its object space, (v1 - v0) x (v2 - v0): to the scene frame with M^-T.
     const double ng[3] = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
     for (int r = 0; r < 3; ++r)
-        h.normal[r] = p.normal[3 * r] * ng[0] + p.normal[3 * r + 1] * ng[1] +
-                      p.normal[3 * r + 2] * ng[2];
+        h.normal[r] =
+            p.normal[3 * r] * ng[0] + p.normal[3 * r + 1] * ng[1] + p.normal[3 * r + 2] * ng[2];
     double n = std::hypot(h.normal[0], h.normal[1], h.normal[2]);
     if (n > 0)
         for (double& c : h.normal) c /= n;
@@ -254,8 +254,7 @@ std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d) const {
     return m_impl->query(o, d, 0.0, std::numeric_limits<double>::infinity());
 }
 
-std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d, double tnear,
-                                    double tfar) const {
+std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d, double tnear, double tfar) const {
     return m_impl->query(o, d, tnear, tfar);
 }
 

@@ -8,14 +8,13 @@
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
+#include <unistd.h>
 
 #include <GeographicLib/UTMUPS.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-
-#include <unistd.h>
 
 #include "scene/load.hpp"
 
@@ -70,8 +69,8 @@ double prime_vertical_radius(double phi) {
 // First-order ENU of (lat, lon, h) about (lat0, lon0, h0): north = dlat (M(lat0) + h),
 // east = dlon (N(lat0) + h) cos(lat0) (arcs at the point's height above the ellipsoid),
 // up = dh minus the drop of the tangent plane d^2 / 2R.
-std::array<double, 3> enu_first_order(double lat, double lon, double h, double lat0,
-                                      double lon0, double h0) {
+std::array<double, 3> enu_first_order(double lat, double lon, double h, double lat0, double lon0,
+                                      double h0) {
     double phi0 = lat0 * kDeg;
     double m = meridional_radius(phi0), n = prime_vertical_radius(phi0);
     double north = (lat - lat0) * kDeg * (m + h);
@@ -175,8 +174,8 @@ TEST(Dem, UtmRasterAgreesWithGeographicLibUtm) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) {
             double lat = 0, lon = 0;
-            GeographicLib::UTMUPS::Reverse(18, true, gt[0] + (c + 0.5) * 10,
-                                           gt[3] - (r + 0.5) * 10, lat, lon);
+            GeographicLib::UTMUPS::Reverse(18, true, gt[0] + (c + 0.5) * 10, gt[3] - (r + 0.5) * 10,
+                                           lat, lon);
             auto ref = enu_first_order(lat, lon, kH0, kLat0, kLon0, kH0);
             auto v = vertex(m, static_cast<std::size_t>(r * 4 + c));
             // Offsets below 30 m: neglected second-order terms about 1e-4 m (as above);
@@ -227,8 +226,9 @@ TEST(Dem, LandUseAssignsMaterialsPerBlock) {
     // An unmapped class names the class, the cell and the map.
     scene::IdMap partial = scene::parse_id_map("1 10\n", "lu.map");
     s.landuse_map = &partial;
-    EXPECT_EQ(data_error_of([&] { scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr); }),
-              dir + "lu.tif: cell (row 1, column 3): class 2 is not in the land-use map lu.map");
+    EXPECT_EQ(
+        data_error_of([&] { scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr); }),
+        dir + "lu.tif: cell (row 1, column 3): class 2 is not in the land-use map lu.map");
     // A class no triangle uses (the last column is no block's upper-left cell) need
     // not be mapped.
     for (int r = 0; r < 5; ++r) classes[r * 5 + 4] = 3;
@@ -241,14 +241,17 @@ TEST(Dem, LandUseAssignsMaterialsPerBlock) {
                  classes);
     s.landuse_map = &map;
     s.landuse_path = dir + "lu_shifted.tif";
-    EXPECT_NE(data_error_of([&] { scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr); })
-                  .find("land use geotransform differs from the DEM's"),
+    EXPECT_NE(data_error_of([&] {
+                  scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr);
+              }).find("land use geotransform differs from the DEM's"),
               std::string::npos);
     write_raster(dir + "lu_small.tif", 4, 5, kGeoGt, 4326, std::vector<double>(20, 1));
     s.landuse_path = dir + "lu_small.tif";
-    EXPECT_EQ(data_error_of([&] { scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr); }),
-              dir + "lu_small.tif: land use is 5 x 4 cells, the DEM 5 x 5; expected the same "
-                    "grid");
+    EXPECT_EQ(
+        data_error_of([&] { scene::read_dem_mesh(s, scene::DegeneratePolicy::Error, nullptr); }),
+        dir +
+            "lu_small.tif: land use is 5 x 4 cells, the DEM 5 x 5; expected the same "
+            "grid");
 }
 
 TEST(Dem, OdbObjectNeedsTheOriginAndPlacesTheTerrain) {
@@ -258,8 +261,9 @@ TEST(Dem, OdbObjectNeedsTheOriginAndPlacesTheTerrain) {
     std::ofstream(dir + "t.odb") << "OBJECT {\n    DEM_FILENAME = t.tif\n    MATERIAL_ID = 9\n"
                                     "    UNITS = m\n}\n";
     EXPECT_EQ(data_error_of([&] { scene::load_scene(dir + "t.odb", {}); }),
-              dir + "t.odb:1: a DEM object needs the scene's geodetic origin (the .snd latitude "
-                    "and longitude) to be placed");
+              dir +
+                  "t.odb:1: a DEM object needs the scene's geodetic origin (the .snd latitude "
+                  "and longitude) to be placed");
     scene::LoadOptions opt;
     opt.origin = scene::GeoOrigin{kLat0, kLon0, kH0};
     scene::LoadReport report;

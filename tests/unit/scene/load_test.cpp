@@ -29,8 +29,8 @@ std::optional<scene::Hit> down(const scene::Scene& s, double x, double y) {
 
 scene::MeshData obj_of(const std::string& text, const std::string& map = "grass 1\nasphalt 7\n") {
     return scene::parse_obj_mesh(TextInput::from_string(text, "t.obj"),
-                                 scene::parse_id_map(map, "t.map"),
-                                 scene::DegeneratePolicy::Error, nullptr);
+                                 scene::parse_id_map(map, "t.map"), scene::DegeneratePolicy::Error,
+                                 nullptr);
 }
 
 }  // namespace
@@ -112,7 +112,8 @@ TEST(LoadObj, QuadAndTriangleGetTheirMappedMaterials) {
     const scene::FacetOrigin& o = s.origin(*tri);
     EXPECT_EQ(o.file, kData + "quad_tri.obj");
     EXPECT_EQ(o.line, 19);
-    EXPECT_EQ(o.description, "object 'ground' (1-0-0), part 'road' (1-2-0), facet 'asphalt' (1-2-2)");
+    EXPECT_EQ(o.description,
+              "object 'ground' (1-0-0), part 'road' (1-2-0), facet 'asphalt' (1-2-2)");
     // The second instance is scaled by 2 and moved 10 north: the triangle spans x 4..6.
     EXPECT_FALSE(down(s, 3.9, 10.05));
     auto big = down(s, 5.9, 10.05);
@@ -123,8 +124,9 @@ TEST(LoadObj, QuadAndTriangleGetTheirMappedMaterials) {
 
 TEST(LoadObj, FacesPolygonsAndIndexForms) {
     // A pentagon (fan of three triangles), v//vn and negative references, no o or g.
-    auto m = obj_of("v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nusemtl grass\n"
-                    "f 1//1 2//1 3//1 -2//1 -1//1\n");
+    auto m = obj_of(
+        "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nusemtl grass\n"
+        "f 1//1 2//1 3//1 -2//1 -1//1\n");
     EXPECT_EQ(m.facets.size(), 1u);
     EXPECT_EQ(m.triangle_facet.size(), 3u);
     EXPECT_EQ(m.triangles, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4}));
@@ -144,7 +146,8 @@ TEST(LoadObj, BadInputNamesFileAndLine) {
     EXPECT_EQ(data_error_of([] { obj_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl grass\nf 1 2 x\n"); }),
               "t.obj:5: expected a vertex reference (a non-zero integer, optionally followed "
               "by /vt/vn), found 'x'");
-    EXPECT_EQ(data_error_of([] { obj_of("v 0 0\n"); }), "t.obj:1: expected v x y z [w], found 'v 0 0'");
+    EXPECT_EQ(data_error_of([] { obj_of("v 0 0\n"); }),
+              "t.obj:1: expected v x y z [w], found 'v 0 0'");
     EXPECT_EQ(data_error_of([] { obj_of("v 0 0 0\nusemtl grass\nf 1 1\n"); }),
               "t.obj:3: expected a face of at least 3 vertices, found 'f 1 1'");
     EXPECT_EQ(data_error_of([] { obj_of("cstype bspline\n"); }),
@@ -174,17 +177,19 @@ TEST(LoadMaps, MapFileFormat) {
 
 TEST(LoadDegenerate, ErrorNamesTheFacetUnlessAllowed) {
     EXPECT_EQ(data_error_of([] { scene::load_scene(kData + "degenerate.gdb", {}); }),
-              kData + "degenerate.gdb:31: object 'plate' (1-0-0), part 'top' (1-1-0), facet "
-                      "'wedge' (1-1-2): zero area (collinear vertices) (a degenerate facet; "
-                      "trace --allow-degenerate skips it)");
+              kData +
+                  "degenerate.gdb:31: object 'plate' (1-0-0), part 'top' (1-1-0), facet "
+                  "'wedge' (1-1-2): zero area (collinear vertices) (a degenerate facet; "
+                  "trace --allow-degenerate skips it)");
     scene::LoadOptions opt;
     opt.allow_degenerate = true;
     scene::LoadReport report;
     scene::Scene s = scene::load_scene(kData + "degenerate.gdb", opt, &report);
     ASSERT_EQ(report.warnings.size(), 1u);
     EXPECT_EQ(report.warnings[0],
-              kData + "degenerate.gdb:31: object 'plate' (1-0-0), part 'top' (1-1-0), facet "
-                      "'wedge' (1-1-2): zero area (collinear vertices) (skipped)");
+              kData +
+                  "degenerate.gdb:31: object 'plate' (1-0-0), part 'top' (1-1-0), facet "
+                  "'wedge' (1-1-2): zero area (collinear vertices) (skipped)");
     EXPECT_EQ(report.facets, 1u);
     EXPECT_EQ(report.triangles, 2u);
     // The dropped facet's vertices do not widen the bounds (x stops at 1).

@@ -58,7 +58,8 @@ Affine make_affine(Vec3 scale, double rx_deg, double rz_deg, Vec3 translation) {
 MeshData box_mesh() {
     scene::MeshBuilder b(scene::DegeneratePolicy::Error, nullptr);
     std::uint32_t v[8];
-    for (int i = 0; i < 8; ++i) v[i] = b.add_vertex({double(i & 1), double((i >> 1) & 1), 2.0 * (i >> 2)});
+    for (int i = 0; i < 8; ++i)
+        v[i] = b.add_vertex({double(i & 1), double((i >> 1) & 1), 2.0 * (i >> 2)});
     const std::uint32_t faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                        {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (int f = 0; f < 6; ++f) {
@@ -74,8 +75,8 @@ MeshData box_mesh() {
 // The i-th of 1000 placements: a 40 x 25 grid, each turned, tilted and scaled differently.
 Affine tree_placement(int i) {
     double x = 3.0 * (i % 40), y = 3.0 * (i / 40);
-    return make_affine({0.5 + 0.001 * i, 0.8 - 0.0003 * i, 1.0 + 0.0007 * i}, 0.011 * i,
-                       0.37 * i, {x, y, 0.01 * (i % 7)});
+    return make_affine({0.5 + 0.001 * i, 0.8 - 0.0003 * i, 1.0 + 0.0007 * i}, 0.011 * i, 0.37 * i,
+                       {x, y, 0.01 * (i % 7)});
 }
 
 }  // namespace
@@ -129,7 +130,8 @@ TEST(SceneInstancing, ThousandInstancesMatchThousandFlattenedCopies) {
     }
     scene::Scene inst, one;
     std::size_t m = inst.add_mesh(box);
-    for (int i = 0; i < kCopies; ++i) inst.place(m, tree_placement(i), "1." + std::to_string(i + 1) + "/");
+    for (int i = 0; i < kCopies; ++i)
+        inst.place(m, tree_placement(i), "1." + std::to_string(i + 1) + "/");
     inst.commit();
     one.place(one.add_mesh(flat), scene::identity_affine());
     one.commit();
@@ -155,9 +157,9 @@ TEST(SceneInstancing, ThousandInstancesMatchThousandFlattenedCopies) {
             // moved by Embree's float transform: the facet planes differ by about
             // 150 * FLT_EPSILON, and a hit at incidence cos(theta) moves along the ray
             // by that over |cos(theta)|. 4x margin for the ray transform's own rounding.
-            double cos_incidence = std::abs(a->normal[0] * d[0] + a->normal[1] * d[1] +
-                                            a->normal[2] * d[2]) /
-                                   std::hypot(d[0], d[1], d[2]);
+            double cos_incidence =
+                std::abs(a->normal[0] * d[0] + a->normal[1] * d[1] + a->normal[2] * d[2]) /
+                std::hypot(d[0], d[1], d[2]);
             double tol = 4 * 150 * FLT_EPSILON / std::max(cos_incidence, 1e-3);
             EXPECT_NEAR(a->distance, b->distance, tol) << r << " " << c;
             worst_distance =
@@ -231,19 +233,21 @@ TEST(SceneBounds, ExactBoundsOfPlacedCopiesAndEmptyScene) {
     // Hits are bounded by tnear/tfar along the unit direction.
     EXPECT_TRUE(s.intersect({9.5, 1, 10}, {0, 0, -5}, 0, 8.1));
     EXPECT_FALSE(s.intersect({9.5, 1, 10}, {0, 0, -5}, 0, 7.9));
-    EXPECT_FALSE(s.intersect({9.5, 1, 10}, {0, 0, -5}, 8.1, 9.9));  // misses the top, not yet the bottom
-    EXPECT_TRUE(s.occluded({9.5, 1, 10}, {0, 0, -5}, 8.1, 10.1));    // the bottom at 10
+    EXPECT_FALSE(
+        s.intersect({9.5, 1, 10}, {0, 0, -5}, 8.1, 9.9));  // misses the top, not yet the bottom
+    EXPECT_TRUE(s.occluded({9.5, 1, 10}, {0, 0, -5}, 8.1, 10.1));  // the bottom at 10
 }
 
 TEST(SceneThreads, ConcurrentQueriesMatchSerialOnes) {
     scene::Scene s;
     std::size_t m = s.add_mesh(box_mesh());
-    for (int i = 0; i < 1000; ++i) s.place(m, tree_placement(i), "1." + std::to_string(i + 1) + "/");
+    for (int i = 0; i < 1000; ++i)
+        s.place(m, tree_placement(i), "1." + std::to_string(i + 1) + "/");
     s.commit();
     const int kRays = 20000;
     auto ray = [](int i) {
-        return std::pair<Vec3, Vec3>{{-5 + 130.0 * ((i * 7919) % kRays) / kRays, -5 + 85.0 * i / kRays, 30},
-                                     {0.2, 0.1, -1}};
+        return std::pair<Vec3, Vec3>{
+            {-5 + 130.0 * ((i * 7919) % kRays) / kRays, -5 + 85.0 * i / kRays, 30}, {0.2, 0.1, -1}};
     };
     using Answer = std::tuple<bool, double, std::uint32_t, std::uint32_t>;
     auto answer = [](const std::optional<scene::Hit>& h) {
