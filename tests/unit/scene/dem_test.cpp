@@ -280,3 +280,22 @@ TEST(Dem, OdbObjectNeedsTheOriginAndPlacesTheTerrain) {
     EXPECT_THROW(scene::read_dem_mesh(source(bad), scene::DegeneratePolicy::Error, nullptr),
                  IoError);
 }
+
+TEST(Dem, RastersWithoutCrsOrTooSmallAreRefused) {
+    TempDir tmp;
+    std::string dir = tmp.str();
+    // An ESRI ASCII grid without its .prj: geo-transformed but no CRS.
+    std::ofstream(dir + "nocrs.asc") << "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\n"
+                                        "cellsize 1\n1 2 3\n4 5 6\n7 8 9\n";
+    EXPECT_EQ(data_error_of([&] {
+                  scene::read_dem_mesh(source(dir + "nocrs.asc"), scene::DegeneratePolicy::Error,
+                                       nullptr);
+              }),
+              dir + "nocrs.asc: the DEM has no coordinate reference system");
+    write_raster(dir + "thin.tif", 1, 5, kGeoGt, 4326, std::vector<double>(5, 0));
+    EXPECT_EQ(data_error_of([&] {
+                  scene::read_dem_mesh(source(dir + "thin.tif"), scene::DegeneratePolicy::Error,
+                                       nullptr);
+              }),
+              dir + "thin.tif: a DEM needs at least 2 x 2 cells");
+}
