@@ -10,10 +10,27 @@ namespace sigchain::radiometry {
 namespace {
 
 TEST(Planck, PublishedValueAt10umAnd300K) {
-    // B(10 um, 300 K) = 9.924 W m-2 sr-1 um-1 (standard tables, e.g. Wolfe & Zissis, The
-    // Infrared Handbook) = 9.924e-4 W cm-2 sr-1 um-1. The table prints 4 digits, so the
-    // tolerance is half a unit of the last digit.
+    // B(10 um, 300 K) = 9.924 W m-2 sr-1 um-1, the commonly tabulated room-temperature
+    // value (4 digits) = 9.924e-4 W cm-2 sr-1 um-1 in our units. Tolerance: half a unit
+    // of the last printed digit.
     EXPECT_NEAR(planck_radiance(10.0, 300.0), 9.924e-4, 0.0005e-4);
+}
+
+TEST(Planck, ConstantsAreCodata2018) {
+    // B = 2 h c^2 / lambda^5 / (exp(h c / (lambda k T)) - 1) from the exact SI constants
+    // (h = 6.62607015e-34 J s, c = 299792458 m/s, k = 1.380649e-23 J/K), converted from
+    // W m-2 sr-1 m-1 to W cm-2 sr-1 um-1 (x 1e-10). Tolerance 1e-12 relative: the
+    // derived constants are printed with 16 digits.
+    const double h = 6.62607015e-34, c = 299792458.0, k = 1.380649e-23;
+    for (double lambda_um : {0.4, 3.9, 10.0, 1e4}) {
+        for (double t : {250.0, 300.0, 5800.0}) {
+            double l = lambda_um * 1e-6;
+            double expected =
+                2 * h * c * c / std::pow(l, 5) / std::expm1(h * c / (l * k * t)) * 1e-10;
+            EXPECT_NEAR(planck_radiance(lambda_um, t) / expected, 1.0, 1e-12)
+                << lambda_um << " " << t;
+        }
+    }
 }
 
 TEST(Planck, ZeroOrNegativeTemperatureGivesZero) {
