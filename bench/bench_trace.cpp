@@ -2,9 +2,10 @@
 // 1001 x 1001-vertex terrain (2 million triangles) and 3000 instanced trees, a 512 x
 // 512 frame camera, golfball sampling, 3 bands x 7 spectral samples. Prints the total
 // time, the rays cast, Mrays/s, the Mrays/s of a bare Embree loop casting the same
-// number of rays (the same primary rays, then per hit the same share of hemisphere
-// rays in random upward directions and of shadow rays toward the sun) in the same
-// run, their ratio and the peak memory.
+// rays: (1) the rays render() casts for golfball sampling (the primary rays, the 61
+// golf-ball rays about each hit's normal, the shadow rays to the sun from the primary
+// and secondary hits), (2) as many rays with uniformly random upward directions from
+// the primary hits; the ratios and the peak memory.
 //
 // A plain program (not Google Benchmark): one long run, not repeated timings.
 // Usage: bench_trace [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]] (default 1001 3000 512).
@@ -26,6 +27,7 @@
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
+#include "trace/golfball.hpp"
 #include "trace/render.hpp"
 
 namespace {
@@ -39,6 +41,15 @@ constexpr double kSunZenithDeg = 35, kSunAzimuthDeg = 150;
 
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// CPU seconds used by the process so far (user + system, every thread): on a shared
+// machine, rays per CPU second compare the loops more fairly than wall-clock time.
+double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 double peak_memory_mib() {
@@ -264,7 +275,8 @@ void parallel_for(std::size_t count, unsigned threads, F body) {
 
 struct BareResult {
     std::uint64_t rays = 0;
-    double seconds = 0;
+    double seconds = 0;      // wall clock
+    double cpu_seconds = 0;  // CPU time of all threads
 };
 
 // Casts `primary` rays through the pixels (spp per pixel, jittered), then spreads
@@ -277,6 +289,7 @@ BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint
     std::vector<float> hit_point(3 * primary);
     std::vector<char> hit(primary, 0);
     const auto t0 = Clock::now();
+    const double c0 = cpu_seconds();
     parallel_for(primary, threads, [&](std::size_t k) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
@@ -321,7 +334,96 @@ BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint
         });
     BareResult out;
     out.seconds = seconds_since(t0);
+    out.cpu_seconds = cpu_seconds() - c0;
     out.rays = primary + hemisphere + shadow;
+    return out;
+}
+
+// World-space unit normal of a hit, turned toward the ray direction `d` (trees are
+// instances: rotation about z and uniform scale, so the normal turns with the matrix).
+geom::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& trees,
+                      const geom::Vec3& d) {
+    geom::Vec3 n{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        const scene::Affine& a = trees[rh.hit.instID[0] - 1];  // geometry 0 is the terrain
+        n = {a[0] * n[0] + a[1] * n[1] + a[2] * n[2], a[4] * n[0] + a[5] * n[1] + a[6] * n[2],
+             a[8] * n[0] + a[9] * n[1] + a[10] * n[2]};
+    }
+    n = geom::normalized(n);
+    if (geom::dot(n, d) > 0) n = {-n[0], -n[1], -n[2]};
+    return n;
+}
+
+// The rays render() casts with golfball sampling on Lambertian materials, cast bare:
+// per pixel `spp` primary rays; per primary hit a shadow ray to the sun (when the sun
+// is above the facet) and the 61 golf-ball rays about the normal, turned to the view's
+// mirror azimuth (golfball.hpp); per golf-ball ray that hits, a shadow ray to the sun
+// from that hit (when the sun is above it). Offsets: 1e-5 of the scene's extent, as
+// render() does.
+BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t spp,
+                         const std::vector<scene::Affine>& trees, double extent,
+                         unsigned threads) {
+    const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
+    const geom::Vec3 sun = radiometry::direction_from_angles(kSunZenithDeg, kSunAzimuthDeg);
+    const auto& golf = trace::golfball_rays(0);
+    const double eps = 1e-5 * extent;
+    std::atomic<std::uint64_t> total{0};
+    const auto t0 = Clock::now();
+    const double c0 = cpu_seconds();
+    parallel_for(pixels * spp, threads, [&](std::size_t k) {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        std::uint64_t rays = 1;
+        std::size_t p = k / spp;
+        std::uint64_t state = splitmix64(k);
+        double row = static_cast<double>(p / cam.columns) + unit_random(state);
+        double col = static_cast<double>(p % cam.columns) + unit_random(state);
+        const geom::Vec3 d = cam.direction(row, col);
+        RTCRayHit rh = make_ray(cam.position, d, 0.0f);
+        rtcIntersect1(b.top, &ctx, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+            total += rays;
+            return;
+        }
+        const geom::Vec3 n = hit_normal(rh, trees, d);
+        geom::Vec3 o;
+        for (int a = 0; a < 3; ++a) o[a] = cam.position[a] + rh.ray.tfar * d[a] + eps * n[a];
+        if (geom::dot(n, sun) > 0) {
+            RTCRayHit sr = make_ray(o, sun, 0.0f);
+            rtcOccluded1(b.top, &ctx, &sr.ray);
+            ++rays;
+        }
+        geom::Vec3 x = geom::cross({0, 0, 1}, n);
+        x = geom::dot(x, x) < 1e-12 ? geom::Vec3{1, 0, 0} : geom::normalized(x);
+        const geom::Vec3 y = geom::cross(n, x);
+        const double dn = geom::dot(d, n);
+        const geom::Vec3 m{d[0] - 2 * dn * n[0], d[1] - 2 * dn * n[1], d[2] - 2 * dn * n[2]};
+        const double phi0 = std::atan2(geom::dot(m, y), geom::dot(m, x));
+        const double cr = std::cos(phi0), sr0 = std::sin(phi0);
+        for (const trace::GolfRay& g : golf) {
+            const double cp = g.cos_phi * cr - g.sin_phi * sr0;
+            const double sp = g.sin_phi * cr + g.cos_phi * sr0;
+            geom::Vec3 w;
+            for (int a = 0; a < 3; ++a)
+                w[a] = g.sin_theta * (cp * x[a] + sp * y[a]) + g.cos_theta * n[a];
+            RTCRayHit hr = make_ray(o, w, 0.0f);
+            rtcIntersect1(b.top, &ctx, &hr);
+            ++rays;
+            if (hr.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+            const geom::Vec3 nb = hit_normal(hr, trees, w);
+            if (geom::dot(nb, sun) <= 0) continue;
+            geom::Vec3 q;
+            for (int a = 0; a < 3; ++a) q[a] = o[a] + hr.ray.tfar * w[a] + eps * nb[a];
+            RTCRayHit sr = make_ray(q, sun, 0.0f);
+            rtcOccluded1(b.top, &ctx, &sr.ray);
+            ++rays;
+        }
+        total += rays;
+    });
+    BareResult out;
+    out.seconds = seconds_since(t0);
+    out.cpu_seconds = cpu_seconds() - c0;
+    out.rays = total;
     return out;
 }
 
@@ -380,20 +482,29 @@ int main(int argc, char** argv) {
     options.samples_per_pixel = 1;
     options.threads = threads;
     const auto t_render0 = Clock::now();
+    const double c_render0 = cpu_seconds();
     const trace::RenderResult result = trace::render(inputs, options);
     const double t_render = seconds_since(t_render0);
+    const double c_render = cpu_seconds() - c_render0;
     const double total = seconds_since(t_start);
     const double peak_render_mib = peak_memory_mib();
     const auto& s = result.stats;
     const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
     const double mrays = static_cast<double>(rays) / t_render / 1e6;
+    const double mrays_cpu = static_cast<double>(rays) / c_render / 1e6;
 
-    // The bare Embree loop, same geometry and the same ray counts.
+    // The bare Embree loops, same geometry: the golf-ball rays render() casts, and the
+    // same number of rays with uniformly random upward hemisphere directions.
     BareScene bare;
     build_bare(bare, n, trees);
+    const BareResult g = bare_golfball(bare, cam, static_cast<std::uint64_t>(options.samples_per_pixel),
+                                       tree_transforms(trees), kTerrainExtentM, threads);
+    const double golf_mrays = static_cast<double>(g.rays) / g.seconds / 1e6;
+    const double golf_cpu = static_cast<double>(g.rays) / g.cpu_seconds / 1e6;
     const BareResult b = bare_loop(bare, cam, s.primary_rays, s.secondary_rays, s.shadow_rays,
                                    threads);
     const double bare_mrays = static_cast<double>(b.rays) / b.seconds / 1e6;
+    const double bare_cpu = static_cast<double>(b.rays) / b.cpu_seconds / 1e6;
 
     std::printf("scene build (sigchain Scene)   %10.2f s (%zu triangles placed)\n", t_scene,
                 sc.triangle_count());
@@ -407,11 +518,20 @@ int main(int argc, char** argv) {
                 static_cast<unsigned long long>(s.secondary_rays),
                 static_cast<unsigned long long>(s.shadow_rays),
                 static_cast<unsigned long long>(s.hits));
-    std::printf("render Mrays/s                 %10.2f\n", mrays);
-    std::printf("bare Embree loop Mrays/s       %10.2f (%llu rays in %.2f s)\n", bare_mrays,
-                static_cast<unsigned long long>(b.rays), b.seconds);
-    std::printf("ratio render / bare            %10.2f (target >= 0.7)\n", mrays / bare_mrays);
+    std::printf("                               Mrays/s   Mrays per CPU s   rays\n");
+    std::printf("render                         %7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
+                mrays, mrays_cpu, static_cast<unsigned long long>(rays), t_render, c_render);
+    std::printf("bare Embree, golf-ball rays    %7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
+                golf_mrays, golf_cpu, static_cast<unsigned long long>(g.rays), g.seconds,
+                g.cpu_seconds);
+    std::printf("bare Embree, uniform hemisphere%7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
+                bare_mrays, bare_cpu, static_cast<unsigned long long>(b.rays), b.seconds,
+                b.cpu_seconds);
+    std::printf("ratio render / bare golf-ball  %7.2f   %7.2f (target >= 0.7)\n",
+                mrays / golf_mrays, mrays_cpu / golf_cpu);
+    std::printf("ratio render / bare uniform    %7.2f   %7.2f\n", mrays / bare_mrays,
+                mrays_cpu / bare_cpu);
     std::printf("peak memory after render       %10.1f MiB (target <= 2048)\n", peak_render_mib);
-    std::printf("peak memory with bare scene    %10.1f MiB\n", peak_memory_mib());
+    std::printf("peak memory with bare scenes   %10.1f MiB\n", peak_memory_mib());
     return 0;
 }
