@@ -476,8 +476,13 @@ private:
     }
 
     // Golf ball (seed 5.2.3; golfball.hpp): one ray per cell or matrix sub-cell,
-    // weight (1 - s) projected/pi + s lobe(centre) solid angle, rotated so that
-    // azimuth 0 is the mirror direction's. Returns the sky-view factor.
+    // weight (1 - s) projected/pi + s lobe(centre) solid angle / S, rotated so that
+    // azimuth 0 is the mirror direction's. S = sum of lobe(centre) solid angle over
+    // the rays: the discrete lobe is normalised like the continuous one (brdf.hpp:
+    // Int lobe/m = 1), so a uniform sky gives rho L exactly for any lobe. When the
+    // rays catch less than half of the lobe (S < 1/2: a lobe narrower than the cells)
+    // the lobe is taken as one ray in the mirror direction, weight s, instead.
+    // Returns the sky-view factor.
     double golfball(const MaterialOptics& m, const Frame& f, const Vec3& p, const Vec3& wo_l,
                     double* acc) {
         ArenaScope scope(m_arena);
@@ -488,18 +493,26 @@ private:
         double h = std::hypot(mir[0], mir[1]);
         double ca = h > 1e-12 ? mir[0] / h : 1, sa = h > 1e-12 ? mir[1] / h : 0;
         int matrix = lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDeg) : 0;
-        double svf = 0;
-        for (const GolfRay& r : golfball_rays(matrix)) {
+        const auto& rays = golfball_rays(matrix);
+        auto local = [&](const GolfRay& r) {
             // Rotate the ray's azimuth by the mirror azimuth (angle-sum formulas).
             double cp = r.cos_phi * ca - r.sin_phi * sa, sp = r.sin_phi * ca + r.cos_phi * sa;
-            Vec3 d_l{r.sin_theta * cp, r.sin_theta * sp, r.cos_theta};
+            return Vec3{r.sin_theta * cp, r.sin_theta * sp, r.cos_theta};
+        };
+        double lobe_sum = 0;
+        if (lobe)
+            for (const GolfRay& r : rays) lobe_sum += m.brdf.lobe_weight(local(r), wo_l) * r.solid_angle_sr;
+        bool lobe_rays = lobe && lobe_sum >= 0.5;
+        double svf = 0;
+        for (const GolfRay& r : rays) {
+            Vec3 d_l = local(r);
             double w = (1 - s) * r.projected_sr / kPi;
-            if (lobe) w += s * m.brdf.lobe_weight(d_l, wo_l) * r.solid_angle_sr;
+            if (lobe_rays) w += s * m.brdf.lobe_weight(d_l, wo_l) * r.solid_angle_sr / lobe_sum;
             if (incoming(p, f.to_world(d_l), li)) svf += r.projected_sr / kPi;
             if (w == 0) continue;
             for (std::size_t k = 0; k < m_c.n; ++k) acc[k] += w * li[k];
         }
-        if (has_delta(m)) add_mirror(s, f, p, wo_l, acc);
+        if (has_delta(m) || (lobe && !lobe_rays)) add_mirror(s, f, p, wo_l, acc);
         return svf;
     }
 
