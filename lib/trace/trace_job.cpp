@@ -49,19 +49,29 @@ std::string written_name(const std::string& path) {
     return std::filesystem::absolute(p).lexically_normal().string();
 }
 
-// The view angles of the image corners and centre against the .rad's table: outside
-// it the path terms are clamped (Atmosphere::path), which trace reports.
+// The view angles over the image border and centre against the .rad's table (the
+// extremes of the view angle over a frame lie on its border unless nadir is inside,
+// which the border's signs then show): outside the table the path terms are clamped
+// (Atmosphere::path), which trace reports.
 void check_view_angles(const RayGenerator& camera, const radiometry::Atmosphere& atm,
                        const TraceHooks& hooks) {
     double lo = 1e9, hi = -1e9;
     const double r = static_cast<double>(camera.rows()), c = static_cast<double>(camera.columns());
-    const double points[5][2] = {{0, 0}, {0, c}, {r, 0}, {r, c}, {r / 2, c / 2}};
-    for (const auto& p : points) {
+    auto sample = [&](double row, double column) {
         Vec3 origin{}, direction{};
-        camera.ray(p[0], p[1], origin, direction);
-        double va = camera.view_angle_deg(direction);
+        camera.ray(row, column, origin, direction);
+        const double va = camera.view_angle_deg(direction);
         lo = std::min(lo, va);
         hi = std::max(hi, va);
+    };
+    sample(r / 2, c / 2);
+    const long steps = 256;  // per side: at most 1024 rays, a fraction of a degree apart
+    for (long k = 0; k <= steps; ++k) {
+        const double f = static_cast<double>(k) / steps;
+        sample(0, f * c);
+        sample(r, f * c);
+        sample(f * r, 0);
+        sample(f * r, c);
     }
     // 0.01 deg: below the precision the .rad's view-angle grid is written with.
     if (lo < atm.min_view_angle_deg() - 0.01 || hi > atm.max_view_angle_deg() + 0.01)

@@ -214,6 +214,27 @@ band_bytes() {
     [ -f skip.img ]
 }
 
+@test "trace warns when the image's view angles leave the .rad tables" {
+    run -0 --separate-stderr trace "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/narrow_band1.rad" "$DATA/narrow_band2.rad" -o out.img
+    # The camera looks atan(20/30) = 33.69 deg off nadir with a half field of view of
+    # atan(8 mm / 32 mm) = 14.04 deg: 19.65 deg at the bottom edge's middle; the top
+    # corners (32, 8, 8 mm along forward, right, up) are 49.18 deg off nadir.
+    assert_equal "$stderr" "trace: warning: the image spans view angles 19.65 to 49.18 deg but the .rad files cover 0.00 to 45.00 deg: path terms are clamped at the ends"
+}
+
+@test "trace warns when a .rad's sample count differs from its .snd band" {
+    run -0 --separate-stderr trace "$DATA/box.adv" "$DATA/mismatch.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o out.img
+    assert_equal "$stderr" "trace: warning: $DATA/band1.rad: 3 spectral samples, but band 1 of $DATA/mismatch.snd has 5"
+}
+
+@test "trace: .rad files with different view angles are refused, naming both" {
+    trace_bad 1 "$DATA/narrow_band2.rad: view angles differ from those of $DATA/band1.rad" \
+        "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" \
+        "$DATA/narrow_band2.rad" -o out.img
+}
+
 @test "trace: a missing material id names the facet and its line" {
     trace_bad 1 "$GDB:44: object 'box' (2-0-0), part 'house side' (2-1-0), facet 'top' (2-1-1): material 37" \
         $(inputs "$GDB" "$DATA/missing_wood.mat") -o out.img
