@@ -152,19 +152,25 @@ band_bytes() {
     run -1 cmp -s a.img b.img
 }
 
-@test "trace --max-transmissions changes nothing in an opaque scene" {
+@test "trace --max-transmissions: a clear box is seen through, or stops rays at 0" {
+    # Opaque scene: nothing to cross.
     trace_ok $(inputs) -o a.img
     trace_ok $(inputs) --max-transmissions 0 -o b.img
     run -0 cmp a.img b.img
+    # transmissive.mat makes the box a 5 cm slab of glass.ext (t = 0.999).
+    run -0 --separate-stderr trace -v $(inputs "$GDB" "$DATA/transmissive.mat") -o glass.img
+    [[ "$stderr" != *"not modelled: transmission"* ]] || fail "stderr: $stderr"
+    trace_ok $(inputs "$GDB" "$DATA/transmissive.mat") --max-transmissions 0 -o stopped.img
+    run -1 cmp -s glass.img stopped.img
+    trace_ok $(inputs "$GDB" "$DATA/transmissive.mat") --max-transmissions 8 -o eight.img
+    run -0 cmp glass.img eight.img
 }
 
-@test "trace --bounces 0 changes the image; only 0 or 1 are accepted" {
-    trace_ok $(inputs) -o one.img
-    trace_ok $(inputs) --bounces 1 -o one_again.img
-    run -0 cmp one.img one_again.img
-    trace_ok $(inputs) --bounces 0 -o zero.img
-    run -1 cmp -s one.img zero.img
-    trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces 2 -o out.img
+@test "trace renders an .odb assembly (three instances of box_on_plane.gdb)" {
+    run -0 --separate-stderr trace -v $(inputs "$SEED/neighbourhood.odb") -o odb.img
+    [[ "$stderr" == *"scene: 1 mesh(es), 3 placement(s), 18 facets, 36 triangles"* ]] ||
+        fail "stderr: $stderr"
+    [ -f odb.img ]
 }
 
 @test "trace --truth writes the truth layers with their channel names" {
