@@ -76,6 +76,24 @@ bool has_delta(const MaterialOptics& m) {
     return m.specularity > 0 && m.brdf.shape() == LobeShape::Delta;
 }
 
+// The facet's material, or DataError naming the facet: a material missing from the
+// .mat, or a texture curve the material's .ems does not have.
+const MaterialOptics& facet_material(const radiometry::MaterialLibrary& materials,
+                                     const scene::FacetAttributes& a,
+                                     const scene::FacetOrigin& o) {
+    const MaterialOptics* m = materials.find(a.material_id);
+    if (!m)
+        throw DataError({o.file, o.line}, o.description + ": material " +
+                                              std::to_string(a.material_id) +
+                                              " is not in the material file");
+    if (a.texture_curve >= m->emissivity.size())
+        throw DataError({o.file, o.line},
+                        o.description + ": texture curve " + std::to_string(a.texture_curve) +
+                            " of material " + std::to_string(a.material_id) + " does not exist (" +
+                            std::to_string(m->emissivity.size()) + " curve(s))");
+    return *m;
+}
+
 // Per-thread spectral scratch: a stack of n-sample buffers, grown on first use only.
 class Arena {
 public:
@@ -248,13 +266,8 @@ private:
     const MaterialOptics& material_of(const scene::Hit& hit) {
         const auto& a = m_c.in.scene->attributes(hit);
         const MaterialOptics* m = m_c.in.materials->find(a.material_id);
-        if (!m) {
-            const auto& o = m_c.in.scene->origin(hit);
-            throw DataError({o.file, o.line}, o.description + ": material " +
-                                                  std::to_string(a.material_id) +
-                                                  " is not in the material file");
-        }
-        return *m;
+        if (m && a.texture_curve < m->emissivity.size()) return *m;
+        return facet_material(*m_c.in.materials, a, m_c.in.scene->origin(hit));  // throws
     }
 
     double thickness_of(const scene::FacetAttributes& a, const MaterialOptics& m) const {
@@ -700,14 +713,8 @@ void validate_scene(const scene::Scene& scene, const radiometry::MaterialLibrary
         if (mesh < checked.size() && checked[mesh]) continue;
         if (mesh >= checked.size()) checked.resize(mesh + 1, false);
         checked[mesh] = true;
-        for (std::uint32_t f = 0; f < scene.facet_count(mesh); ++f) {
-            const auto& a = scene.attributes(mesh, f);
-            if (materials.find(a.material_id)) continue;
-            const auto& o = scene.origin(mesh, f);
-            throw DataError({o.file, o.line}, o.description + ": material " +
-                                                  std::to_string(a.material_id) +
-                                                  " is not in the material file");
-        }
+        for (std::uint32_t f = 0; f < scene.facet_count(mesh); ++f)
+            facet_material(materials, scene.attributes(mesh, f), scene.origin(mesh, f));
     }
 }
 

@@ -300,6 +300,25 @@ TEST(Render, MissingMaterialNamesTheFacet) {
     }
 }
 
+TEST(Render, MissingTextureCurveNamesTheFacet) {
+    Mesh m;
+    m.quad({{{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}}, 1);
+    m.data.facets[0].texture_curve = 3;  // the grey material has one curve
+    scene::Scene s = single(m.data);
+    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    try {
+        validate_scene(s, mats);
+        FAIL() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_NE(std::string(e.what()).find("(1-1-1): texture curve 3 of material 1"),
+                  std::string::npos) << e.what();
+    }
+    auto atm = atmosphere(30, 0.2, 0.004);
+    Ortho cam(2, 2, 0.5, -1, 1, {0, 0, -1});
+    RenderOptions o;
+    EXPECT_THROW(run(s, mats, atm, cam, o), DataError);
+}
+
 TEST(Render, TruthLayersOfASunlitPlate) {
     // Flat Lambertian plate, sun at zenith 40, uniform sky: hit 1, shadow 0, sky-view
     // factor 1 (every hemisphere ray escapes), reflectance r, solar tau2 r Es cos/pi
