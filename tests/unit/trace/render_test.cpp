@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -363,7 +364,40 @@ TEST(Render, TruthLayersOfASunlitPlate) {
     EXPECT_NEAR(res.truth.at(layer("upwelled_" + band), 1, 1), 0.001, tol);
     EXPECT_NEAR(res.truth.at(layer("transmission_" + band), 1, 1), 0.9, tol);
     EXPECT_FALSE(res.stats.skipped.empty());
+    // Ray counts: per pixel one primary ray, 61 golf-ball rays (all escape) and one
+    // shadow ray.
     EXPECT_EQ(res.stats.primary_rays, 9u);
+    EXPECT_EQ(res.stats.secondary_rays, 9u * 61);
+    EXPECT_EQ(res.stats.shadow_rays, 9u);
+    EXPECT_EQ(res.stats.hits, 9u);
+}
+
+TEST(Render, ProgressOnlyFromTheCallingThread) {
+    scene::Scene s = busy_scene();
+    auto mats = busy_materials();
+    auto atm = atmosphere(40, 0.2, 0.004);
+    Ortho cam(24, 8, 0.7, -4, 4, {0, 0, -1});
+    RenderInputs in;
+    in.scene = &s;
+    in.materials = &mats;
+    in.atmosphere = &atm;
+    in.camera = &cam;
+    RenderOptions o;
+    o.threads = 3;
+    const auto caller = std::this_thread::get_id();
+    long calls = 0, last_done = -1, last_total = -1;
+    bool other_thread = false, decreasing = false;
+    render(in, o, [&](long done, long total) {
+        other_thread |= std::this_thread::get_id() != caller;
+        decreasing |= done < last_done;
+        last_done = done, last_total = total;
+        ++calls;
+    });
+    EXPECT_FALSE(other_thread);
+    EXPECT_FALSE(decreasing);
+    EXPECT_GE(calls, 1);
+    EXPECT_EQ(last_done, 24);
+    EXPECT_EQ(last_total, 24);
 }
 
 TEST(Render, TransmissiveSlabAttenuatesTwice) {
