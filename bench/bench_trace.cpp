@@ -221,6 +221,17 @@ void add_triangles(RTCDevice device, RTCScene scene, const scene::MeshData& m) {
 
 void build_bare(BareScene& b, int n, int trees) {
     b.device = rtcNewDevice(nullptr);
+    if (!b.device) {
+        std::fprintf(stderr, "bench_trace: cannot create an Embree device\n");
+        std::exit(1);
+    }
+    rtcSetDeviceErrorFunction(
+        b.device,
+        [](void*, RTCError code, const char* message) {
+            std::fprintf(stderr, "bench_trace: embree error %d: %s\n", static_cast<int>(code),
+                         message ? message : "");
+        },
+        nullptr);
     b.top = rtcNewScene(b.device);
     b.tree = rtcNewScene(b.device);
     add_triangles(b.device, b.top, terrain_mesh(n));
@@ -361,8 +372,7 @@ geom::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& tre
 // from that hit (when the sun is above it). Offsets: 1e-5 of the scene's extent, as
 // render() does.
 BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t spp,
-                         const std::vector<scene::Affine>& trees, double extent,
-                         unsigned threads) {
+                         const std::vector<scene::Affine>& trees, double extent, unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
     const geom::Vec3 sun = radiometry::direction_from_angles(kSunZenithDeg, kSunAzimuthDeg);
     const auto& golf = trace::golfball_rays(0);
@@ -438,9 +448,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::printf("bench_trace: terrain %d x %d vertices (%ld triangles), %d trees, %ld x %ld "
-                "pixels, golfball, 3 bands x 7 samples, %u threads\n",
-                n, n, 2L * (n - 1) * (n - 1), trees, side, side, threads);
+    std::printf(
+        "bench_trace: terrain %d x %d vertices (%ld triangles), %d trees, %ld x %ld "
+        "pixels, golfball, 3 bands x 7 samples, %u threads\n",
+        n, n, 2L * (n - 1) * (n - 1), trees, side, side, threads);
     const auto t_start = Clock::now();
 
     // Scene through sigchain's Scene (Embree instances for the trees).
@@ -449,7 +460,8 @@ int main(int argc, char** argv) {
     sc.place(terrain, scene::identity_affine());
     const std::size_t tree = sc.add_mesh(tree_mesh());
     int t = 0;
-    for (const auto& a : tree_transforms(trees)) sc.place(tree, a, "2." + std::to_string(++t) + "/");
+    for (const auto& a : tree_transforms(trees))
+        sc.place(tree, a, "2." + std::to_string(++t) + "/");
     sc.commit();
     const double t_scene = seconds_since(t_start);
 
@@ -460,8 +472,8 @@ int main(int argc, char** argv) {
     for (int b = 0; b < 3; ++b) {
         std::vector<double> wl;
         for (int k = 0; k < 7; ++k) wl.push_back(band_start_um[b] + 0.01 * k);
-        rads.push_back(radiometry::uniform_rad(wl, kSunZenithDeg, kSunAzimuthDeg, 0.15, 0.004,
-                                               0.9, 0.002));
+        rads.push_back(
+            radiometry::uniform_rad(wl, kSunZenithDeg, kSunAzimuthDeg, 0.15, 0.004, 0.9, 0.002));
         names.push_back("band" + std::to_string(b + 1));
     }
     const auto atmosphere = radiometry::Atmosphere::from_rads(rads, names);
@@ -497,12 +509,13 @@ int main(int argc, char** argv) {
     // same number of rays with uniformly random upward hemisphere directions.
     BareScene bare;
     build_bare(bare, n, trees);
-    const BareResult g = bare_golfball(bare, cam, static_cast<std::uint64_t>(options.samples_per_pixel),
-                                       tree_transforms(trees), kTerrainExtentM, threads);
+    const BareResult g =
+        bare_golfball(bare, cam, static_cast<std::uint64_t>(options.samples_per_pixel),
+                      tree_transforms(trees), kTerrainExtentM, threads);
     const double golf_mrays = static_cast<double>(g.rays) / g.seconds / 1e6;
     const double golf_cpu = static_cast<double>(g.rays) / g.cpu_seconds / 1e6;
-    const BareResult b = bare_loop(bare, cam, s.primary_rays, s.secondary_rays, s.shadow_rays,
-                                   threads);
+    const BareResult b =
+        bare_loop(bare, cam, s.primary_rays, s.secondary_rays, s.shadow_rays, threads);
     const double bare_mrays = static_cast<double>(b.rays) / b.seconds / 1e6;
     const double bare_cpu = static_cast<double>(b.rays) / b.cpu_seconds / 1e6;
 
@@ -511,22 +524,22 @@ int main(int argc, char** argv) {
     std::printf("render                         %10.2f s (render's own clock %.2f s)\n", t_render,
                 s.seconds);
     std::printf("total (scene + render)         %10.2f s\n", total);
-    std::printf("rays cast                      %10llu (%llu primary, %llu secondary, %llu "
-                "shadow; %llu hits)\n",
-                static_cast<unsigned long long>(rays),
-                static_cast<unsigned long long>(s.primary_rays),
-                static_cast<unsigned long long>(s.secondary_rays),
-                static_cast<unsigned long long>(s.shadow_rays),
-                static_cast<unsigned long long>(s.hits));
+    std::printf(
+        "rays cast                      %10llu (%llu primary, %llu secondary, %llu "
+        "shadow; %llu hits)\n",
+        static_cast<unsigned long long>(rays), static_cast<unsigned long long>(s.primary_rays),
+        static_cast<unsigned long long>(s.secondary_rays),
+        static_cast<unsigned long long>(s.shadow_rays), static_cast<unsigned long long>(s.hits));
     std::printf("                               Mrays/s   Mrays per CPU s   rays\n");
-    std::printf("render                         %7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
-                mrays, mrays_cpu, static_cast<unsigned long long>(rays), t_render, c_render);
-    std::printf("bare Embree, golf-ball rays    %7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
-                golf_mrays, golf_cpu, static_cast<unsigned long long>(g.rays), g.seconds,
-                g.cpu_seconds);
-    std::printf("bare Embree, uniform hemisphere%7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
-                bare_mrays, bare_cpu, static_cast<unsigned long long>(b.rays), b.seconds,
-                b.cpu_seconds);
+    std::printf(
+        "render                         %7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n", mrays,
+        mrays_cpu, static_cast<unsigned long long>(rays), t_render, c_render);
+    std::printf(
+        "bare Embree, golf-ball rays    %7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
+        golf_mrays, golf_cpu, static_cast<unsigned long long>(g.rays), g.seconds, g.cpu_seconds);
+    std::printf(
+        "bare Embree, uniform hemisphere%7.2f   %7.2f           %llu (%.2f s, %.2f CPU s)\n",
+        bare_mrays, bare_cpu, static_cast<unsigned long long>(b.rays), b.seconds, b.cpu_seconds);
     std::printf("ratio render / bare golf-ball  %7.2f   %7.2f (target >= 0.7)\n",
                 mrays / golf_mrays, mrays_cpu / golf_cpu);
     std::printf("ratio render / bare uniform    %7.2f   %7.2f\n", mrays / bare_mrays,

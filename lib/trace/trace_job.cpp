@@ -94,9 +94,12 @@ Sampling parse_sampling(const std::string& name) {
 
 std::string sampling_name(Sampling sampling) {
     switch (sampling) {
-        case Sampling::Dirsig: return "dirsig";
-        case Sampling::Golfball: return "golfball";
-        case Sampling::MonteCarlo: return "montecarlo";
+        case Sampling::Dirsig:
+            return "dirsig";
+        case Sampling::Golfball:
+            return "golfball";
+        case Sampling::MonteCarlo:
+            return "montecarlo";
     }
     return "?";
 }
@@ -126,8 +129,8 @@ void check_job(const TraceJob& job) {
             throw UsageError("--truth: " + job.truth_path + " would overwrite the output " +
                              job.output_path);
     }
-    if (job.samples_per_pixel && (*job.samples_per_pixel < 1 ||
-                                  *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
+    if (job.samples_per_pixel &&
+        (*job.samples_per_pixel < 1 || *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
         throw UsageError("--samples-per-pixel: expected 1 to " +
                          std::to_string(io::kAdvMaxSamplesPerPixel));
     if (job.hemisphere_samples && *job.hemisphere_samples < 1)
@@ -140,32 +143,42 @@ void check_job(const TraceJob& job) {
         throw UsageError("--rows: expected 0 <= A < B");
 }
 
-TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
-    check_job(job);
-    TraceReport report;
+namespace {
 
-    // Camera and scene node.
-    const io::Adv adv = io::read_adv_file(job.adv_path);
-    if (adv.sensor != io::SensorKind::Frame)
+// The .adv (a frame camera) and the .snd, and the rows to render: [begin, end).
+struct Setup {
+    io::Adv adv;
+    io::Snd snd;
+    long row_begin = 0, row_end = 0;
+};
+
+Setup read_setup(const TraceJob& job) {
+    Setup st;
+    st.adv = io::read_adv_file(job.adv_path);
+    if (st.adv.sensor != io::SensorKind::Frame)
         throw NotImplemented(job.adv_path +
                              ": not implemented yet: line scanner and pushbroom sensors "
                              "(a later issue); trace renders frame cameras");
-    const io::Snd snd = io::read_snd_file(job.snd_path);
-    if (snd.bands.size() != job.rad_paths.size())
-        throw UsageError(job.snd_path + " has " + std::to_string(snd.bands.size()) +
+    st.snd = io::read_snd_file(job.snd_path);
+    if (st.snd.bands.size() != job.rad_paths.size())
+        throw UsageError(job.snd_path + " has " + std::to_string(st.snd.bands.size()) +
                          " band(s) but " + std::to_string(job.rad_paths.size()) +
                          " .rad file(s) were given (one per band, in band order)");
-    long row_begin = 0, row_end = adv.rows;
+    st.row_end = st.adv.rows;
     if (job.rows) {
-        if (job.rows->second > adv.rows)
+        if (job.rows->second > st.adv.rows)
             throw UsageError("--rows " + std::to_string(job.rows->first) + ":" +
                              std::to_string(job.rows->second) + ": the image has " +
-                             std::to_string(adv.rows) + " rows (" + job.adv_path + ")");
-        row_begin = job.rows->first;
-        row_end = job.rows->second;
+                             std::to_string(st.adv.rows) + " rows (" + job.adv_path + ")");
+        st.row_begin = job.rows->first;
+        st.row_end = job.rows->second;
     }
+    return st;
+}
 
-    // Atmosphere: one sigchain .rad per band.
+// One sigchain .rad per band, merged on one spectral grid.
+radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
+                                       const TraceHooks& hooks) {
     std::vector<io::Rad> rads;
     rads.reserve(job.rad_paths.size());
     for (std::size_t b = 0; b < job.rad_paths.size(); ++b) {
@@ -181,28 +194,26 @@ TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
                                 " spectral samples, but band " + std::to_string(b + 1) + " of " +
                                 job.snd_path + " has " + std::to_string(want));
     }
-    const radiometry::Atmosphere atmosphere = radiometry::Atmosphere::from_rads(rads, job.rad_paths);
-    const radiometry::SpectralGrid& grid = atmosphere.grid();
-    report.spectral_samples = grid.size();
-    report.bands = grid.band_count();
+    radiometry::Atmosphere atmosphere = radiometry::Atmosphere::from_rads(rads, job.rad_paths);
+    const auto& grid = atmosphere.grid();
     say(hooks.info, "spectral grid: " + std::to_string(grid.size()) + " samples in " +
                         std::to_string(grid.band_count()) + " band(s)");
     if (!atmosphere.sun_up())
         say(hooks.info, "the sun is below the horizon (zenith " +
                             format("%.2f", atmosphere.sun_zenith_deg()) + " deg)");
+    return atmosphere;
+}
 
-    // Materials on the render's grid.
-    const io::Mat mat = io::read_mat_file(job.mat_path);
-    const radiometry::MaterialLibrary materials =
-        radiometry::MaterialLibrary::load(mat, job.mat_path, grid);
-    report.materials = materials.materials().size();
-
-    // Scene: scene units from the .adv, geodetic origin from the .snd.
+// The scene in scene units (the .adv's) about the .snd's geodetic origin, checked
+// against the materials.
+scene::Scene read_scene(const TraceJob& job, const Setup& st,
+                        const radiometry::MaterialLibrary& materials, TraceReport& report,
+                        const TraceHooks& hooks) {
     scene::LoadOptions load;
-    load.scene_meters_per_unit = io::meters_per_unit(adv.units);
-    load.origin = scene::GeoOrigin{snd.latitude_deg, snd.longitude_east_deg, 0.0};
+    load.scene_meters_per_unit = io::meters_per_unit(st.adv.units);
+    load.origin = scene::GeoOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg, 0.0};
     load.allow_degenerate = job.allow_degenerate;
-    const scene::Scene scene = scene::load_scene(job.scene_path, load, &report.load);
+    scene::Scene scene = scene::load_scene(job.scene_path, load, &report.load);
     for (const auto& w : report.load.warnings) say(hooks.warn, w);
     if (scene.triangle_count() == 0)
         throw DataError({job.scene_path, 0}, "the scene has no facets");
@@ -212,64 +223,55 @@ TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
                         std::to_string(report.load.facets) + " facets, " +
                         std::to_string(report.load.triangles) + " triangles; " +
                         std::to_string(report.materials) + " material(s)");
+    return scene;
+}
 
-    // Temperatures (emission) when given.
+// Facet temperatures by key from the .tmp, when one is given.
+Temperatures read_temperatures(const TraceJob& job, const TraceHooks& hooks) {
     Temperatures temperatures;
-    if (!job.tmp_path.empty()) {
-        const io::Tmp tmp = io::read_tmp_file(job.tmp_path);
-        for (const auto& f : tmp.facets) temperatures[f.facet_id] = f.temperature_k;
-        say(hooks.info, "temperatures of " + std::to_string(temperatures.size()) +
-                            " facet(s) from " + job.tmp_path);
-    } else {
+    if (job.tmp_path.empty()) {
         say(hooks.info, "no temperature file (--tmp): emission is left out");
+        return temperatures;
     }
+    const io::Tmp tmp = io::read_tmp_file(job.tmp_path);
+    for (const auto& f : tmp.facets) temperatures[f.facet_id] = f.temperature_k;
+    say(hooks.info, "temperatures of " + std::to_string(temperatures.size()) + " facet(s) from " +
+                        job.tmp_path);
+    return temperatures;
+}
 
-    const FrameRayGenerator camera(geom::frame_camera(adv, job.adv_path));
-    check_view_angles(camera, atmosphere, hooks);
-
+RenderOptions render_options(const TraceJob& job, const Setup& st) {
     RenderOptions options;
     options.sampling = job.sampling;
-    options.samples_per_pixel = job.samples_per_pixel.value_or(adv.samples_per_pixel);
+    options.samples_per_pixel = job.samples_per_pixel.value_or(st.adv.samples_per_pixel);
     if (job.hemisphere_samples) options.hemisphere_samples = *job.hemisphere_samples;
     if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
     if (job.bounces) options.bounces = *job.bounces;
     options.seed = job.seed;
     options.threads = job.threads;
-    options.row_begin = row_begin;
-    options.row_end = row_end;
+    options.row_begin = st.row_begin;
+    options.row_end = st.row_end;
     options.truth = !job.truth_path.empty();
-    options.meters_per_unit = load.scene_meters_per_unit;
+    options.meters_per_unit = io::meters_per_unit(st.adv.units);
+    return options;
+}
 
-    RenderInputs inputs;
-    inputs.scene = &scene;
-    inputs.atmosphere = &atmosphere;
-    inputs.materials = &materials;
-    inputs.camera = &camera;
-    inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
-    say(hooks.info, "rendering rows " + std::to_string(row_begin) + " to " +
-                        std::to_string(row_end) + " of " + std::to_string(adv.rows) + ", " +
-                        std::to_string(adv.columns) + " columns, " +
-                        std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
-                        sampling_name(job.sampling) + " sampling");
-    RenderResult result = render(inputs, options, hooks.progress);
-    report.stats = result.stats;
-    report.rows = result.radiance.rows;
-    report.columns = result.radiance.columns;
-
-    const auto& s = result.stats;
+void report_stats(const RenderStats& s, const TraceHooks& hooks) {
     const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
+    const double mrays = s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6 : 0.0;
     say(hooks.info, std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) +
                         " primary, " + std::to_string(s.secondary_rays) + " secondary, " +
-                        std::to_string(s.shadow_rays) + " shadow), " +
-                        std::to_string(s.hits) + " hits, " + format("%.3f", s.seconds) +
-                        " s, " +
-                        format("%.2f", s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6
-                                                     : 0.0) +
+                        std::to_string(s.shadow_rays) + " shadow), " + std::to_string(s.hits) +
+                        " hits, " + format("%.3f", s.seconds) + " s, " + format("%.2f", mrays) +
                         " Mrays/s");
     for (const auto& skipped : s.skipped) say(hooks.info, "not modelled: " + skipped);
     if (s.hits == 0) say(hooks.warn, "no primary ray hit the scene: check the look angles");
+}
 
-    // The radiance cube: one band per spectral sample, wavelengths and units.
+// The radiance cube (one band per spectral sample, wavelengths, units, band names)
+// and the truth cube, each written atomically.
+void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
+                   RenderResult& result) {
     image::Image& cube = result.radiance;
     cube.wavelength_um = grid.wavelength_um;
     cube.units = kRadianceUnits;
@@ -280,13 +282,50 @@ TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
                                          format("%.6g", grid.wavelength_um[k]) + " um");
     }
     image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path));
-    if (!job.truth_path.empty()) {
-        image::Image& truth = result.truth;
-        truth.channel_names = truth_layer_names(grid);
-        truth.wavelength_um.clear();
-        truth.units.clear();
-        image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path));
-    }
+    if (job.truth_path.empty()) return;
+    image::Image& truth = result.truth;
+    truth.channel_names = truth_layer_names(grid);
+    truth.wavelength_um.clear();
+    truth.units.clear();
+    image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path));
+}
+
+}  // namespace
+
+TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
+    check_job(job);
+    TraceReport report;
+    const Setup st = read_setup(job);
+    const radiometry::Atmosphere atmosphere = read_atmosphere(job, st.snd, hooks);
+    const radiometry::SpectralGrid& grid = atmosphere.grid();
+    report.spectral_samples = grid.size();
+    report.bands = grid.band_count();
+    const radiometry::MaterialLibrary materials =
+        radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path, grid);
+    report.materials = materials.materials().size();
+    const scene::Scene scene = read_scene(job, st, materials, report, hooks);
+    const Temperatures temperatures = read_temperatures(job, hooks);
+    const FrameRayGenerator camera(geom::frame_camera(st.adv, job.adv_path));
+    check_view_angles(camera, atmosphere, hooks);
+
+    const RenderOptions options = render_options(job, st);
+    RenderInputs inputs;
+    inputs.scene = &scene;
+    inputs.atmosphere = &atmosphere;
+    inputs.materials = &materials;
+    inputs.camera = &camera;
+    inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
+    say(hooks.info, "rendering rows " + std::to_string(st.row_begin) + " to " +
+                        std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
+                        std::to_string(st.adv.columns) + " columns, " +
+                        std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
+                        sampling_name(job.sampling) + " sampling");
+    RenderResult result = render(inputs, options, hooks.progress);
+    report.stats = result.stats;
+    report.rows = result.radiance.rows;
+    report.columns = result.radiance.columns;
+    report_stats(result.stats, hooks);
+    write_outputs(job, grid, result);
     return report;
 }
 

@@ -18,7 +18,7 @@ namespace sigchain::trace {
 struct TraceJob {
     std::string adv_path;
     std::string snd_path;
-    std::string scene_path;              // .gdb or .odb
+    std::string scene_path;  // .gdb or .odb
     std::string mat_path;
     std::vector<std::string> rad_paths;  // one per .snd band, in band order
     std::string output_path;             // .img/.hdr (ENVI) or .tif (GeoTIFF)
@@ -30,7 +30,7 @@ struct TraceJob {
     std::optional<int> max_transmissions;    // default: RenderOptions's
     std::optional<int> bounces;              // 0 or 1; default: RenderOptions's (1)
     std::uint64_t seed = 1;
-    unsigned threads = 0;                    // 0: all cores
+    unsigned threads = 0;                       // 0: all cores
     std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
     bool allow_degenerate = false;
 };

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
         job.rad_paths.assign(inputs.begin() + 4, inputs.end());
         job.output_path = vm["output"].as<std::string>();
         job.sampling = trace::parse_sampling(vm["sampling"].as<std::string>());
-        if (vm.count("samples-per-pixel")) job.samples_per_pixel = vm["samples-per-pixel"].as<long>();
+        if (vm.count("samples-per-pixel"))
+            job.samples_per_pixel = vm["samples-per-pixel"].as<long>();
         if (vm.count("hemisphere-samples"))
             job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
         if (vm.count("max-transmissions"))

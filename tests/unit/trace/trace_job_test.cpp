@@ -1,6 +1,8 @@
 // The trace job: option parsing and checks, and a run on tests/data/trace whose cube
 // is checked against the path terms of the hand-written .rad files, interpolated here
 // independently of Atmosphere::path.
+#include "trace/trace_job.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include "core/error.hpp"
 #include "image/image.hpp"
 #include "io/rad.hpp"
-#include "trace/trace_job.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -34,9 +35,10 @@ TraceJob box_job(const std::string& output) {
 struct Scratch {
     std::filesystem::path dir;
     Scratch() {
-        dir = std::filesystem::temp_directory_path() /
-              ("trace_job_test." + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-               "." + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir =
+            std::filesystem::temp_directory_path() /
+            ("trace_job_test." + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+             "." + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::create_directories(dir);
     }
     ~Scratch() { std::filesystem::remove_all(dir); }
