@@ -105,6 +105,15 @@ band_bytes() {
         band_bytes bottom.img "$band" 11
     done > merged.img
     run -0 cmp merged.img whole.img
+    # Monte Carlo too: its random numbers hash the pixel, not the slice.
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 16 -o mc_whole.img
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 16 --rows 0:9 -o mc_top.img
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 16 --rows 9:16 -o mc_bottom.img
+    for band in 0 1 2 3 4 5; do
+        band_bytes mc_top.img "$band" 9
+        band_bytes mc_bottom.img "$band" 7
+    done > mc_merged.img
+    run -0 cmp mc_merged.img mc_whole.img
 }
 
 @test "trace gives identical cubes with 1 and 2 threads" {
