@@ -47,6 +47,10 @@ GolfRay region_ray(double cos_lo, double cos_hi, double phi_lo, double phi_hi, i
     r.solid_angle_sr = (phi_hi - phi_lo) * (cos_hi - cos_lo);
     r.projected_sr = (phi_hi - phi_lo) * (cos_hi * cos_hi - cos_lo * cos_lo) / 2;
     r.cell = cell;
+    r.cos_lo = cos_lo;
+    r.cos_hi = cos_hi;
+    r.phi_lo = phi_lo;
+    r.phi_hi = phi_hi;
     return r;
 }
 

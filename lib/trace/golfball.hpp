@@ -40,6 +40,10 @@ struct GolfRay {
     double solid_angle_sr = 0;            // exact solid angle of the ray's cell
     double projected_sr = 0;              // exact integral of cos theta over the cell
     int cell = 0;                         // index of the golf-ball cell it belongs to
+    // The region the ray stands for (cos theta and azimuth ranges, azimuth in radians
+    // before the rotation to the mirror azimuth): the jittered golf ball draws its
+    // ray inside it (render.cpp).
+    double cos_lo = 0, cos_hi = 1, phi_lo = 0, phi_hi = 0;
 };
 
 // Cell edges: cos theta in [cos_lo, cos_hi], azimuth in [phi_lo, phi_hi] (radians);

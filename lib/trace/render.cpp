@@ -173,9 +173,11 @@ Context make_context(const RenderInputs& in, const RenderOptions& opt) {
         for (int i = 0; i < 3; ++i)
             scale = std::max({scale, std::abs(b.lower[i]), std::abs(b.upper[i]),
                               b.upper[i] - b.lower[i]});
-    // Embree works in float (relative precision 6e-8): an offset of 1e-5 of the
-    // scene's extent clears self-intersection with margin.
-    c.eps = 1e-5 * scale;
+    // Embree works in float (relative precision 6e-8): an offset of 1e-6 of the
+    // scene's largest coordinate or extent (17 float ulps there) clears
+    // self-intersection. Larger offsets bias results: raising a canyon floor point by
+    // 1e-5 of a 4 km scene (4 cm in a 10 m canyon) raised its sky-view factor by 0.2%.
+    c.eps = 1e-6 * scale;
     c.sun = atm.sun_direction();
     c.sun_up = atm.sun_up();
     auto se = atm.sun_irradiance_at_ground();
@@ -458,6 +460,8 @@ private:
 
 public:
     std::vector<double> m_truth_rho, m_truth_solar, m_truth_down;
+    std::vector<Vec3> m_golf_dirs;          // golf-ball ray directions (local frame)
+    std::vector<double> m_golf_lobe_area;   // solid angle each ray stands for (lobe term)
 
 private:
     // Weight of the sun (a delta of irradiance E): w(sun, wo) of brdf.hpp; the
@@ -488,8 +492,8 @@ private:
         for (std::size_t k = 0; k < m_c.n; ++k) acc[k] += s * li[k];
     }
 
-    // Golf ball (seed 5.2.3; golfball.hpp): one ray per cell or matrix sub-cell,
-    // weight (1 - s) projected/pi + s lobe(centre) solid angle / S, rotated so that
+    // Golf ball (seed 5.2.3; golfball.hpp): one ray per cell or matrix sub-cell (at
+    // its centre, or with golfball_jitter drawn inside it), weight (1 - s) projected/pi + s lobe(centre) solid angle / S, rotated so that
     // azimuth 0 is the mirror direction's. S = sum of lobe(centre) solid angle over
     // the rays: the discrete lobe is normalised like the continuous one (brdf.hpp:
     // Int lobe/m = 1), so a uniform sky gives rho L exactly for any lobe. When the
@@ -507,20 +511,45 @@ private:
         double ca = h > 1e-12 ? mir[0] / h : 1, sa = h > 1e-12 ? mir[1] / h : 0;
         int matrix = lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDeg) : 0;
         const auto& rays = golfball_rays(matrix);
-        auto local = [&](const GolfRay& r) {
+        auto rotate = [&](double cos_theta, double cos_phi, double sin_phi) {
             // Rotate the ray's azimuth by the mirror azimuth (angle-sum formulas).
-            double cp = r.cos_phi * ca - r.sin_phi * sa, sp = r.sin_phi * ca + r.cos_phi * sa;
-            return Vec3{r.sin_theta * cp, r.sin_theta * sp, r.cos_theta};
+            double st = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
+            double cp = cos_phi * ca - sin_phi * sa, sp = sin_phi * ca + cos_phi * sa;
+            return Vec3{st * cp, st * sp, cos_theta};
         };
+        // Directions and the lobe's density correction: a centre ray stands for its
+        // cell's solid angle; a jittered ray is drawn with density cos / projected
+        // within its cell, so the lobe term of its cell is estimated by
+        // lobe * projected / cos (and the diffuse term by projected / pi exactly).
+        const bool jitter = m_c.opt.golfball_jitter;
+        m_golf_dirs.resize(rays.size());
+        m_golf_lobe_area.resize(rays.size());
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const GolfRay& r = rays[i];
+            if (jitter) {
+                // cos^2 uniform in [cos_lo^2, cos_hi^2] gives density prop. to cos theta.
+                double lo2 = r.cos_lo * r.cos_lo, hi2 = r.cos_hi * r.cos_hi;
+                double c = std::sqrt(lo2 + uniform() * (hi2 - lo2));
+                double phi = r.phi_lo + uniform() * (r.phi_hi - r.phi_lo);
+                m_golf_dirs[i] = rotate(c, std::cos(phi), std::sin(phi));
+                m_golf_lobe_area[i] = r.projected_sr / std::max(c, 1e-9);
+            } else {
+                m_golf_dirs[i] = rotate(r.cos_theta, r.cos_phi, r.sin_phi);
+                m_golf_lobe_area[i] = r.solid_angle_sr;
+            }
+        }
         double lobe_sum = 0;
         if (lobe)
-            for (const GolfRay& r : rays) lobe_sum += m.brdf.lobe_weight(local(r), wo_l) * r.solid_angle_sr;
+            for (std::size_t i = 0; i < rays.size(); ++i)
+                lobe_sum += m.brdf.lobe_weight(m_golf_dirs[i], wo_l) * m_golf_lobe_area[i];
         bool lobe_rays = lobe && lobe_sum >= 0.5;
         double svf = 0;
-        for (const GolfRay& r : rays) {
-            Vec3 d_l = local(r);
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const GolfRay& r = rays[i];
+            const Vec3& d_l = m_golf_dirs[i];
             double w = (1 - s) * r.projected_sr / kPi;
-            if (lobe_rays) w += s * m.brdf.lobe_weight(d_l, wo_l) * r.solid_angle_sr / lobe_sum;
+            if (lobe_rays)
+                w += s * m.brdf.lobe_weight(d_l, wo_l) * m_golf_lobe_area[i] / lobe_sum;
             if (incoming(p, f.to_world(d_l), li)) svf += r.projected_sr / kPi;
             if (w == 0) continue;
             for (std::size_t k = 0; k < m_c.n; ++k) acc[k] += w * li[k];

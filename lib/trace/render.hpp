@@ -53,6 +53,10 @@ struct RenderOptions {
     Sampling sampling = Sampling::Golfball;
     long samples_per_pixel = 1;   // primary rays per pixel, stratified (seed 5.1.4 rec. 7)
     long hemisphere_samples = 64; // montecarlo: rays per hit; dirsig: diffuse pattern size
+    // golfball: draw each cell's ray at random inside its cell (cosine-weighted),
+    // instead of at its centre: a stratified, unbiased estimator whose error falls
+    // with samples_per_pixel; off = the seed's fixed pattern.
+    bool golfball_jitter = false;
     int max_transmissions = 8;    // transmissive facets followed per ray
     int bounces = 1;              // secondary hits take the other facet's radiance one
                                   // bounce deep (seed 5.2.3 step 4)
