@@ -369,14 +369,14 @@ geom::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& tre
 // per pixel `spp` primary rays; per primary hit a shadow ray to the sun (when the sun
 // is above the facet) and the 61 golf-ball rays about the normal, turned to the view's
 // mirror azimuth (golfball.hpp); per golf-ball ray that hits, a shadow ray to the sun
-// from that hit (when the sun is above it). Offsets: 1e-5 of the scene's extent, as
+// from that hit (when the sun is above it). Offsets: 1e-6 of the scene's extent, as
 // render() does.
 BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t spp,
                          const std::vector<scene::Affine>& trees, double extent, unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
     const geom::Vec3 sun = radiometry::direction_from_angles(kSunZenithDeg, kSunAzimuthDeg);
     const auto& golf = trace::golfball_rays(0);
-    const double eps = 1e-5 * extent;
+    const double eps = 1e-6 * extent;
     std::atomic<std::uint64_t> total{0};
     const auto t0 = Clock::now();
     const double c0 = cpu_seconds();

@@ -247,6 +247,7 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     if (job.hemisphere_samples) options.hemisphere_samples = *job.hemisphere_samples;
     if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
     if (job.bounces) options.bounces = *job.bounces;
+    options.golfball_jitter = job.golfball_jitter;
     options.seed = job.seed;
     options.threads = job.threads;
     options.row_begin = st.row_begin;

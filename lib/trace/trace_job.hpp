@@ -28,6 +28,7 @@ struct TraceJob {
     std::optional<long> samples_per_pixel;   // default: the .adv's samples_per_pixel
     std::optional<long> hemisphere_samples;  // default: RenderOptions's
     std::optional<int> max_transmissions;    // default: RenderOptions's
+    bool golfball_jitter = false;            // golfball: each cell's ray at random inside the cell
     std::optional<int> bounces;              // 0 or 1; default: RenderOptions's (1)
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores

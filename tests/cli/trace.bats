@@ -155,6 +155,17 @@ band_bytes() {
     run -1 cmp -s mc.img golf.img
 }
 
+@test "trace --golfball-jitter changes golfball's rays, repeatably" {
+    trace_ok $(inputs) -o centres.img
+    trace_ok $(inputs) --golfball-jitter -o jitter.img
+    trace_ok $(inputs) --golfball-jitter --threads 1 -o jitter_again.img
+    run -1 cmp -s centres.img jitter.img
+    run -0 cmp jitter.img jitter_again.img
+    # Lambertian scene: the jittered golf ball is unbiased and averages 4 x 61 rays per
+    # pixel; 1e-3 is half the smallest radiance term (see the --sampling test).
+    run -0 compare --pixelwise --fail-max 1e-3 jitter.img centres.img
+}
+
 @test "trace --hemisphere-samples changes montecarlo's estimate" {
     trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 8 -o a.img
     trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 32 -o b.img

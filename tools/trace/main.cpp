@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
         "montecarlo: rays per hit; dirsig: diffuse pattern size (default 64)")(
         "max-transmissions", cli::po::value<int>(),
         "transmissive facets followed per ray (default 8)")(
+        "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<int>(),
         "1: hemisphere rays see other facets lit one bounce deep (default); 0: black")(
         "seed", cli::po::value<std::uint64_t>()->default_value(1), "random seed")(
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
         if (vm.count("truth")) job.truth_path = vm["truth"].as<std::string>();
         if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
         job.allow_degenerate = vm.count("allow-degenerate") > 0;
+        job.golfball_jitter = vm.count("golfball-jitter") > 0;
 
         std::optional<cli::Progress> bar;
         trace::TraceHooks hooks;
