@@ -118,7 +118,8 @@ std::pair<long, long> parse_rows(const std::string& text, const std::string& opt
 
 void check_job(const TraceJob& job) {
     if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
-    if (job.output_path.empty() || job.output_path == "-")
+    if (job.output_path.empty()) throw UsageError("no output cube: give -o CUBE");
+    if (job.output_path == "-")
         throw UsageError("a radiance cube cannot be written to standard output: give -o CUBE");
     image::cube_format_of(job.output_path);  // UsageError for an unknown extension
     if (!job.truth_path.empty()) {

@@ -314,7 +314,7 @@ band_bytes() {
 
 @test "trace refuses standard output, a missing -o and unknown cube extensions" {
     trace_bad 2 "a radiance cube cannot be written to standard output" $(inputs) -o -
-    trace_bad 2 "a radiance cube cannot be written to standard output" $(inputs)
+    trace_bad 2 "no output cube: give -o CUBE" $(inputs)
     trace_bad 2 "out.png: unknown cube format" $(inputs) -o out.png
     trace_bad 2 "--truth: " $(inputs) -o out.img --truth out.hdr
 }

@@ -14,24 +14,29 @@ int main(int argc, char** argv) {
     tool.add_positional("input", -1,
                         "look angles (.adv), scene node (.snd), scene (.gdb or .odb),\n"
                         "                    materials (.mat), one .rad per band in band order");
-    tool.add_options()("sampling", cli::po::value<std::string>()->default_value("golfball"),
-                       "hemisphere sampling: dirsig, golfball or montecarlo")(
-        "samples-per-pixel", cli::po::value<long>(),
+    tool.add_options()(
+        "output,o", cli::po::value<std::string>()->value_name("CUBE"),
+        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF); required")(
+        "sampling", cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
+        "hemisphere sampling: dirsig, golfball or montecarlo")(
+        "samples-per-pixel", cli::po::value<long>()->value_name("N"),
         "primary rays per pixel (default: the .adv's samples_per_pixel)")(
-        "hemisphere-samples", cli::po::value<long>(),
+        "hemisphere-samples", cli::po::value<long>()->value_name("N"),
         "montecarlo: rays per hit; dirsig: diffuse pattern size (default 64)")(
-        "max-transmissions", cli::po::value<int>(),
+        "max-transmissions", cli::po::value<int>()->value_name("N"),
         "transmissive facets followed per ray (default 8)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
-        "bounces", cli::po::value<int>(),
+        "bounces", cli::po::value<int>()->value_name("N"),
         "1: hemisphere rays see other facets lit one bounce deep (default); 0: black")(
-        "seed", cli::po::value<std::uint64_t>()->default_value(1), "random seed")(
-        "threads", cli::po::value<unsigned>()->default_value(0), "threads (0: all cores)")(
-        "rows", cli::po::value<std::string>(), "render rows A to B-1 only (A:B)")(
-        "truth", cli::po::value<std::string>(), "also write the truth layers to FILE")(
-        "tmp", cli::po::value<std::string>(), "facet temperatures (.tmp): add emission")(
+        "seed", cli::po::value<std::uint64_t>()->default_value(1)->value_name("N"), "random seed")(
+        "threads", cli::po::value<unsigned>()->default_value(0)->value_name("N"),
+        "threads (0: all cores)")("rows", cli::po::value<std::string>()->value_name("A:B"),
+                                  "render rows A to B-1 only")(
+        "truth", cli::po::value<std::string>()->value_name("FILE"),
+        "also write the truth layers to FILE")("tmp",
+                                               cli::po::value<std::string>()->value_name("FILE"),
+                                               "facet temperatures (.tmp): add emission")(
         "allow-degenerate", "skip degenerate facets with a warning instead of failing");
-    tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         auto inputs = cli::args(vm, "input");
         if (inputs.size() < 5)
@@ -42,7 +47,7 @@ int main(int argc, char** argv) {
         job.scene_path = inputs[2];
         job.mat_path = inputs[3];
         job.rad_paths.assign(inputs.begin() + 4, inputs.end());
-        job.output_path = vm["output"].as<std::string>();
+        if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
         job.sampling = trace::parse_sampling(vm["sampling"].as<std::string>());
         if (vm.count("samples-per-pixel"))
             job.samples_per_pixel = vm["samples-per-pixel"].as<long>();
