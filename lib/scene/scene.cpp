@@ -64,6 +64,7 @@ void drop_unused_vertices(MeshData& m) {
 
 struct Mesh {
     RTCScene scene = nullptr;
+    bool attached_directly = false;  // its geometry is in the top scene (place())
     MeshData data;  // vertices (scaled to scene units), triangle_facet, facets, origins
 };
 
@@ -180,14 +181,28 @@ void Scene::Impl::grow_bounds(const std::vector<float>& v, const Affine& t) {
 void Scene::place(std::size_t mesh, const Affine& t, std::string key_prefix) {
     if (mesh >= m_impl->meshes.size()) throw std::out_of_range("Scene::place: no such mesh");
     Placement p{mesh, std::move(key_prefix), normal_matrix(t)};
-    RTCGeometry inst = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(inst, m_impl->meshes[mesh].scene);
-    float m[12];
-    for (int i = 0; i < 12; ++i) m[i] = static_cast<float>(t[i]);
-    rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
-    rtcCommitGeometry(inst);
-    rtcAttachGeometryByID(m_impl->top, inst, static_cast<unsigned>(m_impl->placements.size()));
-    rtcReleaseGeometry(inst);
+    auto id = static_cast<unsigned>(m_impl->placements.size());
+    Mesh& target = m_impl->meshes[mesh];
+    RTCGeometry direct = t == identity_affine() && !target.attached_directly &&
+                                 !target.data.triangle_facet.empty()
+                             ? rtcGetGeometry(target.scene, 0)
+                             : nullptr;
+    if (direct) {
+        target.attached_directly = true;
+        // An untransformed copy (a lone .gdb, a terrain) is attached to the top scene
+        // itself, not as an instance: one BVH level less on every ray. Embree allows a
+        // geometry in several scenes; hits report it by geomID = the placement.
+        rtcAttachGeometryByID(m_impl->top, direct, id);
+    } else {
+        RTCGeometry inst = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(inst, m_impl->meshes[mesh].scene);
+        float m[12];
+        for (int i = 0; i < 12; ++i) m[i] = static_cast<float>(t[i]);
+        rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+        rtcCommitGeometry(inst);
+        rtcAttachGeometryByID(m_impl->top, inst, id);
+        rtcReleaseGeometry(inst);
+    }
     m_impl->check();
     const MeshData& data = m_impl->meshes[mesh].data;
     m_impl->placements.push_back(std::move(p));
@@ -235,7 +250,8 @@ std::optional<Hit> Scene::Impl::query(const Vec3& o, const Vec3& d, double tnear
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     Hit h;
     h.distance = rh.ray.tfar;
-    h.object = rh.hit.instID[0];
+    // Instances report their placement as instID; direct placements as geomID.
+    h.object = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
     const Placement& p = placements[h.object];
     h.facet = meshes[p.mesh].data.triangle_facet[rh.hit.primID];
     // Embree 3 returns the unnormalised geometric normal of the instanced triangle in
