@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "atmos/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geom/camera.hpp"
@@ -185,10 +186,6 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
     for (std::size_t b = 0; b < job.rad_paths.size(); ++b) {
         const std::string& path = job.rad_paths[b];
         rads.push_back(io::read_rad_file(path));
-        if (!rads.back().sky)
-            throw DataError({path, 0},
-                            "no SIGCHAIN_RAD block: the sun and the sky need a sigchain .rad "
-                            "(build_radiance(1), issue 3); a DIRSIG .rad has neither");
         const long want = snd.bands[b].sample_count();
         if (static_cast<long>(rads.back().samples.size()) != want)
             say(hooks.warn, path + ": " + std::to_string(rads.back().samples.size()) +
@@ -196,6 +193,18 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
                                 job.snd_path + " has " + std::to_string(want));
     }
     radiometry::Atmosphere atmosphere = radiometry::Atmosphere::from_rads(rads, job.rad_paths);
+    if (!atmosphere.has_sky()) {
+        // A DIRSIG .rad (seed fig. 4.33) has no SIGCHAIN_RAD block: no sun position and
+        // no downwelled sky. The sun is placed from the .snd's date, GMT time and place
+        // (NREL SPA, lib/atmos); the sky is left dark, which the user is told.
+        atmos::SolarPosition sun = atmos::solar_position(snd);
+        atmosphere.set_sun(sun.zenith_deg, sun.azimuth_deg);
+        say(hooks.warn, job.rad_paths.front() +
+                            ": a DIRSIG .rad (no SIGCHAIN_RAD block): the sun is placed from " +
+                            job.snd_path + " (zenith " + format("%.3f", sun.zenith_deg) +
+                            " deg, azimuth " + format("%.3f", sun.azimuth_deg) +
+                            " deg) and the downwelled sky is zero");
+    }
     const auto& grid = atmosphere.grid();
     say(hooks.info, "spectral grid: " + std::to_string(grid.size()) + " samples in " +
                         std::to_string(grid.band_count()) + " band(s)");

@@ -289,10 +289,26 @@ band_bytes() {
     [[ "$stderr" == *"Try 'trace --help'."* ]]
 }
 
-@test "trace: a DIRSIG .rad without the SIGCHAIN_RAD block is refused" {
-    trace_bad 1 "$SEED/hawkeye_band3.rad: no SIGCHAIN_RAD block" "$DATA/box.adv" \
-        "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" "$SEED/hawkeye_band3.rad" \
-        -o out.img
+@test "trace: a DIRSIG .rad (no SIGCHAIN_RAD block) renders with the sun from the .snd and no sky" {
+    # NREL SPA for 30 Sep 1995 19 h GMT at 43.08333 N 77.66667 W (lib/atmos tests
+    # check SPA against NREL's worked example): zenith 53.178 deg, azimuth 218.346.
+    run -0 --separate-stderr trace "$DATA/box.adv" "$DATA/dirsig.snd" "$GDB" "$DATA/box.mat" \
+        "$SEED/hawkeye_band3.rad" -o out.img
+    [[ "$stderr" == *"hawkeye_band3.rad: a DIRSIG .rad (no SIGCHAIN_RAD block): the sun is placed from"*"(zenith 53.178 deg, azimuth 218.346 deg) and the downwelled sky is zero"* ]] ||
+        fail "stderr: $stderr"
+    assert [ -s out.img ]
+    # One float32 band per spectral sample of the DIRSIG .rad (7).
+    assert_equal "$(grep -E '^bands *=' out.hdr | tr -d ' ')" "bands=7"
+}
+
+@test "trace: a DIRSIG .rad mixed with sigchain .rad files is refused" {
+    run -1 --separate-stderr trace "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$SEED/hawkeye_band3.rad" -o out.img
+    assert_output ''
+    # After a warning about its sample count, the error names the file that differs.
+    [[ "${stderr_lines[-1]}" == "trace: $SEED/hawkeye_band3.rad: "* ]] || fail "stderr: $stderr"
+    assert [ ! -e out.img ]
+    assert_no_temp_files
 }
 
 @test "trace: bad --rows values are usage errors" {
