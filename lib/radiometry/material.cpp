@@ -115,6 +115,8 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
         o.thickness_cm = m.thickness_cm.value_or(0);
         o.double_sided = m.double_sided.value_or(false);
         o.gaussian_texture = m.use_gaussian_texture.value_or(false);
+        if (!m.texture_file.empty())
+            o.texture = read_texture_map(resolve(mat_path, m.texture_file), o);
         out.push_back(std::move(o));
     }
     return from_optics(std::move(out));

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,6 +16,18 @@
 #include "radiometry/spectral.hpp"
 
 namespace sigchain::radiometry {
+
+// A DIRSIG texture map (TEXTURE_FILE; seed 5.2.5.3): a raster whose cell values are
+// .ems curve numbers, laid over the scene by the raster's geotransform, which maps
+// (column, row) to scene x (east) and y (north) in scene units (mat(5)).
+struct TextureMap {
+    std::string file;
+    long rows = 0, columns = 0;
+    std::array<double, 6> geotransform{};  // GDAL order: x0, dx/dcol, dx/drow, y0, dy/dcol, dy/drow
+    std::vector<std::uint16_t> curve;      // rows * columns, row-major
+    // The curve number at scene point (x, y), or -1 outside the raster.
+    int curve_at(double x, double y) const;
+};
 
 struct MaterialOptics {
     long id = 0;
@@ -33,6 +47,15 @@ struct MaterialOptics {
     double thickness_cm = 0;                  // THICKNESS (a facet's own overrides)
     bool double_sided = false;
     bool gaussian_texture = false;
+    std::shared_ptr<const TextureMap> texture;  // TEXTURE_FILE, or null
+
+    // The .ems curve at scene point (x, y): the texture map's where it covers the
+    // point, else `facet_curve` (the facet's own, from land use; 0 by default).
+    int curve_at(double x, double y, int facet_curve) const {
+        if (!texture) return facet_curve;
+        int c = texture->curve_at(x, y);
+        return c < 0 ? facet_curve : c;
+    }
 
     // Directional emissivity eps(lambda) * F(theta) of curve `curve` for an angle
     // `theta_deg` from the normal, into `out` (grid size).
@@ -44,6 +67,12 @@ struct MaterialOptics {
     // Slab transmittance exp(-k d / |cos theta|) per grid sample (ext(5)), d in cm.
     void transmittance(double cos_theta, double thickness_cm, std::span<double> out) const;
 };
+
+// Reads a texture map with GDAL (band 1, any format GDAL reads). Every cell must be a
+// curve number of `m`'s .ems (0 .. curves - 1) and the raster must be georeferenced
+// (a geotransform); else DataError at `m`'s .mat line naming the file.
+std::shared_ptr<const TextureMap> read_texture_map(const std::string& path,
+                                                   const MaterialOptics& m);
 
 class MaterialLibrary {
 public:

@@ -375,8 +375,8 @@ private:
         double* in = m_arena.take();
         double cos_o = std::clamp(dot3(n, wo), 0.0, 1.0);
         double theta_o = std::acos(cos_o) * kDeg;
-        m.reflectance(static_cast<int>(a.texture_curve), theta_o, thickness_of(a, m),
-                      {rho, m_c.n});
+        const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
+        m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
         double s = specularity_of(m);
         double sky_factor = (1 - s) / kPi * (1 + n[2]) / 2;
         for (std::size_t k = 0; k < m_c.n; ++k) in[k] = sky_factor * m_c.sky_e[k];
@@ -394,7 +394,7 @@ private:
         }
         for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * in[k];
         if (m_c.emission)
-            add_emission(m, static_cast<int>(a.texture_curve), theta_o, temperature_k(hit),
+            add_emission(m, curve, theta_o, temperature_k(hit),
                          out);
     }
 
@@ -416,7 +416,7 @@ private:
         Vec3 wo_l = f.to_local(wo);
         double cos_o = std::clamp(wo_l[2], 0.0, 1.0);
         double theta_o = std::acos(cos_o) * kDeg;
-        int curve = static_cast<int>(a.texture_curve);
+        int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
         double* rho = m_arena.take();
         double* solar = m_arena.take();
         double* down = m_arena.take();

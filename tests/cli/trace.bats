@@ -346,3 +346,15 @@ band_bytes() {
     trace_bad 1 "no_such_dir/out.img: cannot create" $(inputs) -o no_such_dir/out.img
     [ ! -e no_such_dir ]
 }
+
+@test "trace: a TEXTURE_FILE brightens the grass it maps to curve 1, and nothing else" {
+    trace_ok "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" \
+        "$DATA/band2.rad" -o plain.img
+    trace_ok "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/textured.mat" "$DATA/band1.rad" \
+        "$DATA/band2.rad" -o textured.img
+    # Curve 1 reflects 0.8 where curve 0 reflects 0.1-0.4: the mapped ground (about a
+    # quarter of the square) raises the mean radiance.
+    run -0 compare --pixelwise textured.img plain.img
+    bias="$(awk '$1 == "all" { print $5 }' <<<"$output")"
+    awk -v b="$bias" 'BEGIN { exit !(b > 0.001) }' || fail "bias $bias"
+}

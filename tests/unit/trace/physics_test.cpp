@@ -128,12 +128,6 @@ RenderResult run(const Case& c, const RayGenerator& camera, Sampling sampling,
     return render(in, o);
 }
 
-int truth_channel(const RenderResult& r, const std::string& name) {
-    const auto& names = r.truth.channel_names;
-    auto it = std::find(names.begin(), names.end(), name);
-    EXPECT_NE(it, names.end()) << "no truth layer " << name;
-    return it == names.end() ? 0 : static_cast<int>(it - names.begin());
-}
 
 // A 2 km square ground plate at z = 0 (so hemisphere rays from the imaged middle
 // escape over it, never under its edge), material 1.
