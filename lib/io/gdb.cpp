@@ -260,6 +260,18 @@ std::string label(const std::string& kind, const std::string& name, const std::s
 
 }  // namespace
 
+std::string polygon_degeneracy(const std::vector<Vec3>& v) {
+    double size = facet_size(v);
+    if (size == 0) return "all vertices coincide";
+    for (std::size_t i = 0; i < v.size(); ++i)
+        for (std::size_t j = i + 1; j < v.size(); ++j)
+            if (norm(sub(v[i], v[j])) <= 1e-9 * size)
+                return "vertices " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                       " coincide";
+    if (norm(newell_normal(v)) <= 1e-9 * size * size) return "zero area (collinear vertices)";
+    return "";
+}
+
 std::vector<std::string> gdb_problems(const Gdb& gdb) {
     std::vector<std::string> out;
     for (const auto& obj : gdb.objects) {

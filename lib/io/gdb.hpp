@@ -68,6 +68,13 @@ inline constexpr double kGdbPlanarTolerance = 1e-3;
 inline constexpr double kGdbNormalToleranceDeg = 1.0;
 std::vector<std::string> gdb_problems(const Gdb& gdb);
 
+// Why a polygon (3 or more vertices, in order) is degenerate, or "" when it is not:
+// the first of gdb_problems' degeneracy criteria that it meets: all vertices coincide;
+// two vertices closer than 1e-9 x the polygon's size (its largest vertex distance);
+// a Newell area vector shorter than 1e-9 x size^2 ("zero area (collinear vertices)").
+// lib/scene uses it for meshes from every source (.gdb, OBJ, DEM).
+std::string polygon_degeneracy(const std::vector<Vec3>& polygon);
+
 // Number of facets over all objects and parts.
 std::size_t gdb_facet_count(const Gdb& gdb);
 

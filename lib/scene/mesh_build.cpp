@@ -6,39 +6,9 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "io/gdb.hpp"
 
 namespace sigchain::scene {
-
-namespace {
-
-double distance(const Vec3& a, const Vec3& b) {
-    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-}
-
-}  // namespace
-
-std::string polygon_degeneracy(const std::vector<Vec3>& v) {
-    double size = 0;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        for (std::size_t j = i + 1; j < v.size(); ++j) size = std::max(size, distance(v[i], v[j]));
-    if (size == 0) return "all vertices coincide";
-    for (std::size_t i = 0; i < v.size(); ++i)
-        for (std::size_t j = i + 1; j < v.size(); ++j)
-            if (distance(v[i], v[j]) <= 1e-9 * size)
-                return "vertices " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
-                       " coincide";
-    // Newell's normal: twice the polygon's vector area (as io::gdb_problems).
-    Vec3 n{};
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const Vec3& a = v[i];
-        const Vec3& b = v[(i + 1) % v.size()];
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    if (std::hypot(n[0], n[1], n[2]) <= 1e-9 * size * size) return "zero area (collinear vertices)";
-    return "";
-}
 
 std::string facet_where(const FacetOrigin& origin) {
     std::string where = SourceLocation{origin.file, origin.line}.str();
@@ -69,7 +39,7 @@ bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
     if (m_policy != DegeneratePolicy::Keep) {
         m_polygon.clear();
         for (std::uint32_t i : polygon) m_polygon.push_back(m_points.at(i));
-        std::string why = polygon_degeneracy(m_polygon);
+        std::string why = io::polygon_degeneracy(m_polygon);
         if (!why.empty()) {
             if (m_policy == DegeneratePolicy::Error)
                 throw DataError({origin.file, origin.line},

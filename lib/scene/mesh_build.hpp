@@ -17,12 +17,6 @@ enum class DegeneratePolicy {
     Error,  // throw DataError naming it
 };
 
-// Why a polygon (3 or more vertices, in order) is degenerate, or "" when it is not.
-// The criteria of io::gdb_problems (lib/io/gdb.cpp): all vertices coincide; two
-// vertices closer than 1e-9 x the polygon's size (its largest vertex distance); a
-// Newell area vector shorter than 1e-9 x size^2 ("zero area (collinear vertices)").
-std::string polygon_degeneracy(const std::vector<Vec3>& polygon);
-
 // Appends facets to a MeshData. Vertices are added once and shared by index.
 class MeshBuilder {
 public:
