@@ -19,6 +19,7 @@
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
 #include "trace/render.hpp"
+#include "test_scene.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -28,72 +29,8 @@ using radiometry::Brdf;
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
-// Parallel rays in direction `dir` through a grid of `rows` x `columns` points of
-// spacing `pitch` on the plane z = `height` ... moved back along -dir from the ground
-// point under each pixel, so pixel (r, c) looks at ground point
-// (x0 + (c + 0.5) pitch, y0 - (r + 0.5) pitch, 0) when the ray is unobstructed.
-class OrthoCamera final : public RayGenerator {
-public:
-    OrthoCamera(long rows, long columns, double pitch, double x0, double y0, Vec3 dir,
-                double distance = 100)
-        : m_rows(rows), m_columns(columns), m_pitch(pitch), m_x0(x0), m_y0(y0), m_dir(dir),
-          m_distance(distance) {
-        double n = std::hypot(dir[0], dir[1], dir[2]);
-        for (double& v : m_dir) v /= n;
-    }
-    long rows() const override { return m_rows; }
-    long columns() const override { return m_columns; }
-    void ray(double row, double column, Vec3& origin, Vec3& direction) const override {
-        Vec3 ground{m_x0 + column * m_pitch, m_y0 - row * m_pitch, 0};
-        for (int i = 0; i < 3; ++i) origin[i] = ground[i] - m_distance * m_dir[i];
-        direction = m_dir;
-    }
-    double view_angle_deg(const Vec3&) const override { return 0; }
-
-private:
-    long m_rows, m_columns;
-    double m_pitch, m_x0, m_y0;
-    Vec3 m_dir;
-    double m_distance;
-};
-
-// Scene geometry from quads (counter-clockwise seen from the side they face).
-struct QuadBuilder {
-    scene::MeshData mesh;
-    void quad(const std::array<Vec3, 4>& v, long material) {
-        auto base = static_cast<std::uint32_t>(mesh.vertices.size() / 3);
-        for (const auto& p : v)
-            for (double c : p) mesh.vertices.push_back(static_cast<float>(c));
-        auto facet = static_cast<std::uint32_t>(mesh.facets.size());
-        mesh.triangles.insert(mesh.triangles.end(),
-                              {base, base + 1, base + 2, base, base + 2, base + 3});
-        mesh.triangle_facet.insert(mesh.triangle_facet.end(), {facet, facet});
-        scene::FacetAttributes a;
-        a.material_id = material;
-        mesh.facets.push_back(a);
-        scene::FacetOrigin o;
-        o.file = "physics_test";
-        o.id = "1-1-" + std::to_string(facet + 1);
-        o.description = "facet " + o.id;
-        mesh.origins.push_back(o);
-    }
-    // Axis-aligned box [lo, hi] with outward faces (no bottom).
-    void box(const Vec3& lo, const Vec3& hi, long material) {
-        double x0 = lo[0], y0 = lo[1], z0 = lo[2], x1 = hi[0], y1 = hi[1], z1 = hi[2];
-        quad({{{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}}, material);  // top
-        quad({{{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}}, material);  // south
-        quad({{{x1, y1, z0}, {x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}}}, material);  // north
-        quad({{{x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}}}, material);  // east
-        quad({{{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}}, material);  // west
-    }
-    scene::Scene build() {
-        scene::Scene s;
-        std::size_t m = s.add_mesh(mesh);
-        s.place(m, scene::identity_affine());
-        s.commit();
-        return s;
-    }
-};
+using test::Mesh;
+using Camera = test::Ortho;
 
 const std::vector<double> kWavelengths{0.5, 0.6, 0.7};
 
@@ -132,9 +69,9 @@ RenderResult run(const Case& c, const RayGenerator& camera, Sampling sampling,
 // A 2 km square ground plate at z = 0 (so hemisphere rays from the imaged middle
 // escape over it, never under its edge), material 1.
 scene::Scene plate() {
-    QuadBuilder q;
+    Mesh q;
     q.quad({{{-1000, -1000, 0}, {1000, -1000, 0}, {1000, 1000, 0}, {-1000, 1000, 0}}}, 1);
-    return q.build();
+    return test::single(q.data);
 }
 
 // --- White furnace: no sun, uniform sky L, Lambertian r, tau2 = 1, L_us = 0 -> r L. ---
@@ -144,7 +81,7 @@ TEST(Physics, WhiteFurnaceGolfballAndDirsigAreExact) {
     Case c{plate(), atmosphere(120, 0, 0.2, sky),
            radiometry::MaterialLibrary::from_optics(
                {radiometry::grey_material(1, r, kWavelengths.size())})};
-    OrthoCamera cam(8, 8, 1.0, -4, 4, {0, 0, -1});
+    Camera cam(8, 8, 1.0, -4, 4, {0, 0, -1});
     for (Sampling s : {Sampling::Golfball, Sampling::Dirsig}) {
         RenderResult res = run(c, cam, s);
         ASSERT_EQ(res.radiance.channels, 3);
@@ -159,7 +96,7 @@ TEST(Physics, WhiteFurnaceMonteCarloWithinStatisticalError) {
     Case c{plate(), atmosphere(120, 0, 0.2, sky),
            radiometry::MaterialLibrary::from_optics(
                {radiometry::grey_material(1, r, kWavelengths.size())})};
-    OrthoCamera cam(16, 16, 1.0, -8, 8, {0, 0, -1});
+    Camera cam(16, 16, 1.0, -8, 8, {0, 0, -1});
     RenderResult res = run(c, cam, Sampling::MonteCarlo, 32);
     // Mean over 256 independent pixels: within 4 standard errors of r L, the standard
     // error estimated from the pixels themselves (plus float rounding); a zero-variance
@@ -181,7 +118,7 @@ TEST(Physics, LambertianPlateUnderSunAndSky) {
     Case c{plate(), atmosphere(zenith, 135, es, sky, tau2, lus),
            radiometry::MaterialLibrary::from_optics(
                {radiometry::grey_material(1, r, kWavelengths.size())})};
-    OrthoCamera cam(6, 6, 1.0, -3, 3, {0, 0, -1});
+    Camera cam(6, 6, 1.0, -3, 3, {0, 0, -1});
     const double expected = tau2 * r * (es * std::cos(rad(zenith)) / kPi + sky) + lus;
     for (Sampling s : {Sampling::Golfball, Sampling::Dirsig, Sampling::MonteCarlo}) {
         RenderResult res = run(c, cam, s, 64);
@@ -206,21 +143,21 @@ double strip_view_factor(double x, double w, double h) {
 
 struct Canyon {
     Case c;
-    OrthoCamera cam;
+    Camera cam;
 };
 
 Canyon canyon(double w, double h, long columns, double floor_r, double sky) {
-    QuadBuilder q;
+    Mesh q;
     const double len = 200 * w;  // long enough that the open ends add < 0.1%
     q.quad({{{-w / 2, -len, 0}, {w / 2, -len, 0}, {w / 2, len, 0}, {-w / 2, len, 0}}}, 1);
     // West wall faces east, east wall faces west.
     q.quad({{{-w / 2, len, 0}, {-w / 2, -len, 0}, {-w / 2, -len, h}, {-w / 2, len, h}}}, 2);
     q.quad({{{w / 2, -len, 0}, {w / 2, len, 0}, {w / 2, len, h}, {w / 2, -len, h}}}, 2);
-    return {Case{q.build(), atmosphere(120, 0, 0.2, sky),
+    return {Case{test::single(q.data), atmosphere(120, 0, 0.2, sky),
                  radiometry::MaterialLibrary::from_optics(
                      {radiometry::grey_material(1, floor_r, kWavelengths.size()),
                       radiometry::grey_material(2, 0.0, kWavelengths.size())})},
-            OrthoCamera(1, columns, w / columns, -w / 2, 0.5 * w / columns, {0, 0, -1})};
+            Camera(1, columns, w / columns, -w / 2, 0.5 * w / columns, {0, 0, -1})};
 }
 
 // Floor radiance / (r L) is the floor's sky-view factor (walls are black, so the
@@ -298,16 +235,16 @@ TEST(Physics, CanyonSkyViewFactorMonteCarloConverges) {
 // The shadow on the ground spans x in [-2 - 3 tan(45), -2] = [-5, -2] for y in [-2, 2].
 
 TEST(Physics, BoxShadowMatchesTrigonometry) {
-    QuadBuilder q;
+    Mesh q;
     q.quad({{{-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}}}, 1);
     q.box({-2, -2, 0}, {2, 2, 3}, 1);
     const double r = 0.5, es = 0.2, sky = 0.001;
-    Case c{q.build(), atmosphere(45, 90, es, sky),
+    Case c{test::single(q.data), atmosphere(45, 90, es, sky),
            radiometry::MaterialLibrary::from_optics(
                {radiometry::grey_material(1, r, kWavelengths.size())})};
     const double pitch = 0.25;
     // Rows cover y in [-4, 4], columns x in [-8, 0]: the west half.
-    OrthoCamera cam(32, 32, pitch, -8, 4, {0, 0, -1});
+    Camera cam(32, 32, pitch, -8, 4, {0, 0, -1});
     RenderResult res = run(c, cam, Sampling::Golfball, 0);
     // Sunlit ground: r (Es cos45 / pi + ~sky); shadowed: r * sky at most. Threshold halfway.
     const double lit = r * es * std::cos(rad(45)) / kPi;
@@ -334,7 +271,7 @@ TEST(Physics, SunInSpecularDirectionIsFiniteForEveryStrategy) {
     // Sun due north at zenith 30; the view ray goes north-down at 30 deg, so the
     // mirror direction of the viewer is the sun.
     Vec3 dir{0, std::sin(rad(zenith)), -std::cos(rad(zenith))};
-    OrthoCamera cam(4, 4, 1.0, -2, 2, dir);
+    Camera cam(4, 4, 1.0, -2, 2, dir);
     for (bool delta : {false, true}) {
         Brdf brdf = delta ? Brdf::delta() : Brdf::phong(n);
         Case c{plate(), atmosphere(zenith, 0, es, sky),
