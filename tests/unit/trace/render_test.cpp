@@ -460,12 +460,7 @@ TEST(Render, MonteCarloWithALobeConservesEnergyUnderAUniformSky) {
     o.hemisphere_samples = 16;
     o.threads = 2;
     RenderResult res = run(sc, mats, atm, cam, o);
-    const std::size_t n = res.radiance.plane_size();
-    const auto& d = res.radiance.data;
-    double mean = std::accumulate(d.begin(), d.begin() + static_cast<long>(n), 0.0) / n;
-    double var = 0;
-    for (std::size_t i = 0; i < n; ++i) var += (d[i] - mean) * (d[i] - mean) / (n - 1);
-    double se = std::sqrt(var / n);
+    auto [mean, se] = test::first_channel_mean(res.radiance);
     RecordProperty("mean_over_rL", std::to_string(mean / (r * sky)));
     EXPECT_NEAR(mean, r * sky, 4 * se + 1e-6 * r * sky);
 }

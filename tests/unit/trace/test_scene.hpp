@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "scene/scene.hpp"
@@ -76,6 +77,20 @@ inline scene::Scene single(scene::MeshData m) {
     s.place(s.add_mesh(std::move(m)), scene::identity_affine());
     s.commit();
     return s;
+}
+
+// Mean of the first channel of a render over its pixels and the standard error of
+// that mean, estimated from the pixels themselves (independent per-pixel estimates).
+struct MeanError {
+    double mean = 0, standard_error = 0;
+};
+inline MeanError first_channel_mean(const image::Image& img) {
+    const std::size_t n = img.plane_size();
+    const auto& d = img.data;
+    double mean = std::accumulate(d.begin(), d.begin() + static_cast<long>(n), 0.0) / n;
+    double var = 0;
+    for (std::size_t i = 0; i < n; ++i) var += (d[i] - mean) * (d[i] - mean) / (n - 1);
+    return {mean, std::sqrt(var / n)};
 }
 
 }  // namespace sigchain::trace::test
