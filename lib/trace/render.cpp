@@ -461,7 +461,7 @@ private:
 public:
     std::vector<double> m_truth_rho, m_truth_solar, m_truth_down;
     std::vector<Vec3> m_golf_dirs;          // golf-ball ray directions (local frame)
-    std::vector<double> m_golf_lobe_area;   // solid angle each ray stands for (lobe term)
+    std::vector<double> m_golf_lobe;        // golf-ball rays' lobe terms (lobe x solid angle)
 
 private:
     // Weight of the sun (a delta of irradiance E): w(sun, wo) of brdf.hpp; the
@@ -511,46 +511,47 @@ private:
         double ca = h > 1e-12 ? mir[0] / h : 1, sa = h > 1e-12 ? mir[1] / h : 0;
         int matrix = lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDeg) : 0;
         const auto& rays = golfball_rays(matrix);
-        auto rotate = [&](double cos_theta, double cos_phi, double sin_phi) {
+        auto rotate = [&](double cos_theta, double sin_theta, double cos_phi, double sin_phi) {
             // Rotate the ray's azimuth by the mirror azimuth (angle-sum formulas).
-            double st = std::sqrt(std::max(0.0, 1 - cos_theta * cos_theta));
             double cp = cos_phi * ca - sin_phi * sa, sp = sin_phi * ca + cos_phi * sa;
-            return Vec3{st * cp, st * sp, cos_theta};
+            return Vec3{sin_theta * cp, sin_theta * sp, cos_theta};
         };
-        // Directions and the lobe's density correction: a centre ray stands for its
-        // cell's solid angle; a jittered ray is drawn with density cos / projected
-        // within its cell, so the lobe term of its cell is estimated by
-        // lobe * projected / cos (and the diffuse term by projected / pi exactly).
+        // Directions, and each ray's lobe term lobe(d) x the solid angle it stands for:
+        // a centre ray stands for its cell's solid angle; a jittered ray is drawn with
+        // density cos / projected within its cell, so its cell's lobe integral is
+        // estimated by lobe * projected / cos (the diffuse term is projected / pi
+        // exactly either way). The lobe terms are computed once and normalised below.
         const bool jitter = m_c.opt.golfball_jitter;
         m_golf_dirs.resize(rays.size());
-        m_golf_lobe_area.resize(rays.size());
+        m_golf_lobe.assign(rays.size(), 0.0);
+        double lobe_sum = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const GolfRay& r = rays[i];
+            double area = r.solid_angle_sr;
             if (jitter) {
                 // cos^2 uniform in [cos_lo^2, cos_hi^2] gives density prop. to cos theta.
                 double lo2 = r.cos_lo * r.cos_lo, hi2 = r.cos_hi * r.cos_hi;
-                double c = std::sqrt(lo2 + uniform() * (hi2 - lo2));
+                double c2 = lo2 + uniform() * (hi2 - lo2);
+                double c = std::sqrt(c2);
                 double phi = r.phi_lo + uniform() * (r.phi_hi - r.phi_lo);
-                m_golf_dirs[i] = rotate(c, std::cos(phi), std::sin(phi));
-                m_golf_lobe_area[i] = r.projected_sr / std::max(c, 1e-9);
+                m_golf_dirs[i] = rotate(c, std::sqrt(std::max(0.0, 1 - c2)), std::cos(phi),
+                                        std::sin(phi));
+                area = r.projected_sr / std::max(c, 1e-9);
             } else {
-                m_golf_dirs[i] = rotate(r.cos_theta, r.cos_phi, r.sin_phi);
-                m_golf_lobe_area[i] = r.solid_angle_sr;
+                m_golf_dirs[i] = rotate(r.cos_theta, r.sin_theta, r.cos_phi, r.sin_phi);
+            }
+            if (lobe) {
+                m_golf_lobe[i] = m.brdf.lobe_weight(m_golf_dirs[i], wo_l) * area;
+                lobe_sum += m_golf_lobe[i];
             }
         }
-        double lobe_sum = 0;
-        if (lobe)
-            for (std::size_t i = 0; i < rays.size(); ++i)
-                lobe_sum += m.brdf.lobe_weight(m_golf_dirs[i], wo_l) * m_golf_lobe_area[i];
         bool lobe_rays = lobe && lobe_sum >= 0.5;
         double svf = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const GolfRay& r = rays[i];
-            const Vec3& d_l = m_golf_dirs[i];
             double w = (1 - s) * r.projected_sr / kPi;
-            if (lobe_rays)
-                w += s * m.brdf.lobe_weight(d_l, wo_l) * m_golf_lobe_area[i] / lobe_sum;
-            if (incoming(p, f.to_world(d_l), li)) svf += r.projected_sr / kPi;
+            if (lobe_rays) w += s * m_golf_lobe[i] / lobe_sum;
+            if (incoming(p, f.to_world(m_golf_dirs[i]), li)) svf += r.projected_sr / kPi;
             if (w == 0) continue;
             for (std::size_t k = 0; k < m_c.n; ++k) acc[k] += w * li[k];
         }
