@@ -358,3 +358,16 @@ band_bytes() {
     bias="$(awk '$1 == "all" { print $5 }' <<<"$output")"
     awk -v b="$bias" 'BEGIN { exit !(b > 0.001) }' || fail "bias $bias"
 }
+
+@test "trace --bounces 0 makes neighbours black (the image darkens); other values are usage errors" {
+    trace_ok $(inputs) -o one.img
+    trace_ok $(inputs) --bounces 1 -o one_again.img
+    cmp one.img one_again.img
+    trace_ok $(inputs) --bounces 0 -o zero.img
+    # Light reflected by the box and the lawn is gone: the mean radiance drops.
+    run -0 compare --pixelwise zero.img one.img
+    bias="$(awk '$1 == "all" { print $5 }' <<<"$output")"
+    awk -v b="$bias" 'BEGIN { exit !(b < 0) }' || fail "bias $bias"
+    trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces 2 -o out.img
+    trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces -1 -o out.img
+}
