@@ -14,14 +14,12 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "image/gdal.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 
 namespace sigchain::image {
-namespace {
 
-// Registers the drivers once and keeps GDAL quiet: its errors become our messages, and
-// no .aux.xml side files are written next to inputs or outputs.
 void gdal_init() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -35,6 +33,8 @@ std::string gdal_message() {
     const char* m = CPLGetLastErrorMsg();
     return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
 }
+
+namespace {
 
 // ENVI lists are "{a, b, c}"; a plain number is a one-element list.
 std::vector<double> parse_number_list(const std::string& text) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "io/spectral_curve.hpp"
 
 namespace sigchain::radiometry {
 
@@ -277,12 +278,7 @@ void Atmosphere::path(double view_angle_deg, std::span<double> tau2, std::span<d
 }
 
 double Atmosphere::range_km(double view_angle_deg) const {
-    const Data& d = *m_data;
-    std::size_t i = 0;
-    double f = 0;
-    bracket(d.view_angles_deg, view_angle_deg, i, f);
-    if (d.range_km.size() == 1) return d.range_km[0];
-    return (1 - f) * d.range_km[i] + f * d.range_km[i + 1];
+    return io::interpolate_clamped(m_data->view_angles_deg, m_data->range_km, view_angle_deg);
 }
 
 double Atmosphere::min_view_angle_deg() const { return m_data->view_angles_deg.front(); }

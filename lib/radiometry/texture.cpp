@@ -2,9 +2,9 @@
 #include <gdal_priv.h>
 
 #include <cmath>
-#include <mutex>
 
 #include "core/error.hpp"
+#include "image/gdal.hpp"
 #include "radiometry/material.hpp"
 
 namespace sigchain::radiometry {
@@ -35,11 +35,10 @@ int TextureMap::curve_at(double x, double y) const {
 
 std::shared_ptr<const TextureMap> read_texture_map(const std::string& path,
                                                    const MaterialOptics& m) {
-    static std::once_flag registered;
-    std::call_once(registered, [] { GDALAllRegister(); });
+    image::gdal_init();
     std::unique_ptr<GDALDataset> ds(
         static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_ReadOnly)));
-    if (!ds) texture_error(m, "cannot read TEXTURE_FILE " + path);
+    if (!ds) texture_error(m, "cannot read TEXTURE_FILE " + path + ": " + image::gdal_message());
     auto t = std::make_shared<TextureMap>();
     t->file = path;
     t->rows = ds->GetRasterYSize();

@@ -1,7 +1,6 @@
 // DEM terrain: GDAL raster -> WGS84 (OGR) -> local east-north-up (GeographicLib).
 #include "scene/dem.hpp"
 
-#include <cpl_error.h>
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
@@ -10,30 +9,19 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <unordered_map>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "image/gdal.hpp"
 
 namespace sigchain::scene {
 
 namespace {
 
-// Registers the drivers once and keeps GDAL quiet: its errors become our messages.
-void gdal_init() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        CPLSetErrorHandler(CPLQuietErrorHandler);
-        GDALAllRegister();
-    });
-}
-
-std::string gdal_message() {
-    const char* m = CPLGetLastErrorMsg();
-    return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
-}
+using image::gdal_init;
+using image::gdal_message;
 
 struct Raster {
     std::unique_ptr<GDALDataset> ds;
