@@ -1,0 +1,42 @@
+// LOWTRAN 7 aerosol models (CARD 2: IHAZE, ISEASN, IVULCN, VIS, GNDALT): extinction,
+// single-scattering albedo and asymmetry parameter against altitude and wavelength,
+// from the tables in data/atmosphere/lowtran7/ (aerosol_*.txt, aerosol_vertical_profiles.txt).
+#pragma once
+
+#include <string>
+
+#include "atmos/profile.hpp"
+#include "io/cdk.hpp"
+
+namespace sigchain::atmos {
+
+// Optical properties of a slab of aerosol.
+struct AerosolLayerOptics {
+    double tau_ext = 0;  // extinction optical depth of the slab (vertical), >= 0
+    double ssa = 0;      // single-scattering albedo, [0, 1]
+    double g = 0;        // Henyey-Greenstein asymmetry parameter, (-1, 1)
+};
+
+class AerosolModel {
+public:
+    // CARD 2 of the deck and the profile (its relative humidity drives the
+    // humidity-dependent models). IHAZE 0 gives no aerosol. Throws DataError naming
+    // the card and field for a model that is not supported.
+    static AerosolModel from_deck(const io::CdkCard2& card2, const Profile& profile,
+                                  const std::string& data_dir);
+
+    // Extinction coefficient (km-1) at altitude z (km MSL) and wavelength (um).
+    double extinction_km1(double z_km, double wavelength_um) const;
+
+    // The slab [z_lo_km, z_hi_km] at a wavelength: optical depth integrated over
+    // altitude; ssa and g extinction- and scattering-weighted over the slab.
+    AerosolLayerOptics layer(double z_lo_km, double z_hi_km, double wavelength_um) const;
+
+    // Surface meteorological range (km) the model was built for (VIS, or the model's
+    // default when the deck's VIS is 0).
+    double visibility_km() const;
+
+    // (implementation-defined members follow)
+};
+
+}  // namespace sigchain::atmos

@@ -1,0 +1,67 @@
+// Plane-parallel scalar radiative transfer by the discrete-ordinate method (after
+// Stamnes, Tsay, Wiscombe & Jayaweera 1988, Appl. Opt. 27, 2502: "DISORT"), written for
+// sigchain: multi-layer, beam and isotropic sources at the top, Lambertian surface,
+// thermal emission with Planck linear in optical depth within a layer, delta-M scaling,
+// intensities at any optical depth and direction by analytic integration of the source
+// function, azimuth dependence by a Fourier (cosine) series.
+//
+// Conventions follow DISORT's so its published test problems map one to one: optical
+// depth measured from the top; mu = cosine of the polar angle of propagation, mu > 0
+// travelling up, mu < 0 travelling down; phi = azimuth of propagation relative to the
+// beam's (degrees); intensities exclude the direct beam; fluxes and intensities are in
+// the units of the sources (beam flux normal to the beam, intensities per sr).
+#pragma once
+
+#include <vector>
+
+namespace sigchain::rt {
+
+struct Layer {
+    double tau = 0;            // optical depth of the layer, >= 0
+    double ssa = 0;            // single-scattering albedo, [0, 1]
+    std::vector<double> pmom;  // Legendre moments, pmom[0] = 1 (P = sum (2k+1) pmom[k] P_k)
+};
+
+struct Problem {
+    std::vector<Layer> layers;  // top to bottom, at least one
+    int streams = 16;           // even, >= 4 (N in DISORT; N/2 per hemisphere)
+    bool delta_m = true;        // delta-M scaling of peaked phase functions
+    bool intensity_correction = true;  // Nakajima-Tanaka correction with delta-M
+
+    double beam_flux = 0;       // incident beam flux normal to its direction, >= 0
+    double beam_mu0 = 1;        // cosine of the beam's zenith angle, (0, 1]
+    double beam_phi0_deg = 0;   // azimuth of the beam
+    double top_isotropic = 0;   // isotropic intensity incident at the top, >= 0
+    double albedo = 0;          // Lambertian surface albedo, [0, 1]
+
+    // Thermal emission (empty: none): Planck radiance (intensity units) at each level
+    // boundary, top first, layers.size() + 1 values; linear in optical depth within a
+    // layer, emitted with weight (1 - ssa).
+    std::vector<double> planck_levels;
+    double planck_surface = 0;  // B(T_surface): the surface emits (1 - albedo) * this
+    double top_emission = 0;    // emissivity * B(T_top) incident at the top (DISORT temis*ttemp)
+
+    // Where and in which directions results are wanted.
+    std::vector<double> utau;     // optical depths (unscaled, from the top), ascending
+    std::vector<double> umu;      // cosines, nonzero, ascending
+    std::vector<double> phi_deg;  // azimuths
+};
+
+struct LevelResult {
+    double direct_down = 0;   // direct-beam flux (horizontal surface)
+    double diffuse_down = 0;  // diffuse downward flux
+    double diffuse_up = 0;    // diffuse upward flux
+    double dfdt = 0;          // d(net flux)/d(tau)
+    double mean_intensity = 0;  // diffuse mean intensity (average over 4 pi)
+    // Diffuse intensity at umu[i], phi_deg[j]: intensity[i * phi_deg.size() + j].
+    std::vector<double> intensity;
+};
+
+struct Result {
+    std::vector<LevelResult> levels;  // one per utau
+};
+
+// Solves the problem. Throws sigchain::Error on invalid input (with what is wrong).
+Result solve(const Problem& problem);
+
+}  // namespace sigchain::rt
