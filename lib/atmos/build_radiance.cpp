@@ -1,6 +1,10 @@
 #include "atmos/build_radiance.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <numbers>
 
@@ -292,10 +296,131 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const double height_km = prof.z_km[sensor_level] - prof.bottom_km();
     const int moments = std::max(o.streams, kPhaseMoments);
 
-    long total = 0, done = 0;
-    for (const auto& b : snd.bands) total += b.sample_count();
+    // Every spectral sample of every band is independent: solve them on worker
+    // threads, each writing its own slot, then assemble the tables in order.
+    struct Job {
+        std::size_t band;
+        double nu;
+    };
+    struct SampleResult {
+        io::RadSample sample;
+        std::vector<io::RadPathSample> path;  // per view
+        std::vector<double> ls, le;           // per sky cell
+        double ground_irradiance = 0;
+        bool thermal = false;
+    };
+    std::vector<Job> jobs;
+    for (std::size_t b = 0; b < snd.bands.size(); ++b) {
+        const io::SndBand& band = snd.bands[b];
+        // Samples from the max wavenumber down (wavelength increasing), as rad(5).
+        for (long s = band.sample_count() - 1; s >= 0; --s)
+            jobs.push_back({b, band.min_wavenumber_cm1 + s * band.increment_cm1});
+    }
+    std::vector<SampleResult> results(jobs.size());
+
+    auto solve_sample = [&](const Job& job, SampleResult& res) {
+        const double nu = job.nu;
+        const double wavelength = 1e4 / nu;
+        const std::vector<LayerOptics> col = column.layers(nu);
+        io::RadSample& sample = res.sample;
+        sample.wavelength_um = wavelength;
+        sample.wavenumber_cm1 = nu;
+        sample.solar_irradiance = solar.irradiance_w_cm2_um(nu) * distance_factor;
+        sample.sun_transmission =
+            sun_up ? column.direct_transmittance(nu, col, 0, top_level, mu0) : 0.0;
+
+        rt::Problem prob;
+        prob.layers = solver_layers(col, moments);
+        prob.streams = o.streams;
+        prob.delta_m = true;
+        prob.albedo = 0;  // black surface: the scene supplies the ground (seed 3.4)
+        double tau_above_sensor = 0, tau_total = 0;
+        for (std::size_t k = 0; k < col.size(); ++k) {
+            const double t = prob.layers[col.size() - 1 - k].tau;
+            tau_total += t;
+            if (k >= sensor_level) tau_above_sensor += t;
+        }
+        prob.utau = {tau_above_sensor, tau_total};
+        prob.umu = dirs.umu;
+        prob.phi_deg = dirs.phi;
+
+        // Solar scattering: the beam only (no emission).
+        rt::Result solar_result;
+        if (sun_up) {
+            prob.beam_flux = sample.solar_irradiance;
+            prob.beam_mu0 = mu0;
+            solar_result = rt::solve(prob);
+        }
+        // Layer emission: Planck at each level, no beam.
+        rt::Result thermal_result;
+        res.thermal = wavelength >= o.thermal_min_wavelength_um;
+        if (res.thermal) {
+            rt::Problem th = prob;
+            th.beam_flux = 0;
+            th.planck_levels.clear();
+            for (std::size_t lev = prof.size(); lev-- > 0;)
+                th.planck_levels.push_back(radiometry::planck_radiance(wavelength, prof.t_k[lev]));
+            th.planck_surface = 0;  // the surface's emission belongs to the scene
+            th.top_emission = 0;    // space
+            thermal_result = rt::solve(th);
+        }
+        auto intensity = [&](const rt::Result& r, std::size_t level, std::size_t mu,
+                             std::size_t phi) {
+            if (r.levels.empty()) return 0.0;
+            return std::max(0.0, r.levels[level].intensity[mu * dirs.phi.size() + phi]);
+        };
+        for (std::size_t v = 0; v < views.size(); ++v) {
+            io::RadPathSample p;
+            const double mu_v = std::cos(views[v] * kDeg);
+            p.transmission = column.direct_transmittance(nu, col, 0, sensor_level, mu_v);
+            p.scattered_radiance = intensity(solar_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
+            p.emitted_radiance = intensity(thermal_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
+            res.path.push_back(p);
+        }
+        for (const auto& subs : dirs.sky) {
+            double ls = 0, le = 0;
+            for (const auto& sub : subs) {
+                ls += sub.weight * intensity(solar_result, 1, sub.mu, sub.phi);
+                le += sub.weight * intensity(thermal_result, 1, sub.mu, sub.phi);
+            }
+            res.ls.push_back(ls);
+            res.le.push_back(le);
+        }
+        if (!solar_result.levels.empty()) res.ground_irradiance += solar_result.levels[1].diffuse_down;
+        if (!thermal_result.levels.empty())
+            res.ground_irradiance += thermal_result.levels[1].diffuse_down;
+    };
+
+    std::atomic<std::size_t> next{0}, done{0};
+    std::mutex progress_mutex;
+    std::exception_ptr failure;
+    auto worker = [&] {
+        for (std::size_t i; (i = next++) < jobs.size();) {
+            try {
+                solve_sample(jobs[i], results[i]);
+            } catch (...) {
+                std::lock_guard lock(progress_mutex);
+                if (!failure) failure = std::current_exception();
+                next = jobs.size();
+                return;
+            }
+            const std::size_t d = ++done;
+            if (o.progress) {
+                std::lock_guard lock(progress_mutex);
+                o.progress(static_cast<long>(d), static_cast<long>(jobs.size()));
+            }
+        }
+    };
+    unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, jobs.size())));
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
 
     std::vector<io::Rad> out;
+    std::size_t j = 0;
     for (const io::SndBand& band : snd.bands) {
         io::Rad rad;
         const long n = band.sample_count();
@@ -322,82 +447,16 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         sky.azimuth_count = dirs.azimuth_count;
         sky.cells = dirs.cells;
         std::vector<double> ground_irradiance;
-
-        // Samples from the max wavenumber down (wavelength increasing), as rad(5).
-        for (long s = n - 1; s >= 0; --s) {
-            const double nu = band.min_wavenumber_cm1 + s * band.increment_cm1;
-            const double wavelength = 1e4 / nu;
-            const std::vector<LayerOptics> col = column.layers(nu);
-            io::RadSample sample;
-            sample.wavelength_um = wavelength;
-            sample.wavenumber_cm1 = nu;
-            sample.solar_irradiance = solar.irradiance_w_cm2_um(nu) * distance_factor;
-            sample.sun_transmission =
-                sun_up ? column.direct_transmittance(nu, col, 0, top_level, mu0) : 0.0;
-            rad.samples.push_back(sample);
-
-            rt::Problem prob;
-            prob.layers = solver_layers(col, moments);
-            prob.streams = o.streams;
-            prob.delta_m = true;
-            prob.albedo = 0;  // black surface: the scene supplies the ground (seed 3.4)
-            double tau_above_sensor = 0, tau_total = 0;
-            for (std::size_t k = 0; k < col.size(); ++k) {
-                const double t = prob.layers[col.size() - 1 - k].tau;
-                tau_total += t;
-                if (k >= sensor_level) tau_above_sensor += t;
+        for (long s = 0; s < n; ++s, ++j) {
+            const SampleResult& r = results[j];
+            rad.samples.push_back(r.sample);
+            for (std::size_t v = 0; v < views.size(); ++v) rad.views[v].path.push_back(r.path[v]);
+            for (std::size_t c = 0; c < sky.cells.size(); ++c) {
+                sky.cells[c].scattered_radiance.push_back(r.ls[c]);
+                sky.cells[c].emitted_radiance.push_back(r.le[c]);
             }
-            prob.utau = {tau_above_sensor, tau_total};
-            prob.umu = dirs.umu;
-            prob.phi_deg = dirs.phi;
-
-            // Solar scattering: the beam only (no emission).
-            rt::Result solar_result;
-            if (sun_up) {
-                prob.beam_flux = sample.solar_irradiance;
-                prob.beam_mu0 = mu0;
-                solar_result = rt::solve(prob);
-            }
-            // Layer emission: Planck at each level, no beam.
-            rt::Result thermal_result;
-            const bool thermal = wavelength >= o.thermal_min_wavelength_um;
-            if (thermal) {
-                ++rep.thermal_samples;
-                rt::Problem th = prob;
-                th.beam_flux = 0;
-                th.planck_levels.clear();
-                for (std::size_t lev = prof.size(); lev-- > 0;)
-                    th.planck_levels.push_back(radiometry::planck_radiance(wavelength, prof.t_k[lev]));
-                th.planck_surface = 0;  // the surface's emission belongs to the scene
-                th.top_emission = 0;    // space
-                thermal_result = rt::solve(th);
-            }
-            auto intensity = [&](const rt::Result& r, std::size_t level, std::size_t mu, std::size_t phi) {
-                if (r.levels.empty()) return 0.0;
-                return std::max(0.0, r.levels[level].intensity[mu * dirs.phi.size() + phi]);
-            };
-            for (std::size_t v = 0; v < views.size(); ++v) {
-                io::RadPathSample p;
-                const double mu_v = std::cos(views[v] * kDeg);
-                p.transmission = column.direct_transmittance(nu, col, 0, sensor_level, mu_v);
-                p.scattered_radiance = intensity(solar_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
-                p.emitted_radiance = intensity(thermal_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
-                rad.views[v].path.push_back(p);
-            }
-            for (std::size_t c = 0; c < dirs.sky.size(); ++c) {
-                double ls = 0, le = 0;
-                for (const auto& sub : dirs.sky[c]) {
-                    ls += sub.weight * intensity(solar_result, 1, sub.mu, sub.phi);
-                    le += sub.weight * intensity(thermal_result, 1, sub.mu, sub.phi);
-                }
-                sky.cells[c].scattered_radiance.push_back(ls);
-                sky.cells[c].emitted_radiance.push_back(le);
-            }
-            double e = 0;
-            if (!solar_result.levels.empty()) e += solar_result.levels[1].diffuse_down;
-            if (!thermal_result.levels.empty()) e += thermal_result.levels[1].diffuse_down;
-            ground_irradiance.push_back(e);
-            if (o.progress) o.progress(++done, total);
+            ground_irradiance.push_back(r.ground_irradiance);
+            if (r.thermal) ++rep.thermal_samples;
         }
         rad.sky = std::move(sky);
         rep.ground_diffuse_irradiance.push_back(std::move(ground_irradiance));

@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
         "top of the modelled atmosphere")(
         "thermal-from", cli::po::value<double>()->default_value(2.5)->value_name("UM"),
         "solve layer emission at wavelengths from UM up")(
+        "threads", cli::po::value<unsigned>()->default_value(0)->value_name("N"),
+        "threads (0: all cores); the tables do not depend on it")(
         "data-dir", cli::po::value<std::string>()->value_name("DIR"),
         "reference data (default: $SIGCHAIN_DATA, else the build's data/)");
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
@@ -56,6 +58,7 @@ int main(int argc, char** argv) {
         o.top_km = vm["top"].as<double>();
         if (!(o.top_km > 0)) throw sigchain::UsageError("--top must be > 0 km");
         o.thermal_min_wavelength_um = vm["thermal-from"].as<double>();
+        o.threads = vm["threads"].as<unsigned>();
         atmos::check_radiance_options(o);
         const std::string pattern = vm["output"].as<std::string>();
 
