@@ -200,6 +200,22 @@ void check_radiance_options(const RadianceOptions& o) {
         throw UsageError("sky subsamples must be 1 to 8; found " + format_number(o.sky_subsamples));
 }
 
+// What the deck asks for that the atmosphere model does not cover: clouds, rain and
+// the army vertical structure algorithm (cdk(5) gives the columns).
+void check_deck(const io::CdkRun& run, const std::string& cdk_path) {
+    const SourceLocation at{cdk_path, 0};
+    if (run.card2.icld != 0)
+        throw DataError(at, "CARD 2 ICLD (columns 21-25) is " + std::to_string(run.card2.icld) +
+                                ": clouds and rain are not modelled by build_radiance (use 0)");
+    if (run.card2.rain_rate_mm_h > 0)
+        throw DataError(at, "CARD 2 RAINRT (columns 61-70) is " +
+                                format_number(run.card2.rain_rate_mm_h) +
+                                " mm/h: rain is not modelled by build_radiance (use 0)");
+    if (run.card2.ivsa != 0)
+        throw DataError(at, "CARD 2 IVSA (columns 26-30) is 1: the army vertical structure "
+                            "algorithm is not modelled by build_radiance (use 0)");
+}
+
 // --- ColumnModel ---------------------------------------------------------------------
 
 ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const RadianceOptions& o) {
@@ -254,6 +270,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     check_radiance_options(o);
     if (deck.runs.empty()) throw Error("the card deck holds no run");
     const io::CdkRun& run = deck.runs.front();
+    check_deck(run, o.cdk_path);
     RadianceReport rep;
 
     const ColumnModel column(run, snd.sensor_altitude_km, o);

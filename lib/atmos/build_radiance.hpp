@@ -27,6 +27,7 @@ namespace sigchain::atmos {
 struct RadianceOptions {
     std::string data_dir;                 // reference data (core/data_dir.hpp)
     std::string snd_path = "<snd>";       // named in messages about the scene node
+    std::string cdk_path = "<cdk>";       // and about the card deck
     int streams = 16;                     // discrete ordinates (even, >= 4)
     double sky_zenith_step_deg = 5;       // downwelled hemisphere rings (90 / step rings)
     double sky_azimuth_step_deg = 10;     // cells per ring: 360 / step

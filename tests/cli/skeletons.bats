@@ -1,4 +1,4 @@
-# Tests: build_radiance therm
+# Tests: therm
 # Also requires: CMakeLists.txt (the version in its project() line)
 #
 # The shared behaviour of the skeleton tools until their issues land (3, 4, 5, 6):
@@ -54,17 +54,6 @@ check_not_implemented() {
     assert_no_temp_files .
 }
 
-@test "build_radiance --help prints usage and points to build_radiance(1)" {
-    check_help build_radiance
-}
-@test "build_radiance --version prints the project version" { check_version build_radiance; }
-@test "build_radiance rejects an unknown option with exit 2" {
-    check_unknown_option build_radiance
-}
-@test "build_radiance says not implemented yet and writes nothing" {
-    check_not_implemented build_radiance
-}
-
 @test "therm --help prints usage and points to therm(1)" { check_help therm; }
 @test "therm --version prints the project version" { check_version therm; }
 @test "therm rejects an unknown option with exit 2" { check_unknown_option therm; }
@@ -72,7 +61,7 @@ check_not_implemented() {
 
 @test "every skeleton tool has its section-1 man page" {
     local tool
-    for tool in build_radiance therm; do
+    for tool in therm; do
         [ -f "$SIGCHAIN_SOURCE_DIR/man/$tool.1.scd" ] || fail "no man/$tool.1.scd"
     done
 }

@@ -72,6 +72,7 @@ int main(int argc, char** argv) {
                 if (p == "-") throw sigchain::UsageError("'-' names one band only");
         o.data_dir = sigchain::data_dir(vm.count("data-dir") ? vm["data-dir"].as<std::string>() : "");
         o.snd_path = inputs[1];
+        o.cdk_path = inputs[0];
 
         long total = 0;
         for (const auto& b : snd.bands) total += b.sample_count();
