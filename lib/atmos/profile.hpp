@@ -27,6 +27,9 @@ struct Profile {
     // Volume mixing ratio of every gas at every level, ppmv (index by int(Gas)); H2O
     // too, consistent with h2o_g_m3.
     std::array<std::vector<double>, kGasCount> vmr_ppmv;
+    // The deck's MODEL (1-7) the profile was built for, 0 when unknown; the aerosol
+    // models take their default season from it (ISEASN 0).
+    int model = 0;
 
     std::size_t size() const { return z_km.size(); }
     double bottom_km() const { return z_km.front(); }
