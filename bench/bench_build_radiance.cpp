@@ -1,0 +1,78 @@
+// bench_build_radiance: wall time of the seed's Hawkeye tables (the seed's deck, as
+// control7 writes it, and scene node: three DCS 420 bands of 41 samples over
+// 14400-25000 cm-1, 156 view angles, a 18 x 36 sky), on one thread and on every core;
+// then tau1, L_us (nadir) and L_ds (zenith cell and the diffuse irradiance) at 0.45,
+// 0.55 and 0.65 um for the same deck. Issue 3's target: under 2 s on one core.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "atmos/build_radiance.hpp"
+
+namespace atmos = sigchain::atmos;
+
+namespace {
+
+const std::string kSource = SIGCHAIN_SOURCE_DIR;
+
+double seconds_for(const sigchain::io::Cdk& deck, const sigchain::io::Snd& snd, unsigned threads,
+                   int repeats) {
+    atmos::RadianceOptions o;
+    o.data_dir = kSource + "/data";
+    o.threads = threads;
+    double best = 1e300;
+    for (int r = 0; r < repeats; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        const auto rads = atmos::build_radiance(deck, snd, o);
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        best = std::min(best, s);
+        if (rads.size() != snd.bands.size()) std::fprintf(stderr, "wrong band count\n");
+    }
+    return best;
+}
+
+}  // namespace
+
+int main() {
+    const auto deck = sigchain::io::read_cdk_file(kSource + "/tests/golden/control7/hawkeye.cdk");
+    auto snd = sigchain::io::read_snd_file(kSource + "/tests/data/seed/hawkeye.snd");
+    long samples = 0;
+    for (const auto& b : snd.bands) samples += b.sample_count();
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    std::printf("build_radiance, seed Hawkeye deck and scene node: %zu bands, %ld samples, "
+                "%ld view angles, 18 x 36 sky, 16 streams\n",
+                snd.bands.size(), samples, snd.view_angle_count());
+    std::printf("  1 thread : %.3f s (best of 3; target < 2 s)\n", seconds_for(deck, snd, 1, 3));
+    std::printf("  %u threads: %.3f s (best of 3)\n", cores, seconds_for(deck, snd, cores, 3));
+
+    // The three wavelengths of the closing note, one sample each, nadir only.
+    snd.bands.clear();
+    for (double um : {0.45, 0.55, 0.65}) {
+        const double nu = 1e4 / um;
+        snd.bands.push_back({nu, nu, 1});
+    }
+    snd.view_min_deg = snd.view_max_deg = 0;
+    snd.view_increment_deg = 1;
+    atmos::RadianceOptions o;
+    o.data_dir = kSource + "/data";
+    atmos::RadianceReport rep;
+    const auto rads = atmos::build_radiance(deck, snd, o, &rep);
+    std::printf("sun zenith %.3f deg, azimuth %.3f deg; ground %.3f km, sensor %.3f km, "
+                "visibility %.2f km\n",
+                rep.sun_zenith_deg, rep.sun_azimuth_deg, rep.ground_km, rep.sensor_km,
+                rep.visibility_km);
+    std::printf("%8s %12s %8s %8s %12s %12s %12s\n", "um", "Es", "tau1", "tau2", "L_us",
+                "L_ds(zen)", "E_diffuse");
+    for (std::size_t b = 0; b < rads.size(); ++b) {
+        const auto& r = rads[b];
+        std::printf("%8.4f %12.5g %8.4f %8.4f %12.5g %12.5g %12.5g\n", r.samples[0].wavelength_um,
+                    r.samples[0].solar_irradiance, r.samples[0].sun_transmission,
+                    r.views[0].path[0].transmission, r.views[0].path[0].scattered_radiance,
+                    r.sky->cells[0].scattered_radiance[0], rep.ground_diffuse_irradiance[b][0]);
+    }
+    std::printf("units: Es, E_diffuse W cm-2 um-1; L W cm-2 sr-1 um-1; L_ds(zen) is the mean of "
+                "the first ring's first cell (0-5 deg zenith)\n");
+    return 0;
+}
