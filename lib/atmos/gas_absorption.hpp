@@ -2,8 +2,43 @@
 // exponential, 20 cm-1 resolution on a 5 cm-1 grid) for H2O, O3, CO2, CO, CH4, N2O, O2
 // and the minor gases, plus the H2O, N2 and O2 continua and the ozone ultraviolet and
 // visible cross sections, from data/atmosphere/lowtran7/.
+//
+// What is modelled (every formula from the '#' headers of the tables, which describe
+// LOWTRAN 7's subroutines TRANS, STDMDL, C4DTA, C8DTA, O3INT, O2CONT, HNO3, SINT):
+//   - band model, per absorber: T = exp(-(10^C'(nu) * W)^a), W = sum over the path of
+//     rho ds (P/1013.25)^n (273.15/T)^m with the band's n, m (H2O in g cm-2, the other
+//     ten gases in atm-cm); T = 1 where a*(log10 W + C') <= -6 or nu is outside the
+//     absorber's tables. LOWTRAN sets T = 0 where that exponent is >= 2; here the
+//     formula is kept there too (T < 4e-44), so -ln T stays finite for the solver.
+//     C' is taken at the 5 cm-1 grid point nearest nu (LOWTRAN only steps in 5 cm-1).
+//   - Beer's-law terms: H2O self and foreign continuum (CKD, radiation term, 296/260 K
+//     self interpolation, far-wing FUDGE; nu < 20000 cm-1), N2 continuum
+//     (2080-2740 cm-1), O2 collision band (1395-1760 cm-1), HNO3 (three bands), ozone
+//     Chappuis (13000-24200 cm-1) and Hartley-Huggins with its quadratic temperature
+//     dependence (27370-40800 cm-1); none of ozone between 24370 and 27370 cm-1, as in
+//     LOWTRAN 7. Not included (outside 0.28-28 um): O2 Herzberg (> 36000 cm-1), ozone
+//     Molina UV (>= 40800 cm-1), O2 Schumann-Runge.
+//   - layer amounts: every scaled amount's integrand is evaluated on the levels and
+//     integrated over each layer assuming exponential variation between levels (as
+//     LOWTRAN's exponential density interpolation); temperature-weighted continuum sums
+//     use the layer's mean temperature.
+//
+// Equivalent Beer's law (layer_absorption_depth): a scattering solver needs an optical
+// depth per layer, but band-model transmittances do not multiply (T(W1 + W2) is not
+// T(W1) T(W2)). Each layer gets tau_k = -ln T(top..k) + ln T(top..k+1) for the band
+// model (vertical paths from the top of the profile), plus the continua. The vertical
+// transmittance from the top to any level is then exact; slant and partial paths in
+// that Beer's-law medium are approximate. Direct-beam and line-of-sight paths must use
+// transmittance(), which applies the band model to the path's summed amounts exactly;
+// only the diffuse field uses the equivalent depths.
+//
+// Thread-safety: both classes are immutable after construction; const use from several
+// threads is safe. GasTables copies share their data; GasColumn keeps its tables alive.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +52,16 @@ public:
     // Throws DataError naming the file and line of a bad table.
     static GasTables load(const std::string& data_dir);
     // (implementation-defined members follow)
+
+    // data_dir is the repository's data/ folder: the tables are read from
+    // DATA_DIR/atmosphere/lowtran7/. IoError when a file cannot be read.
+    struct Data;
+    const Data& data() const { return *m_data; }
+
+private:
+    explicit GasTables(std::shared_ptr<const Data> data) : m_data(std::move(data)) {}
+    std::shared_ptr<const Data> m_data;
+    friend class GasColumn;
 };
 
 // A profile's absorber amounts precomputed on its levels, for fast queries at many
@@ -39,6 +84,34 @@ public:
     std::vector<double> layer_absorption_depth(double nu_cm1) const;
 
     // (implementation-defined members follow)
+
+    // Components of transmittance() (same arguments; i == j gives 1 / 0; the level
+    // order does not matter). Band-model transmittance of one absorber (HNO3, which
+    // LOWTRAN treats by Beer's law, is in continuum_optical_depth instead):
+    double band_transmittance(Gas gas, double nu_cm1, std::size_t level_i, std::size_t level_j,
+                              double mu) const;
+    // Optical depth of every Beer's-law term (continua, ozone UV/visible, HNO3):
+    double continuum_optical_depth(double nu_cm1, std::size_t level_i, std::size_t level_j,
+                                   double mu) const;
+    std::size_t size() const { return m_levels; }
+
+    // Scaled-amount quantities accumulated from the bottom level: the 41 bands of
+    // band_model_constants.txt (LOWTRAN band ids 17-57), then the Beer's-law amounts.
+    static constexpr int kBandCount = 41;
+    static constexpr int kQuantityCount = kBandCount + 11;
+
+private:
+    double band_optical_depth(int gas_index, double nu_cm1, std::size_t lo, std::size_t hi,
+                              double mu) const;
+    double amount(int quantity, std::size_t lo, std::size_t hi) const {
+        return m_cumulative[hi * kQuantityCount + quantity] -
+               m_cumulative[lo * kQuantityCount + quantity];
+    }
+
+    std::shared_ptr<const GasTables::Data> m_tables;
+    std::size_t m_levels = 0;
+    // m_cumulative[level * kQuantityCount + q]: amount q from the bottom to the level.
+    std::vector<double> m_cumulative;
 };
 
 }  // namespace sigchain::atmos
