@@ -396,7 +396,7 @@ double GasColumn::continuum_optical_depth(double nu, std::size_t i, std::size_t 
 }
 
 double GasColumn::transmittance(double nu, std::size_t i, std::size_t j, double mu) const {
-    if (i >= m_levels || j >= m_levels || !(mu > 0 && mu <= 1))
+    if (i >= m_levels || j >= m_levels || !(mu > 0 && mu <= 1 + 1e-12))
         throw std::invalid_argument("GasColumn::transmittance: level or mu out of range");
     if (i > j) std::swap(i, j);
     double tau = continuum_optical_depth(nu, i, j, mu);
