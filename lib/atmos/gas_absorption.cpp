@@ -36,10 +36,10 @@ struct GasTables::Data {
 
 namespace {
 
-constexpr double kP0Mb = 1013.25;           // LOWTRAN reference pressure
-constexpr double kT0K = 273.15;             // LOWTRAN reference temperature
-constexpr double kLoschmidtCm3 = 2.6868e19; // formulas_and_constants.txt item 9
-constexpr double kAtmCmPerKmPerPpmv = 3.7194e-21;  // times n_air [cm-3] (STDMDL)
+constexpr double kP0Mb = 1013.25;                    // LOWTRAN reference pressure
+constexpr double kT0K = 273.15;                      // LOWTRAN reference temperature
+constexpr double kLoschmidtCm3 = 2.6868e19;          // formulas_and_constants.txt item 9
+constexpr double kAtmCmPerKmPerPpmv = 3.7194e-21;    // times n_air [cm-3] (STDMDL)
 constexpr double kH2oMoleculesPerGm3Km = 3.3429e21;  // cm-2 per (g m-3 km), item 5
 
 // Indices of the Beer's-law amounts after the 41 band amounts.
@@ -143,8 +143,8 @@ void read_band_grid(GasTables::Data& d, int gas, const std::string& dir) {
     for (const Row& r : rows) {
         double nu = r.v[0];
         if (nu <= last || std::fmod(nu, 5.0) != 0)
-            throw DataError(r.where, "expected increasing multiples of 5 cm-1, found " +
-                                         format_number(nu));
+            throw DataError(r.where,
+                            "expected increasing multiples of 5 cm-1, found " + format_number(nu));
         long id = std::lround(r.v[2]);
         auto b = id - kFirstBandId;
         if (r.v[2] != static_cast<double>(id) || b < 0 || b >= GasColumn::kBandCount ||
@@ -358,7 +358,8 @@ GasColumn::GasColumn(const GasTables& tables, const Profile& profile)
         layer[kO3T1] = layer[kO3] * (t - kT0K);
         layer[kO3T2] = layer[kO3] * (t - kT0K) * (t - kT0K);
         for (int q = 0; q < kQuantityCount; ++q)
-            m_cumulative[(k + 1) * kQuantityCount + q] = m_cumulative[k * kQuantityCount + q] + layer[q];
+            m_cumulative[(k + 1) * kQuantityCount + q] =
+                m_cumulative[k * kQuantityCount + q] + layer[q];
         below = above;
     }
 }
@@ -418,7 +419,8 @@ std::vector<double> GasColumn::layer_absorption_depth(double nu) const {
     }
     const auto c = continuum_coefficients(*m_tables, nu);
     for (std::size_t k = 0; k < top; ++k)
-        for (std::size_t q = 0; q < c.size(); ++q) tau[k] += c[q] * amount(kBandCount + int(q), k, k + 1);
+        for (std::size_t q = 0; q < c.size(); ++q)
+            tau[k] += c[q] * amount(kBandCount + int(q), k, k + 1);
     return tau;
 }
 

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -137,7 +137,8 @@ template <class F>
 double wavelength_mean(double lo_nm, double hi_nm, F f) {
     const int n = static_cast<int>((hi_nm - lo_nm) / 0.05);
     double sum = 0;
-    for (int i = 0; i <= n; ++i) sum += f(lo_nm + (hi_nm - lo_nm) * i / n) * (i == 0 || i == n ? 0.5 : 1);
+    for (int i = 0; i <= n; ++i)
+        sum += f(lo_nm + (hi_nm - lo_nm) * i / n) * (i == 0 || i == n ? 0.5 : 1);
     return sum / n;
 }
 
@@ -171,8 +172,11 @@ TEST(GasAbsorptionBandModel, SingleAbsorberEqualsDoubleExponentialFormula) {
     for (const Case& c : cases) {
         Profile prof = homogeneous(2, p, t);
         if (c.gas == Gas::H2O) prof.h2o_g_m3.assign(2, 5.0);
-        set_gas(prof, c.gas, c.gas == Gas::O2 ? 209000 : c.gas == Gas::CO2 ? 330
-                             : c.gas == Gas::CH4 ? 1.7 : 7745);
+        set_gas(prof, c.gas,
+                c.gas == Gas::O2    ? 209000
+                : c.gas == Gas::CO2 ? 330
+                : c.gas == Gas::CH4 ? 1.7
+                                    : 7745);
         GasColumn col(tables(), prof);
         const double w = c.amount * std::pow(pr, c.n) * std::pow(tr, c.m);
         for (double mu : {1.0, 0.5, 0.2}) {
@@ -192,8 +196,8 @@ TEST(GasAbsorptionBandModel, TransmittanceOfCo2AloneIsItsBandModel) {
     Profile prof = homogeneous(2, p, t);
     set_gas(prof, Gas::CO2, 0.02);  // little enough not to saturate the band centre
     GasColumn col(tables(), prof);
-    const double w = 2.6868e19 * pr * tr * 0.02 * 3.7194e-21 * std::pow(pr, 0.6705) *
-                     std::pow(tr, -2.2560);
+    const double w =
+        2.6868e19 * pr * tr * 0.02 * 3.7194e-21 * std::pow(pr, 0.6705) * std::pow(tr, -2.2560);
     const double want = std::exp(-std::pow(std::pow(10.0, 0.1367) * w, 0.6176));
     EXPECT_NEAR(col.transmittance(670, 0, 1, 1.0), want, 1e-12);
     EXPECT_GT(want, 0.01);
@@ -261,7 +265,8 @@ TEST(GasAbsorptionLimits, ContinuumFollowsBeersLaw) {
 
     Profile air = homogeneous(2, 900, 260);
     GasColumn n2(tables(), air);
-    const double want = std::exp(-0.113 * 0.781 * std::pow(900 / kP0, 2) * std::pow(kT0 / 260, 1.5));
+    const double want =
+        std::exp(-0.113 * 0.781 * std::pow(900 / kP0, 2) * std::pow(kT0 / 260, 1.5));
     const double got = n2.transmittance(2400, 0, 1, 1.0);
     EXPECT_NEAR(got, want, 1e-12 * want);
     EXPECT_NEAR(n2.transmittance(2400, 0, 1, 0.5), got * got, 1e-12 * got);
@@ -295,7 +300,7 @@ TEST(GasAbsorptionLayers, DepthsReproduceVerticalTransmittance) {
 // ---- Independent references ------------------------------------------------------------
 
 struct UsStandardOzone {
-    Profile profile;  // ozone only
+    Profile profile;        // ozone only
     double column_cm2 = 0;  // molecules cm-2, from the AFGL table's own air density
 };
 
@@ -347,8 +352,10 @@ TEST(GasAbsorptionReference, OzoneHartleyHugginsMatchesSpctral2At273K) {
     set_gas(prof, Gas::O3, atm_cm / (2.6868e19 * 3.7194e-21));
     GasColumn col(tables(), prof);
     const auto spc = read_table(kTestData + "/spectrl2_bird_riordan_coefficients.txt");
-    const double here = wavelength_mean(300, 340, [&](double nm) { return col.transmittance(1e7 / nm, 0, 1, 1.0); });
-    const double ref = wavelength_mean(300, 340, [&](double nm) { return std::exp(-interpolate(spc, nm, 3) * atm_cm); });
+    const double here = wavelength_mean(
+        300, 340, [&](double nm) { return col.transmittance(1e7 / nm, 0, 1, 1.0); });
+    const double ref = wavelength_mean(
+        300, 340, [&](double nm) { return std::exp(-interpolate(spc, nm, 3) * atm_cm); });
     EXPECT_NEAR(here, ref, 0.03);
     EXPECT_LT(col.transmittance(1e7 / 300, 0, 1, 1.0), 0.1);
 }
@@ -379,10 +386,12 @@ TEST(GasAbsorptionReference, OxygenABandAbsorbsStrongly) {
     GasColumn col(tables(), us);
     const std::size_t top = us.size() - 1;
     double lowest = 1;
-    for (double nu = 13000; nu <= 13200; nu += 5) lowest = std::min(lowest, col.transmittance(nu, 0, top, 1.0));
+    for (double nu = 13000; nu <= 13200; nu += 5)
+        lowest = std::min(lowest, col.transmittance(nu, 0, top, 1.0));
     EXPECT_LT(lowest, 0.5);
     const auto spc = read_table(kTestData + "/spectrl2_bird_riordan_coefficients.txt");
-    const double here = wavelength_mean(752.5, 780, [&](double nm) { return col.transmittance(1e7 / nm, 0, top, 1.0); });
+    const double here = wavelength_mean(
+        752.5, 780, [&](double nm) { return col.transmittance(1e7 / nm, 0, top, 1.0); });
     const double ref = wavelength_mean(752.5, 780, [&](double nm) {
         const double au = interpolate(spc, nm, 4);
         return std::exp(-1.41 * au / std::pow(1 + 118.93 * au, 0.45));
@@ -406,11 +415,13 @@ TEST(GasAbsorptionReference, WaterVapourBandsMatchSpctral2) {
     const double w_cm = column_cm2(mls.z_km, rho_g_cm3);
     EXPECT_NEAR(w_cm, 2.92, 0.05);
     double lowest = 1;
-    for (double nu = 10000; nu <= 11200; nu += 5) lowest = std::min(lowest, col.transmittance(nu, 0, top, 1.0));
+    for (double nu = 10000; nu <= 11200; nu += 5)
+        lowest = std::min(lowest, col.transmittance(nu, 0, top, 1.0));
     EXPECT_LT(lowest, 0.5);
     const auto spc = read_table(kTestData + "/spectrl2_bird_riordan_coefficients.txt");
     for (auto [lo, hi] : {std::pair{800.0, 860.0}, {880.0, 1040.0}, {1040.0, 1240.0}}) {
-        const double here = wavelength_mean(lo, hi, [&](double nm) { return col.transmittance(1e7 / nm, 0, top, 1.0); });
+        const double here = wavelength_mean(
+            lo, hi, [&](double nm) { return col.transmittance(1e7 / nm, 0, top, 1.0); });
         const double ref = wavelength_mean(lo, hi, [&](double nm) {
             const double aw = interpolate(spc, nm, 2) * w_cm;
             return std::exp(-0.2385 * aw / std::pow(1 + 20.07 * aw, 0.45));
