@@ -2,7 +2,9 @@
 #include "atmos/gas_absorption.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string_view>
 

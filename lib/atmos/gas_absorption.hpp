@@ -10,7 +10,9 @@
 //     ten gases in atm-cm); T = 1 where a*(log10 W + C') <= -6 or nu is outside the
 //     absorber's tables. LOWTRAN sets T = 0 where that exponent is >= 2; here the
 //     formula is kept there too (T < 4e-44), so -ln T stays finite for the solver.
-//     C' is taken at the 5 cm-1 grid point nearest nu (LOWTRAN only steps in 5 cm-1).
+//     C' is taken at the 5 cm-1 grid point nearest nu (LOWTRAN only steps in 5 cm-1);
+//     so are the other 5 cm-1 tables (N2, O2, HNO3, Hartley-Huggins), while the H2O
+//     continuum (10 cm-1) and Chappuis (200 cm-1) tables are interpolated linearly.
 //   - Beer's-law terms: H2O self and foreign continuum (CKD, radiation term, 296/260 K
 //     self interpolation, far-wing FUDGE; nu < 20000 cm-1), N2 continuum
 //     (2080-2740 cm-1), O2 collision band (1395-1760 cm-1), HNO3 (three bands), ozone
@@ -36,8 +38,6 @@
 // threads is safe. GasTables copies share their data; GasColumn keeps its tables alive.
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,7 +56,6 @@ public:
     // data_dir is the repository's data/ folder: the tables are read from
     // DATA_DIR/atmosphere/lowtran7/. IoError when a file cannot be read.
     struct Data;
-    const Data& data() const { return *m_data; }
 
 private:
     explicit GasTables(std::shared_ptr<const Data> data) : m_data(std::move(data)) {}
