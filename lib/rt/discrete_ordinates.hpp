@@ -45,6 +45,11 @@ struct Problem {
     std::vector<double> utau;     // optical depths (unscaled, from the top), ascending
     std::vector<double> umu;      // cosines, nonzero, ascending
     std::vector<double> phi_deg;  // azimuths
+
+    // Azimuthal (Fourier) series convergence: stop after two successive modes whose
+    // contribution to every intensity is below this fraction of the intensity (DISORT's
+    // ACCUR). 0 computes all modes m = 0 .. streams - 1.
+    double azimuth_accuracy = 1e-5;
 };
 
 struct LevelResult {

@@ -1,0 +1,220 @@
+// Per-layer, per-mode discrete-ordinate solutions (Stamnes et al. 1988, sec. II).
+#include "rt/layer_solution.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "rt/linalg.hpp"
+#include "rt/quadrature.hpp"
+
+namespace sigchain::rt::detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double sign_lm(int l, int m) { return (l + m) % 2 == 0 ? 1.0 : -1.0; }
+
+// Homogeneous solution: with alpha = M^-1 (D+ W - 1), beta = M^-1 D- W, the eigenproblem
+// reduces to (alpha - beta)(alpha + beta) S = k^2 S, S = G+ + G- (Stamnes & Swanson 1981,
+// J. Atmos. Sci. 38, 387; Stamnes et al. 1988 eq. 8). Symmetrised with W^1/2: with
+// A~ = W^1/2 (D+ + D-) W^1/2 - 1 and B~ likewise with D+ - D-, X = -M^-1 B~ M^-1 is
+// positive definite and Y = -A~ positive semi-definite; X = L L^T and the symmetric
+// C = L^T Y L has eigenvalues k^2 and eigenvectors v with S = W^-1/2 L v.
+void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
+                 LayerSolution& out, Scratch& sc) {
+    const int nn = q.nn, n2 = 2 * nn, nl = out.nl;
+    auto& dsum = sc.a;  // (D+ + D-), unsymmetrised
+    auto& ddif = sc.b;
+    dsum.assign(nn * nn, 0.0);
+    ddif.assign(nn * nn, 0.0);
+    for (int l = m; l < nl; ++l) {
+        const double c = o.ssa * (2 * l + 1) * o.g[l];  // (omega/2)(2l+1)g_l * 2
+        if (c == 0) continue;
+        auto& d = ((l + m) % 2 == 0) ? dsum : ddif;
+        const double* lm = lam + l * n2;
+        for (int i = 0; i < nn; ++i)
+            for (int j = 0; j < nn; ++j) d[i * nn + j] += c * lm[i] * lm[j];
+    }
+    auto& x = sc.c;
+    auto& y = sc.mat;
+    x.assign(nn * nn, 0.0);
+    y.assign(nn * nn, 0.0);
+    for (int i = 0; i < nn; ++i)
+        for (int j = 0; j < nn; ++j) {
+            const double sw = std::sqrt(q.weight[i] * q.weight[j]);
+            const double delta = i == j ? 1.0 : 0.0;
+            x[i * nn + j] = (delta - sw * ddif[i * nn + j]) / (q.mu[i] * q.mu[j]);
+            y[i * nn + j] = delta - sw * dsum[i * nn + j];
+        }
+    if (!linalg::cholesky(x.data(), nn))
+        throw Error("discrete-ordinate solver: homogeneous problem not positive definite (mode " +
+                    std::to_string(m) + ")");
+    // C = L^T Y L (lower triangle of x holds L).
+    auto& yl = sc.work;
+    yl.assign(nn * nn, 0.0);
+    for (int i = 0; i < nn; ++i)
+        for (int j = 0; j < nn; ++j) {
+            double s = 0;
+            for (int k = j; k < nn; ++k) s += y[i * nn + k] * x[k * nn + j];
+            yl[i * nn + j] = s;
+        }
+    auto& cm = sc.v;
+    cm.assign(nn * nn, 0.0);
+    for (int i = 0; i < nn; ++i)
+        for (int j = 0; j <= i; ++j) {
+            double s = 0;
+            for (int k = i; k < nn; ++k) s += x[k * nn + i] * yl[k * nn + j];
+            cm[i * nn + j] = cm[j * nn + i] = s;
+        }
+    sc.ev.assign(nn * nn, 0.0);
+    sc.lam.assign(nn, 0.0);
+    linalg::symmetric_eigen(cm.data(), nn, sc.lam.data(), sc.ev.data());
+    sc.s.assign(nn, 0.0);
+    for (int j = 0; j < nn; ++j) {
+        const double k = std::sqrt(std::max(sc.lam[j], 1e-300));
+        out.k[j] = k;
+        out.exp_k[j] = std::exp(-k * o.dtau);
+        for (int i = 0; i < nn; ++i) {
+            double s = 0;
+            for (int r = 0; r <= i; ++r) s += x[i * nn + r] * sc.ev[r * nn + j];
+            sc.s[i] = s / std::sqrt(q.weight[i]);
+        }
+        // D = G+ - G- = M^-1 (Dsum W - 1) S / k.
+        for (int i = 0; i < nn; ++i) {
+            double as = -sc.s[i];
+            for (int r = 0; r < nn; ++r) as += dsum[i * nn + r] * q.weight[r] * sc.s[r];
+            const double d = as / (q.mu[i] * k);
+            out.gp[j * nn + i] = 0.5 * (sc.s[i] + d);
+            out.gm[j * nn + i] = 0.5 * (sc.s[i] - d);
+        }
+    }
+}
+
+// (omega/2)(2l+1) g_l sum_a w_a Lambda_l(mu_a) v_a for l = m .. nl-1: the moments of the
+// scattering source of a quadrature vector v (N values).
+void scatter_moments(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
+                     int nl, const double* v, double* mom) {
+    const int nn = q.nn, n2 = 2 * nn;
+    for (int l = 0; l < nl; ++l) {
+        mom[l] = 0;
+        if (l < m) continue;
+        const double c = 0.5 * o.ssa * (2 * l + 1) * o.g[l];
+        if (c == 0) continue;
+        double s = 0;
+        for (int a = 0; a < n2; ++a) s += q.weight[a % nn] * lam[l * n2 + a] * v[a];
+        mom[l] = c * s;
+    }
+}
+
+// Fills mat with (diag - W p) over the N directions: mat_ab = diag_a delta_ab - w_b p_ab,
+// p_ab = (omega/2) sum_l (2l+1) g_l Lambda_l(mu_a) Lambda_l(mu_b).
+void scattering_operator(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
+                         int nl, const double* diag, std::vector<double>& mat) {
+    const int nn = q.nn, n2 = 2 * nn;
+    mat.assign(n2 * n2, 0.0);
+    for (int l = m; l < nl; ++l) {
+        const double c = 0.5 * o.ssa * (2 * l + 1) * o.g[l];
+        if (c == 0) continue;
+        const double* lm = lam + l * n2;
+        for (int a = 0; a < n2; ++a)
+            for (int b = 0; b < n2; ++b) mat[a * n2 + b] -= c * lm[a] * lm[b] * q.weight[b % nn];
+    }
+    for (int a = 0; a < n2; ++a) mat[a * n2 + a] += diag[a];
+}
+
+double signed_mu(const Quadrature& q, int a) { return a < q.nn ? q.mu[a] : -q.mu[a - q.nn]; }
+
+// Beam particular solution Z e^{-t/mu0}: (1 + mu_a/mu0) Z_a - sum_b w_b p_ab Z_b = X0_a,
+// X0_a = (omega F/4pi)(2 - delta_m0) sum_l (2l+1) g_l Lambda_l(mu_a) Lambda_l(-mu0)
+// (Stamnes et al. 1988, eqs. 12-13). Near a resonance k_j = 1/mu0 the beam cosine used
+// here is moved by a relative 1e-4 (the particular solution then carries an O(1e-4 t/mu0)
+// relative error in that layer only).
+void beam_particular(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
+                     double mu0, const double* lam0, LayerSolution& out, Scratch& sc) {
+    const int nn = q.nn, n2 = 2 * nn, nl = out.nl;
+    double inv_mu0 = 1 / mu0;
+    for (int j = 0; j < nn; ++j)
+        if (std::abs(out.k[j] * mu0 - 1) < 1e-4) inv_mu0 = 1 / (mu0 * (1 + 2e-4));
+    out.inv_mu0 = inv_mu0;
+    const double factor = o.ssa * o.beam_top / (4 * kPi) * (m == 0 ? 1 : 2);
+    sc.rhs.assign(n2, 0.0);
+    std::vector<double>& x0mom = sc.work;
+    x0mom.assign(nl, 0.0);
+    for (int l = m; l < nl; ++l) {
+        x0mom[l] = factor * (2 * l + 1) * o.g[l] * lam0[l];
+        for (int a = 0; a < n2; ++a) sc.rhs[a] += x0mom[l] * lam[l * n2 + a];
+    }
+    std::vector<double> diag(n2);
+    for (int a = 0; a < n2; ++a) diag[a] = 1 + signed_mu(q, a) * inv_mu0;
+    scattering_operator(q, m, o, lam, nl, diag.data(), sc.mat);
+    sc.piv.assign(n2, 0);
+    if (!linalg::lu_factor(sc.mat.data(), n2, sc.piv.data()))
+        throw Error("discrete-ordinate solver: singular beam particular-solution system");
+    linalg::lu_solve(sc.mat.data(), n2, sc.piv.data(), sc.rhs.data());
+    out.beam.assign(sc.rhs.begin(), sc.rhs.end());
+    scatter_moments(q, m, o, lam, nl, out.beam.data(), out.bmom.data());
+    for (int l = m; l < nl; ++l) out.bmom[l] += x0mom[l];
+}
+
+// Thermal particular solution for B(t) = b0 + b1 t (m = 0): Y1 = b1 exactly (the
+// quadrature integrates the isotropic part exactly) and (1 - W p) Y0 = (1-omega) b0 + mu b1
+// (Stamnes et al. 1988, eqs. 14-15; DISORT's thermal source).
+void thermal_particular(const Quadrature& q, const LayerOptics& o, const double* lam,
+                        LayerSolution& out, Scratch& sc) {
+    const int n2 = 2 * q.nn, nl = out.nl;
+    std::vector<double> diag(n2, 1.0);
+    scattering_operator(q, 0, o, lam, nl, diag.data(), sc.mat);
+    sc.rhs.assign(n2, 0.0);
+    for (int a = 0; a < n2; ++a)
+        sc.rhs[a] = (1 - o.ssa) * o.planck_top + signed_mu(q, a) * o.planck_slope;
+    sc.piv.assign(n2, 0);
+    if (!linalg::lu_factor(sc.mat.data(), n2, sc.piv.data()))
+        throw Error("discrete-ordinate solver: singular thermal particular-solution system");
+    linalg::lu_solve(sc.mat.data(), n2, sc.piv.data(), sc.rhs.data());
+    out.thermal0.assign(sc.rhs.begin(), sc.rhs.end());
+    scatter_moments(q, 0, o, lam, nl, out.thermal0.data(), out.tmom.data());
+}
+
+}  // namespace
+
+void quadrature_legendre(const Quadrature& q, int m, int nl, std::vector<double>& lam) {
+    const int nn = q.nn, n2 = 2 * nn;
+    lam.assign(nl * n2, 0.0);
+    std::vector<double> col(nl);
+    for (int i = 0; i < nn; ++i) {
+        normalized_legendre(m, nl - 1, q.mu[i], col.data());
+        for (int l = 0; l < nl; ++l) {
+            lam[l * n2 + i] = col[l];
+            lam[l * n2 + nn + i] = sign_lm(l, m) * col[l];
+        }
+    }
+}
+
+void solve_layer(const Quadrature& q, int m, const LayerOptics& optics, const double* lam,
+                 double mu0, const double* lam0, bool thermal, LayerSolution& out,
+                 Scratch& scratch) {
+    const int nn = q.nn, n2 = 2 * nn, nl = n2;
+    out.nn = nn;
+    out.nl = nl;
+    out.k.assign(nn, 0.0);
+    out.exp_k.assign(nn, 0.0);
+    out.gp.assign(nn * nn, 0.0);
+    out.gm.assign(nn * nn, 0.0);
+    homogeneous(q, m, optics, lam, out, scratch);
+    out.hmom.assign(nn * nl, 0.0);
+    std::vector<double> v(n2);
+    for (int j = 0; j < nn; ++j) {
+        for (int a = 0; a < n2; ++a) v[a] = out.dec(j, a);
+        scatter_moments(q, m, optics, lam, nl, v.data(), &out.hmom[j * nl]);
+    }
+    out.beam.assign(n2, 0.0);
+    out.bmom.assign(nl, 0.0);
+    out.inv_mu0 = mu0 > 0 ? 1 / mu0 : 0;
+    if (optics.beam_top > 0) beam_particular(q, m, optics, lam, mu0, lam0, out, scratch);
+    out.thermal0.assign(n2, 0.0);
+    out.tmom.assign(nl, 0.0);
+    if (thermal && m == 0) thermal_particular(q, optics, lam, out, scratch);
+}
+
+}  // namespace sigchain::rt::detail
