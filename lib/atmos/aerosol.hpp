@@ -3,7 +3,9 @@
 // from the tables in data/atmosphere/lowtran7/ (aerosol_*.txt, aerosol_vertical_profiles.txt).
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "atmos/profile.hpp"
 #include "io/cdk.hpp"
@@ -37,6 +39,31 @@ public:
     double visibility_km() const;
 
     // (implementation-defined members follow)
+
+    // The four altitude regions of LOWTRAN 7, each with its own 0.55-um profile and
+    // optical type: boundary layer (IHAZE model), troposphere (tropospheric model at
+    // RH 70 %), stratosphere (IVULCN type), upper atmosphere (meteoric dust).
+    static constexpr int kRegions = 4;
+
+    // The boundary layer's effective relative humidity (percent) the optics were
+    // interpolated at (LOWTRAN's aerosol-weighted mean of ln(100 - RH)).
+    double boundary_layer_rh_percent() const { return m_rh_eff; }
+
+private:
+    // Normalised optics of one region on the 47-wavelength grid (ext = 1 at 0.55 um).
+    struct Optics {
+        std::vector<double> ext, abs, g;
+    };
+    std::vector<double> m_wavelength_um;  // the tables' 47 wavelengths
+    std::array<Optics, kRegions> m_optics;
+    std::vector<double> m_z_km;                              // profile nodes (km MSL)
+    std::array<std::vector<double>, kRegions> m_beta055_km1;  // per region at the nodes
+    double m_vis_km = 0;
+    double m_rh_eff = 0;
+
+    double region_extinction055(int region, double z_km) const;
+    double region_column055(int region, double z_lo_km, double z_hi_km) const;
+    std::array<double, 3> region_optics(int region, double wavelength_um) const;
 };
 
 }  // namespace sigchain::atmos

@@ -1,0 +1,167 @@
+// Tests for the LOWTRAN 7 aerosol models (lib/atmos/aerosol).
+#include "atmos/aerosol.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+using namespace sigchain;
+using namespace sigchain::atmos;
+
+namespace {
+
+const std::string kData = SIGCHAIN_SOURCE_DIR "/data";
+
+io::CdkCard2 card2(int ihaze, double vis_km, int iseasn = 0, int ivulcn = 0) {
+    io::CdkCard2 c;
+    c.ihaze = ihaze;
+    c.visibility_km = vis_km;
+    c.iseasn = iseasn;
+    c.ivulcn = ivulcn;
+    return c;
+}
+
+// The US standard profile with a uniform relative humidity.
+Profile uniform_rh(double rh) {
+    Profile p = afgl_profile(6, kData);
+    for (double& v : p.rh_percent) v = rh;
+    return p;
+}
+
+}  // namespace
+
+TEST(AtmosAerosol, ColumnOpticalDepthMatchesLowtranVis23SpringSummer) {
+    // LOWTRAN 7's TAPE6, 0-100 km vertical path, rural VIS 23 spring-summer:
+    // AER1+AER2+AER3+AER4 = 0.3249 (lowtran7/README.txt sanity check 4). Brief: 0.5 %.
+    const auto m = AerosolModel::from_deck(card2(1, 23, 1), afgl_profile(2, kData), kData);
+    EXPECT_NEAR(m.layer(0, 100, 0.55).tau_ext, 0.3249, 0.005 * 0.3249);
+}
+
+TEST(AtmosAerosol, ColumnOpticalDepthMatchesLowtranVis5FallWinter) {
+    // Same check, rural VIS 5 (IHAZE 2's default, VIS 0) fall-winter: LOWTRAN 1.1416.
+    const auto m = AerosolModel::from_deck(card2(2, 0, 2), afgl_profile(3, kData), kData);
+    EXPECT_DOUBLE_EQ(m.visibility_km(), 5);
+    EXPECT_NEAR(m.layer(0, 100, 0.55).tau_ext, 1.1416, 0.005 * 1.1416);
+    // ISEASN 0 with MODEL 3 (mid-latitude winter) is fall-winter too.
+    const auto d = AerosolModel::from_deck(card2(2, 0, 0), afgl_profile(3, kData), kData);
+    EXPECT_NEAR(d.layer(0, 100, 0.55).tau_ext, m.layer(0, 100, 0.55).tau_ext, 1e-12);
+}
+
+TEST(AtmosAerosol, SurfaceExtinctionFollowsKoschmieder) {
+    // LOWTRAN's convention VIS = 3.912 / (beta_aer(0.55, 0 km) + 0.01159 km-1); the
+    // tabulated visibilities follow it within 0.7 % (README sanity check 5) and the
+    // 1/VIS interpolation is exact for it in between: tolerance 1 %.
+    for (double vis : {2.0, 5.0, 8.0, 15.0, 23.0, 35.0, 50.0}) {
+        const auto m = AerosolModel::from_deck(card2(1, vis, 1), uniform_rh(50), kData);
+        const double lhs = m.extinction_km1(0, 0.55) + 0.01159;
+        EXPECT_NEAR(lhs, 3.912 / vis, 0.01 * 3.912 / vis) << "VIS " << vis;
+    }
+}
+
+TEST(AtmosAerosol, TableOpticsAtTabulatedHumidity) {
+    // Within 0-1 km only the boundary layer contributes, so the slab's ssa and g are the
+    // rural table's at the profile's RH: RH 0 at 0.55 um: abs 0.0593, g 0.6479;
+    // RH 80 at 1.06 um: ext 0.43228, abs 0.04158, g 0.665 (aerosol_rural.txt).
+    const auto dry = AerosolModel::from_deck(card2(1, 23, 1), uniform_rh(0), kData);
+    EXPECT_NEAR(dry.boundary_layer_rh_percent(), 0, 1e-9);
+    const auto a = dry.layer(0, 1, 0.55);
+    EXPECT_NEAR(a.ssa, 1 - 0.0593, 1e-9);
+    EXPECT_NEAR(a.g, 0.6479, 1e-9);
+    const auto wet = AerosolModel::from_deck(card2(1, 23, 1), uniform_rh(80), kData);
+    EXPECT_NEAR(wet.boundary_layer_rh_percent(), 80, 1e-9);
+    const auto b = wet.layer(0, 1, 1.06);
+    EXPECT_NEAR(b.ssa, 1 - 0.04158 / 0.43228, 1e-9);
+    EXPECT_NEAR(b.g, 0.665, 1e-9);
+    // Extinction at 1.06 um relative to 0.55 um is the table's normalised value.
+    EXPECT_NEAR(wet.extinction_km1(0.5, 1.06) / wet.extinction_km1(0.5, 0.55), 0.43228, 1e-9);
+}
+
+TEST(AtmosAerosol, EveryModelGivesPhysicalOptics) {
+    for (int ihaze : {1, 2, 4, 5, 6, 8, 9, 10}) {
+        for (int ivulcn : {0, 2, 3, 8}) {
+            auto c = card2(ihaze, 0, 0, ivulcn);
+            c.wind_speed_m_s = 7;
+            const auto m = AerosolModel::from_deck(c, uniform_rh(85), kData);
+            EXPECT_GT(m.visibility_km(), 0);
+            for (double l : {0.3, 0.55, 1.0, 2.2, 10.0}) {
+                for (auto [lo, hi] : {std::pair{0.0, 1.0}, {2.5, 8.0}, {12.0, 20.0}, {40.0, 60.0}}) {
+                    const auto o = m.layer(lo, hi, l);
+                    EXPECT_GT(o.tau_ext, 0) << ihaze << " " << l << " " << lo;
+                    EXPECT_GE(o.ssa, 0);
+                    EXPECT_LE(o.ssa, 1);
+                    EXPECT_GT(o.g, -1);
+                    EXPECT_LT(o.g, 1);
+                }
+            }
+        }
+    }
+}
+
+TEST(AtmosAerosol, DefaultVisibilities) {
+    // LOWTRAN's defaults (aerosol_vertical_profiles.txt): urban 5, tropospheric 50,
+    // maritime 23, advection fog 0.2, radiation fog 0.5 km.
+    const Profile p = uniform_rh(70);
+    EXPECT_DOUBLE_EQ(AerosolModel::from_deck(card2(5, 0), p, kData).visibility_km(), 5);
+    EXPECT_DOUBLE_EQ(AerosolModel::from_deck(card2(6, 0), p, kData).visibility_km(), 50);
+    EXPECT_DOUBLE_EQ(AerosolModel::from_deck(card2(4, 0), p, kData).visibility_km(), 23);
+    EXPECT_DOUBLE_EQ(AerosolModel::from_deck(card2(8, 0), p, kData).visibility_km(), 0.2);
+    EXPECT_DOUBLE_EQ(AerosolModel::from_deck(card2(9, 0), p, kData).visibility_km(), 0.5);
+    // Desert with VIS 0: VIS = 3.912 / (ext(0.55) + 0.01159); at 10 m/s the table's
+    // ext(0.55) is 0.057144 km-1, so 56.99 km.
+    auto d = card2(10, 0);
+    d.wind_speed_m_s = 10;
+    EXPECT_NEAR(AerosolModel::from_deck(d, p, kData).visibility_km(), 3.912 / (0.057144 + 0.01159),
+                1e-9);
+    // No aerosol: zero extinction.
+    const auto none = AerosolModel::from_deck(card2(0, 0), p, kData);
+    EXPECT_EQ(none.layer(0, 100, 0.55).tau_ext, 0);
+    EXPECT_EQ(none.extinction_km1(0.5, 0.55), 0);
+}
+
+TEST(AtmosAerosol, ElevatedGroundCompressesTheLowerProfile) {
+    // Below 6 km the profile is read at z' = 6 (z - G) / (6 - G), so the column from the
+    // ground to 6 km is (6 - G) / 6 of the sea-level one (dz = (6 - G)/6 dz'); above 6
+    // km nothing changes. Exact up to rounding.
+    auto c0 = card2(1, 23, 1);
+    auto c1 = c0;
+    c1.ground_altitude_km = 1.5;
+    const auto m0 = AerosolModel::from_deck(c0, uniform_rh(50), kData);
+    const auto m1 = AerosolModel::from_deck(c1, uniform_rh(50), kData);
+    EXPECT_NEAR(m1.layer(1.5, 6, 0.55).tau_ext, 0.75 * m0.layer(0, 6, 0.55).tau_ext, 1e-12);
+    EXPECT_NEAR(m1.layer(6, 100, 0.55).tau_ext, m0.layer(6, 100, 0.55).tau_ext, 1e-12);
+    EXPECT_NEAR(m1.extinction_km1(1.5, 0.55), m0.extinction_km1(0, 0.55), 1e-12);
+}
+
+TEST(AtmosAerosol, LayersAddUp) {
+    // The slab integral is exact, so slabs add to the column (and extinction integrated
+    // by a fine trapezoid agrees with layer() to 1e-4 relative).
+    const auto m = AerosolModel::from_deck(card2(5, 10, 1), uniform_rh(60), kData);
+    const double whole = m.layer(0, 40, 0.7).tau_ext;
+    double parts = 0, trap = 0;
+    for (double z = 0; z < 40 - 1e-9; z += 0.37) parts += m.layer(z, std::min(z + 0.37, 40.0), 0.7).tau_ext;
+    const int n = 40000;
+    for (int i = 0; i < n; ++i) {
+        const double a = 40.0 * i / n, b = 40.0 * (i + 1) / n;
+        trap += 0.5 * (m.extinction_km1(a, 0.7) + m.extinction_km1(b, 0.7)) * (b - a);
+    }
+    EXPECT_NEAR(parts, whole, 1e-12 * whole);
+    EXPECT_NEAR(trap, whole, 1e-4 * whole);
+}
+
+TEST(AtmosAerosol, RejectsUnsupportedModels) {
+    const Profile p = uniform_rh(70);
+    for (int ihaze : {3, 7, 11}) {
+        try {
+            AerosolModel::from_deck(card2(ihaze, 0), p, kData);
+            FAIL() << "IHAZE " << ihaze << " accepted";
+        } catch (const DataError& e) {
+            EXPECT_NE(std::string(e.what()).find("CARD 2 IHAZE"), std::string::npos) << e.what();
+        }
+    }
+    auto c = card2(1, 0);
+    c.icld = 1;
+    EXPECT_THROW(AerosolModel::from_deck(c, p, kData), DataError);
+}
