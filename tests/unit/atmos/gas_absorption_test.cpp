@@ -157,26 +157,24 @@ TEST(GasAbsorptionBandModel, SingleAbsorberEqualsDoubleExponentialFormula) {
     const double n_air = 2.6868e19 * pr * tr;  // cm-3 (Loschmidt, ideal gas)
     struct Case {
         Gas gas;
-        double nu, cprime, a, n, m, amount;  // amount per 1 km: g cm-2 or atm-cm
+        double ppmv, nu, cprime, a, n, m, amount;  // amount per 1 km: g cm-2 or atm-cm
     };
     const Case cases[] = {
         // band_model_H2O.txt 10600 -0.36117 band 26: a 0.5621 n 0.8874 m -0.2576; 5 g m-3
-        {Gas::H2O, 10600, -0.36117, 0.5621, 0.8874, -0.2576, 0.1 * 5.0},
+        {Gas::H2O, 0, 10600, -0.36117, 0.5621, 0.8874, -0.2576, 0.1 * 5.0},
         // band_model_O2.txt 13100 -5.2458 band 51: a 0.5641 n 0.9353 m 0.1936; 209000 ppmv
-        {Gas::O2, 13100, -5.2458, 0.5641, 0.9353, 0.1936, n_air * 209000 * 3.7194e-21},
+        {Gas::O2, 209000, 13100, -5.2458, 0.5641, 0.9353, 0.1936, n_air * 209000 * 3.7194e-21},
         // band_model_CO2.txt 2350 1.2255 band 38: a 0.6033 n 0.7258 m -1.6740; 330 ppmv
-        {Gas::CO2, 2350, 1.2255, 0.6033, 0.7258, -1.6740, n_air * 330 * 3.7194e-21},
+        {Gas::CO2, 330, 2350, 1.2255, 0.6033, 0.7258, -1.6740, n_air * 330 * 3.7194e-21},
         // band_model_CH4.txt 3020 -0.5049 band 46: a 0.5844 n 0.7139 m -0.4185; 1.7 ppmv
-        {Gas::CH4, 3020, -0.5049, 0.5844, 0.7139, -0.4185, n_air * 1.7 * 3.7194e-21},
+        {Gas::CH4, 1.7, 3020, -0.5049, 0.5844, 0.7139, -0.4185, n_air * 1.7 * 3.7194e-21},
     };
     for (const Case& c : cases) {
         Profile prof = homogeneous(2, p, t);
-        if (c.gas == Gas::H2O) prof.h2o_g_m3.assign(2, 5.0);
-        set_gas(prof, c.gas,
-                c.gas == Gas::O2    ? 209000
-                : c.gas == Gas::CO2 ? 330
-                : c.gas == Gas::CH4 ? 1.7
-                                    : 7745);
+        if (c.gas == Gas::H2O)
+            prof.h2o_g_m3.assign(2, 5.0);  // the band model reads water as a density
+        else
+            set_gas(prof, c.gas, c.ppmv);
         GasColumn col(tables(), prof);
         const double w = c.amount * std::pow(pr, c.n) * std::pow(tr, c.m);
         for (double mu : {1.0, 0.5, 0.2}) {
