@@ -29,9 +29,9 @@ using Table = std::vector<std::vector<double>>;
 
 const SourceLocation kCard2{"card deck", 0};
 constexpr double kRayleighKoschmieder_km1 = 0.01159;  // LOWTRAN's visibility convention
-constexpr double kKoschmieder = 3.912;                 // -ln(0.02)
-constexpr double kGroundScale_km = 6.0;                // GNDALT compression height
-constexpr std::size_t k055 = 3;                        // row of 0.55 um in every table
+constexpr double kKoschmieder = 3.912;                // -ln(0.02)
+constexpr double kGroundScale_km = 6.0;               // GNDALT compression height
+constexpr std::size_t k055 = 3;                       // row of 0.55 um in every table
 
 Table read_table(const std::string& path, std::size_t columns, std::size_t rows) {
     const TextInput in = TextInput::from_file(path);
@@ -142,8 +142,9 @@ int strat_optics_column(int ivulcn) {
 void check_card2(const io::CdkCard2& c) {
     if (c.ihaze < 0 || c.ihaze > 10) reject("IHAZE", "expected 0-10");
     if (c.ihaze == 3)
-        reject("IHAZE", "3 (Navy maritime) is not supported: the LOWTRAN tables give its "
-                        "extinction and absorption but no asymmetry parameter");
+        reject("IHAZE",
+               "3 (Navy maritime) is not supported: the LOWTRAN tables give its "
+               "extinction and absorption but no asymmetry parameter");
     if (c.ihaze == 7) reject("IHAZE", "7 (user-defined aerosol, CARD 2D) is not supported");
     if (c.iseasn < 0 || c.iseasn > 2) reject("ISEASN", "expected 0-2");
     if (c.ivulcn < 0 || c.ivulcn > 8) reject("IVULCN", "expected 0-8");
@@ -157,14 +158,22 @@ void check_card2(const io::CdkCard2& c) {
 // The model's default visibility (km) for VIS 0 (BLOCK DATA TITLE, VSB).
 double default_visibility(int ihaze) {
     switch (ihaze) {
-    case 1: return 23;
-    case 2: return 5;
-    case 4: return 23;
-    case 5: return 5;
-    case 6: return 50;
-    case 8: return 0.2;
-    case 9: return 0.5;
-    default: return 23;
+        case 1:
+            return 23;
+        case 2:
+            return 5;
+        case 4:
+            return 23;
+        case 5:
+            return 5;
+        case 6:
+            return 50;
+        case 8:
+            return 0.2;
+        case 9:
+            return 0.5;
+        default:
+            return 23;
     }
 }
 
@@ -196,8 +205,9 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
         }
         return m;
     }
-    const Table desert =
-        card2.ihaze == 10 ? read_table(table_path(data_dir, "aerosol_desert.txt"), 13, 47) : Table{};
+    const Table desert = card2.ihaze == 10
+                             ? read_table(table_path(data_dir, "aerosol_desert.txt"), 13, 47)
+                             : Table{};
     std::array<std::vector<double>, 3> desert_bl;
     double vis = card2.visibility_km;
     if (card2.ihaze == 10) {
@@ -215,11 +225,12 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
     for (const auto& row : prof) {
         const double zt = row[0];
         if (zt > 1000) continue;  // the 99999 sentinel
-        m.m_z_km.push_back(zt < kGroundScale_km ? g_km + zt * (kGroundScale_km - g_km) / kGroundScale_km
-                                                : zt);
+        m.m_z_km.push_back(
+            zt < kGroundScale_km ? g_km + zt * (kGroundScale_km - g_km) / kGroundScale_km : zt);
         const double bl = zt <= 2 ? boundary_layer_beta(row, vis) : 0;
         const double trop = zt > 2 && zt <= 10 ? troposphere_beta(row, fall_winter, vis) : 0;
-        const double strat = zt > 10 && zt <= 30 ? row[strat_profile_column(card2.ivulcn, fall_winter)] : 0;
+        const double strat =
+            zt > 10 && zt <= 30 ? row[strat_profile_column(card2.ivulcn, fall_winter)] : 0;
         const double upper = zt > 30 ? row[card2.ivulcn <= 1 ? 18 : 19] : 0;
         m.m_beta055_km1[0].push_back(bl);
         m.m_beta055_km1[1].push_back(trop);
@@ -241,26 +252,35 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
     }
     m.m_rh_eff = sw > 0 ? 100.0 - std::exp(swx / sw) : profile_rh(profile, z0);
 
-    auto optics = [](const std::array<std::vector<double>, 3>& o) { return Optics{o[0], o[1], o[2]}; };
+    auto optics = [](const std::array<std::vector<double>, 3>& o) {
+        return Optics{o[0], o[1], o[2]};
+    };
     const Table trop_table = read_table(table_path(data_dir, "aerosol_tropospheric.txt"), 13, 47);
     switch (card2.ihaze) {
-    case 1:
-    case 2: m.m_optics[0] = optics(humid_optics(rural, m.m_rh_eff)); break;
-    case 4:
-        m.m_optics[0] = optics(humid_optics(
-            read_table(table_path(data_dir, "aerosol_maritime.txt"), 13, 47), m.m_rh_eff));
-        break;
-    case 5:
-        m.m_optics[0] = optics(humid_optics(
-            read_table(table_path(data_dir, "aerosol_urban.txt"), 13, 47), m.m_rh_eff));
-        break;
-    case 6: m.m_optics[0] = optics(humid_optics(trop_table, m.m_rh_eff)); break;
-    case 8:
-    case 9:
-        m.m_optics[0] = optics(fixed_optics(
-            read_table(table_path(data_dir, "aerosol_fog.txt"), 7, 47), card2.ihaze == 8 ? 1 : 4));
-        break;
-    case 10: m.m_optics[0] = optics(desert_bl); break;
+        case 1:
+        case 2:
+            m.m_optics[0] = optics(humid_optics(rural, m.m_rh_eff));
+            break;
+        case 4:
+            m.m_optics[0] = optics(humid_optics(
+                read_table(table_path(data_dir, "aerosol_maritime.txt"), 13, 47), m.m_rh_eff));
+            break;
+        case 5:
+            m.m_optics[0] = optics(humid_optics(
+                read_table(table_path(data_dir, "aerosol_urban.txt"), 13, 47), m.m_rh_eff));
+            break;
+        case 6:
+            m.m_optics[0] = optics(humid_optics(trop_table, m.m_rh_eff));
+            break;
+        case 8:
+        case 9:
+            m.m_optics[0] =
+                optics(fixed_optics(read_table(table_path(data_dir, "aerosol_fog.txt"), 7, 47),
+                                    card2.ihaze == 8 ? 1 : 4));
+            break;
+        case 10:
+            m.m_optics[0] = optics(desert_bl);
+            break;
     }
     m.m_optics[1] = optics(humid_optics(trop_table, 70.0));
     const Table strat = read_table(table_path(data_dir, "aerosol_stratospheric.txt"), 13, 47);
@@ -273,7 +293,8 @@ double AerosolModel::region_extinction055(int region, double z_km) const {
     const auto& b = m_beta055_km1[region];
     if (z_km <= m_z_km.front()) return b.front();
     if (z_km >= m_z_km.back()) return z_km == m_z_km.back() ? b.back() : 0.0;
-    const auto hi = std::size_t(std::upper_bound(m_z_km.begin(), m_z_km.end(), z_km) - m_z_km.begin());
+    const auto hi =
+        std::size_t(std::upper_bound(m_z_km.begin(), m_z_km.end(), z_km) - m_z_km.begin());
     const double f = (z_km - m_z_km[hi - 1]) / (m_z_km[hi] - m_z_km[hi - 1]);
     return log_or_linear(b[hi - 1], b[hi], f);
 }

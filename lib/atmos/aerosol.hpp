@@ -56,7 +56,7 @@ private:
     };
     std::vector<double> m_wavelength_um;  // the tables' 47 wavelengths
     std::array<Optics, kRegions> m_optics;
-    std::vector<double> m_z_km;                              // profile nodes (km MSL)
+    std::vector<double> m_z_km;                               // profile nodes (km MSL)
     std::array<std::vector<double>, kRegions> m_beta055_km1;  // per region at the nodes
     double m_vis_km = 0;
     double m_rh_eff = 0;

@@ -13,10 +13,10 @@ namespace sigchain::atmos {
 
 namespace {
 
-constexpr double kBoltzmann_J_K = 1.380649e-23;    // CODATA 2018 (exact)
-constexpr double kAvogadro_mol = 6.02214076e23;    // CODATA 2018 (exact)
+constexpr double kBoltzmann_J_K = 1.380649e-23;       // CODATA 2018 (exact)
+constexpr double kAvogadro_mol = 6.02214076e23;       // CODATA 2018 (exact)
 constexpr double kGasConstant_J_mol_K = 8.314462618;  // CODATA 2018
-constexpr double kMolarMassAir_g_mol = 28.964;     // dry air, US Standard Atmosphere 1976
+constexpr double kMolarMassAir_g_mol = 28.964;        // dry air, US Standard Atmosphere 1976
 constexpr double kAtm_mb = 1013.25;
 constexpr double kZeroCelsius_K = 273.15;
 constexpr int kUsStandard = 6;
@@ -166,39 +166,50 @@ double layer_h2o_ppmv(const io::CdkLayer& l, std::size_t i, double p, double t, 
     const double v = l.wmol[0];
     const double mw = kMolarMassH2O_g_mol;
     switch (c) {
-    case 'A': return v;
-    case 'B': return v * 1e6 / air_number_density_m3(p, t) * 1e6;   // cm-3 -> ppmv
-    case 'C': return v * 1e3 * kMolarMassAir_g_mol / mw;             // g/kg -> ppmv
-    case 'D': return g_m3_to_ppmv(v, mw, p, t);
-    case 'E':  // partial pressure (mb): rho = e M / (R T)
-        return g_m3_to_ppmv(v * 100.0 * mw / (kGasConstant_J_mol_K * t), mw, p, t);
-    case 'F':
-    case 'G': {  // dew point: e = e_s(Td), so rho = rho_s(Td) Td / T (ideal gas)
-        const double td = c == 'F' ? v : v + kZeroCelsius_K;
-        return g_m3_to_ppmv(saturation_vapour_density_g_m3(td) * td / t, mw, p, t);
-    }
-    case 'H': return g_m3_to_ppmv(v / 100.0 * saturation_vapour_density_g_m3(t), mw, p, t);
-    case ' ': return model_ppmv(ms.get(fallback), Gas::H2O, l.altitude_km);
-    default:
-        if (const int m = model_digit(c)) return model_ppmv(ms.get(m), Gas::H2O, l.altitude_km);
-        bad_jchar(i, 2, c, "H2O");
+        case 'A':
+            return v;
+        case 'B':
+            return v * 1e6 / air_number_density_m3(p, t) * 1e6;  // cm-3 -> ppmv
+        case 'C':
+            return v * 1e3 * kMolarMassAir_g_mol / mw;  // g/kg -> ppmv
+        case 'D':
+            return g_m3_to_ppmv(v, mw, p, t);
+        case 'E':  // partial pressure (mb): rho = e M / (R T)
+            return g_m3_to_ppmv(v * 100.0 * mw / (kGasConstant_J_mol_K * t), mw, p, t);
+        case 'F':
+        case 'G': {  // dew point: e = e_s(Td), so rho = rho_s(Td) Td / T (ideal gas)
+            const double td = c == 'F' ? v : v + kZeroCelsius_K;
+            return g_m3_to_ppmv(saturation_vapour_density_g_m3(td) * td / t, mw, p, t);
+        }
+        case 'H':
+            return g_m3_to_ppmv(v / 100.0 * saturation_vapour_density_g_m3(t), mw, p, t);
+        case ' ':
+            return model_ppmv(ms.get(fallback), Gas::H2O, l.altitude_km);
+        default:
+            if (const int m = model_digit(c)) return model_ppmv(ms.get(m), Gas::H2O, l.altitude_km);
+            bad_jchar(i, 2, c, "H2O");
     }
 }
 
 // CO2 or O3 (JCHAR(4), JCHAR(5)) as ppmv.
-double layer_gas_ppmv(const io::CdkLayer& l, std::size_t i, int index, Gas gas, double mw,
-                      double p, double t, ModelSet& ms, int fallback) {
+double layer_gas_ppmv(const io::CdkLayer& l, std::size_t i, int index, Gas gas, double mw, double p,
+                      double t, ModelSet& ms, int fallback) {
     const char c = jchar_at(l, index);
     const double v = l.wmol[index - 2];
     switch (c) {
-    case 'A': return v;
-    case 'B': return v * 1e6 / air_number_density_m3(p, t) * 1e6;
-    case 'C': return v * 1e3 * kMolarMassAir_g_mol / mw;
-    case 'D': return g_m3_to_ppmv(v, mw, p, t);
-    case ' ': return model_ppmv(ms.get(fallback), gas, l.altitude_km);
-    default:
-        if (const int m = model_digit(c)) return model_ppmv(ms.get(m), gas, l.altitude_km);
-        bad_jchar(i, index, c, gas == Gas::CO2 ? "CO2" : "O3");
+        case 'A':
+            return v;
+        case 'B':
+            return v * 1e6 / air_number_density_m3(p, t) * 1e6;
+        case 'C':
+            return v * 1e3 * kMolarMassAir_g_mol / mw;
+        case 'D':
+            return g_m3_to_ppmv(v, mw, p, t);
+        case ' ':
+            return model_ppmv(ms.get(fallback), gas, l.altitude_km);
+        default:
+            if (const int m = model_digit(c)) return model_ppmv(ms.get(m), gas, l.altitude_km);
+            bad_jchar(i, index, c, gas == Gas::CO2 ? "CO2" : "O3");
     }
 }
 
@@ -225,8 +236,8 @@ Profile sonde_levels(const io::CdkRun& run, ModelSet& ms) {
     for (std::size_t i = 0; i < layers.size(); ++i) {
         const auto& l = layers[i];
         if (i > 0 && l.altitude_km <= out.z_km.back())
-            throw DataError(kDeck, "CARD 2C1 layer " + std::to_string(i + 1) +
-                                       ": altitude ZMDL must increase");
+            throw DataError(
+                kDeck, "CARD 2C1 layer " + std::to_string(i + 1) + ": altitude ZMDL must increase");
         const double p = layer_pressure_mb(l, i, ms);
         const double t = layer_temperature_k(l, i, ms);
         if (!(p > 0) || !(t > 0))
@@ -262,10 +273,18 @@ void continue_with_model(Profile& out, const io::CdkCard1& c1, ModelSet& ms) {
     const double p_scale = out.p_mb.back() / model_p(base, z_top);
     const double t_offset = out.t_k.back() - model_t(base, z_top);
     constexpr double kFade_km = 5.0;
-    const std::array<int, kGasCount> gas_model = {
-        component_model(c1, 1), kUsStandard, component_model(c1, 2), component_model(c1, 4),
-        component_model(c1, 5), component_model(c1, 3), kUsStandard, kUsStandard,
-        kUsStandard, kUsStandard, kUsStandard, kUsStandard};
+    const std::array<int, kGasCount> gas_model = {component_model(c1, 1),
+                                                  kUsStandard,
+                                                  component_model(c1, 2),
+                                                  component_model(c1, 4),
+                                                  component_model(c1, 5),
+                                                  component_model(c1, 3),
+                                                  kUsStandard,
+                                                  kUsStandard,
+                                                  kUsStandard,
+                                                  kUsStandard,
+                                                  kUsStandard,
+                                                  kUsStandard};
     for (std::size_t j = 0; j < base.size(); ++j) {
         const double z = base.z_km[j];
         if (z <= z_top + 0.1) continue;
@@ -326,8 +345,9 @@ Profile profile_from_deck(const io::CdkRun& run, const std::string& data_dir) {
     ModelSet ms;
     ms.data_dir = data_dir;
     if (c1.model == 0)
-        throw DataError(kDeck, "CARD 1 MODEL 0 (user meteorological data for a horizontal "
-                               "path) cannot give a vertical profile; use MODEL 1-6 or 7");
+        throw DataError(kDeck,
+                        "CARD 1 MODEL 0 (user meteorological data for a horizontal "
+                        "path) cannot give a vertical profile; use MODEL 1-6 or 7");
     if (c1.model >= 1 && c1.model <= 6) {
         Profile p = standard_model(c1, ms);
         derive_water(p);
@@ -358,8 +378,7 @@ double density_between(double a, double b, double f) {
 Profile resample(const Profile& p, double z_lo_km, double z_hi_km,
                  const std::vector<double>& extra_z_km) {
     constexpr double kTol_km = 1e-9;
-    if (!(z_lo_km < z_hi_km) || z_lo_km < p.bottom_km() - kTol_km ||
-        z_hi_km > p.top_km() + kTol_km)
+    if (!(z_lo_km < z_hi_km) || z_lo_km < p.bottom_km() - kTol_km || z_hi_km > p.top_km() + kTol_km)
         throw Error("resample: [" + format_number(z_lo_km) + ", " + format_number(z_hi_km) +
                     "] km is not inside the profile's [" + format_number(p.bottom_km()) + ", " +
                     format_number(p.top_km()) + "] km");
@@ -377,8 +396,8 @@ Profile resample(const Profile& p, double z_lo_km, double z_hi_km,
     out.model = p.model;
     for (double at : levels) {
         const auto it = std::upper_bound(p.z_km.begin(), p.z_km.end(), at);
-        const std::size_t hi = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - p.z_km.begin(), 1),
-                                                     p.size() - 1);
+        const std::size_t hi =
+            std::min<std::size_t>(std::max<std::ptrdiff_t>(it - p.z_km.begin(), 1), p.size() - 1);
         const std::size_t lo = hi - 1;
         const double f = (at - p.z_km[lo]) / (p.z_km[hi] - p.z_km[lo]);
         const double t = p.t_k[lo] + f * (p.t_k[hi] - p.t_k[lo]);

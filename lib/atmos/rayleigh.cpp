@@ -49,8 +49,7 @@ double rayleigh_optical_depth(double wavelength_um, double p_top_mb, double p_bo
         throw Error("rayleigh_optical_depth: need wavelength > 0 and 0 <= p_top <= p_bottom");
     const double tau_sea_level = wavelength_um <= kEq30Limit_um
                                      ? bodhaine_eq30(wavelength_um)
-                                     : bodhaine_eq30(kEq30Limit_um) *
-                                           lowtran_shape(wavelength_um) /
+                                     : bodhaine_eq30(kEq30Limit_um) * lowtran_shape(wavelength_um) /
                                            lowtran_shape(kEq30Limit_um);
     // The optical depth is proportional to the mass of the column, i.e. to the pressure
     // difference (Bodhaine eq. 29, hydrostatic; gravity variation neglected).
@@ -65,8 +64,8 @@ std::array<double, 3> rayleigh_phase_moments() {
     const double f = king_factor_air_550nm();
     const double rho = 6 * (f - 1) / (3 + 7 * f);
     // Phase function P = 3/(4(1+2g)) [(1+3g) + (1-g) mu^2], g = rho/(2-rho) (Chandrasekhar
-    // 1950; Hansen & Travis 1974, Space Sci. Rev. 16, 527, sec. 2), whose only non-trivial Legendre moment is
-    // m_2 = (1-g) / (10 (1+2g)).
+    // 1950; Hansen & Travis 1974, Space Sci. Rev. 16, 527, sec. 2), whose only non-trivial Legendre
+    // moment is m_2 = (1-g) / (10 (1+2g)).
     const double g = rho / (2 - rho);
     return {1.0, 0.0, (1 - g) / (10 * (1 + 2 * g))};
 }

@@ -22,8 +22,8 @@ void append(TextInput const& in, int line, double nu, double e, double dnu, auto
         grid.dnu_cm1 = dnu;
     } else if (std::abs(nu - grid.nu_end() - dnu) > 1e-6) {
         throw DataError(in.at(line), "expected wavenumber " + format_number(grid.nu_end() + dnu) +
-                                         " cm-1 (a " + format_number(dnu) +
-                                         " cm-1 grid), found " + format_number(nu));
+                                         " cm-1 (a " + format_number(dnu) + " cm-1 grid), found " +
+                                         format_number(nu));
     }
     grid.e_w_m2_um.push_back(e);
 }

@@ -87,7 +87,8 @@ TEST(AtmosAerosol, EveryModelGivesPhysicalOptics) {
             const auto m = AerosolModel::from_deck(c, uniform_rh(85), kData);
             EXPECT_GT(m.visibility_km(), 0);
             for (double l : {0.3, 0.55, 1.0, 2.2, 10.0}) {
-                for (auto [lo, hi] : {std::pair{0.0, 1.0}, {2.5, 8.0}, {12.0, 20.0}, {40.0, 60.0}}) {
+                for (auto [lo, hi] :
+                     {std::pair{0.0, 1.0}, {2.5, 8.0}, {12.0, 20.0}, {40.0, 60.0}}) {
                     const auto o = m.layer(lo, hi, l);
                     EXPECT_GT(o.tau_ext, 0) << ihaze << " " << l << " " << lo;
                     EXPECT_GE(o.ssa, 0);
@@ -141,7 +142,8 @@ TEST(AtmosAerosol, LayersAddUp) {
     const auto m = AerosolModel::from_deck(card2(5, 10, 1), uniform_rh(60), kData);
     const double whole = m.layer(0, 40, 0.7).tau_ext;
     double parts = 0, trap = 0;
-    for (double z = 0; z < 40 - 1e-9; z += 0.37) parts += m.layer(z, std::min(z + 0.37, 40.0), 0.7).tau_ext;
+    for (double z = 0; z < 40 - 1e-9; z += 0.37)
+        parts += m.layer(z, std::min(z + 0.37, 40.0), 0.7).tau_ext;
     const int n = 40000;
     for (int i = 0; i < n; ++i) {
         const double a = 40.0 * i / n, b = 40.0 * (i + 1) / n;

@@ -22,7 +22,8 @@ double bodhaine_first_principles_tau(double l_um) {
     const double n = 1 + n300 * (1 + 0.54 * (0.00036 - 0.0003));
     const double f_n2 = 1.034 + 3.17e-4 * il2;
     const double f_o2 = 1.096 + 1.385e-3 * il2 + 1.448e-4 * il2 * il2;
-    const double f = (78.084 * f_n2 + 20.946 * f_o2 + 0.934 + 0.036 * 1.15) / (100.0 + 0.036 - 0.036);
+    const double f =
+        (78.084 * f_n2 + 20.946 * f_o2 + 0.934 + 0.036 * 1.15) / (100.0 + 0.036 - 0.036);
     const double ns = 2.546899e19;
     const double l_cm = l_um * 1e-4;
     const double pi = std::numbers::pi;
@@ -68,7 +69,9 @@ TEST(AtmosRayleigh, AgreesWithLowtranFormulaAndCheckTable) {
     // factor: 0.2 % in the visible and IR, 0.7 % at 0.3 um; tolerance 1 %.
     const double column_km = 1013.25e2 / (28.964e-3 / 6.02214076e23 * 9.80665) / 2.6868e25 / 1e3;
     EXPECT_NEAR(column_km, 7.996, 0.001);
-    struct Row { double l_um, beta_stp_km1; };
+    struct Row {
+        double l_um, beta_stp_km1;
+    };
     const Row rows[] = {{0.300, 1.50999e-01}, {0.400, 4.48834e-02}, {0.550, 1.21124e-02},
                         {0.700, 4.54713e-03}, {1.000, 1.07848e-03}, {1.600, 1.63398e-04},
                         {3.000, 1.31776e-05}};
