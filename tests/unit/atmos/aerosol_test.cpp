@@ -167,3 +167,23 @@ TEST(AtmosAerosol, RejectsUnsupportedModels) {
     c.icld = 1;
     EXPECT_THROW(AerosolModel::from_deck(c, p, kData), DataError);
 }
+
+TEST(AtmosAerosol, SeedFlyoverDeck) {
+    // The seed's deck: MODEL 7 (Hawkeye sonde), IHAZE 5 urban, VIS 0 (urban default 5 km),
+    // ISEASN 2, GNDALT 0.218 km. At the ground the extinction must follow Koschmieder
+    // for 5 km (1 %, as in SurfaceExtinctionFollowsKoschmieder), and the 0.55-um
+    // optical depth of the column lies between LOWTRAN's VIS 5 fall-winter column at sea
+    // level (1.1416) and that column with the elevated ground's 3.6 % compression of the
+    // lower 6 km (GNDALT 0.218: factor 5.782/6).
+    const auto run =
+        io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/data/seed/flyover.cdk").runs.at(0);
+    const Profile p = profile_from_deck(run, kData);
+    const auto m = AerosolModel::from_deck(run.card2, p, kData);
+    EXPECT_DOUBLE_EQ(m.visibility_km(), 5);
+    EXPECT_NEAR(m.extinction_km1(0.218, 0.55) + 0.01159, 3.912 / 5, 0.01 * 3.912 / 5);
+    const double tau = m.layer(0.218, 100, 0.55).tau_ext;
+    EXPECT_LT(tau, 1.1416);
+    EXPECT_GT(tau, 1.1416 * 5.782 / 6 - 0.001);
+    EXPECT_GT(m.boundary_layer_rh_percent(), 0);
+    EXPECT_LT(m.boundary_layer_rh_percent(), 99);
+}
