@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -219,6 +220,30 @@ TEST(GasAbsorptionBandModel, PathSumsAmountsNotTransmittances) {
     EXPECT_NEAR(col.band_transmittance(Gas::H2O, 10600, 0, 1, 0.5), two, 1e-12);
     EXPECT_NEAR(col.band_transmittance(Gas::H2O, 10600, 1, 2, 1.0), one, 1e-12);
     EXPECT_EQ(col.band_transmittance(Gas::H2O, 10600, 2, 0, 1.0), two);  // order-free
+}
+
+// Densities vary exponentially between levels (as LOWTRAN interpolates them): water
+// vapour halving over a 1 km layer at STP holds 0.1 * 10 g m-3 * (1 - 1/2) / ln 2 km =
+// 0.72135 g cm-2 (a linear rule would give 0.75). Recovered from the band model at
+// 10600 cm-1 (C' -0.36117, a 0.5621; n, m scalings are 1 at STP); 1e-9 relative
+// (rounding of the inversion).
+TEST(GasAbsorptionBandModel, LayerAmountIntegratesExponentialDensity) {
+    Profile prof = homogeneous(2, kP0, kT0);
+    prof.h2o_g_m3 = {10.0, 5.0};
+    GasColumn col(tables(), prof);
+    const double t = col.band_transmittance(Gas::H2O, 10600, 0, 1, 1.0);
+    const double w = std::pow(-std::log(t), 1 / 0.5621) / std::pow(10.0, -0.36117);
+    EXPECT_NEAR(w, 0.5 / std::log(2.0), 1e-9);
+}
+
+// Levels outside the profile and cosines outside (0, 1] are programming errors.
+TEST(GasAbsorptionBandModel, RejectsBadArguments) {
+    GasColumn col(tables(), homogeneous(3, kP0, kT0));
+    EXPECT_THROW(col.transmittance(1000, 0, 3, 1.0), std::invalid_argument);
+    EXPECT_THROW(col.transmittance(1000, 0, 2, 0.0), std::invalid_argument);
+    EXPECT_THROW(col.transmittance(1000, 0, 2, 1.5), std::invalid_argument);
+    EXPECT_EQ(col.transmittance(1000, 1, 1, 1.0), 1.0);
+    EXPECT_THROW(GasColumn(tables(), homogeneous(1, kP0, kT0)), std::invalid_argument);
 }
 
 // ---- Limits ------------------------------------------------------------------------------
