@@ -1,0 +1,237 @@
+// therm: facet temperatures at the scene time (see therm_job.hpp).
+#include "thermal/therm_job.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/error.hpp"
+#include "core/output.hpp"
+
+namespace sigchain::thermal {
+
+namespace {
+
+constexpr double kKelvinOffset = 273.15;
+// mat(5) UNITS: cal -> J, g cm-3 -> kg m-3, cm -> m.
+constexpr double kJoulesPerCalorie = 4.184;
+
+std::string num(double v) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << v;
+    return s.str();
+}
+
+void require_positive(double value, const char* tag, const io::Material& m, const io::Mat& mat) {
+    if (!(value > 0) || !std::isfinite(value))
+        throw DataError({mat.file, m.line}, "material '" + m.name + "' (id " +
+                                                std::to_string(m.id) + "): " + tag + " " +
+                                                num(value) + " must be above 0 for therm");
+}
+
+double value_at(const io::Shd& shd, const io::ShdFacet& f, double t_h) {
+    double k = (t_h - shd.time_hours(0)) / shd.step_hours;
+    long k0 = std::clamp(static_cast<long>(std::floor(k)), 0L, shd.steps - 1);
+    long k1 = std::min(k0 + 1, shd.steps - 1);
+    double w = std::clamp(k - static_cast<double>(k0), 0.0, 1.0);
+    double sum = 0;
+    for (long p = 0; p < f.points; ++p)
+        sum += (1 - w) * f.sunlit(k0, p) * f.sun_transmittance(k0, p) +
+               w * f.sunlit(k1, p) * f.sun_transmittance(k1, p);
+    return sum / static_cast<double>(f.points);
+}
+
+}  // namespace
+
+FacetThermal resolve_facet(const SceneFacet& facet, const io::Mat& mat) {
+    const io::Material* m = mat.find(facet.material_id);
+    if (!m)
+        throw DataError(facet.where, "facet " + facet.key + ": material " +
+                                         std::to_string(facet.material_id) + " is not in " +
+                                         mat.file);
+    double thickness_cm = facet.thickness_cm;
+    if (thickness_cm == -1) {
+        if (!m->thickness_cm)
+            throw DataError(facet.where, "facet " + facet.key +
+                                             ": no thickness (the facet gives -1 and material '" +
+                                             m->name + "' has no THICKNESS)");
+        thickness_cm = *m->thickness_cm;
+    }
+    if (!(thickness_cm > 0) || !std::isfinite(thickness_cm))
+        throw DataError(facet.where, "facet " + facet.key + ": thickness " + num(thickness_cm) +
+                                         " cm must be above 0");
+    require_positive(m->mass_density_g_cm3, "MASS_DENSITY", *m, mat);
+    require_positive(m->specific_heat_cal_g_c, "SPECIFIC_HEAT", *m, mat);
+    require_positive(m->thermal_conductivity_dcs, "THERMAL_CONDUCTIVITY", *m, mat);
+    double power = facet.power != -1 ? facet.power : m->self_generated_power.value_or(-1);
+    if (power == -1) power = 0;  // -1: none (the seed's default)
+    double exposed = facet.exposed_area != -1 ? facet.exposed_area : m->exposed_area;
+    if (!std::isfinite(power) || !std::isfinite(exposed))
+        throw DataError(facet.where, "facet " + facet.key + ": power and exposed area must be finite");
+
+    FacetThermal f;
+    f.slab.thickness_m = thickness_cm / 100.0;
+    f.slab.density_kg_m3 = m->mass_density_g_cm3 * 1000.0;
+    f.slab.specific_heat_j_kg_k = m->specific_heat_cal_g_c * kJoulesPerCalorie * 1000.0;
+    f.slab.conductivity_w_m_k =
+        m->thermal_conductivity_dcs * io::kWattsPerMeterKelvinPerDcsConductivity;
+    f.slab.volumetric_power_w_m3 = power / f.slab.thickness_m;  // power in W m-2 of facet
+    f.solar_absorptivity = m->visible_emissivity;
+    f.thermal_emissivity = m->thermal_emissivity;
+    // EXPOSED_AREA: 1 (or less) one face to the air, 2 both; between, the back's share.
+    f.back_exposure = std::clamp(exposed - 1.0, 0.0, 1.0);
+    f.normal = facet.normal;
+    return f;
+}
+
+std::vector<double> sun_factors(const io::Shd& shd, const io::ShdFacet& facet,
+                                const std::vector<EnvironmentStep>& env) {
+    const double first = shd.time_hours(0), last = shd.time_hours(shd.steps - 1);
+    const double tol = 1e-6;
+    const bool daily = last - first >= 24 - tol;
+    std::vector<double> out;
+    out.reserve(env.size());
+    for (const auto& e : env) {
+        double t = e.time_h;
+        if (t < first - tol && daily) t += 24 * std::ceil((first - t) / 24 - tol);
+        if (t < first - tol || t > last + tol)
+            out.push_back(1.0);
+        else
+            out.push_back(value_at(shd, facet, t));
+    }
+    return out;
+}
+
+namespace {
+
+struct Inputs {
+    io::Shd shd;
+    io::Wth wth;
+    io::Mat mat;
+    io::Snd snd;
+    std::vector<SceneFacet> facets;
+};
+
+Inputs read_inputs(const ThermJob& job) {
+    Inputs in;
+    in.shd = io::read_shd_file(job.shd_path);
+    in.wth = io::read_wth_file(job.wth_path);
+    in.mat = io::read_mat_file(job.mat_path);
+    in.snd = io::read_snd_file(job.snd_path);
+    in.facets = read_scene_facets(job.scene_path);
+    return in;
+}
+
+// The run's start: the .wth's first row, at least 24 h before the scene time.
+double check_times(const Inputs& in, const ThermJob& job) {
+    const double scene = in.shd.scene_time_hours;
+    const double snd_scene = scene_wth_hours(in.snd);
+    if (std::abs(scene - snd_scene) > 1e-3)
+        throw DataError({job.shd_path, 0},
+                        "scene time " + num(scene) + " h differs from " + job.snd_path + "'s " +
+                            num(snd_scene) + " h (its GMT time less the GMT offset, on the "
+                                             "scene's day)");
+    if (in.wth.rows.empty()) throw DataError({job.wth_path, 0}, "no weather rows");
+    const double start = in.wth.rows.front().time_h;
+    if (scene - start < 24 - 1e-6)
+        throw DataError({job.wth_path, 0},
+                        "the weather window starts at " + num(start) + " h, less than 24 h "
+                        "before the scene time " + num(scene) +
+                            " h (the .wth holds 48 h with the scene in the second day)");
+    return start;
+}
+
+}  // namespace
+
+ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
+    if (!(job.time_step_s > 0) || job.time_step_s > 3600)
+        throw UsageError("--time-step must be above 0 and at most 3600 s");
+    auto info = [&](const std::string& m) { if (hooks.info) hooks.info(m); };
+    const Inputs in = read_inputs(job);
+    const double start = check_times(in, job);
+    const double scene = in.shd.scene_time_hours;
+    EnvironmentSummary summary;
+    const auto env =
+        sample_environment(in.wth, job.wth_path, in.snd, start, scene, job.time_step_s, &summary);
+    const std::size_t i24 = std::min(env.size() - 1,
+                                     static_cast<std::size_t>(std::lround(86400 / job.time_step_s)));
+    info("run from " + num(start) + " h to the scene time " + num(scene) + " h, " +
+         std::to_string(env.size() - 1) + " backward-Euler steps of " + num(job.time_step_s) +
+         " s; " + std::to_string(kSlabCells) + " cells through each facet");
+    if (summary.computed_insolation_steps > 0)
+        info(std::to_string(summary.computed_insolation_steps) +
+             " steps with insolation computed (the .wth gives 0): clear-sky Meinel & Meinel "
+             "x sky exposure");
+
+    std::unordered_map<std::string, const io::ShdFacet*> history;
+    for (const auto& f : in.shd.facets) history.emplace(f.id, &f);
+    const double shd_span = in.shd.time_hours(in.shd.steps - 1) - in.shd.time_hours(0);
+    if (shd_span < 24 - 1e-6 && in.shd.time_hours(0) > start)
+        info("before the .shd's first step (" + num(in.shd.time_hours(0)) +
+             " h) facets are taken as unshadowed (the history spans less than 24 h)");
+
+    ThermResult result;
+    result.tmp.time_hours = scene;
+    std::unordered_set<std::string> used;
+    for (const SceneFacet& sf : in.facets) {
+        if (sf.temperature_c != -1) {
+            if (!(sf.temperature_c > -kKelvinOffset))
+                throw DataError(sf.where, "facet " + sf.key + ": temperature " +
+                                              num(sf.temperature_c) + " C is below absolute zero");
+            result.tmp.facets.push_back({sf.key, sf.temperature_c + kKelvinOffset, 0});
+            ++result.facets_fixed;
+            info("facet " + sf.key + ": temperature fixed by the .gdb");
+            continue;
+        }
+        auto it = history.find(sf.key);
+        if (it == history.end())
+            throw DataError({job.shd_path, 0}, "no history for facet " + sf.key + " of " +
+                                                   job.scene_path);
+        used.insert(sf.key);
+        FacetThermal f = resolve_facet(sf, in.mat);
+        f.sky_view_factor = it->second->sky_view_factor;
+        const auto sun = sun_factors(in.shd, *it->second, env);
+        const auto nodes = slab_nodes(f.slab.thickness_m, kSlabCells, kSlabGrowth);
+        Slab first(f.slab, nodes, env.front().air_k);
+        run_facet(f, env, sun, 0, i24, first, nullptr);
+        const std::vector<double> profile_24h = first.temperatures_k();
+        run_facet(f, env, sun, i24, env.size() - 1, first, nullptr);
+        Slab second(f.slab, nodes, 0);
+        second.set_temperatures_k(profile_24h);
+        run_facet(f, env, sun, 0, env.size() - 1, second, nullptr);
+        const double diff = std::abs(second.front_k() - first.front_k());
+        if (diff > result.spinup_residual_k || result.spinup_facet.empty()) {
+            result.spinup_residual_k = diff;
+            result.spinup_facet = sf.key;
+        }
+        result.tmp.facets.push_back({sf.key, second.front_k(), 0});
+        ++result.facets_solved;
+    }
+    long unused = static_cast<long>(in.shd.facets.size()) - static_cast<long>(used.size());
+    if (unused > 0 && hooks.warn)
+        hooks.warn(job.shd_path + ": " + std::to_string(unused) +
+                   " facets with a history are not in " + job.scene_path + " (ignored)");
+    return result;
+}
+
+void run_therm(const ThermJob& job, const ThermHooks& hooks) {
+    ThermResult r = compute_temperatures(job, hooks);
+    if (hooks.info) {
+        hooks.info(std::to_string(r.facets_solved) + " facets solved, " +
+                   std::to_string(r.facets_fixed) + " fixed by the .gdb");
+        if (!r.spinup_facet.empty())
+            hooks.info("spin-up residual " + num(r.spinup_residual_k) +
+                       " K (facet " + r.spinup_facet +
+                       "): the change at the scene time when the run starts from the first "
+                       "run's state 24 h in instead of the air temperature");
+    }
+    if (r.spinup_residual_k > 0.1 && hooks.warn)
+        hooks.warn("spin-up residual " + num(r.spinup_residual_k) + " K at facet " +
+                   r.spinup_facet + " (more than 0.1 K: a longer weather window would help)");
+    write_atomically(job.output_path, [&](std::ostream& out) { io::write_tmp(out, r.tmp); });
+}
+
+}  // namespace sigchain::thermal

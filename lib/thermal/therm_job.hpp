@@ -1,0 +1,58 @@
+// therm: facet temperatures (.tmp) at the scene time from the sun/shadow history (.shd),
+// weather (.wth), materials (.mat), scene (.gdb/.odb) and scene node (.snd); seed 3.4.
+// The library behind tools/therm (GDAL-apps style: options struct in, work done here).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/mat.hpp"
+#include "io/shd.hpp"
+#include "io/snd.hpp"
+#include "io/tmp.hpp"
+#include "io/wth.hpp"
+#include "thermal/facet_model.hpp"
+#include "thermal/scene_facets.hpp"
+
+namespace sigchain::thermal {
+
+struct ThermJob {
+    std::string shd_path, wth_path, mat_path, scene_path, snd_path;
+    std::string output_path = "-";
+    double time_step_s = 60;  // backward-Euler step, (0, 3600]
+};
+
+struct ThermHooks {
+    std::function<void(const std::string&)> warn;  // "FILE:LINE: ..." or plain
+    std::function<void(const std::string&)> info;  // what was assumed (--verbose)
+};
+
+// One facet's thermal description resolved from the .gdb and the .mat. Throws
+// DataError naming the .gdb FACE line (missing material, missing thickness,
+// non-physical override) or the .mat entry line (non-physical property).
+FacetThermal resolve_facet(const SceneFacet& facet, const io::Mat& mat);
+
+// Per env step: sunlit fraction x transmittance from the .shd facet, linearly
+// interpolated between its steps; a time outside the .shd window takes the value at the
+// same time of day inside it when the window spans 24 h, else 1 (unshadowed).
+std::vector<double> sun_factors(const io::Shd& shd, const io::ShdFacet& facet,
+                                const std::vector<EnvironmentStep>& env);
+
+struct ThermResult {
+    io::Tmp tmp;
+    double spinup_residual_k = 0;  // max over facets of |run 2 - run 1| at the scene time
+    std::string spinup_facet;      // where it is largest
+    long facets_solved = 0, facets_fixed = 0;
+};
+
+// Reads the inputs and computes. The run starts at the .wth's first row (which must be
+// at least 24 h before the scene time) with every node at the air temperature; it is
+// then run again from the first run's profile 24 h after the start (the same time of
+// day, so the start's influence shows as the difference). The second run is the answer.
+ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks);
+
+// compute_temperatures, then writes the .tmp atomically.
+void run_therm(const ThermJob& job, const ThermHooks& hooks);
+
+}  // namespace sigchain::thermal
