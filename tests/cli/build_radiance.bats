@@ -137,7 +137,15 @@ line_of() { sed -n "${2}p" "$1"; }
     run -1 --separate-stderr build_radiance "${QUICK[@]}" cloud.cdk "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 1: clouds and rain are not modelled"* ]] ||
         fail "stderr: $stderr"
+    sed '2s/^\(.\{60\}\)     0.000/\1     5.000/' "$DATA/rural23.cdk" > rain.cdk
+    run -1 --separate-stderr build_radiance "${QUICK[@]}" rain.cdk "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"CARD 2 RAINRT (columns 61-70) is 5 mm/h: rain is not modelled"* ]] ||
+        fail "stderr: $stderr"
+    sed '1s/^    6/    0/' "$DATA/rural23.cdk" > model0.cdk
+    run -1 --separate-stderr build_radiance "${QUICK[@]}" model0.cdk "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == "build_radiance: model0.cdk:1: CARD 1 ITYPE"*"MODEL 0"* ]] || fail "stderr: $stderr"
     [ ! -e o-1.rad ]
+    assert_no_temp_files .
 }
 
 @test "a sensor below the ground is bad data naming the scene node" {
