@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <cstdio>
+#include <cstdlib>
 
 #include "core/error.hpp"
 #include "rt/layer_solution.hpp"
@@ -27,7 +29,8 @@ constexpr double kDither = 1e-9;
 void validate(const Problem& p) {
     auto bad = [](const std::string& what) { throw Error("discrete-ordinate solver: " + what); };
     if (p.layers.empty()) bad("no layers");
-    if (p.streams < 4 || p.streams % 2 != 0) bad("streams must be even and >= 4");
+    if (p.streams < 4 || p.streams > 128 || p.streams % 2 != 0)
+        bad("streams must be even, 4 .. 128");
     for (std::size_t n = 0; n < p.layers.size(); ++n) {
         const Layer& l = p.layers[n];
         if (!(l.tau >= 0) || !(l.ssa >= 0 && l.ssa <= 1))
@@ -203,6 +206,7 @@ private:
     void user_intensities(int m, std::vector<double>& im);
     void user_source(int n, int m, const double* lam_mu, UserSource& us) const;
     double segment(int n, double mu, const UserSource& us, double ta, double tb) const;
+    double full_layer(int n, std::size_t u, const UserSource& us) const;
     double quad_intensity(int n, int a, double t) const;
     void intensity_correction();
 
@@ -218,8 +222,11 @@ private:
     std::vector<double> m_lam, m_lam0;
     std::vector<UserSource> m_us;
     std::vector<double> m_level_int;
+    std::vector<double> m_trans;  // m_trans[n * umu.size() + u] = exp(-dtau_n / |umu_u|)
     Result m_result;
     bool m_thermal = false;
+public:
+    int m_modes = 0;
 };
 
 void Solver::setup() {
@@ -234,6 +241,11 @@ void Solver::setup() {
     m_thermal = !m_p.planck_levels.empty();
     for (int n = 0; n < m_L; ++n)
         m_s.optics[n].beam_top = m_p.beam_flux * std::exp(-m_s.tau_s_level[n] / m_p.beam_mu0);
+    const std::size_t nu = m_p.umu.size();
+    m_trans.assign(m_L * nu, 0.0);
+    for (int n = 0; n < m_L; ++n)
+        for (std::size_t u = 0; u < nu; ++u)
+            m_trans[n * nu + u] = std::exp(-m_s.optics[n].dtau / std::abs(m_p.umu[u]));
     m_result.levels.assign(m_p.utau.size(), LevelResult{});
     for (auto& lev : m_result.levels) lev.intensity.assign(m_p.umu.size() * m_p.phi_deg.size(), 0.0);
 }
@@ -300,16 +312,21 @@ void Solver::user_source(int n, int m, const double* lam_mu, UserSource& us) con
     const LayerSolution& s = m_sol[n];
     const LayerOptics& o = m_s.optics[n];
     const int nn = m_q.nn, nl = s.nl;
-    us.hd.assign(nn, 0.0);
-    us.hg.assign(nn, 0.0);
+    // Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu): split the sum into even and odd l + m.
+    double even[64] = {}, odd[64] = {};
+    for (int l = m; l < nl; l += 2) {
+        const double* h = &s.hmom[l * nn];
+        for (int j = 0; j < nn; ++j) even[j] += lam_mu[l] * h[j];
+    }
+    for (int l = m + 1; l < nl; l += 2) {
+        const double* h = &s.hmom[l * nn];
+        for (int j = 0; j < nn; ++j) odd[j] += lam_mu[l] * h[j];
+    }
+    us.hd.resize(nn);
+    us.hg.resize(nn);
     for (int j = 0; j < nn; ++j) {
-        double e = 0, od = 0;
-        for (int l = m; l < nl; ++l) {
-            const double v = lam_mu[l] * s.hmom[j * nl + l];
-            if ((l + m) % 2 == 0) e += v; else od += v;
-        }
-        us.hd[j] = e + od;  // Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu)
-        us.hg[j] = e - od;
+        us.hd[j] = even[j] + odd[j];
+        us.hg[j] = even[j] - odd[j];
     }
     us.hb = 0;
     us.a0 = 0;
@@ -362,6 +379,55 @@ double Solver::segment(int n, double mu, const UserSource& us, double ta, double
     return v;
 }
 
+// Integral of exp(-a s - b (L - s)) over [0, L] = (e_a - e_b) / (b - a), from the
+// precomputed ends e_a = exp(-a L), e_b = exp(-b L); a series when a L and b L nearly
+// coincide (resonance of a user angle with an eigenvalue or the beam).
+inline double two_exp(double ea, double eb, double a, double b, double len) {
+    const double d = (b - a) * len;
+    if (std::abs(d) < 1e-3) return ea * len * (1 - d * (0.5 - d * (1.0 / 6 - d / 24)));
+    return (ea - eb) / (b - a);
+}
+
+// segment(n, mu, us, 0, dtau) without exponentials: the layer's exponentials
+// e^{-k dtau}, e^{-dtau/|mu|} and e^{-dtau/mu0'} are precomputed.
+double Solver::full_layer(int n, std::size_t u, const UserSource& us) const {
+    const LayerSolution& s = m_sol[n];
+    const double dt = m_s.optics[n].dtau;
+    const int nn = m_q.nn;
+    const double* c = &m_x[n * 2 * nn];
+    const double mu = m_p.umu[u], amu = std::abs(mu), im = 1 / amu;
+    const double et = m_trans[n * m_p.umu.size() + u];
+    // With x = k |mu|: the term decaying along the direction of travel integrates to
+    // (1 - e^{-k dt} e^{-dt/|mu|}) / (1 + x), the other to (e^{-dt/|mu|} - e^{-k dt}) / (x - 1)
+    // (two_exp with a = k + 1/|mu|, b = 0 and a = 1/|mu|, b = k, divided by |mu|).
+    double same[64], other[64];
+    bool resonance = false;
+    for (int j = 0; j < nn; ++j) {
+        const double x = s.k[j] * amu, ek = s.exp_k[j];
+        same[j] = (1 - ek * et) / (1 + x);
+        other[j] = (et - ek) / (x - 1);
+        resonance = resonance || std::abs(x - 1) * dt * im < 1e-3;
+    }
+    if (resonance)
+        for (int j = 0; j < nn; ++j)
+            if (std::abs(s.k[j] * amu - 1) * dt * im < 1e-3)
+                other[j] = two_exp(et, s.exp_k[j], im, s.k[j], dt) * im;
+    double v = 0;
+    if (mu > 0) {
+        for (int j = 0; j < nn; ++j) v += c[j] * us.hd[j] * same[j] + c[nn + j] * us.hg[j] * other[j];
+    } else {
+        for (int j = 0; j < nn; ++j) v += c[j] * us.hd[j] * other[j] + c[nn + j] * us.hg[j] * same[j];
+    }
+    if (us.hb != 0) {
+        const double eb = s.exp_beam;
+        v += im * us.hb * (mu > 0 ? two_exp(eb * et, 1.0, s.inv_mu0 + im, 0.0, dt)
+                                  : two_exp(eb, et, s.inv_mu0, im, dt));
+    }
+    if (mu > 0) v += us.a0 * (1 - et) + us.a1 * (amu * (1 - et) - dt * et);
+    else v += us.a0 * (1 - et) + us.a1 * (dt - amu * (1 - et));
+    return v;
+}
+
 // Intensities of mode m at every output depth and user direction: im[level * nu + u].
 void Solver::user_intensities(int m, std::vector<double>& im) {
     const std::size_t nu = m_p.umu.size();
@@ -387,9 +453,7 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
             }
             m_level_int[m_L] = bottom;
             for (int n = m_L - 1; n >= 0; --n) {
-                const double dt = m_s.optics[n].dtau;
-                m_level_int[n] = m_level_int[n + 1] * std::exp(-dt / mu) +
-                                 segment(n, mu, m_us[n], 0, dt);
+                m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + full_layer(n, u, m_us[n]);
             }
             for (std::size_t i = 0; i < m_pos.size(); ++i) {
                 const Position& ps = m_pos[i];
@@ -400,9 +464,7 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
         } else {
             m_level_int[0] = m == 0 ? m_p.top_isotropic + m_p.top_emission : 0.0;
             for (int n = 0; n < m_L; ++n) {
-                const double dt = m_s.optics[n].dtau;
-                m_level_int[n + 1] = m_level_int[n] * std::exp(dt / mu) +
-                                     segment(n, mu, m_us[n], 0, dt);
+                m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + u] + full_layer(n, u, m_us[n]);
             }
             for (std::size_t i = 0; i < m_pos.size(); ++i) {
                 const Position& ps = m_pos[i];
@@ -416,59 +478,74 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
 // Nakajima & Tanaka (1988, JQSRT 40, 51) TMS correction: the single-scattered beam
 // computed with the truncated delta-M phase function is replaced by the one with the
 // exact phase function, P(cos) omega / (1 - omega f) in the scaled medium (their eq. 13).
+// The correction is sum_l P_l(cos scattering angle) e_l(level, mu), with
+// e_l = sum_n d_nl T_n: d_nl the layer's moment difference, T_n the beam's path integral
+// through layer n seen from the output level.
 void Solver::intensity_correction() {
-    const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size();
+    const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size(), npos = m_pos.size();
     const double mu0 = m_p.beam_mu0;
-    std::size_t nmom = 0;
+    std::size_t nmom = m_N;
     for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
-    std::vector<double> pl(std::max<std::size_t>(nmom, m_N));
-    std::vector<double> coef(m_L), full(m_L), lev(m_L + 1);
+    std::vector<double> d(m_L * nmom, 0.0);
+    for (int n = 0; n < m_L; ++n) {
+        const Layer& layer = m_p.layers[n];
+        const LayerOptics& o = m_s.optics[n];
+        for (std::size_t l = 0; l < nmom; ++l) {
+            const double exact = l < layer.pmom.size() ? layer.pmom[l] : 0.0;
+            const double trunc = l < static_cast<std::size_t>(m_N) ? o.g[l] : 0.0;
+            d[n * nmom + l] = m_p.beam_flux / (4 * kPi) * (2.0 * l + 1) *
+                              (layer.ssa * exact / (1 - layer.ssa * m_s.f[n]) - o.ssa * trunc);
+        }
+    }
+    std::vector<double> tn(m_L), e(npos * nmom), pl(std::max<std::size_t>(nmom, 2));
+    std::vector<double> rec_a(nmom), rec_b(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
+    for (std::size_t l = 2; l < nmom; ++l) rec_a[l] = (2.0 * l - 1) / l, rec_b[l] = (l - 1.0) / l;
     for (std::size_t u = 0; u < nu; ++u) {
         const double mu = m_p.umu[u];
-        // Beam integral across each full layer and the attenuation through it.
-        for (int n = 0; n < m_L; ++n) {
-            const double dt = m_s.optics[n].dtau;
-            const double e0 = std::exp(-m_s.tau_s_level[n] / mu0);
-            full[n] = mu > 0 ? e0 * exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu
-                             : e0 * exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) / -mu;
+        std::fill(e.begin(), e.end(), 0.0);
+        for (std::size_t i = 0; i < npos; ++i) {
+            const Position& ps = m_pos[i];
+            const int np = ps.layer;
+            std::fill(tn.begin(), tn.end(), 0.0);
+            // T_n: beam path integral of layer n, attenuated to the output level.
+            double atten = 1;
+            const double dtp = m_s.optics[np].dtau;
+            const double e0 = std::exp(-m_s.tau_s_level[np] / mu0);
+            if (mu > 0) {
+                tn[np] = e0 * exp_integral(-ps.t / mu0, -(1 / mu0 + 1 / mu), dtp - ps.t) / mu;
+                atten = std::exp(-(dtp - ps.t) / mu);
+                for (int n = np + 1; n < m_L; ++n) {
+                    const double dt = m_s.optics[n].dtau;
+                    tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
+                            exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu;
+                    atten *= m_trans[n * nu + u];
+                }
+            } else {
+                tn[np] = e0 * exp_integral(ps.t / mu, -1 / mu - 1 / mu0, ps.t) / -mu;
+                atten = std::exp(ps.t / mu);
+                for (int n = np - 1; n >= 0; --n) {
+                    const double dt = m_s.optics[n].dtau;
+                    tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
+                            exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) / -mu;
+                    atten *= m_trans[n * nu + u];
+                }
+            }
+            for (int n = 0; n < m_L; ++n) {
+                if (tn[n] == 0) continue;
+                for (std::size_t l = 0; l < nmom; ++l) e[i * nmom + l] += d[n * nmom + l] * tn[n];
+            }
         }
         for (std::size_t f = 0; f < nphi; ++f) {
             const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
             const double cos_scat = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) *
                                                      std::cos(dphi);
-            // Legendre polynomials P_l(cos_scat).
             pl[0] = 1;
-            if (pl.size() > 1) pl[1] = cos_scat;
-            for (std::size_t l = 2; l < pl.size(); ++l)
-                pl[l] = ((2.0 * l - 1) * cos_scat * pl[l - 1] - (l - 1.0) * pl[l - 2]) / l;
-            for (int n = 0; n < m_L; ++n) {
-                const Layer& layer = m_p.layers[n];
-                const LayerOptics& o = m_s.optics[n];
-                double exact = 0, trunc = 0;
-                for (std::size_t l = 0; l < layer.pmom.size(); ++l)
-                    exact += (2.0 * l + 1) * layer.pmom[l] * pl[l];
-                for (int l = 0; l < m_N; ++l) trunc += (2.0 * l + 1) * o.g[l] * pl[l];
-                coef[n] = m_p.beam_flux / (4 * kPi) *
-                          (layer.ssa * exact / (1 - layer.ssa * m_s.f[n]) - o.ssa * trunc);
-            }
-            for (std::size_t i = 0; i < m_pos.size(); ++i) {
-                const Position& ps = m_pos[i];
-                const int np = ps.layer;
-                const double dt = m_s.optics[np].dtau;
-                const double e0 = std::exp(-m_s.tau_s_level[np] / mu0);
+            pl[1] = cos_scat;
+            for (std::size_t l = 2; l < nmom; ++l)
+                pl[l] = rec_a[l] * cos_scat * pl[l - 1] - rec_b[l] * pl[l - 2];
+            for (std::size_t i = 0; i < npos; ++i) {
                 double corr = 0;
-                if (mu > 0) {
-                    for (int n = m_L - 1; n > np; --n)
-                        corr = corr * std::exp(-m_s.optics[n].dtau / mu) + coef[n] * full[n];
-                    corr = corr * std::exp(-(dt - ps.t) / mu) +
-                           coef[np] * e0 *
-                               exp_integral(-ps.t / mu0, -(1 / mu0 + 1 / mu), dt - ps.t) / mu;
-                } else {
-                    for (int n = 0; n < np; ++n)
-                        corr = corr * std::exp(m_s.optics[n].dtau / mu) + coef[n] * full[n];
-                    corr = corr * std::exp(ps.t / mu) +
-                           coef[np] * e0 * exp_integral(ps.t / mu, -1 / mu - 1 / mu0, ps.t) / -mu;
-                }
+                for (std::size_t l = 0; l < nmom; ++l) corr += pl[l] * e[i * nmom + l];
                 m_result.levels[i].intensity[u * nphi + f] += corr;
             }
         }
@@ -480,7 +557,7 @@ Result Solver::run() {
     const bool beam = m_p.beam_flux > 0;
     const int modes = beam && !m_p.umu.empty() ? m_N : 1;
     const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size();
-    std::vector<double> im;
+    std::vector<double> im, cos_m(nphi);
     int converged = 0;
     for (int m = 0; m < modes; ++m) {
         solve_mode(m);
@@ -488,15 +565,17 @@ Result Solver::run() {
         if (nu == 0) continue;
         user_intensities(m, im);
         double worst = 0;
+        for (std::size_t f = 0; f < nphi; ++f)
+            cos_m[f] = std::cos(m * (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180);
         for (std::size_t i = 0; i < m_pos.size(); ++i)
             for (std::size_t u = 0; u < nu; ++u)
                 for (std::size_t f = 0; f < nphi; ++f) {
-                    const double c = std::cos(m * (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180);
-                    const double add = im[i * nu + u] * c;
+                    const double add = im[i * nu + u] * cos_m[f];
                     double& total = m_result.levels[i].intensity[u * nphi + f];
                     total += add;
                     if (total != 0) worst = std::max(worst, std::abs(add / total));
                 }
+        m_modes = m + 1;
         if (m > 0 && m_p.azimuth_accuracy > 0) {
             converged = worst <= m_p.azimuth_accuracy ? converged + 1 : 0;
             if (converged >= 2) break;
@@ -513,7 +592,9 @@ Result Solver::run() {
 Result solve(const Problem& problem) {
     validate(problem);
     Solver solver(problem);
-    return solver.run();
+    Result r = solver.run();
+    if (std::getenv("RT_DEBUG_MODES")) std::fprintf(stderr, "modes %d\n", solver.m_modes);
+    return r;
 }
 
 }  // namespace sigchain::rt

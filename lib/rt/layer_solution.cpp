@@ -101,8 +101,9 @@ void scatter_moments(const Quadrature& q, int m, const LayerOptics& o, const dou
         if (l < m) continue;
         const double c = 0.5 * o.ssa * (2 * l + 1) * o.g[l];
         if (c == 0) continue;
+        const double* lm = lam + l * n2;
         double s = 0;
-        for (int a = 0; a < n2; ++a) s += q.weight[a % nn] * lam[l * n2 + a] * v[a];
+        for (int a = 0; a < nn; ++a) s += q.weight[a] * (lm[a] * v[a] + lm[nn + a] * v[nn + a]);
         mom[l] = c * s;
     }
 }
@@ -113,12 +114,17 @@ void scattering_operator(const Quadrature& q, int m, const LayerOptics& o, const
                          int nl, const double* diag, std::vector<double>& mat) {
     const int nn = q.nn, n2 = 2 * nn;
     mat.assign(n2 * n2, 0.0);
+    double wl[128];  // N <= 128 (checked by solve)
     for (int l = m; l < nl; ++l) {
         const double c = 0.5 * o.ssa * (2 * l + 1) * o.g[l];
         if (c == 0) continue;
         const double* lm = lam + l * n2;
-        for (int a = 0; a < n2; ++a)
-            for (int b = 0; b < n2; ++b) mat[a * n2 + b] -= c * lm[a] * lm[b] * q.weight[b % nn];
+        for (int b = 0; b < n2; ++b) wl[b] = c * lm[b] * q.weight[b % nn];
+        for (int a = 0; a < n2; ++a) {
+            const double la = lm[a];
+            double* row = &mat[a * n2];
+            for (int b = 0; b < n2; ++b) row[b] -= la * wl[b];
+        }
     }
     for (int a = 0; a < n2; ++a) mat[a * n2 + a] += diag[a];
 }
@@ -203,15 +209,17 @@ void solve_layer(const Quadrature& q, int m, const LayerOptics& optics, const do
     out.gm.assign(nn * nn, 0.0);
     homogeneous(q, m, optics, lam, out, scratch);
     out.hmom.assign(nn * nl, 0.0);
-    std::vector<double> v(n2);
+    double v[128], mom[128];
     for (int j = 0; j < nn; ++j) {
         for (int a = 0; a < n2; ++a) v[a] = out.dec(j, a);
-        scatter_moments(q, m, optics, lam, nl, v.data(), &out.hmom[j * nl]);
+        scatter_moments(q, m, optics, lam, nl, v, mom);
+        for (int l = 0; l < nl; ++l) out.hmom[l * nn + j] = mom[l];
     }
     out.beam.assign(n2, 0.0);
     out.bmom.assign(nl, 0.0);
     out.inv_mu0 = mu0 > 0 ? 1 / mu0 : 0;
     if (optics.beam_top > 0) beam_particular(q, m, optics, lam, mu0, lam0, out, scratch);
+    out.exp_beam = std::exp(-optics.dtau * out.inv_mu0);
     out.thermal0.assign(n2, 0.0);
     out.tmom.assign(nl, 0.0);
     if (thermal && m == 0) thermal_particular(q, optics, lam, out, scratch);

@@ -39,7 +39,8 @@ struct LayerSolution {
     std::vector<double> beam;     // beam particular solution at the top of the layer, N values
     std::vector<double> thermal0; // thermal particular solution constant part, N values
     double inv_mu0 = 0;           // 1/mu0 used by the beam particular solution
-    std::vector<double> hmom;     // hmom[j * nl + l]: scattering moments of solution j (decaying)
+    double exp_beam = 0;          // e^{-dtau inv_mu0}
+    std::vector<double> hmom;     // hmom[l * nn + j]: scattering moments of solution j (decaying)
     std::vector<double> bmom;     // beam source moments (scattered particular + primary)
     std::vector<double> tmom;     // thermal scattered moments of thermal0
 
