@@ -166,6 +166,11 @@ ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
              " steps with insolation computed (the .wth gives 0): clear-sky Meinel & Meinel "
              "x sky exposure");
 
+    info("model: sky emissivity Brutsaert (1975) with Crawford & Duchon (1999) clouds "
+         "(cloud fraction = 1 - sky exposure); convection h = 5.7 + 3.8 v (McAdams); the "
+         "part of the view that is not sky is black at the air temperature");
+    info("units: mat(5) UNITS (SPECIFIC_HEAT cal/g/C, MASS_DENSITY g/cm3, THICKNESS cm, "
+         "THERMAL_CONDUCTIVITY 0.04184 W/m/K per unit); SELF_GENERATED_POWER W/m2 of facet");
     std::unordered_map<std::string, const io::ShdFacet*> history;
     for (const auto& f : in.shd.facets) history.emplace(f.id, &f);
     const double shd_span = in.shd.time_hours(in.shd.steps - 1) - in.shd.time_hours(0);
@@ -176,6 +181,7 @@ ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
     ThermResult result;
     result.tmp.time_hours = scene;
     std::unordered_set<std::string> used;
+    std::unordered_set<long> reported;  // materials whose back face was reported
     for (const SceneFacet& sf : in.facets) {
         if (sf.temperature_c != -1) {
             if (!(sf.temperature_c > -kKelvinOffset))
@@ -192,6 +198,11 @@ ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
                                                    job.scene_path);
         used.insert(sf.key);
         FacetThermal f = resolve_facet(sf, in.mat);
+        if (reported.insert(sf.material_id).second)
+            info("material " + std::to_string(sf.material_id) + ": " +
+                 (f.back_exposure > 0 ? "back face exposed to the air x " + num(f.back_exposure)
+                                      : std::string("back face insulated")) +
+                 " (EXPOSED_AREA: 1 or less one face, 2 both)");
         f.sky_view_factor = it->second->sky_view_factor;
         const auto sun = sun_factors(in.shd, *it->second, env);
         const auto nodes = slab_nodes(f.slab.thickness_m, kSlabCells, kSlabGrowth);
