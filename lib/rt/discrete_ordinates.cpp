@@ -5,8 +5,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <cstdio>
-#include <cstdlib>
 
 #include "core/error.hpp"
 #include "rt/layer_solution.hpp"
@@ -225,8 +223,6 @@ private:
     std::vector<double> m_trans;  // m_trans[n * umu.size() + u] = exp(-dtau_n / |umu_u|)
     Result m_result;
     bool m_thermal = false;
-public:
-    int m_modes = 0;
 };
 
 void Solver::setup() {
@@ -575,7 +571,6 @@ Result Solver::run() {
                     total += add;
                     if (total != 0) worst = std::max(worst, std::abs(add / total));
                 }
-        m_modes = m + 1;
         if (m > 0 && m_p.azimuth_accuracy > 0) {
             converged = worst <= m_p.azimuth_accuracy ? converged + 1 : 0;
             if (converged >= 2) break;
@@ -592,9 +587,7 @@ Result Solver::run() {
 Result solve(const Problem& problem) {
     validate(problem);
     Solver solver(problem);
-    Result r = solver.run();
-    if (std::getenv("RT_DEBUG_MODES")) std::fprintf(stderr, "modes %d\n", solver.m_modes);
-    return r;
+    return solver.run();
 }
 
 }  // namespace sigchain::rt

@@ -1,0 +1,205 @@
+// Analytic and conservation checks of the discrete-ordinate solver and planck_band.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "rt/discrete_ordinates.hpp"
+#include "rt/planck.hpp"
+
+namespace sigchain::rt {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::vector<double> henyey_greenstein(double g, int count) {
+    std::vector<double> m;
+    for (int k = 0; k < count; ++k) m.push_back(std::pow(g, k));
+    return m;
+}
+
+// Stefan-Boltzmann constant (CODATA 2018, derived from exact h, c, k), W m-2 K-4.
+constexpr double kSigma = 5.670374419e-8;
+
+TEST(PlanckBand, WholeSpectrumIsSigmaT4OverPi) {
+    // 0 .. infinity: the series and the head/tail split are exact to rounding; 1e-10.
+    for (double t : {100.0, 288.0, 1000.0, 5778.0}) {
+        const double b = planck_band(0, INFINITY, t);
+        EXPECT_NEAR(b / (kSigma * std::pow(t, 4) / kPi), 1.0, 1e-10) << t;
+    }
+}
+
+TEST(PlanckBand, RayleighJeansAndWienLimits) {
+    const double h = 6.62607015e-34, c = 299792458.0, k = 1.380649e-23;
+    // Rayleigh-Jeans: B = 2 c k T nu^2 (nu in m-1); band 0.01-0.02 cm-1 at 300 K has
+    // h c nu / k T < 1e-4, so the relative deviation from RJ is ~ x/2 < 1e-4 (tolerance 1e-4).
+    {
+        const double lo = 1.0, hi = 2.0, t = 300;  // m-1
+        const double rj = 2 * c * k * t * (hi * hi * hi - lo * lo * lo) / 3;
+        EXPECT_NEAR(planck_band(lo / 100, hi / 100, t) / rj, 1.0, 1e-4);
+    }
+    // Wien: B = 2 h c^2 nu^3 exp(-h c nu / k T); at x = h c nu / k T > 30 the neglected
+    // exp(-x) is < 1e-13; the analytic integral of nu^3 e^{-a nu} is used (tolerance 1e-9).
+    {
+        const double t = 200, lo = 500000.0, hi = 510000.0;  // m-1 (5000-5100 cm-1)
+        const double a = h * c / (k * t);
+        auto prim = [&](double nu) {  // antiderivative of nu^3 e^{-a nu}
+            return -std::exp(-a * nu) *
+                   (nu * nu * nu / a + 3 * nu * nu / (a * a) + 6 * nu / (a * a * a) + 6 / (a * a * a * a));
+        };
+        const double wien = 2 * h * c * c * (prim(hi) - prim(lo));
+        EXPECT_NEAR(planck_band(lo / 100, hi / 100, t) / wien, 1.0, 1e-9);
+    }
+    EXPECT_EQ(planck_band(100, 200, 0), 0.0);
+    EXPECT_THROW(planck_band(200, 100, 300), Error);
+}
+
+Problem beam_problem(double ssa, double g, int layers, int streams) {
+    Problem p;
+    p.streams = streams;
+    for (int n = 0; n < layers; ++n) {
+        Layer l;
+        l.tau = 0.3 + 0.7 * n;
+        l.ssa = ssa;
+        l.pmom = henyey_greenstein(g, 2 * streams);
+        p.layers.push_back(l);
+    }
+    p.beam_flux = 2.5;
+    p.beam_mu0 = 0.37;
+    return p;
+}
+
+TEST(Solver, ConservativeScatteringConservesEnergy) {
+    // omega = 1, black surface: reflected + transmitted (direct + diffuse) = mu0 F. The
+    // omega = 1 - 1e-9 dither absorbs ~1e-9 per unit photon path (paths ~ tau^2 ~ 1e2 here),
+    // and the quadrature conserves flux to rounding, so 1e-6 relative.
+    for (bool delta_m : {false, true})
+        for (int streams : {4, 16, 32}) {
+            Problem p = beam_problem(1.0, 0.8, 4, streams);
+            p.delta_m = delta_m;
+            double total = 0;
+            for (const Layer& l : p.layers) total += l.tau;
+            p.utau = {0, total};
+            const Result r = solve(p);
+            const double incident = p.beam_mu0 * p.beam_flux;
+            const double out = r.levels[0].diffuse_up + r.levels[1].diffuse_down + r.levels[1].direct_down;
+            EXPECT_NEAR(out / incident, 1.0, 1e-6) << "streams " << streams << " delta_m " << delta_m;
+            // Net flux is constant with depth: dfdt = 0 (to the same relative 1e-6).
+            EXPECT_NEAR(r.levels[0].dfdt / incident, 0.0, 1e-6);
+        }
+}
+
+TEST(Solver, NonScatteringLayerIsBeerLambert) {
+    // ssa = 0: direct = mu0 F exp(-tau/mu0) exactly and no diffuse light (1e-12 relative).
+    Problem p = beam_problem(0.0, 0.0, 3, 8);
+    p.utau = {0, 0.15, 0.3, 1.0, 2.4};
+    p.umu = {-0.7, 0.4};
+    p.phi_deg = {0, 90};
+    const Result r = solve(p);
+    for (std::size_t i = 0; i < p.utau.size(); ++i) {
+        const double want = p.beam_mu0 * p.beam_flux * std::exp(-p.utau[i] / p.beam_mu0);
+        EXPECT_NEAR(r.levels[i].direct_down / want, 1.0, 1e-12);
+        EXPECT_NEAR(r.levels[i].diffuse_down, 0.0, 1e-12);
+        EXPECT_NEAR(r.levels[i].diffuse_up, 0.0, 1e-12);
+        for (double v : r.levels[i].intensity) EXPECT_NEAR(v, 0.0, 1e-12);
+    }
+}
+
+TEST(Solver, ThickIsothermalAbsorberEmitsPlanck) {
+    // Pure absorber, tau = 60, B = 3 everywhere, cold black surface and nothing incident:
+    // the top emits I = B (1 - exp(-tau/mu)) in every direction (Kirchhoff), F_up = pi B.
+    // exp(-60/0.05) is negligible; tolerance 1e-10 relative (rounding only).
+    Problem p;
+    p.streams = 8;
+    for (int n = 0; n < 3; ++n) p.layers.push_back(Layer{20.0, 0.0, {1.0}});
+    p.planck_levels.assign(4, 3.0);
+    p.utau = {0, 30};
+    p.umu = {0.05, 0.3, 1.0};
+    p.phi_deg = {0};
+    const Result r = solve(p);
+    for (double v : r.levels[0].intensity) EXPECT_NEAR(v / 3.0, 1.0, 1e-10);
+    EXPECT_NEAR(r.levels[0].diffuse_up / (kPi * 3.0), 1.0, 1e-10);
+    // Deep inside: isotropic B both ways and no net flux divergence.
+    EXPECT_NEAR(r.levels[1].diffuse_down / (kPi * 3.0), 1.0, 1e-10);
+    EXPECT_NEAR(r.levels[1].mean_intensity / 3.0, 1.0, 1e-10);
+    EXPECT_NEAR(r.levels[1].dfdt, 0.0, 1e-9);
+}
+
+TEST(Solver, AzimuthConvergenceStopMatchesAllModes) {
+    // The early stop (accuracy 1e-5 of each intensity, two successive modes) changes
+    // intensities by at most a few times 1e-5 of their value; tolerance 1e-4 relative.
+    Problem p = beam_problem(0.95, 0.6, 3, 16);
+    double total = 0;
+    for (const Layer& l : p.layers) total += l.tau;
+    p.utau = {0, total};
+    p.umu = {-0.9, -0.5, -0.1, 0.1, 0.5, 0.9};
+    p.phi_deg = {0, 45, 90, 135, 180};
+    p.azimuth_accuracy = 0;
+    const Result all = solve(p);
+    p.azimuth_accuracy = 1e-5;
+    const Result early = solve(p);
+    for (std::size_t i = 0; i < p.utau.size(); ++i)
+        for (std::size_t k = 0; k < all.levels[i].intensity.size(); ++k)
+            EXPECT_NEAR(early.levels[i].intensity[k], all.levels[i].intensity[k],
+                        1e-4 * std::abs(all.levels[i].intensity[k]) + 1e-12);
+}
+
+TEST(Solver, RejectsInvalidInput) {
+    Problem p = beam_problem(0.5, 0.5, 1, 8);
+    p.streams = 7;
+    EXPECT_THROW(solve(p), Error);
+    p = beam_problem(0.5, 0.5, 1, 8);
+    p.layers[0].ssa = 1.5;
+    EXPECT_THROW(solve(p), Error);
+    p = beam_problem(0.5, 0.5, 1, 8);
+    p.utau = {0.5, 0.1};
+    EXPECT_THROW(solve(p), Error);
+    p = beam_problem(0.5, 0.5, 1, 8);
+    p.umu = {0.0};
+    EXPECT_THROW(solve(p), Error);
+    p.layers.clear();
+    EXPECT_THROW(solve(p), Error);
+}
+
+// build_radiance's typical call: 35 layers, 16 streams, Rayleigh + Henyey-Greenstein
+// moments, 110 user cosines, 2 depths, 40 azimuths, beam on. Prints the time per call
+// (best of 5, one core); fails only on a gross regression (10x the 5 ms target).
+TEST(Solver, TypicalBuildRadianceCallTime) {
+    Problem p;
+    p.streams = 16;
+    for (int n = 0; n < 35; ++n) {
+        Layer l;
+        const double tr = 0.05 * std::exp(-n / 8.0), ta = 0.02 * std::exp(-(35 - n) / 6.0);
+        l.tau = tr + ta + 0.01;
+        l.ssa = (tr + 0.9 * ta) / l.tau;
+        for (int k = 0; k < 64; ++k) {
+            const double rayleigh = k == 0 ? 1 : (k == 2 ? 0.1 : 0);
+            l.pmom.push_back((tr * rayleigh + 0.9 * ta * std::pow(0.7, k)) / (tr + 0.9 * ta));
+        }
+        p.layers.push_back(l);
+    }
+    p.beam_flux = 1;
+    p.beam_mu0 = 0.6;
+    p.albedo = 0.2;
+    double total = 0;
+    for (const Layer& l : p.layers) total += l.tau;
+    p.utau = {0, total};
+    for (int i = 0; i < 110; ++i) p.umu.push_back(-1 + 2.0 * (i + 0.5) / 110);
+    for (int i = 0; i < 40; ++i) p.phi_deg.push_back(i * 180.0 / 39);
+    double best = 1e9;
+    for (int rep = 0; rep < 5; ++rep) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const Result r = solve(p);
+        const auto t1 = std::chrono::steady_clock::now();
+        best = std::min(best, std::chrono::duration<double, std::milli>(t1 - t0).count());
+        ASSERT_EQ(r.levels.size(), 2u);
+    }
+    std::printf("solve(): %.2f ms per typical build_radiance call (best of 5)\n", best);
+    EXPECT_LT(best, 50.0);
+}
+
+}  // namespace
+}  // namespace sigchain::rt
