@@ -58,16 +58,15 @@ WeatherSample interpolate_weather(const io::Wth& wth, double time_h, const std::
     const auto& rows = wth.rows;
     const double tol = io::kWthTimeTolerance_h;
     if (rows.empty() || time_h < rows.front().time_h - tol || time_h > rows.back().time_h + tol)
-        throw DataError({file, 0},
-                        "the weather window (" +
-                            (rows.empty() ? std::string("no rows")
-                                          : hours_str(rows.front().time_h) + " to " +
-                                                hours_str(rows.back().time_h) + " h") +
-                            ") does not cover " + hours_str(time_h) + " h");
+        throw DataError({file, 0}, "the weather window (" +
+                                       (rows.empty() ? std::string("no rows")
+                                                     : hours_str(rows.front().time_h) + " to " +
+                                                           hours_str(rows.back().time_h) + " h") +
+                                       ") does not cover " + hours_str(time_h) + " h");
     auto upper = std::upper_bound(rows.begin(), rows.end(), time_h,
                                   [](double t, const io::WthRow& r) { return t < r.time_h; });
-    std::size_t i1 = std::min<std::size_t>(static_cast<std::size_t>(upper - rows.begin()),
-                                           rows.size() - 1);
+    std::size_t i1 =
+        std::min<std::size_t>(static_cast<std::size_t>(upper - rows.begin()), rows.size() - 1);
     std::size_t i0 = i1 > 0 ? i1 - 1 : 0;
     const io::WthRow& a = rows[i0];
     const io::WthRow& b = rows[i1];
@@ -78,8 +77,7 @@ WeatherSample interpolate_weather(const io::Wth& wth, double time_h, const std::
     s.air_k = lerp(a.air_temperature_c, b.air_temperature_c) + kKelvinOffset;
     s.vapour_pressure_hpa = lerp(vapour_pressure_hpa(a), vapour_pressure_hpa(b));
     s.wind_m_s = lerp(a.wind_speed_m_s, b.wind_speed_m_s);
-    s.direct_horizontal_w_m2 =
-        measured_w_m2(a.direct_insolation_ly_h, b.direct_insolation_ly_h, f);
+    s.direct_horizontal_w_m2 = measured_w_m2(a.direct_insolation_ly_h, b.direct_insolation_ly_h, f);
     s.diffuse_horizontal_w_m2 =
         measured_w_m2(a.diffuse_insolation_ly_h, b.diffuse_insolation_ly_h, f);
     s.sky_exposure = std::clamp(lerp(a.sky_exposure, b.sky_exposure), 0.0, 1.0);
@@ -92,7 +90,8 @@ double saturation_vapour_pressure_hpa(double t_c) {
 
 double vapour_pressure_hpa(const io::WthRow& row) {
     if (row.relative_humidity_pct < 0) return saturation_vapour_pressure_hpa(row.dew_point_c);
-    return row.relative_humidity_pct / 100.0 * saturation_vapour_pressure_hpa(row.air_temperature_c);
+    return row.relative_humidity_pct / 100.0 *
+           saturation_vapour_pressure_hpa(row.air_temperature_c);
 }
 
 double clear_sky_emissivity(double air_k, double vapour_pressure_hpa) {
@@ -113,7 +112,8 @@ double air_mass(double zenith_deg) {
 
 double clear_sky_direct_normal_w_m2(double zenith_deg, double earth_sun_au) {
     if (zenith_deg >= 90) return 0;
-    return 1353.0 / (earth_sun_au * earth_sun_au) * std::pow(0.7, std::pow(air_mass(zenith_deg), 0.678));
+    return 1353.0 / (earth_sun_au * earth_sun_au) *
+           std::pow(0.7, std::pow(air_mass(zenith_deg), 0.678));
 }
 
 double clear_sky_diffuse_horizontal_w_m2(double zenith_deg, double earth_sun_au) {
@@ -141,8 +141,8 @@ UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours) {
 
 namespace {
 
-EnvironmentStep environment_at(const io::Wth& wth, const std::string& wth_file,
-                               const io::Snd& snd, double time_h, EnvironmentSummary* summary) {
+EnvironmentStep environment_at(const io::Wth& wth, const std::string& wth_file, const io::Snd& snd,
+                               double time_h, EnvironmentSummary* summary) {
     const WeatherSample w = interpolate_weather(wth, time_h, wth_file);
     const UtTime ut = ut_of_wth_hours(snd, time_h);
     atmos::SolarPositionInput in;

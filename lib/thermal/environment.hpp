@@ -60,13 +60,13 @@ double clear_sky_diffuse_horizontal_w_m2(double zenith_deg, double earth_sun_au)
 
 // The environment at one time on the thermal grid.
 struct EnvironmentStep {
-    double time_h = 0;              // the .wth clock: hours from midnight of the day before
+    double time_h = 0;  // the .wth clock: hours from midnight of the day before
     double air_k = 0;
     double convection_w_m2_k = 0;   // h
     double sky_longwave_w_m2 = 0;   // eps_sky sigma T_air^4, the whole sky hemisphere
     double direct_normal_w_m2 = 0;  // beam irradiance on a surface facing the sun
     double diffuse_horizontal_w_m2 = 0;
-    Vec3 sun{0, 0, 1};              // unit vector toward the sun, scene frame (x E, y N, z up)
+    Vec3 sun{0, 0, 1};  // unit vector toward the sun, scene frame (x E, y N, z up)
     bool sun_up = false;
 };
 

@@ -11,8 +11,8 @@
 namespace sigchain::thermal {
 
 struct SceneFacet {
-    std::string key;            // "1-1-1", or "2.3/1-1-1" in an .odb (tmp(5))
-    Vec3 normal{0, 0, 1};       // unit, scene frame (placement applied)
+    std::string key;       // "1-1-1", or "2.3/1-1-1" in an .odb (tmp(5))
+    Vec3 normal{0, 0, 1};  // unit, scene frame (placement applied)
     long material_id = 0;
     double thickness_cm = -1;   // -1: the material's THICKNESS
     double power = -1;          // -1: the material's SELF_GENERATED_POWER

@@ -39,6 +39,7 @@ Slab::Slab(const SlabProperties& p, std::vector<double> nodes_m, double initial_
         m_capacity[i] += 0.5 * rho_c * dx;  // each node owns half of each adjacent cell
         m_capacity[i + 1] += 0.5 * rho_c * dx;
     }
+    m_total_capacity = std::accumulate(m_capacity.begin(), m_capacity.end(), 0.0);
     m_t.assign(n, initial_k);
     m_a.resize(n);
     m_b.resize(n);
@@ -62,8 +63,7 @@ double Slab::internal_power_w_m2() const { return m_p.volumetric_power_w_m3 * m_
 // dominant, so no pivoting is needed).
 void Slab::step(double dt_s, const FaceFlux& front, const FaceFlux& back) {
     const std::size_t n = m_t.size();
-    const double total_capacity =
-        std::accumulate(m_capacity.begin(), m_capacity.end(), 0.0);
+    const double total_capacity = m_total_capacity;
     const double power = internal_power_w_m2();
     for (std::size_t i = 0; i < n; ++i) {
         double cap = m_capacity[i] / dt_s;

@@ -14,11 +14,11 @@
 namespace sigchain::thermal {
 
 struct SlabProperties {
-    double thickness_m = 0;              // > 0
-    double density_kg_m3 = 0;            // > 0
-    double specific_heat_j_kg_k = 0;     // > 0
-    double conductivity_w_m_k = 0;       // > 0
-    double volumetric_power_w_m3 = 0;    // internal (self-generated) heat, spread evenly
+    double thickness_m = 0;            // > 0
+    double density_kg_m3 = 0;          // > 0
+    double specific_heat_j_kg_k = 0;   // > 0
+    double conductivity_w_m_k = 0;     // > 0
+    double volumetric_power_w_m3 = 0;  // internal (self-generated) heat, spread evenly
 };
 
 // The flux into the slab through one face, linearised: q = source - conductance * T,
@@ -51,10 +51,11 @@ public:
 
 private:
     SlabProperties m_p;
-    std::vector<double> m_x;         // node positions, m
-    std::vector<double> m_capacity;  // J m-2 K-1 per node
-    std::vector<double> m_link;      // W m-2 K-1 between node i and i+1
-    std::vector<double> m_t;         // K
+    std::vector<double> m_x;                 // node positions, m
+    std::vector<double> m_capacity;          // J m-2 K-1 per node
+    double m_total_capacity = 0;             // J m-2 K-1
+    std::vector<double> m_link;              // W m-2 K-1 between node i and i+1
+    std::vector<double> m_t;                 // K
     std::vector<double> m_a, m_b, m_c, m_d;  // tridiagonal scratch
 };
 

@@ -2,8 +2,12 @@
 #include "thermal/therm_job.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <sstream>
+#include <thread>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -70,7 +74,8 @@ FacetThermal resolve_facet(const SceneFacet& facet, const io::Mat& mat) {
     if (power == -1) power = 0;  // -1: none (the seed's default)
     double exposed = facet.exposed_area != -1 ? facet.exposed_area : m->exposed_area;
     if (!std::isfinite(power) || !std::isfinite(exposed))
-        throw DataError(facet.where, "facet " + facet.key + ": power and exposed area must be finite");
+        throw DataError(facet.where,
+                        "facet " + facet.key + ": power and exposed area must be finite");
 
     FacetThermal f;
     f.slab.thickness_m = thickness_cm / 100.0;
@@ -130,18 +135,150 @@ double check_times(const Inputs& in, const ThermJob& job) {
     const double scene = in.shd.scene_time_hours;
     const double snd_scene = scene_wth_hours(in.snd);
     if (std::abs(scene - snd_scene) > 1e-3)
-        throw DataError({job.shd_path, 0},
-                        "scene time " + num(scene) + " h differs from " + job.snd_path + "'s " +
-                            num(snd_scene) + " h (its GMT time less the GMT offset, on the "
-                                             "scene's day)");
+        throw DataError({job.shd_path, 0}, "scene time " + num(scene) + " h differs from " +
+                                               job.snd_path + "'s " + num(snd_scene) +
+                                               " h (its GMT time less the GMT offset, on the "
+                                               "scene's day)");
     if (in.wth.rows.empty()) throw DataError({job.wth_path, 0}, "no weather rows");
     const double start = in.wth.rows.front().time_h;
     if (scene - start < 24 - 1e-6)
         throw DataError({job.wth_path, 0},
-                        "the weather window starts at " + num(start) + " h, less than 24 h "
-                        "before the scene time " + num(scene) +
+                        "the weather window starts at " + num(start) +
+                            " h, less than 24 h "
+                            "before the scene time " +
+                            num(scene) +
                             " h (the .wth holds 48 h with the scene in the second day)");
     return start;
+}
+
+}  // namespace
+
+namespace {
+
+// One facet to solve: its description and its history.
+struct FacetTask {
+    std::size_t row = 0;  // in the .tmp
+    FacetThermal facet;
+    const io::ShdFacet* history = nullptr;
+};
+
+struct FacetAnswer {
+    double temperature_k = 0;
+    double spinup_residual_k = 0;
+};
+
+// The two runs of one facet (see compute_temperatures): the answer is the second.
+FacetAnswer solve_facet(const FacetTask& task, const io::Shd& shd,
+                        const std::vector<EnvironmentStep>& env, std::size_t i24) {
+    const FacetThermal& f = task.facet;
+    const auto sun = sun_factors(shd, *task.history, env);
+    const auto nodes = slab_nodes(f.slab.thickness_m, kSlabCells, kSlabGrowth);
+    Slab first(f.slab, nodes, env.front().air_k);
+    run_facet(f, env, sun, 0, i24, first, nullptr);
+    const std::vector<double> profile_24h = first.temperatures_k();
+    run_facet(f, env, sun, i24, env.size() - 1, first, nullptr);
+    Slab second(f.slab, nodes, 0);
+    second.set_temperatures_k(profile_24h);
+    run_facet(f, env, sun, 0, env.size() - 1, second, nullptr);
+    return {second.front_k(), std::abs(second.front_k() - first.front_k())};
+}
+
+// Solves every task on `threads` threads (0: all cores); answers in task order.
+std::vector<FacetAnswer> solve_all(const std::vector<FacetTask>& tasks, const io::Shd& shd,
+                                   const std::vector<EnvironmentStep>& env, std::size_t i24,
+                                   unsigned threads) {
+    std::vector<FacetAnswer> answers(tasks.size());
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, tasks.size()));
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto work = [&] {
+        try {
+            for (std::size_t i; (i = next++) < tasks.size();)
+                answers[i] = solve_facet(tasks[i], shd, env, i24);
+        } catch (...) {
+            std::lock_guard lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+            next = tasks.size();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    return answers;
+}
+
+void describe_model(const Inputs& in, double start, std::size_t steps, const ThermJob& job,
+                    const EnvironmentSummary& summary, const ThermHooks& hooks) {
+    if (!hooks.info) return;
+    hooks.info("run from " + num(start) + " h to the scene time " + num(in.shd.scene_time_hours) +
+               " h, " + std::to_string(steps) + " backward-Euler steps of " + num(job.time_step_s) +
+               " s; " + std::to_string(kSlabCells) + " cells through each facet");
+    if (summary.computed_insolation_steps > 0)
+        hooks.info(std::to_string(summary.computed_insolation_steps) +
+                   " steps with insolation computed (the .wth gives 0): clear-sky Meinel & "
+                   "Meinel x sky exposure");
+    hooks.info(
+        "model: sky emissivity Brutsaert (1975) with Crawford & Duchon (1999) clouds "
+        "(cloud fraction = 1 - sky exposure); convection h = 5.7 + 3.8 v (McAdams); the "
+        "part of the view that is not sky is black at the air temperature");
+    hooks.info(
+        "units: mat(5) UNITS (SPECIFIC_HEAT cal/g/C, MASS_DENSITY g/cm3, THICKNESS cm, "
+        "THERMAL_CONDUCTIVITY 0.04184 W/m/K per unit); SELF_GENERATED_POWER W/m2 of "
+        "facet");
+    const double first = in.shd.time_hours(0);
+    if (in.shd.time_hours(in.shd.steps - 1) - first < 24 - 1e-6 && first > start)
+        hooks.info("before the .shd's first step (" + num(first) +
+                   " h) facets are taken as unshadowed (the history spans less than 24 h)");
+}
+
+// Fills the rows of fixed facets and returns the tasks of the others (in scene order).
+std::vector<FacetTask> plan_facets(const Inputs& in, const ThermJob& job, const ThermHooks& hooks,
+                                   ThermResult& result) {
+    auto info = [&](const std::string& m) {
+        if (hooks.info) hooks.info(m);
+    };
+    std::unordered_map<std::string, const io::ShdFacet*> history;
+    for (const auto& f : in.shd.facets) history.emplace(f.id, &f);
+    std::vector<FacetTask> tasks;
+    std::unordered_set<long> reported;  // materials whose back face was reported
+    for (const SceneFacet& sf : in.facets) {
+        const std::size_t row = result.tmp.facets.size();
+        result.tmp.facets.push_back({sf.key, 0, 0});
+        if (sf.temperature_c != -1) {
+            if (!(sf.temperature_c > -kKelvinOffset))
+                throw DataError(sf.where, "facet " + sf.key + ": temperature " +
+                                              num(sf.temperature_c) + " C is below absolute zero");
+            result.tmp.facets.back().temperature_k = sf.temperature_c + kKelvinOffset;
+            ++result.facets_fixed;
+            info("facet " + sf.key + ": temperature fixed by the .gdb");
+            continue;
+        }
+        auto it = history.find(sf.key);
+        if (it == history.end())
+            throw DataError({job.shd_path, 0},
+                            "no history for facet " + sf.key + " of " + job.scene_path);
+        FacetTask task{row, resolve_facet(sf, in.mat), it->second};
+        task.facet.sky_view_factor = it->second->sky_view_factor;
+        if (reported.insert(sf.material_id).second)
+            info("material " + std::to_string(sf.material_id) + ": " +
+                 (task.facet.back_exposure > 0
+                      ? "back face exposed to the air x " + num(task.facet.back_exposure)
+                      : std::string("back face insulated")) +
+                 " (EXPOSED_AREA: 1 or less one face, 2 both)");
+        tasks.push_back(std::move(task));
+    }
+    std::unordered_set<std::string> keys;
+    for (const SceneFacet& sf : in.facets) keys.insert(sf.key);
+    const auto unused = std::count_if(in.shd.facets.begin(), in.shd.facets.end(),
+                                      [&](const io::ShdFacet& f) { return !keys.count(f.id); });
+    if (unused > 0 && hooks.warn)
+        hooks.warn(job.shd_path + ": " + std::to_string(unused) +
+                   " facets with a history are not in " + job.scene_path + " (ignored)");
+    return tasks;
 }
 
 }  // namespace
@@ -149,82 +286,28 @@ double check_times(const Inputs& in, const ThermJob& job) {
 ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
     if (!(job.time_step_s > 0) || job.time_step_s > 3600)
         throw UsageError("--time-step must be above 0 and at most 3600 s");
-    auto info = [&](const std::string& m) { if (hooks.info) hooks.info(m); };
     const Inputs in = read_inputs(job);
     const double start = check_times(in, job);
-    const double scene = in.shd.scene_time_hours;
     EnvironmentSummary summary;
-    const auto env =
-        sample_environment(in.wth, job.wth_path, in.snd, start, scene, job.time_step_s, &summary);
-    const std::size_t i24 = std::min(env.size() - 1,
-                                     static_cast<std::size_t>(std::lround(86400 / job.time_step_s)));
-    info("run from " + num(start) + " h to the scene time " + num(scene) + " h, " +
-         std::to_string(env.size() - 1) + " backward-Euler steps of " + num(job.time_step_s) +
-         " s; " + std::to_string(kSlabCells) + " cells through each facet");
-    if (summary.computed_insolation_steps > 0)
-        info(std::to_string(summary.computed_insolation_steps) +
-             " steps with insolation computed (the .wth gives 0): clear-sky Meinel & Meinel "
-             "x sky exposure");
-
-    info("model: sky emissivity Brutsaert (1975) with Crawford & Duchon (1999) clouds "
-         "(cloud fraction = 1 - sky exposure); convection h = 5.7 + 3.8 v (McAdams); the "
-         "part of the view that is not sky is black at the air temperature");
-    info("units: mat(5) UNITS (SPECIFIC_HEAT cal/g/C, MASS_DENSITY g/cm3, THICKNESS cm, "
-         "THERMAL_CONDUCTIVITY 0.04184 W/m/K per unit); SELF_GENERATED_POWER W/m2 of facet");
-    std::unordered_map<std::string, const io::ShdFacet*> history;
-    for (const auto& f : in.shd.facets) history.emplace(f.id, &f);
-    const double shd_span = in.shd.time_hours(in.shd.steps - 1) - in.shd.time_hours(0);
-    if (shd_span < 24 - 1e-6 && in.shd.time_hours(0) > start)
-        info("before the .shd's first step (" + num(in.shd.time_hours(0)) +
-             " h) facets are taken as unshadowed (the history spans less than 24 h)");
+    const auto env = sample_environment(in.wth, job.wth_path, in.snd, start,
+                                        in.shd.scene_time_hours, job.time_step_s, &summary);
+    const std::size_t i24 =
+        std::min(env.size() - 1, static_cast<std::size_t>(std::lround(86400 / job.time_step_s)));
+    describe_model(in, start, env.size() - 1, job, summary, hooks);
 
     ThermResult result;
-    result.tmp.time_hours = scene;
-    std::unordered_set<std::string> used;
-    std::unordered_set<long> reported;  // materials whose back face was reported
-    for (const SceneFacet& sf : in.facets) {
-        if (sf.temperature_c != -1) {
-            if (!(sf.temperature_c > -kKelvinOffset))
-                throw DataError(sf.where, "facet " + sf.key + ": temperature " +
-                                              num(sf.temperature_c) + " C is below absolute zero");
-            result.tmp.facets.push_back({sf.key, sf.temperature_c + kKelvinOffset, 0});
-            ++result.facets_fixed;
-            info("facet " + sf.key + ": temperature fixed by the .gdb");
-            continue;
+    result.tmp.time_hours = in.shd.scene_time_hours;
+    const std::vector<FacetTask> tasks = plan_facets(in, job, hooks, result);
+    const std::vector<FacetAnswer> answers = solve_all(tasks, in.shd, env, i24, job.threads);
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+        result.tmp.facets[tasks[i].row].temperature_k = answers[i].temperature_k;
+        if (answers[i].spinup_residual_k > result.spinup_residual_k ||
+            result.spinup_facet.empty()) {
+            result.spinup_residual_k = answers[i].spinup_residual_k;
+            result.spinup_facet = result.tmp.facets[tasks[i].row].facet_id;
         }
-        auto it = history.find(sf.key);
-        if (it == history.end())
-            throw DataError({job.shd_path, 0}, "no history for facet " + sf.key + " of " +
-                                                   job.scene_path);
-        used.insert(sf.key);
-        FacetThermal f = resolve_facet(sf, in.mat);
-        if (reported.insert(sf.material_id).second)
-            info("material " + std::to_string(sf.material_id) + ": " +
-                 (f.back_exposure > 0 ? "back face exposed to the air x " + num(f.back_exposure)
-                                      : std::string("back face insulated")) +
-                 " (EXPOSED_AREA: 1 or less one face, 2 both)");
-        f.sky_view_factor = it->second->sky_view_factor;
-        const auto sun = sun_factors(in.shd, *it->second, env);
-        const auto nodes = slab_nodes(f.slab.thickness_m, kSlabCells, kSlabGrowth);
-        Slab first(f.slab, nodes, env.front().air_k);
-        run_facet(f, env, sun, 0, i24, first, nullptr);
-        const std::vector<double> profile_24h = first.temperatures_k();
-        run_facet(f, env, sun, i24, env.size() - 1, first, nullptr);
-        Slab second(f.slab, nodes, 0);
-        second.set_temperatures_k(profile_24h);
-        run_facet(f, env, sun, 0, env.size() - 1, second, nullptr);
-        const double diff = std::abs(second.front_k() - first.front_k());
-        if (diff > result.spinup_residual_k || result.spinup_facet.empty()) {
-            result.spinup_residual_k = diff;
-            result.spinup_facet = sf.key;
-        }
-        result.tmp.facets.push_back({sf.key, second.front_k(), 0});
-        ++result.facets_solved;
     }
-    long unused = static_cast<long>(in.shd.facets.size()) - static_cast<long>(used.size());
-    if (unused > 0 && hooks.warn)
-        hooks.warn(job.shd_path + ": " + std::to_string(unused) +
-                   " facets with a history are not in " + job.scene_path + " (ignored)");
+    result.facets_solved = static_cast<long>(tasks.size());
     return result;
 }
 
@@ -234,8 +317,8 @@ void run_therm(const ThermJob& job, const ThermHooks& hooks) {
         hooks.info(std::to_string(r.facets_solved) + " facets solved, " +
                    std::to_string(r.facets_fixed) + " fixed by the .gdb");
         if (!r.spinup_facet.empty())
-            hooks.info("spin-up residual " + num(r.spinup_residual_k) +
-                       " K (facet " + r.spinup_facet +
+            hooks.info("spin-up residual " + num(r.spinup_residual_k) + " K (facet " +
+                       r.spinup_facet +
                        "): the change at the scene time when the run starts from the first "
                        "run's state 24 h in instead of the air temperature");
     }

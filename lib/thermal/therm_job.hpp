@@ -21,6 +21,7 @@ struct ThermJob {
     std::string shd_path, wth_path, mat_path, scene_path, snd_path;
     std::string output_path = "-";
     double time_step_s = 60;  // backward-Euler step, (0, 3600]
+    unsigned threads = 0;     // facets solved in parallel; 0: all cores
 };
 
 struct ThermHooks {

@@ -53,6 +53,7 @@ assert_tmp_near() {
     run -0 --separate-stderr therm --help
     assert_line --index 0 --partial "Usage: therm "
     assert_line --partial "--time-step"
+    assert_line --partial "--threads"
     assert_equal "${lines[-1]}" "See therm(1)."
     assert_equal "$stderr" ""
 }
@@ -90,12 +91,14 @@ assert_tmp_near() {
     assert_tmp_near out.tmp "$GOLDEN/therm/box_on_plane.tmp"
 }
 
-@test "therm writes to standard output by default and reruns identically" {
+@test "therm writes to standard output by default and reruns identically, on any threads" {
     run -0 --separate-stderr therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND"
     assert_line --index 0 "# sigchain-tmp 1"
     echo "$output" > first.tmp
     therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o second.tmp
     run -0 cmp first.tmp second.tmp
+    therm --threads 3 "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o threads.tmp
+    run -0 cmp first.tmp threads.tmp
 }
 
 @test "therm --verbose says what it assumed and the spin-up residual" {

@@ -77,10 +77,11 @@ TEST(FacetModel, EnergyBalanceClosesOverADay) {
     EXPECT_GT(b.absorbed_solar, 5e6);  // a sunny autumn day: ~ 0.6 x 15 MJ/m2
     EXPECT_LT(std::abs(b.residual()), 1e-5 * absorbed)
         << "residual " << b.residual() << " J/m2 of " << absorbed;
-    std::printf("energy budget over the day (J/m2): solar %.4g, long-wave %.4g, emitted %.4g, "
-                "convected %.4g, stored %.4g, residual %.3g (%.2e of absorbed)\n",
-                b.absorbed_solar, b.absorbed_longwave, b.emitted, b.convected, b.stored_change,
-                b.residual(), b.residual() / absorbed);
+    std::printf(
+        "energy budget over the day (J/m2): solar %.4g, long-wave %.4g, emitted %.4g, "
+        "convected %.4g, stored %.4g, residual %.3g (%.2e of absorbed)\n",
+        b.absorbed_solar, b.absorbed_longwave, b.emitted, b.convected, b.stored_change,
+        b.residual(), b.residual() / absorbed);
 }
 
 // A facet in shadow all day is cooler at 14:00 than its sunlit twin; at the night's
@@ -124,9 +125,10 @@ TEST(FacetModel, ThinMetalFollowsAirFasterThanThickConcrete) {
     // answer), the first cell (8.7 mm) against a 5 cm penetration depth adds ~1 %.
     EXPECT_NEAR((thick.front_k() - t0) / (t_air - t0), covered, 0.03 * covered);
     EXPECT_GT(t_air - thick.front_k(), 4.0);
-    std::printf("after the step: plate %.3f K from the air at 10 min; concrete covered %.4f of "
-                "the step at 1 h (semi-infinite %.4f)\n",
-                t_air - plate.front_k(), (thick.front_k() - t0) / (t_air - t0), covered);
+    std::printf(
+        "after the step: plate %.3f K from the air at 10 min; concrete covered %.4f of "
+        "the step at 1 h (semi-infinite %.4f)\n",
+        t_air - plate.front_k(), (thick.front_k() - t0) / (t_air - t0), covered);
 }
 
 // The direct sun only counts on the face that looks at it, scaled by the sunlit

@@ -64,8 +64,8 @@ TEST(ThermJob, SeedBoxOnPlane) {
         EXPECT_GT(k, air_k - 10) << id;  // no facet far below the air by day
         EXPECT_LT(k, air_k + 40) << id;  // nor hotter than asphalt in summer
     }
-    EXPECT_GT(t["1-1-1"], air_k);      // sunlit grass
-    EXPECT_GT(t["2-1-1"], air_k);      // sunlit box top
+    EXPECT_GT(t["1-1-1"], air_k);       // sunlit grass
+    EXPECT_GT(t["2-1-1"], air_k);       // sunlit box top
     EXPECT_GT(t["2-1-2"], t["2-1-4"]);  // south wall warmer than the north wall
     // Spin-up: a second run from the first run's state 24 h in changes the answer by
     // less than 0.1 K (the start no longer matters).
