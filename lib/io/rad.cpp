@@ -308,6 +308,61 @@ RadSky read_sky(LineCursor& c, std::size_t n) {
     return sky;
 }
 
+// UPWELLED Z A, then Z x A cells: view zenith, azimuth; L_us; L_ue (rad(5)).
+RadUpwelled read_upwelled(LineCursor& c, std::size_t n) {
+    RadUpwelled up;
+    auto f = keyword_line(c, "UPWELLED", 3, "N_ZENITH N_AZIMUTH");
+    SourceLocation at = c.where();
+    up.zenith_count = parse_count(f[1], at, "number of view-zenith rings");
+    up.azimuth_count = parse_count(f[2], at, "number of azimuth cells per ring");
+    if (up.zenith_count < 1 || up.azimuth_count < 1)
+        throw DataError(at, "expected at least 1 view-zenith ring and 1 azimuth cell per ring, "
+                            "found " +
+                                quoted(std::string(f[1]) + " " + std::string(f[2])));
+    for (long r = 0; r < up.zenith_count; ++r)
+        for (long a = 0; a < up.azimuth_count; ++a) {
+            std::string of = " (upwelled ring " + std::to_string(r + 1) + " of " +
+                             std::to_string(up.zenith_count) + ", cell " + std::to_string(a + 1) +
+                             " of " + std::to_string(up.azimuth_count) + ")";
+            auto g = c.fields(2, "view zenith and azimuth" + of);
+            SourceLocation where = c.where();
+            RadUpwelledCell cell;
+            cell.view_zenith_deg = parse_in_range(g[0], where, "view zenith (deg)" + of, 0, 90);
+            cell.azimuth_deg = parse_in_range(g[1], where, "azimuth (deg)" + of, 0, 360);
+            if (cell.view_zenith_deg == 90 || cell.azimuth_deg == 360)
+                throw DataError(where, "expected view zenith in [0, 90) and azimuth in [0, 360)" +
+                                           of + ", found " + quoted(std::string(g[0]) + " " +
+                                                                    std::string(g[1])));
+            auto idx = [&](long rr, long aa) {
+                return static_cast<std::size_t>(rr * up.azimuth_count + aa);
+            };
+            if (a > 0 && std::fabs(cell.view_zenith_deg - up.cells[idx(r, 0)].view_zenith_deg) >
+                             kSameAngleTol)
+                throw DataError(where, "expected view zenith " +
+                                           format_number(up.cells[idx(r, 0)].view_zenith_deg) +
+                                           " (as the first cell of its ring), found " +
+                                           quoted(g[0]));
+            if (a == 0 && r > 0 &&
+                cell.view_zenith_deg <= up.cells[idx(r - 1, 0)].view_zenith_deg)
+                throw DataError(where, "expected view zenith greater than " +
+                                           format_number(up.cells[idx(r - 1, 0)].view_zenith_deg) +
+                                           " (rings in increasing zenith), found " + quoted(g[0]));
+            if (a > 0 && cell.azimuth_deg <= up.cells[idx(r, a - 1)].azimuth_deg)
+                throw DataError(where, "expected azimuth greater than " +
+                                           format_number(up.cells[idx(r, a - 1)].azimuth_deg) +
+                                           " (increasing within a ring), found " + quoted(g[1]));
+            if (r > 0 &&
+                std::fabs(cell.azimuth_deg - up.cells[idx(0, a)].azimuth_deg) > kSameAngleTol)
+                throw DataError(where, "expected azimuth " +
+                                           format_number(up.cells[idx(0, a)].azimuth_deg) +
+                                           " (as in the first ring), found " + quoted(g[1]));
+            cell.scattered_radiance = read_spectrum(c, n, "L_us per spectral sample" + of);
+            cell.emitted_radiance = read_spectrum(c, n, "L_ue per spectral sample" + of);
+            up.cells.push_back(std::move(cell));
+        }
+    return up;
+}
+
 std::string rad_summary(const Rad& rad) {
     std::size_t m = rad.views.size();
     std::string s = std::to_string(rad.samples.size()) + " samples, " +
@@ -315,8 +370,12 @@ std::string rad_summary(const Rad& rad) {
                     format_number(rad.max_wavenumber_cm1) + " cm-1, " + std::to_string(m) +
                     (m == 1 ? " view angle, " : " view angles, ");
     if (!rad.sky) return s + "no sky hemisphere";
-    return s + "sky " + std::to_string(rad.sky->zenith_count) + "x" +
-           std::to_string(rad.sky->azimuth_count) + " cells";
+    s += "sky " + std::to_string(rad.sky->zenith_count) + "x" +
+         std::to_string(rad.sky->azimuth_count) + " cells";
+    if (rad.sky->upwelled)
+        s += ", upwelled " + std::to_string(rad.sky->upwelled->zenith_count) + "x" +
+             std::to_string(rad.sky->upwelled->azimuth_count) + " cells";
+    return s;
 }
 
 void write_values(std::ostream& out, const std::vector<double>& values) {
@@ -335,6 +394,15 @@ void write_sky(std::ostream& out, const RadSky& sky) {
     for (const auto& cell : sky.cells) {
         out << format_number(cell.zenith_deg) << ' ' << format_number(cell.azimuth_deg) << ' '
             << format_number(cell.solid_angle_sr) << '\n';
+        write_values(out, cell.scattered_radiance);
+        write_values(out, cell.emitted_radiance);
+    }
+    if (!sky.upwelled) return;
+    const RadUpwelled& up = *sky.upwelled;
+    out << "UPWELLED " << up.zenith_count << ' ' << up.azimuth_count << '\n';
+    for (const auto& cell : up.cells) {
+        out << format_number(cell.view_zenith_deg) << ' ' << format_number(cell.azimuth_deg)
+            << '\n';
         write_values(out, cell.scattered_radiance);
         write_values(out, cell.emitted_radiance);
     }
@@ -359,7 +427,15 @@ Rad parse_rad(const TextInput& in) {
                                            std::to_string(h.at[kViewCount].line) + ", found " +
                                            quoted(next.text));
     rad.sky = read_sky(c, rad.samples.size());
-    c.require_end("the sky hemisphere");
+    if (!c.at_end() && starts_with_keyword(c.peek("UPWELLED").text, "UPWELLED")) {
+        if (rad.sky->version_minor < 1)
+            throw DataError(c.where(c.peek("UPWELLED")),
+                            "expected the end of the file: UPWELLED needs SIGCHAIN_RAD 1.1, "
+                            "found version 1." +
+                                std::to_string(rad.sky->version_minor));
+        rad.sky->upwelled = read_upwelled(c, rad.samples.size());
+    }
+    c.require_end(rad.sky->upwelled ? "the upwelled grid" : "the sky hemisphere");
     return rad;
 }
 

@@ -52,6 +52,26 @@ struct RadSkyCell {
     bool operator==(const RadSkyCell&) const = default;
 };
 
+// One cell of the upwelled path-radiance grid (SIGCHAIN_RAD 1.1): the path terms for
+// a line of sight from the sensor at a view zenith (off nadir) and an azimuth.
+struct RadUpwelledCell {
+    double view_zenith_deg = 0;              // line of sight off nadir, [0, 90)
+    double azimuth_deg = 0;                  // of the line of sight's horizontal part,
+                                             // clockwise from north, [0, 360)
+    std::vector<double> scattered_radiance;  // L_us per spectral sample, >= 0
+    std::vector<double> emitted_radiance;    // L_ue per spectral sample, >= 0
+    bool operator==(const RadUpwelledCell&) const = default;
+};
+
+// L_us and L_ue over view zenith x azimuth (optional, SIGCHAIN_RAD 1.1): the full
+// azimuth dependence the legacy view-angle table keeps in one vertical plane only.
+struct RadUpwelled {
+    long zenith_count = 0;   // rings (view zeniths, increasing)
+    long azimuth_count = 0;  // cells per ring (same azimuths in every ring, increasing)
+    std::vector<RadUpwelledCell> cells;  // ring by ring
+    bool operator==(const RadUpwelled&) const = default;
+};
+
 // sigchain's additions after the legacy tables (SIGCHAIN_RAD block).
 struct RadSky {
     long version_minor = 0;      // SIGCHAIN_RAD 1[.minor]
@@ -62,6 +82,7 @@ struct RadSky {
     // zenith_count * azimuth_count cells, ring by ring (zenith increasing), azimuth
     // increasing within a ring; every ring has the same azimuths; solid angles sum to 2 pi.
     std::vector<RadSkyCell> cells;
+    std::optional<RadUpwelled> upwelled;  // after the sky cells; needs version 1.1
     bool operator==(const RadSky&) const = default;
 };
 

@@ -352,3 +352,82 @@ TEST(RadBad, SkySunOutOfRange) {
     EXPECT_EQ(error_of(edited(23, "SUN 190 180", with_sky())),
               "t.rad:23: expected sun zenith (deg) in [0, 180], found '190'");
 }
+
+// --- SIGCHAIN_RAD 1.1: the upwelled path-radiance grid ---
+
+namespace {
+
+// kSky as version 1.1 with a 2 x 2 upwelled grid (view zenith 0 and 30 deg, line-of-
+// sight azimuth 0 and 180 deg) after the sky cells: lines 31 to 43.
+std::vector<std::string> with_upwelled() {
+    auto v = with_sky();
+    v[20] = "SIGCHAIN_RAD 1.1";
+    const std::vector<std::string> up = {
+        "UPWELLED 2 2",  // 31
+        "0 0",           // 32
+        "0.003 0.0028",  // 33
+        "0 0",           // 34
+        "0 180",         // 35
+        "0.003 0.0028",  // 36
+        "0 0",           // 37
+        "30 0",          // 38
+        "0.0035 0.003",  // 39
+        "0 0",           // 40
+        "30 180",        // 41
+        "0.0031 0.0029",  // 42
+        "1e-8 2e-8",     // 43
+    };
+    v.insert(v.end(), up.begin(), up.end());
+    return v;
+}
+
+}  // namespace
+
+TEST(Rad, UpwelledGridParsesAndRoundTrips) {
+    Rad r = parsed(join(with_upwelled()));
+    ASSERT_TRUE(r.sky && r.sky->upwelled);
+    const RadUpwelled& up = *r.sky->upwelled;
+    EXPECT_EQ(up.zenith_count, 2);
+    EXPECT_EQ(up.azimuth_count, 2);
+    ASSERT_EQ(up.cells.size(), 4u);
+    EXPECT_EQ(up.cells[3].view_zenith_deg, 30);
+    EXPECT_EQ(up.cells[3].azimuth_deg, 180);
+    EXPECT_EQ(up.cells[3].scattered_radiance, (std::vector<double>{0.0031, 0.0029}));
+    EXPECT_EQ(up.cells[3].emitted_radiance, (std::vector<double>{1e-8, 2e-8}));
+    const std::string once = written(r);
+    EXPECT_NE(once.find("SIGCHAIN_RAD 1.1\n"), std::string::npos);
+    EXPECT_EQ(parsed(once), r);
+    EXPECT_EQ(written(parsed(once)), once);
+    EXPECT_EQ(rad_format().check(TextInput::from_string(join(with_upwelled()), "t.rad")),
+              "2 samples, 19000-20000 cm-1, 2 view angles, sky 1x2 cells, upwelled 2x2 cells");
+}
+
+TEST(RadBad, UpwelledNeedsVersionOneOne) {
+    auto v = with_upwelled();
+    v[20] = "SIGCHAIN_RAD 1";
+    EXPECT_EQ(error_of(join(v)),
+              "t.rad:31: expected the end of the file: UPWELLED needs SIGCHAIN_RAD 1.1, found "
+              "version 1.0");
+}
+
+TEST(RadBad, UpwelledGridMustBeAGrid) {
+    auto v = with_upwelled();
+    v[34] = "5 180";  // line 35: ring 1's second cell at another zenith
+    EXPECT_EQ(error_of(join(v)),
+              "t.rad:35: expected view zenith 0 (as the first cell of its ring), found '5'");
+    v = with_upwelled();
+    v[40] = "30 90";  // line 41: not ring 1's azimuth
+    EXPECT_EQ(error_of(join(v)), "t.rad:41: expected azimuth 180 (as in the first ring), found '90'");
+    v = with_upwelled();
+    v[37] = "90 0";  // line 38: horizontal view
+    EXPECT_EQ(error_of(join(v)),
+              "t.rad:38: expected view zenith in [0, 90) and azimuth in [0, 360) (upwelled ring 2 "
+              "of 2, cell 1 of 2), found '90 0'");
+    v = with_upwelled();
+    v[41] = "0.0031 -1";  // line 42: negative radiance
+    EXPECT_NE(error_of(join(v)).find("t.rad:42: expected L_us per spectral sample"), std::string::npos)
+        << error_of(join(v));
+    v = with_upwelled();
+    v.push_back("extra");
+    EXPECT_NE(error_of(join(v)).find("t.rad:44:"), std::string::npos) << error_of(join(v));
+}
