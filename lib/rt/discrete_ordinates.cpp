@@ -202,9 +202,10 @@ private:
     void solve_mode(int m);
     void fluxes();
     void user_intensities(int m, std::vector<double>& im);
-    void user_source(int n, int m, const double* lam_mu, UserSource& us) const;
+    void user_source(int n, int m, const double* lam_mu, UserSource& up, UserSource& down) const;
     double segment(int n, double mu, const UserSource& us, double ta, double tb) const;
-    double full_layer(int n, std::size_t u, const UserSource& us) const;
+    void full_layer_pair(int n, int m, const double* lam_mu, double amu, double et, double& up,
+                         double& down) const;
     double quad_intensity(int n, int a, double t) const;
     void intensity_correction();
 
@@ -218,8 +219,9 @@ private:
     linalg::BandMatrix m_band;
     std::vector<double> m_x;  // boundary-value solution of the current mode
     std::vector<double> m_lam, m_lam0;
-    std::vector<UserSource> m_us;
-    std::vector<double> m_level_int;
+    std::vector<UserSource> m_us, m_us_down;  // per layer, for +|mu| and -|mu|
+    std::vector<std::ptrdiff_t> m_mirror;     // index of -umu[u] in umu, or -1
+    std::vector<double> m_level_int, m_full_up, m_full_down;
     std::vector<double> m_trans;  // m_trans[n * umu.size() + u] = exp(-dtau_n / |umu_u|)
     Result m_result;
     bool m_thermal = false;
@@ -234,6 +236,11 @@ void Solver::setup() {
     m_pos = locate(m_p, m_s);
     m_sol.resize(m_L);
     m_us.resize(m_L);
+    m_us_down.resize(m_L);
+    m_mirror.assign(m_p.umu.size(), -1);
+    for (std::size_t u = 0; u < m_p.umu.size(); ++u)
+        for (std::size_t v = 0; v < m_p.umu.size(); ++v)
+            if (m_p.umu[v] == -m_p.umu[u]) m_mirror[u] = static_cast<std::ptrdiff_t>(v);
     m_thermal = !m_p.planck_levels.empty();
     for (int n = 0; n < m_L; ++n)
         m_s.optics[n].beam_top = m_p.beam_flux * std::exp(-m_s.tau_s_level[n] / m_p.beam_mu0);
@@ -304,12 +311,15 @@ void Solver::fluxes() {
     }
 }
 
-void Solver::user_source(int n, int m, const double* lam_mu, UserSource& us) const {
+// Sources at +|mu| (up) and -|mu| (down) from Lambda_l^m(|mu|): Lambda_l(-mu) =
+// (-1)^(l+m) Lambda_l(mu), so the even and odd (l + m) parts of each sum serve both.
+void Solver::user_source(int n, int m, const double* lam_mu, UserSource& up,
+                         UserSource& down) const {
     const LayerSolution& s = m_sol[n];
     const LayerOptics& o = m_s.optics[n];
     const int nn = m_q.nn, nl = s.nl;
-    // Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu): split the sum into even and odd l + m.
-    double even[64] = {}, odd[64] = {};
+    double even[64], odd[64];
+    for (int j = 0; j < nn; ++j) even[j] = odd[j] = 0;
     for (int l = m; l < nl; l += 2) {
         const double* h = &s.hmom[l * nn];
         for (int j = 0; j < nn; ++j) even[j] += lam_mu[l] * h[j];
@@ -318,22 +328,26 @@ void Solver::user_source(int n, int m, const double* lam_mu, UserSource& us) con
         const double* h = &s.hmom[l * nn];
         for (int j = 0; j < nn; ++j) odd[j] += lam_mu[l] * h[j];
     }
-    us.hd.resize(nn);
-    us.hg.resize(nn);
+    up.hd.resize(nn);
+    up.hg.resize(nn);
+    down.hd.resize(nn);
+    down.hg.resize(nn);
     for (int j = 0; j < nn; ++j) {
-        us.hd[j] = even[j] + odd[j];
-        us.hg[j] = even[j] - odd[j];
+        up.hd[j] = down.hg[j] = even[j] + odd[j];
+        up.hg[j] = down.hd[j] = even[j] - odd[j];
     }
-    us.hb = 0;
-    us.a0 = 0;
-    for (int l = m; l < nl; ++l) {
-        us.hb += lam_mu[l] * s.bmom[l];
-        us.a0 += lam_mu[l] * s.tmom[l];
-    }
-    us.a1 = 0;
+    double be = 0, bo = 0, te = 0, to = 0;
+    for (int l = m; l < nl; l += 2) be += lam_mu[l] * s.bmom[l], te += lam_mu[l] * s.tmom[l];
+    for (int l = m + 1; l < nl; l += 2) bo += lam_mu[l] * s.bmom[l], to += lam_mu[l] * s.tmom[l];
+    up.hb = be + bo;
+    down.hb = be - bo;
+    up.a0 = te + to;
+    down.a0 = te - to;
+    up.a1 = down.a1 = 0;
     if (m == 0 && m_thermal) {
-        us.a0 += (1 - o.ssa) * o.planck_top;
-        us.a1 = o.planck_slope;
+        up.a0 += (1 - o.ssa) * o.planck_top;
+        down.a0 += (1 - o.ssa) * o.planck_top;
+        up.a1 = down.a1 = o.planck_slope;
     }
 }
 
@@ -384,44 +398,65 @@ inline double two_exp(double ea, double eb, double a, double b, double len) {
     return (ea - eb) / (b - a);
 }
 
-// segment(n, mu, us, 0, dtau) without exponentials: the layer's exponentials
-// e^{-k dtau}, e^{-dtau/|mu|} and e^{-dtau/mu0'} are precomputed.
-double Solver::full_layer(int n, std::size_t u, const UserSource& us) const {
+// segment(n, +-|mu|, us, 0, dtau) for both directions of one |mu| at once, without
+// exponentials (e^{-k dtau}, e^{-dtau/|mu|} = et and e^{-dtau/mu0'} are precomputed).
+// With x = k |mu|, the term decaying along the direction of travel integrates to
+// same = (1 - e^{-k dt} et) / (1 + x), the other to other = (et - e^{-k dt}) / (x - 1)
+// (two_exp with a = k + 1/|mu|, b = 0 and with a = 1/|mu|, b = k, divided by |mu|);
+// upward radiation sees the decaying solution as "same", downward the growing one.
+void Solver::full_layer_pair(int n, int m, const double* lam_mu, double amu, double et,
+                             double& up, double& down) const {
     const LayerSolution& s = m_sol[n];
-    const double dt = m_s.optics[n].dtau;
-    const int nn = m_q.nn;
+    const LayerOptics& o = m_s.optics[n];
+    const double dt = o.dtau, im = 1 / amu;
+    const int nn = m_q.nn, nl = s.nl;
     const double* c = &m_x[n * 2 * nn];
-    const double mu = m_p.umu[u], amu = std::abs(mu), im = 1 / amu;
-    const double et = m_trans[n * m_p.umu.size() + u];
-    // With x = k |mu|: the term decaying along the direction of travel integrates to
-    // (1 - e^{-k dt} e^{-dt/|mu|}) / (1 + x), the other to (e^{-dt/|mu|} - e^{-k dt}) / (x - 1)
-    // (two_exp with a = k + 1/|mu|, b = 0 and a = 1/|mu|, b = k, divided by |mu|).
+    // Source moments: Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu) splits each sum into even
+    // and odd (l + m) parts shared by both directions.
+    double even[64], odd[64];
+    for (int j = 0; j < nn; ++j) even[j] = odd[j] = 0;
+    for (int l = m; l < nl; l += 2) {
+        const double* h = &s.hmom[l * nn];
+        for (int j = 0; j < nn; ++j) even[j] += lam_mu[l] * h[j];
+    }
+    for (int l = m + 1; l < nl; l += 2) {
+        const double* h = &s.hmom[l * nn];
+        for (int j = 0; j < nn; ++j) odd[j] += lam_mu[l] * h[j];
+    }
     double same[64], other[64];
     bool resonance = false;
     for (int j = 0; j < nn; ++j) {
         const double x = s.k[j] * amu, ek = s.exp_k[j];
         same[j] = (1 - ek * et) / (1 + x);
         other[j] = (et - ek) / (x - 1);
-        resonance = resonance || std::abs(x - 1) * dt * im < 1e-3;
+        resonance |= std::abs(x - 1) * dt * im < 1e-3;
     }
     if (resonance)
         for (int j = 0; j < nn; ++j)
             if (std::abs(s.k[j] * amu - 1) * dt * im < 1e-3)
                 other[j] = two_exp(et, s.exp_k[j], im, s.k[j], dt) * im;
-    double v = 0;
-    if (mu > 0) {
-        for (int j = 0; j < nn; ++j) v += c[j] * us.hd[j] * same[j] + c[nn + j] * us.hg[j] * other[j];
-    } else {
-        for (int j = 0; j < nn; ++j) v += c[j] * us.hd[j] * other[j] + c[nn + j] * us.hg[j] * same[j];
+    double vu = 0, vd = 0;
+    for (int j = 0; j < nn; ++j) {
+        const double plus = even[j] + odd[j], minus = even[j] - odd[j];
+        vu += c[j] * plus * same[j] + c[nn + j] * minus * other[j];
+        vd += c[j] * minus * other[j] + c[nn + j] * plus * same[j];
     }
-    if (us.hb != 0) {
+    double be = 0, bo = 0, te = 0, to = 0;
+    for (int l = m; l < nl; l += 2) be += lam_mu[l] * s.bmom[l], te += lam_mu[l] * s.tmom[l];
+    for (int l = m + 1; l < nl; l += 2) bo += lam_mu[l] * s.bmom[l], to += lam_mu[l] * s.tmom[l];
+    if (be != 0 || bo != 0) {
         const double eb = s.exp_beam;
-        v += im * us.hb * (mu > 0 ? two_exp(eb * et, 1.0, s.inv_mu0 + im, 0.0, dt)
-                                  : two_exp(eb, et, s.inv_mu0, im, dt));
+        vu += im * (be + bo) * two_exp(eb * et, 1.0, s.inv_mu0 + im, 0.0, dt);
+        vd += im * (be - bo) * two_exp(eb, et, s.inv_mu0, im, dt);
     }
-    if (mu > 0) v += us.a0 * (1 - et) + us.a1 * (amu * (1 - et) - dt * et);
-    else v += us.a0 * (1 - et) + us.a1 * (dt - amu * (1 - et));
-    return v;
+    double a0u = te + to, a0d = te - to, a1 = 0;
+    if (m == 0 && m_thermal) {
+        a0u += (1 - o.ssa) * o.planck_top;
+        a0d += (1 - o.ssa) * o.planck_top;
+        a1 = o.planck_slope;
+    }
+    up = vu + a0u * (1 - et) + a1 * (amu * (1 - et) - dt * et);
+    down = vd + a0d * (1 - et) + a1 * (dt - amu * (1 - et));
 }
 
 // Intensities of mode m at every output depth and user direction: im[level * nu + u].
@@ -430,43 +465,53 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
     im.assign(m_pos.size() * nu, 0.0);
     std::vector<double> lam_mu(m_N);
     m_level_int.assign(m_L + 1, 0.0);
+    m_full_up.assign(m_L, 0.0);
+    m_full_down.assign(m_L, 0.0);
     const int nn = m_q.nn;
+    // Lambertian surface: upward intensity of mode 0 at the bottom.
+    double bottom = 0;
+    if (m == 0) {
+        double down = 0;
+        for (int k = 0; k < nn; ++k)
+            down += m_q.weight[k] * m_q.mu[k] *
+                    quad_intensity(m_L - 1, nn + k, m_s.optics[m_L - 1].dtau);
+        const double beam_bottom = m_p.beam_flux * std::exp(-m_s.tau_s_level[m_L] / m_p.beam_mu0);
+        bottom = m_p.albedo * (2 * down + m_p.beam_mu0 * beam_bottom / kPi) +
+                 (1 - m_p.albedo) * m_p.planck_surface;
+    }
+    const double top = m == 0 ? m_p.top_isotropic + m_p.top_emission : 0.0;
     for (std::size_t u = 0; u < nu; ++u) {
         const double mu = m_p.umu[u];
-        normalized_legendre(m, m_N - 1, mu, lam_mu.data());
-        for (int n = 0; n < m_L; ++n) user_source(n, m, lam_mu.data(), m_us[n]);
+        // A downward cosine whose upward mirror is also wanted is done with the mirror.
+        if (mu < 0 && m_mirror[u] >= 0) continue;
+        const double amu = std::abs(mu);
+        normalized_legendre(m, m_N - 1, amu, lam_mu.data());
+        for (int n = 0; n < m_L; ++n)
+            full_layer_pair(n, m, lam_mu.data(), amu, m_trans[n * nu + u], m_full_up[n],
+                            m_full_down[n]);
+        for (const Position& ps : m_pos) user_source(ps.layer, m, lam_mu.data(), m_us[ps.layer],
+                                                     m_us_down[ps.layer]);
         if (mu > 0) {
-            double bottom = 0;
-            if (m == 0) {
-                double down = 0;
-                for (int k = 0; k < nn; ++k)
-                    down += m_q.weight[k] * m_q.mu[k] *
-                            quad_intensity(m_L - 1, nn + k, m_s.optics[m_L - 1].dtau);
-                const double beam_bottom =
-                    m_p.beam_flux * std::exp(-m_s.tau_s_level[m_L] / m_p.beam_mu0);
-                bottom = m_p.albedo * (2 * down + m_p.beam_mu0 * beam_bottom / kPi) +
-                         (1 - m_p.albedo) * m_p.planck_surface;
-            }
             m_level_int[m_L] = bottom;
-            for (int n = m_L - 1; n >= 0; --n) {
-                m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + full_layer(n, u, m_us[n]);
-            }
+            for (int n = m_L - 1; n >= 0; --n)
+                m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + m_full_up[n];
             for (std::size_t i = 0; i < m_pos.size(); ++i) {
                 const Position& ps = m_pos[i];
                 const double dt = m_s.optics[ps.layer].dtau;
                 im[i * nu + u] = m_level_int[ps.layer + 1] * std::exp(-(dt - ps.t) / mu) +
                                  segment(ps.layer, mu, m_us[ps.layer], ps.t, dt);
             }
-        } else {
-            m_level_int[0] = m == 0 ? m_p.top_isotropic + m_p.top_emission : 0.0;
-            for (int n = 0; n < m_L; ++n) {
-                m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + u] + full_layer(n, u, m_us[n]);
-            }
-            for (std::size_t i = 0; i < m_pos.size(); ++i) {
-                const Position& ps = m_pos[i];
-                im[i * nu + u] = m_level_int[ps.layer] * std::exp(ps.t / mu) +
-                                 segment(ps.layer, mu, m_us[ps.layer], 0, ps.t);
-            }
+        }
+        const std::ptrdiff_t d = mu < 0 ? static_cast<std::ptrdiff_t>(u) : m_mirror[u];
+        if (d < 0) continue;
+        const double mud = m_p.umu[d];
+        m_level_int[0] = top;
+        for (int n = 0; n < m_L; ++n)
+            m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + m_full_down[n];
+        for (std::size_t i = 0; i < m_pos.size(); ++i) {
+            const Position& ps = m_pos[i];
+            im[i * nu + d] = m_level_int[ps.layer] * std::exp(ps.t / mud) +
+                             segment(ps.layer, mud, m_us_down[ps.layer], 0, ps.t);
         }
     }
 }

@@ -108,6 +108,7 @@ void BandMatrix::reset(int n, int kl, int ku) {
     m_ld = 2 * kl + ku + 1;
     m_ab.assign(static_cast<std::size_t>(m_ld) * n, 0.0);
     m_piv.assign(n, 0);
+    m_km.assign(n, 0);
 }
 
 // Right-looking LU with partial pivoting restricted to the band; row interchanges
@@ -115,7 +116,11 @@ void BandMatrix::reset(int n, int kl, int ku) {
 bool BandMatrix::factor() {
     int ju = 0;  // last column touched by the U part so far
     for (int j = 0; j < m_n; ++j) {
-        const int km = std::min(m_kl, m_n - 1 - j);
+        // Rows below the last structural nonzero of column j never fill in (no earlier
+        // pivot row reaches them), so the elimination stops there.
+        int km = std::min(m_kl, m_n - 1 - j);
+        while (km > 0 && at(j + km, j) == 0) --km;
+        m_km[j] = km;
         int jp = 0;
         double big = std::abs(at(j, j));
         for (int i = 1; i <= km; ++i)
@@ -126,11 +131,13 @@ bool BandMatrix::factor() {
         if (jp != 0)
             for (int c = j; c <= ju; ++c) std::swap(at(j, c), at(j + jp, c));
         const double inv = 1 / at(j, j);
-        for (int i = 1; i <= km; ++i) at(j + i, j) *= inv;
+        double* lcol = &m_ab[index(j + 1, j)];
+        for (int i = 0; i < km; ++i) lcol[i] *= inv;
         for (int c = j + 1; c <= ju; ++c) {
             const double u = at(j, c);
             if (u == 0) continue;
-            for (int i = 1; i <= km; ++i) at(j + i, c) -= at(j + i, j) * u;
+            double* col = &m_ab[index(j + 1, c)];
+            for (int i = 0; i < km; ++i) col[i] -= lcol[i] * u;
         }
     }
     return true;
@@ -139,7 +146,7 @@ bool BandMatrix::factor() {
 void BandMatrix::solve(double* b) const {
     auto get = [&](int r, int c) { return m_ab[index(r, c)]; };
     for (int j = 0; j < m_n; ++j) {
-        const int km = std::min(m_kl, m_n - 1 - j);
+        const int km = m_km[j];
         if (m_piv[j] != j) std::swap(b[j], b[m_piv[j]]);
         for (int i = 1; i <= km; ++i) b[j + i] -= get(j + i, j) * b[j];
     }

@@ -40,6 +40,7 @@ private:
     int m_n = 0, m_kl = 0, m_ku = 0, m_kv = 0, m_ld = 0;
     std::vector<double> m_ab;  // column-major band storage, ld = 2 kl + ku + 1
     std::vector<int> m_piv;
+    std::vector<int> m_km;  // rows eliminated below each pivot
 };
 
 }  // namespace sigchain::rt::linalg
