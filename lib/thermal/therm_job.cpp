@@ -286,6 +286,10 @@ std::vector<FacetTask> plan_facets(const Inputs& in, const ThermJob& job, const 
 ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
     if (!(job.time_step_s > 0) || job.time_step_s > 3600)
         throw UsageError("--time-step must be above 0 and at most 3600 s");
+    const std::string inputs[] = {job.shd_path, job.wth_path, job.mat_path, job.scene_path,
+                                  job.snd_path};
+    if (std::count(std::begin(inputs), std::end(inputs), "-") > 1)
+        throw UsageError("only one input can be standard input ('-')");
     const Inputs in = read_inputs(job);
     const double start = check_times(in, job);
     EnvironmentSummary summary;

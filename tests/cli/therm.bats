@@ -101,6 +101,14 @@ assert_tmp_near() {
     run -0 cmp first.tmp threads.tmp
 }
 
+@test "therm reads one input from standard input ('-'), not two" {
+    run -0 --separate-stderr therm - "$WTH" "$MAT" "$GDB" "$SND" -o out.tmp < "$SHD"
+    assert_tmp_near out.tmp "$GOLDEN/therm/box_on_plane.tmp"
+    run -2 --separate-stderr therm - - "$MAT" "$GDB" "$SND" -o two.tmp < "$SHD"
+    [[ "$stderr" == "therm: only one input can be standard input"* ]] || fail "stderr: $stderr"
+    [ ! -e two.tmp ]
+}
+
 @test "therm --verbose says what it assumed and the spin-up residual" {
     run -0 --separate-stderr therm -v "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o out.tmp
     [[ "$stderr" == *"insolation computed"* ]] || fail "stderr: $stderr"
