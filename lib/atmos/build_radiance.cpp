@@ -73,6 +73,9 @@ struct Directions {
     std::vector<std::vector<Sub>> sky;
     std::vector<io::RadSkyCell> cells;  // geometry only
     long zenith_count = 0, azimuth_count = 0;
+    // The upwelled grid: rings at the distinct |view angle|, azimuth nodes every step.
+    std::vector<double> up_zenith_deg, up_azimuth_deg;
+    std::vector<std::size_t> up_mu, up_phi;  // per ring, per azimuth node
 };
 
 std::size_t index_of(const std::vector<double>& v, double x) {
@@ -135,8 +138,20 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
             pending.push_back(std::move(subs));
         }
     }
+    // Upwelled grid: a line of sight at azimuth A carries light travelling toward
+    // A + 180, up.
+    for (double v : view_angles_deg) d.up_zenith_deg.push_back(std::abs(v));
+    sort_unique(d.up_zenith_deg);
+    const long up_cells = std::lround(360.0 / o.upwelled_azimuth_step_deg);
+    for (long j = 0; j < up_cells; ++j) {
+        const double a = 360.0 * static_cast<double>(j) / static_cast<double>(up_cells);
+        d.up_azimuth_deg.push_back(a);
+        add_unique(d.phi, wrap_degrees(a - sun_azimuth_deg));
+    }
     sort_unique(d.umu);
     sort_unique(d.phi);
+    for (double z : d.up_zenith_deg) d.up_mu.push_back(index_of(d.umu, std::cos(z * kDeg)));
+    for (double a : d.up_azimuth_deg) d.up_phi.push_back(index_of(d.phi, wrap_degrees(a - sun_azimuth_deg)));
     for (double v : view_angles_deg) {
         d.view_mu.push_back(index_of(d.umu, view_mu(v)));
         d.view_phi.push_back(index_of(d.phi, view_phi(v)));
@@ -196,6 +211,9 @@ void check_radiance_options(const RadianceOptions& o) {
     if (!divides(360, o.sky_azimuth_step_deg))
         throw UsageError("the sky azimuth step must divide 360 deg; found " +
                     format_number(o.sky_azimuth_step_deg));
+    if (!divides(360, o.upwelled_azimuth_step_deg))
+        throw UsageError("the upwelled azimuth step must divide 360 deg; found " +
+                         format_number(o.upwelled_azimuth_step_deg));
     if (o.sky_subsamples < 1 || o.sky_subsamples > 8)
         throw UsageError("sky subsamples must be 1 to 8; found " + format_number(o.sky_subsamples));
 }
@@ -323,6 +341,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         io::RadSample sample;
         std::vector<io::RadPathSample> path;  // per view
         std::vector<double> ls, le;           // per sky cell
+        std::vector<double> us, ue;           // per upwelled cell
         double ground_irradiance = 0;
         bool thermal = false;
     };
@@ -403,6 +422,11 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             res.ls.push_back(ls);
             res.le.push_back(le);
         }
+        for (std::size_t r = 0; r < dirs.up_mu.size(); ++r)
+            for (std::size_t a = 0; a < dirs.up_phi.size(); ++a) {
+                res.us.push_back(intensity(solar_result, 0, dirs.up_mu[r], dirs.up_phi[a]));
+                res.ue.push_back(intensity(thermal_result, 0, dirs.up_mu[r], dirs.up_phi[a]));
+            }
         if (!solar_result.levels.empty()) res.ground_irradiance += solar_result.levels[1].diffuse_down;
         if (!thermal_result.levels.empty())
             res.ground_irradiance += thermal_result.levels[1].diffuse_down;
@@ -463,6 +487,12 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         sky.zenith_count = dirs.zenith_count;
         sky.azimuth_count = dirs.azimuth_count;
         sky.cells = dirs.cells;
+        sky.version_minor = 1;  // the UPWELLED grid
+        io::RadUpwelled up;
+        up.zenith_count = static_cast<long>(dirs.up_zenith_deg.size());
+        up.azimuth_count = static_cast<long>(dirs.up_azimuth_deg.size());
+        for (double z : dirs.up_zenith_deg)
+            for (double a : dirs.up_azimuth_deg) up.cells.push_back({z, a, {}, {}});
         std::vector<double> ground_irradiance;
         for (long s = 0; s < n; ++s, ++j) {
             const SampleResult& r = results[j];
@@ -472,9 +502,14 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                 sky.cells[c].scattered_radiance.push_back(r.ls[c]);
                 sky.cells[c].emitted_radiance.push_back(r.le[c]);
             }
+            for (std::size_t c = 0; c < up.cells.size(); ++c) {
+                up.cells[c].scattered_radiance.push_back(r.us[c]);
+                up.cells[c].emitted_radiance.push_back(r.ue[c]);
+            }
             ground_irradiance.push_back(r.ground_irradiance);
             if (r.thermal) ++rep.thermal_samples;
         }
+        sky.upwelled = std::move(up);
         rad.sky = std::move(sky);
         rep.ground_diffuse_irradiance.push_back(std::move(ground_irradiance));
         out.push_back(std::move(rad));

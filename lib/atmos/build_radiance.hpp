@@ -33,6 +33,7 @@ struct RadianceOptions {
     double sky_azimuth_step_deg = 10;     // cells per ring: 360 / step
     int sky_subsamples = 2;               // per cell and axis: the cell's radiance is the
                                           // solid-angle mean of subsamples^2 directions
+    double upwelled_azimuth_step_deg = 10;  // azimuth nodes of the UPWELLED grid (rad(5))
     std::optional<double> view_azimuth_deg;  // azimuth of positive view angles (clockwise
                                              // from north); default: the deck's PSIPO
     double top_km = 100;                  // top of the modelled atmosphere

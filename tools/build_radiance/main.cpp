@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
         "downwelled hemisphere: cell width in azimuth (divides 360)")(
         "sky-subsamples", cli::po::value<int>()->default_value(2)->value_name("N"),
         "directions per cell and axis averaged into each sky cell (1-8)")(
+        "upwelled-azimuth-step", cli::po::value<double>()->default_value(10)->value_name("DEG"),
+        "upwelled path-radiance grid: azimuth step (divides 360)")(
         "view-azimuth", cli::po::value<double>()->value_name("DEG"),
         "azimuth of positive view angles, clockwise from north (default: the deck's PSIPO)")(
         "top", cli::po::value<double>()->default_value(100)->value_name("KM"),
@@ -54,6 +56,7 @@ int main(int argc, char** argv) {
         o.sky_zenith_step_deg = vm["sky-zenith-step"].as<double>();
         o.sky_azimuth_step_deg = vm["sky-azimuth-step"].as<double>();
         o.sky_subsamples = vm["sky-subsamples"].as<int>();
+        o.upwelled_azimuth_step_deg = vm["upwelled-azimuth-step"].as<double>();
         if (vm.count("view-azimuth")) o.view_azimuth_deg = vm["view-azimuth"].as<double>();
         o.top_km = vm["top"].as<double>();
         if (!(o.top_km > 0)) throw sigchain::UsageError("--top must be > 0 km");

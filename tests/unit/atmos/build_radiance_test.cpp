@@ -199,3 +199,39 @@ TEST(BuildRadiance, CloudsAreRefusedWithTheCardNamed) {
 
 }  // namespace
 }  // namespace sigchain::atmos
+
+namespace sigchain::atmos {
+namespace {
+
+// The UPWELLED grid holds the same solver intensities as the legacy view-angle table:
+// with the view plane at azimuth 0 (a grid node), +v is the cell (|v|, 0) and -v the
+// cell (|v|, 180), exactly.
+TEST(BuildRadiance, UpwelledGridAgreesWithTheViewPlane) {
+    RadianceOptions o = options();
+    o.sky_zenith_step_deg = 30;
+    o.sky_azimuth_step_deg = 90;
+    o.view_azimuth_deg = 0;
+    const auto rads = build_radiance(hawkeye_deck(), small_snd(), o);
+    const io::Rad& rad = rads[0];
+    ASSERT_TRUE(rad.sky && rad.sky->upwelled);
+    EXPECT_EQ(rad.sky->version_minor, 1);
+    const io::RadUpwelled& up = *rad.sky->upwelled;
+    ASSERT_EQ(up.zenith_count, 2);  // |v| = 0 and 10
+    ASSERT_EQ(up.azimuth_count, 36);
+    auto cell = [&](long ring, double az) {
+        for (long a = 0; a < up.azimuth_count; ++a) {
+            const auto& c = up.cells[static_cast<std::size_t>(ring * up.azimuth_count + a)];
+            if (c.azimuth_deg == az) return c;
+        }
+        ADD_FAILURE() << "no cell at azimuth " << az;
+        return up.cells.front();
+    };
+    for (std::size_t s = 0; s < rad.samples.size(); ++s) {
+        EXPECT_EQ(cell(1, 0).scattered_radiance[s], rad.views[2].path[s].scattered_radiance);
+        EXPECT_EQ(cell(1, 180).scattered_radiance[s], rad.views[0].path[s].scattered_radiance);
+        EXPECT_EQ(cell(0, 90).scattered_radiance[s], rad.views[1].path[s].scattered_radiance);
+    }
+}
+
+}  // namespace
+}  // namespace sigchain::atmos
