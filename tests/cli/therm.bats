@@ -178,3 +178,23 @@ assert_tmp_near() {
     assert_output "previous"
     assert_no_temp_files .
 }
+
+@test "therm on an .odb names facets by placement and turns their normals" {
+    # neighbourhood.odb: box_on_plane.gdb as built (1.1), turned 90 deg about z (1.2),
+    # stretched x2 in z (1.3); neighbourhood.shd repeats box_on_plane.shd per copy.
+    run -0 --separate-stderr therm "$DATA/neighbourhood.shd" "$WTH" "$MAT" \
+        "$SEED/neighbourhood.odb" "$SND" -o out.tmp
+    run -0 sigchain-check out.tmp
+    # The unturned copies (same normals, same histories) match the lone .gdb's golden.
+    for copy in 1.1 1.3; do
+        { grep -v '^[0-9]' out.tmp; grep "^$copy/" out.tmp | sed "s|^$copy/||"; } > copy.tmp
+        assert_tmp_near copy.tmp "$GOLDEN/therm/box_on_plane.tmp"
+    done
+    # Turned a quarter turn counter-clockwise, the east wall (2-1-3) faces north: no
+    # direct sun all day, like the unturned north wall (2-1-4), whatever its history.
+    run -0 awk '$1 == "1.2/2-1-3" { a = $2 } $1 == "1.1/2-1-4" { b = $2 }
+        END { d = a - b; if (d < 0) d = -d; exit !(a != "" && d < 1e-9) }' out.tmp
+    # The turned south wall faces east: cooler in the afternoon than the unturned one.
+    run -0 awk '$1 == "1.2/2-1-2" { a = $2 } $1 == "1.1/2-1-2" { b = $2 }
+        END { exit !(a + 5 < b) }' out.tmp
+}
