@@ -108,28 +108,53 @@ void scatter_moments(const Quadrature& q, int m, const LayerOptics& o, const dou
     }
 }
 
-// Fills mat with (diag - W p) over the N directions: mat_ab = diag_a delta_ab - w_b p_ab,
-// p_ab = (omega/2) sum_l (2l+1) g_l Lambda_l(mu_a) Lambda_l(mu_b).
-void scattering_operator(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
-                         int nl, const double* diag, std::vector<double>& mat) {
-    const int nn = q.nn, n2 = 2 * nn;
-    mat.assign(n2 * n2, 0.0);
-    double wl[128];  // N <= 128 (checked by solve)
-    for (int l = m; l < nl; ++l) {
-        const double c = 0.5 * o.ssa * (2 * l + 1) * o.g[l];
-        if (c == 0) continue;
-        const double* lm = lam + l * n2;
-        for (int b = 0; b < n2; ++b) wl[b] = c * lm[b] * q.weight[b % nn];
-        for (int a = 0; a < n2; ++a) {
-            const double la = lm[a];
-            double* row = &mat[a * n2];
-            for (int b = 0; b < n2; ++b) row[b] -= la * wl[b];
-        }
-    }
-    for (int a = 0; a < n2; ++a) mat[a * n2 + a] += diag[a];
-}
-
 double signed_mu(const Quadrature& q, int a) { return a < q.nn ? q.mu[a] : -q.mu[a - q.nn]; }
+
+// Particular solution of (1 + mu_a c) Z_a - sum_b w_b p_ab Z_b = X_a over the N
+// directions (c = 1/mu0 for the beam, 0 for thermal emission), reduced to nn x nn as the
+// homogeneous problem is: with S = Z+ + Z-, D = Z+ - Z-, A' = 1 - (D+ + D-) W and
+// B' = 1 - (D+ - D-) W,  A' S + c M D = X+ + X-  and  B' D + c M S = X+ - X-, so
+// D = B'^-1 (Xd - c M S) and (A' - c M B'^-1 c M) S = Xs - c M B'^-1 Xd.
+// sc.a / sc.b must hold D+ + D- and D+ - D- (left there by homogeneous()). Returns false
+// when singular.
+bool reduced_particular(const Quadrature& q, double c, const double* xp, const double* xm,
+                        double* z, Scratch& sc) {
+    const int nn = q.nn;
+    sc.pb.resize(nn * nn);
+    sc.pk.resize(nn * nn);
+    sc.pq.resize(nn * nn);
+    sc.piv.resize(nn);
+    sc.piv2.resize(nn);
+    for (int i = 0; i < nn; ++i)
+        for (int j = 0; j < nn; ++j) {
+            const double delta = i == j ? 1.0 : 0.0;
+            sc.pb[i * nn + j] = delta - sc.b[i * nn + j] * q.weight[j];
+            sc.pk[i * nn + j] = delta - sc.a[i * nn + j] * q.weight[j];
+        }
+    if (!linalg::lu_factor(sc.pb.data(), nn, sc.piv.data())) return false;
+    double col[64], y[64], rhs[64];
+    // Q = B'^-1 c M, column by column.
+    for (int j = 0; j < nn; ++j) {
+        for (int i = 0; i < nn; ++i) col[i] = i == j ? c * q.mu[j] : 0.0;
+        linalg::lu_solve(sc.pb.data(), nn, sc.piv.data(), col);
+        for (int i = 0; i < nn; ++i) sc.pq[i * nn + j] = col[i];
+    }
+    for (int i = 0; i < nn; ++i) y[i] = xp[i] - xm[i];
+    linalg::lu_solve(sc.pb.data(), nn, sc.piv.data(), y);
+    for (int i = 0; i < nn; ++i) {
+        rhs[i] = xp[i] + xm[i] - c * q.mu[i] * y[i];
+        for (int j = 0; j < nn; ++j) sc.pk[i * nn + j] -= c * q.mu[i] * sc.pq[i * nn + j];
+    }
+    if (!linalg::lu_factor(sc.pk.data(), nn, sc.piv2.data())) return false;
+    linalg::lu_solve(sc.pk.data(), nn, sc.piv2.data(), rhs);
+    for (int i = 0; i < nn; ++i) {
+        double d = y[i];
+        for (int j = 0; j < nn; ++j) d -= sc.pq[i * nn + j] * rhs[j];
+        z[i] = 0.5 * (rhs[i] + d);
+        z[nn + i] = 0.5 * (rhs[i] - d);
+    }
+    return true;
+}
 
 // Beam particular solution Z e^{-t/mu0}: (1 + mu_a/mu0) Z_a - sum_b w_b p_ab Z_b = X0_a,
 // X0_a = (omega F/4pi)(2 - delta_m0) sum_l (2l+1) g_l Lambda_l(mu_a) Lambda_l(-mu0)
@@ -144,21 +169,15 @@ void beam_particular(const Quadrature& q, int m, const LayerOptics& o, const dou
         if (std::abs(out.k[j] * mu0 - 1) < 1e-4) inv_mu0 = 1 / (mu0 * (1 + 2e-4));
     out.inv_mu0 = inv_mu0;
     const double factor = o.ssa * o.beam_top / (4 * kPi) * (m == 0 ? 1 : 2);
-    sc.rhs.assign(n2, 0.0);
-    std::vector<double>& x0mom = sc.work;
-    x0mom.assign(nl, 0.0);
+    double x[128] = {};
+    double x0mom[128] = {};
     for (int l = m; l < nl; ++l) {
         x0mom[l] = factor * (2 * l + 1) * o.g[l] * lam0[l];
-        for (int a = 0; a < n2; ++a) sc.rhs[a] += x0mom[l] * lam[l * n2 + a];
+        for (int a = 0; a < n2; ++a) x[a] += x0mom[l] * lam[l * n2 + a];
     }
-    std::vector<double> diag(n2);
-    for (int a = 0; a < n2; ++a) diag[a] = 1 + signed_mu(q, a) * inv_mu0;
-    scattering_operator(q, m, o, lam, nl, diag.data(), sc.mat);
-    sc.piv.assign(n2, 0);
-    if (!linalg::lu_factor(sc.mat.data(), n2, sc.piv.data()))
+    out.beam.resize(n2);
+    if (!reduced_particular(q, inv_mu0, x, x + nn, out.beam.data(), sc))
         throw Error("discrete-ordinate solver: singular beam particular-solution system");
-    linalg::lu_solve(sc.mat.data(), n2, sc.piv.data(), sc.rhs.data());
-    out.beam.assign(sc.rhs.begin(), sc.rhs.end());
     scatter_moments(q, m, o, lam, nl, out.beam.data(), out.bmom.data());
     for (int l = m; l < nl; ++l) out.bmom[l] += x0mom[l];
 }
@@ -168,17 +187,13 @@ void beam_particular(const Quadrature& q, int m, const LayerOptics& o, const dou
 // (Stamnes et al. 1988, eqs. 14-15; DISORT's thermal source).
 void thermal_particular(const Quadrature& q, const LayerOptics& o, const double* lam,
                         LayerSolution& out, Scratch& sc) {
-    const int n2 = 2 * q.nn, nl = out.nl;
-    std::vector<double> diag(n2, 1.0);
-    scattering_operator(q, 0, o, lam, nl, diag.data(), sc.mat);
-    sc.rhs.assign(n2, 0.0);
+    const int nn = q.nn, n2 = 2 * nn, nl = out.nl;
+    double x[128];
     for (int a = 0; a < n2; ++a)
-        sc.rhs[a] = (1 - o.ssa) * o.planck_top + signed_mu(q, a) * o.planck_slope;
-    sc.piv.assign(n2, 0);
-    if (!linalg::lu_factor(sc.mat.data(), n2, sc.piv.data()))
+        x[a] = (1 - o.ssa) * o.planck_top + signed_mu(q, a) * o.planck_slope;
+    out.thermal0.resize(n2);
+    if (!reduced_particular(q, 0.0, x, x + nn, out.thermal0.data(), sc))
         throw Error("discrete-ordinate solver: singular thermal particular-solution system");
-    linalg::lu_solve(sc.mat.data(), n2, sc.piv.data(), sc.rhs.data());
-    out.thermal0.assign(sc.rhs.begin(), sc.rhs.end());
     scatter_moments(q, 0, o, lam, nl, out.thermal0.data(), out.tmom.data());
 }
 

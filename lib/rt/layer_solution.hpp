@@ -51,7 +51,8 @@ struct LayerSolution {
 // Scratch space reused across layers and modes.
 struct Scratch {
     std::vector<double> a, b, c, v, lam, ev, s, mat, rhs, work;
-    std::vector<int> piv;
+    std::vector<double> pb, pk, pq;
+    std::vector<int> piv, piv2;
 };
 
 // Normalised Legendre functions at the quadrature for mode m: lam[l * N + a], l < nl.

@@ -24,46 +24,102 @@ bool cholesky(double* a, int n) {
 
 namespace {
 
-// One Jacobi rotation annihilating a[p][q] (Golub & Van Loan, Matrix Computations,
-// algorithm 8.4.1, symmetric Schur decomposition), applied to a and accumulated in v.
-void rotate(double* a, int n, double* v, int p, int q) {
-    const double apq = a[p * n + q];
-    const double theta = (a[q * n + q] - a[p * n + p]) / (2 * apq);
-    const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-    const double c = 1 / std::sqrt(t * t + 1);
-    const double s = t * c;
-    for (int k = 0; k < n; ++k) {
-        const double akp = a[k * n + p], akq = a[k * n + q];
-        a[k * n + p] = c * akp - s * akq;
-        a[k * n + q] = s * akp + c * akq;
+// Householder reduction of the symmetric a (n x n) to tridiagonal form, a = Q T Q^T
+// (Golub & Van Loan, Matrix Computations, 4th ed., alg. 8.3.1), T overwriting a and Q
+// accumulated in q.
+void tridiagonalize(double* a, int n, double* q) {
+    std::fill(q, q + n * n, 0.0);
+    for (int i = 0; i < n; ++i) q[i * n + i] = 1;
+    double v[128], p[128];
+    for (int k = 0; k + 2 < n; ++k) {
+        double norm = 0;
+        for (int i = k + 1; i < n; ++i) norm += a[i * n + k] * a[i * n + k];
+        norm = std::sqrt(norm);
+        if (norm == 0) continue;
+        const double alpha = a[(k + 1) * n + k] > 0 ? -norm : norm;
+        for (int i = k + 1; i < n; ++i) v[i] = a[i * n + k];
+        v[k + 1] -= alpha;
+        double vv = 0;
+        for (int i = k + 1; i < n; ++i) vv += v[i] * v[i];
+        if (vv == 0) continue;
+        const double beta = 2 / vv;
+        // A <- H A H with H = 1 - beta v v^T on rows/columns k+1..n-1:
+        // p = beta A v, w = p - (beta p.v / 2) v, A <- A - v w^T - w v^T.
+        double pv = 0;
+        for (int i = k + 1; i < n; ++i) {
+            double s = 0;
+            for (int j = k + 1; j < n; ++j) s += a[i * n + j] * v[j];
+            p[i] = beta * s;
+            pv += p[i] * v[i];
+        }
+        for (int i = k + 1; i < n; ++i) p[i] -= 0.5 * beta * pv * v[i];
+        for (int i = k + 1; i < n; ++i)
+            for (int j = k + 1; j < n; ++j) a[i * n + j] -= v[i] * p[j] + p[i] * v[j];
+        a[(k + 1) * n + k] = a[k * n + k + 1] = alpha;
+        for (int i = k + 2; i < n; ++i) a[i * n + k] = a[k * n + i] = 0;
+        // Q <- Q H.
+        for (int r = 0; r < n; ++r) {
+            double s = 0;
+            for (int j = k + 1; j < n; ++j) s += q[r * n + j] * v[j];
+            s *= beta;
+            for (int j = k + 1; j < n; ++j) q[r * n + j] -= s * v[j];
+        }
     }
-    for (int k = 0; k < n; ++k) {
-        const double apk = a[p * n + k], aqk = a[q * n + k];
-        a[p * n + k] = c * apk - s * aqk;
-        a[q * n + k] = s * apk + c * aqk;
+}
+
+// Rotation in the (k, k+1) plane, t <- G^T t G and q <- q G with G = [[c, s], [-s, c]];
+// only rows/columns lo..hi of the tridiagonal block (plus its bulge) are touched.
+void rotate(double* t, int n, double* q, int k, double c, double s, int lo, int hi) {
+    const int r0 = std::max(lo, k - 1), r1 = std::min(hi, k + 2);
+    for (int j = r0; j <= r1; ++j) {
+        const double x = t[k * n + j], y = t[(k + 1) * n + j];
+        t[k * n + j] = c * x - s * y;
+        t[(k + 1) * n + j] = s * x + c * y;
     }
-    for (int k = 0; k < n; ++k) {
-        const double vkp = v[k * n + p], vkq = v[k * n + q];
-        v[k * n + p] = c * vkp - s * vkq;
-        v[k * n + q] = s * vkp + c * vkq;
+    for (int i = r0; i <= r1; ++i) {
+        const double x = t[i * n + k], y = t[i * n + k + 1];
+        t[i * n + k] = c * x - s * y;
+        t[i * n + k + 1] = s * x + c * y;
+    }
+    for (int i = 0; i < n; ++i) {
+        const double x = q[i * n + k], y = q[i * n + k + 1];
+        q[i * n + k] = c * x - s * y;
+        q[i * n + k + 1] = s * x + c * y;
     }
 }
 
 }  // namespace
 
+// Tridiagonalisation, then implicit symmetric QR steps with the Wilkinson shift and
+// deflation (Golub & Van Loan, algs. 8.3.2-8.3.3); the tridiagonal stays in the dense
+// array and each step chases the bulge down with Givens rotations.
 void symmetric_eigen(double* a, int n, double* eval, double* v) {
-    std::fill(v, v + n * n, 0.0);
-    for (int i = 0; i < n; ++i) v[i * n + i] = 1;
-    double total = 0;
-    for (int i = 0; i < n * n; ++i) total += a[i] * a[i];
-    for (int sweep = 0; sweep < 60; ++sweep) {
-        double off = 0;
-        for (int p = 0; p < n; ++p)
-            for (int q = p + 1; q < n; ++q) off += a[p * n + q] * a[p * n + q];
-        if (off <= 1e-32 * total) break;
-        for (int p = 0; p < n; ++p)
-            for (int q = p + 1; q < n; ++q)
-                if (a[p * n + q] != 0) rotate(a, n, v, p, q);
+    tridiagonalize(a, n, v);
+    constexpr double kEps = 2.2e-16;
+    for (int iter = 0; iter < 60 * n; ++iter) {
+        for (int i = 0; i + 1 < n; ++i)
+            if (std::abs(a[(i + 1) * n + i]) <=
+                kEps * (std::abs(a[i * n + i]) + std::abs(a[(i + 1) * n + i + 1])))
+                a[(i + 1) * n + i] = a[i * n + i + 1] = 0;
+        int hi = n - 1;
+        while (hi > 0 && a[hi * n + hi - 1] == 0) --hi;
+        if (hi == 0) break;
+        int lo = hi - 1;
+        while (lo > 0 && a[lo * n + lo - 1] != 0) --lo;
+        const double e = a[hi * n + hi - 1];
+        const double d = 0.5 * (a[(hi - 1) * n + hi - 1] - a[hi * n + hi]);
+        const double shift = a[hi * n + hi] - e * e / (d + (d >= 0 ? 1 : -1) * std::hypot(d, e));
+        double x = a[lo * n + lo] - shift, z = a[(lo + 1) * n + lo];
+        for (int k = lo; k < hi; ++k) {
+            // G^T [x; z] = [r; 0]: c = x / r, s = -z / r.
+            const double r = std::hypot(x, z);
+            const double c = r == 0 ? 1.0 : x / r, s = r == 0 ? 0.0 : -z / r;
+            rotate(a, n, v, k, c, s, lo, hi);
+            if (k + 1 < hi) {
+                x = a[(k + 1) * n + k];
+                z = a[(k + 2) * n + k];
+            }
+        }
     }
     for (int i = 0; i < n; ++i) eval[i] = a[i * n + i];
 }

@@ -13,8 +13,8 @@ namespace sigchain::rt::linalg {
 // positive definite (a pivot <= 0).
 bool cholesky(double* a, int n);
 
-// Eigen-decomposition of a symmetric n x n matrix by cyclic Jacobi rotations.
-// a is destroyed; eigenvalues go to eval[n], eigenvectors to the columns of v
+// Eigen-decomposition of a symmetric n x n matrix (n <= 128): Householder
+// tridiagonalisation and implicit QR with Wilkinson shifts. a is destroyed; eigenvalues go to eval[n], eigenvectors to the columns of v
 // (row-major n x n: v[i * n + j] is component i of vector j).
 void symmetric_eigen(double* a, int n, double* eval, double* v);
 
