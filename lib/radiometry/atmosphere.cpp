@@ -44,6 +44,12 @@ struct Atmosphere::Data {
     double uniform_azimuth_step_deg = 0;  // > 0 when every column has this width
     int rings = 0, columns = 0;
     std::vector<double> sky_irradiance, sky_emitted_irradiance;  // horizontal, per sample
+    // The UPWELLED grid (rad(5), SIGCHAIN_RAD 1.1) when every file has the same one:
+    // view-zenith rings (increasing), azimuth nodes (increasing in [0, 360)), and per
+    // node, per sample L_us and L_ue at [(ring * azimuths + a) * samples + k].
+    bool has_upwelled = false;
+    std::vector<double> up_zenith_deg, up_azimuth_deg;
+    std::vector<double> up_scattered, up_emitted;
 
     bool sun_up() const { return sun_known && sun_zenith_deg < 90; }
     void place_sun(double zenith_deg, double azimuth_deg) {
@@ -54,6 +60,7 @@ struct Atmosphere::Data {
         sun_at_ground = sun_up() ? es_tau1 : std::vector<double>(es_tau1.size(), 0.0);
     }
     void build_sky_grid(const io::RadSky& sky);
+    void load_upwelled(const std::vector<io::Rad>& rads, const std::vector<std::string>& files);
 };
 
 namespace {
@@ -119,6 +126,59 @@ void check_shape(const io::Rad& rad, const std::string& file) {
 }
 
 }  // namespace
+
+// The UPWELLED grids of every band merged on the spectral grid, when all files have
+// one and the grids agree; none when no file has one.
+void Atmosphere::Data::load_upwelled(const std::vector<io::Rad>& rads,
+                                     const std::vector<std::string>& files) {
+    Data& d = *this;
+    const auto& first = rads[0].sky->upwelled;
+    for (std::size_t b = 0; b < rads.size(); ++b) {
+        const auto& up = rads[b].sky->upwelled;
+        if (up.has_value() != first.has_value())
+            throw DataError({files[b], 0}, std::string("UPWELLED grid ") +
+                                               (up ? "present" : "missing") + ", unlike in " +
+                                               files[0]);
+        if (!up) continue;
+        if (up->zenith_count < 1 || up->azimuth_count < 1 ||
+            up->cells.size() != static_cast<std::size_t>(up->zenith_count * up->azimuth_count))
+            throw DataError({files[b], 0}, "UPWELLED grid: cell count is not rings x cells");
+        bool same = up->zenith_count == first->zenith_count &&
+                    up->azimuth_count == first->azimuth_count;
+        for (std::size_t c = 0; same && c < up->cells.size(); ++c)
+            same = std::abs(up->cells[c].view_zenith_deg - first->cells[c].view_zenith_deg) <=
+                       kGridTolerance_deg &&
+                   std::abs(up->cells[c].azimuth_deg - first->cells[c].azimuth_deg) <=
+                       kGridTolerance_deg;
+        if (!same)
+            throw DataError({files[b], 0}, "UPWELLED grid differs from that of " + files[0]);
+        for (const auto& c : up->cells)
+            if (c.scattered_radiance.size() != rads[b].samples.size() ||
+                c.emitted_radiance.size() != rads[b].samples.size())
+                throw DataError({files[b], 0},
+                                "UPWELLED grid: a cell's radiances do not match the spectral "
+                                "samples");
+    }
+    if (!first) return;
+    const auto za = static_cast<std::size_t>(first->azimuth_count);
+    for (long r = 0; r < first->zenith_count; ++r)
+        d.up_zenith_deg.push_back(first->cells[static_cast<std::size_t>(r) * za].view_zenith_deg);
+    for (std::size_t a = 0; a < za; ++a) d.up_azimuth_deg.push_back(first->cells[a].azimuth_deg);
+    const std::size_t n = d.grid.size();
+    d.up_scattered.assign(first->cells.size() * n, 0.0);
+    d.up_emitted.assign(first->cells.size() * n, 0.0);
+    for (std::size_t c = 0; c < first->cells.size(); ++c) {
+        std::size_t k = 0;
+        for (const auto& rad : rads) {
+            const auto& cell = rad.sky->upwelled->cells[c];
+            for (std::size_t s = 0; s < cell.scattered_radiance.size(); ++s, ++k) {
+                d.up_scattered[c * n + k] = cell.scattered_radiance[s];
+                d.up_emitted[c * n + k] = cell.emitted_radiance[s];
+            }
+        }
+    }
+    d.has_upwelled = true;
+}
 
 // Ring edges halfway between ring centres, the first at 0 and the last at 90 deg;
 // azimuth edges halfway between column centres, wrapping round north.
@@ -226,6 +286,7 @@ Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
             d->cells.push_back(std::move(cell));
         }
         d->place_sun(sky.sun_zenith_deg, sky.sun_azimuth_deg);
+        d->load_upwelled(rads, files);
     }
     Atmosphere a;
     a.m_data = d;
@@ -275,6 +336,60 @@ void Atmosphere::path(double view_angle_deg, std::span<double> tau2, std::span<d
     lerp(d.tau2, tau2);
     lerp(d.scattered, scattered);
     lerp(d.emitted, emitted);
+}
+
+bool Atmosphere::has_upwelled() const { return m_data->has_upwelled; }
+
+void Atmosphere::path(const Vec3& line_of_sight, double view_angle_deg, std::span<double> tau2,
+                      std::span<double> scattered, std::span<double> emitted) const {
+    const Data& d = *m_data;
+    if (!d.has_upwelled) {
+        path(view_angle_deg, tau2, scattered, emitted);
+        return;
+    }
+    path(view_angle_deg, tau2, {}, {});
+    const std::size_t n = d.grid.size();
+    // View zenith off nadir and azimuth of the line of sight (clockwise from north).
+    const double len = std::sqrt(line_of_sight[0] * line_of_sight[0] +
+                                 line_of_sight[1] * line_of_sight[1] +
+                                 line_of_sight[2] * line_of_sight[2]);
+    if (!(len > 0)) throw std::invalid_argument("Atmosphere::path: zero line of sight");
+    const double zenith = std::acos(std::clamp(-line_of_sight[2] / len, -1.0, 1.0)) / kDegToRad;
+    double azimuth = std::atan2(line_of_sight[0], line_of_sight[1]) / kDegToRad;
+    if (azimuth < 0) azimuth += 360;
+    std::size_t i = 0;
+    double f = 0;
+    bracket(d.up_zenith_deg, zenith, i, f);
+    const std::size_t i1 = d.up_zenith_deg.size() == 1 ? i : i + 1;
+    // Azimuth nodes are periodic: between the last and the first across north.
+    const auto& az = d.up_azimuth_deg;
+    const std::size_t na = az.size();
+    std::size_t j0 = 0, j1 = 0;
+    double g = 0;
+    if (na > 1) {
+        const auto hi = static_cast<std::size_t>(std::upper_bound(az.begin(), az.end(), azimuth) -
+                                                 az.begin());
+        if (hi == 0 || hi == na) {  // across north
+            j0 = na - 1, j1 = 0;
+            const double span = az[0] + 360 - az[na - 1];
+            const double x = hi == 0 ? azimuth + 360 : azimuth;
+            g = span > 0 ? (x - az[na - 1]) / span : 0;
+        } else {
+            j0 = hi - 1, j1 = hi;
+            g = (azimuth - az[j0]) / (az[j1] - az[j0]);
+        }
+    }
+    auto lerp = [&](const std::vector<double>& t, std::span<double> out) {
+        if (out.empty()) return;
+        if (out.size() != n) throw std::invalid_argument("Atmosphere::path: span size");
+        const std::size_t c00 = (i * na + j0) * n, c01 = (i * na + j1) * n;
+        const std::size_t c10 = (i1 * na + j0) * n, c11 = (i1 * na + j1) * n;
+        for (std::size_t k = 0; k < n; ++k)
+            out[k] = (1 - f) * ((1 - g) * t[c00 + k] + g * t[c01 + k]) +
+                     f * ((1 - g) * t[c10 + k] + g * t[c11 + k]);
+    };
+    lerp(d.up_scattered, scattered);
+    lerp(d.up_emitted, emitted);
 }
 
 double Atmosphere::range_km(double view_angle_deg) const {

@@ -59,6 +59,13 @@ public:
     // tabulated view angles, clamped at the ends. Each output span has grid().size().
     void path(double view_angle_deg, std::span<double> tau2, std::span<double> scattered,
               std::span<double> emitted) const;
+    // Path terms for a line of sight `line_of_sight` (unit ENU vector from the sensor)
+    // whose signed view angle is `view_angle_deg`: tau2 from the view-angle table, and
+    // L_us and L_ue from the UPWELLED grid (rad(5)) when the tables have one, bilinear
+    // in view zenith and azimuth (periodic), clamped in zenith; otherwise as path() above.
+    void path(const Vec3& line_of_sight, double view_angle_deg, std::span<double> tau2,
+              std::span<double> scattered, std::span<double> emitted) const;
+    bool has_upwelled() const;
     double range_km(double view_angle_deg) const;
     double min_view_angle_deg() const;
     double max_view_angle_deg() const;

@@ -675,7 +675,7 @@ void render_row(const Context& c, Tracer& tr, long row, long out_row, RenderResu
             if (!hit) continue;
             ++hits;
             double va = cam.view_angle_deg(d);
-            atm.path(va, {tau2, n}, {lus, n}, {lue, n});
+            atm.path(d, va, {tau2, n}, {lus, n}, {lue, n});
             for (std::size_t k = 0; k < n; ++k) {
                 double l = tau2[k] * leave[k] + lus[k] + (c.emission ? lue[k] : 0.0);
                 pixel[k] += l;

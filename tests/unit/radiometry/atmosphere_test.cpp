@@ -210,5 +210,45 @@ TEST(Atmosphere, DirsigRadWithoutSkyHasNoSunUntilSetSun) {
                      rad.samples[0].solar_irradiance * rad.samples[0].sun_transmission);
 }
 
+
+// The UPWELLED grid (rad(5) 1.1): L_us at a grid node is the node's value, bilinear
+// between nodes, periodic across north; tau2 still comes from the view-angle table;
+// without the grid, the view-angle table answers.
+TEST(Atmosphere, UpwelledGridIsInterpolatedInZenithAndAzimuth) {
+    io::Rad rad = uniform_rad({0.5}, 30, 90, 0.1, 0.02, 0.9, 0.001, {-60, 0, 60});
+    rad.sky->version_minor = 1;
+    io::RadUpwelled up;
+    up.zenith_count = 2;
+    up.azimuth_count = 4;
+    // L_us = 1 + zenith / 10 + azimuth / 1000 at the nodes (zenith 0, 20; azimuth 0..270).
+    for (double z : {0.0, 20.0})
+        for (double a : {0.0, 90.0, 180.0, 270.0})
+            up.cells.push_back({z, a, {1 + z / 10 + a / 1000}, {z / 100}});
+    rad.sky->upwelled = up;
+    const Atmosphere atm = Atmosphere::from_rads({rad}, {"u.rad"});
+    ASSERT_TRUE(atm.has_upwelled());
+    double tau2 = 0, lus = 0, lue = 0;
+    auto at = [&](double zenith, double azimuth) {
+        const Vec3 los = direction_from_angles(180 - zenith, azimuth);  // looking down
+        atm.path(los, zenith, {&tau2, 1}, {&lus, 1}, {&lue, 1});
+        return lus;
+    };
+    EXPECT_NEAR(at(20, 90), 3.09, 1e-12);
+    EXPECT_NEAR(tau2, 0.9, 1e-12);
+    EXPECT_NEAR(lue, 0.2, 1e-12);
+    EXPECT_NEAR(at(10, 135), 1 + 1 + 0.135, 1e-9);  // midway in both
+    // Across north: between 270 (1.27 + z) and 360 = 0 (1.0 + z), a quarter of the way.
+    EXPECT_NEAR(at(0, 292.5), 0.75 * 1.27 + 0.25 * 1.0, 1e-9);
+    EXPECT_NEAR(at(20, 337.5 - 360 + 360), 3 + 0.25 * 0.27, 1e-9);
+    // Clamped beyond the last ring.
+    EXPECT_NEAR(at(40, 180), 3.18, 1e-9);
+    // No grid: the view-angle table (L_us 0.001 everywhere).
+    rad.sky->upwelled.reset();
+    const Atmosphere plain = Atmosphere::from_rads({rad}, {"u.rad"});
+    EXPECT_FALSE(plain.has_upwelled());
+    plain.path(direction_from_angles(160, 90), 20, {&tau2, 1}, {&lus, 1}, {&lue, 1});
+    EXPECT_NEAR(lus, 0.001, 1e-15);
+}
+
 }  // namespace
 }  // namespace sigchain::radiometry

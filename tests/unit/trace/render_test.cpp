@@ -509,3 +509,40 @@ TEST(Render, MissesAreZero) {
 
 }  // namespace
 }  // namespace sigchain::trace
+
+namespace sigchain::trace {
+namespace {
+
+// With an UPWELLED grid (rad(5) 1.1) each pixel's path radiance follows its own line
+// of sight: a black plate seen 20 deg off nadir looking north and looking east shows
+// the grid's L_us for (20, 0) and (20, 90), not the view-angle table's single value.
+TEST(Render, PathRadianceFollowsTheLineOfSightAzimuth) {
+    Mesh m;
+    m.quad({{{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    auto mats = radiometry::MaterialLibrary::from_optics(
+        {radiometry::grey_material(1, 0.0, kWl.size())});
+    io::Rad rad = radiometry::uniform_rad(kWl, 40, 120, 0.2, 0.004, 0.9, 0.001);
+    rad.sky->version_minor = 1;
+    io::RadUpwelled up;
+    up.zenith_count = 2;
+    up.azimuth_count = 4;
+    for (double z : {0.0, 20.0})
+        for (double a : {0.0, 90.0, 180.0, 270.0})
+            up.cells.push_back({z, a, std::vector<double>(kWl.size(), 0.01 + z * 1e-3 + a * 1e-5),
+                                std::vector<double>(kWl.size(), 0.0)});
+    rad.sky->upwelled = up;
+    auto atm = radiometry::Atmosphere::from_rads({rad}, {"u.rad"});
+    const double s20 = std::sin(20 * kPi / 180), c20 = std::cos(20 * kPi / 180);
+    RenderOptions o;
+    o.samples_per_pixel = 1;
+    for (auto [azimuth, want] : {std::pair{0.0, 0.03}, std::pair{90.0, 0.0309}}) {
+        const double a = azimuth * kPi / 180;
+        Ortho cam(2, 2, 0.5, 0, 0, {s20 * std::sin(a), s20 * std::cos(a), -c20});
+        RenderResult r = run(s, mats, atm, cam, o);
+        for (float v : r.radiance.data) EXPECT_NEAR(v, want, 1e-6) << "azimuth " << azimuth;
+    }
+}
+
+}  // namespace
+}  // namespace sigchain::trace
