@@ -23,16 +23,16 @@ struct Layer {
 };
 
 struct Problem {
-    std::vector<Layer> layers;  // top to bottom, at least one
-    int streams = 16;           // even, >= 4 (N in DISORT; N/2 per hemisphere)
-    bool delta_m = true;        // delta-M scaling of peaked phase functions
+    std::vector<Layer> layers;         // top to bottom, at least one
+    int streams = 16;                  // even, >= 4 (N in DISORT; N/2 per hemisphere)
+    bool delta_m = true;               // delta-M scaling of peaked phase functions
     bool intensity_correction = true;  // Nakajima-Tanaka correction with delta-M
 
-    double beam_flux = 0;       // incident beam flux normal to its direction, >= 0
-    double beam_mu0 = 1;        // cosine of the beam's zenith angle, (0, 1]
-    double beam_phi0_deg = 0;   // azimuth of the beam
-    double top_isotropic = 0;   // isotropic intensity incident at the top, >= 0
-    double albedo = 0;          // Lambertian surface albedo, [0, 1]
+    double beam_flux = 0;      // incident beam flux normal to its direction, >= 0
+    double beam_mu0 = 1;       // cosine of the beam's zenith angle, (0, 1]
+    double beam_phi0_deg = 0;  // azimuth of the beam
+    double top_isotropic = 0;  // isotropic intensity incident at the top, >= 0
+    double albedo = 0;         // Lambertian surface albedo, [0, 1]
 
     // Thermal emission (empty: none): Planck radiance (intensity units) at each level
     // boundary, top first, layers.size() + 1 values; linear in optical depth within a
@@ -53,10 +53,10 @@ struct Problem {
 };
 
 struct LevelResult {
-    double direct_down = 0;   // direct-beam flux (horizontal surface)
-    double diffuse_down = 0;  // diffuse downward flux
-    double diffuse_up = 0;    // diffuse upward flux
-    double dfdt = 0;          // d(net flux)/d(tau)
+    double direct_down = 0;     // direct-beam flux (horizontal surface)
+    double diffuse_down = 0;    // diffuse downward flux
+    double diffuse_up = 0;      // diffuse upward flux
+    double dfdt = 0;            // d(net flux)/d(tau)
     double mean_intensity = 0;  // diffuse mean intensity (average over 4 pi)
     // Diffuse intensity at umu[i], phi_deg[j]: intensity[i * phi_deg.size() + j].
     std::vector<double> intensity;
@@ -66,7 +66,15 @@ struct Result {
     std::vector<LevelResult> levels;  // one per utau
 };
 
-// Solves the problem. Throws sigchain::Error on invalid input (with what is wrong).
+// Solves the problem. Throws sigchain::Error on invalid input (with what is wrong):
+// no layers, streams odd or outside 4..128, tau < 0, ssa outside [0, 1], pmom[0] != 1
+// for a scattering layer, mu0 outside (0, 1] with a beam, planck_levels of the wrong
+// size, utau not ascending, a zero or |umu| > 1 cosine.
+// Method notes: single-scattering albedo 1 is computed as 1 - 1e-9 (DISORT's dither);
+// with delta_m and intensity_correction the Nakajima-Tanaka TMS correction is applied
+// (not their IMS secondary-scattering term, which matters only within a few degrees of
+// the beam direction for strongly peaked phase functions). Reentrant: concurrent calls
+// share nothing. Cost for 35 layers, 16 streams, 110 umu, 40 azimuths: ~10 ms.
 Result solve(const Problem& problem);
 
 }  // namespace sigchain::rt

@@ -93,8 +93,8 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
 
 // (omega/2)(2l+1) g_l sum_a w_a Lambda_l(mu_a) v_a for l = m .. nl-1: the moments of the
 // scattering source of a quadrature vector v (N values).
-void scatter_moments(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
-                     int nl, const double* v, double* mom) {
+void scatter_moments(const Quadrature& q, int m, const LayerOptics& o, const double* lam, int nl,
+                     const double* v, double* mom) {
     const int nn = q.nn, n2 = 2 * nn;
     for (int l = 0; l < nl; ++l) {
         mom[l] = 0;

@@ -17,10 +17,10 @@ struct Quadrature {
 
 // Optical properties of a (delta-M scaled) layer.
 struct LayerOptics {
-    double dtau = 0;             // scaled optical thickness
-    double ssa = 0;              // scaled single-scattering albedo (dithered below 1)
-    std::vector<double> g;       // scaled Legendre moments g[0..N-1]
-    double beam_top = 0;         // beam_flux * exp(-scaled tau at the layer top / mu0)
+    double dtau = 0;                          // scaled optical thickness
+    double ssa = 0;                           // scaled single-scattering albedo (dithered below 1)
+    std::vector<double> g;                    // scaled Legendre moments g[0..N-1]
+    double beam_top = 0;                      // beam_flux * exp(-scaled tau at the layer top / mu0)
     double planck_top = 0, planck_slope = 0;  // B(t) = planck_top + planck_slope * t
 };
 
@@ -32,17 +32,17 @@ struct LayerOptics {
 // Moment vectors give the source function at any direction mu through
 //   sum_l Lambda_l^m(mu) moment[l]   (Stamnes et al. 1988, eq. 11 for user angles).
 struct LayerSolution {
-    int nn = 0, nl = 0;           // nl = number of moments (l = 0 .. nl-1)
-    std::vector<double> k;        // eigenvalues, > 0
-    std::vector<double> exp_k;    // e^{-k dtau}
-    std::vector<double> gp, gm;   // gp[j * nn + i] = G+ at +mu_i, gm = G- at -mu_i
-    std::vector<double> beam;     // beam particular solution at the top of the layer, N values
-    std::vector<double> thermal0; // thermal particular solution constant part, N values
-    double inv_mu0 = 0;           // 1/mu0 used by the beam particular solution
-    double exp_beam = 0;          // e^{-dtau inv_mu0}
-    std::vector<double> hmom;     // hmom[l * nn + j]: scattering moments of solution j (decaying)
-    std::vector<double> bmom;     // beam source moments (scattered particular + primary)
-    std::vector<double> tmom;     // thermal scattered moments of thermal0
+    int nn = 0, nl = 0;            // nl = number of moments (l = 0 .. nl-1)
+    std::vector<double> k;         // eigenvalues, > 0
+    std::vector<double> exp_k;     // e^{-k dtau}
+    std::vector<double> gp, gm;    // gp[j * nn + i] = G+ at +mu_i, gm = G- at -mu_i
+    std::vector<double> beam;      // beam particular solution at the top of the layer, N values
+    std::vector<double> thermal0;  // thermal particular solution constant part, N values
+    double inv_mu0 = 0;            // 1/mu0 used by the beam particular solution
+    double exp_beam = 0;           // e^{-dtau inv_mu0}
+    std::vector<double> hmom;      // hmom[l * nn + j]: scattering moments of solution j (decaying)
+    std::vector<double> bmom;      // beam source moments (scattered particular + primary)
+    std::vector<double> tmom;      // thermal scattered moments of thermal0
 
     double dec(int j, int a) const { return a < nn ? gp[j * nn + a] : gm[j * nn + a - nn]; }
     double grow(int j, int a) const { return a < nn ? gm[j * nn + a] : gp[j * nn + a - nn]; }

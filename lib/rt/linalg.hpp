@@ -14,8 +14,9 @@ namespace sigchain::rt::linalg {
 bool cholesky(double* a, int n);
 
 // Eigen-decomposition of a symmetric n x n matrix (n <= 128): Householder
-// tridiagonalisation and implicit QR with Wilkinson shifts. a is destroyed; eigenvalues go to eval[n], eigenvectors to the columns of v
-// (row-major n x n: v[i * n + j] is component i of vector j).
+// tridiagonalisation and implicit QR with Wilkinson shifts. a is destroyed; eigenvalues go to
+// eval[n], eigenvectors to the columns of v (row-major n x n: v[i * n + j] is component i of vector
+// j).
 void symmetric_eigen(double* a, int n, double* eval, double* v);
 
 // Dense LU with partial pivoting of a row-major n x n matrix in place; returns false
@@ -30,7 +31,7 @@ public:
     void reset(int n, int kl, int ku);  // zeroes the matrix, keeping its storage
     double& at(int row, int col) { return m_ab[index(row, col)]; }
     int size() const { return m_n; }
-    bool factor();              // false when singular
+    bool factor();                // false when singular
     void solve(double* b) const;  // after factor(): overwrites b with the solution
 
 private:

@@ -10,17 +10,18 @@ namespace sigchain::rt {
 namespace {
 
 // CODATA 2018 exact constants (SI).
-constexpr double kPlanck = 6.62607015e-34;     // J s
-constexpr double kLight = 299792458.0;         // m s-1
-constexpr double kBoltzmann = 1.380649e-23;    // J K-1
+constexpr double kPlanck = 6.62607015e-34;   // J s
+constexpr double kLight = 299792458.0;       // m s-1
+constexpr double kBoltzmann = 1.380649e-23;  // J K-1
 
 // Integral of t^3 / (e^t - 1) from 0 to x for x <= 2: the Bernoulli-number series
 // t^3/(e^t-1) = sum_k B_k t^(k+2)/k! integrated term by term (converges for x < 2 pi).
 double planck_head(double x) {
     // B_0..B_20 (odd ones beyond B_1 vanish).
     static constexpr double kBernoulli[] = {
-        1.0, -0.5, 1.0 / 6, 0, -1.0 / 30, 0, 1.0 / 42, 0, -1.0 / 30, 0, 5.0 / 66, 0,
-        -691.0 / 2730, 0, 7.0 / 6, 0, -3617.0 / 510, 0, 43867.0 / 798, 0, -174611.0 / 330};
+        1.0,           -0.5, 1.0 / 6,       0, -1.0 / 30,      0, 1.0 / 42, 0,
+        -1.0 / 30,     0,    5.0 / 66,      0, -691.0 / 2730,  0, 7.0 / 6,  0,
+        -3617.0 / 510, 0,    43867.0 / 798, 0, -174611.0 / 330};
     double sum = 0, fact = 1, xp = x * x * x;
     for (int k = 0; k <= 20; ++k) {
         if (k > 0) fact *= k;

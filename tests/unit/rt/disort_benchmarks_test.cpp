@@ -37,7 +37,9 @@ struct Case {
     std::vector<IntensityRecord> uu;
 };
 
-std::string data_path(const std::string& name) { return std::string(SIGCHAIN_TEST_DATA) + "/rt/" + name; }
+std::string data_path(const std::string& name) {
+    return std::string(SIGCHAIN_TEST_DATA) + "/rt/" + name;
+}
 
 // Garcia & Siewert Haze-L (column 1) or Cloud C.1 (column 2) moments pmom_l = beta_l/(2l+1).
 std::vector<double> garcia_siewert(int column) {
@@ -138,7 +140,7 @@ bool needs_ims(const Case& c, const IntensityRecord& u) {
 }
 
 struct Errors {
-    double flux = 0, intensity = 0;  // worst |error| / tolerance
+    double flux = 0, intensity = 0;          // worst |error| / tolerance
     double flux_rel = 0, intensity_rel = 0;  // worst relative error among values above the floor
     int flux_fail = 0, intensity_fail = 0, intensity_count = 0, ims_count = 0;
     double ims_rel = 0;  // worst relative error of the IMS-dependent values
@@ -148,7 +150,8 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
     if (c.name.rfind("4", 0) == 0) c.layers[0].pmom = garcia_siewert(1);
     if (c.name.rfind("5", 0) == 0) c.layers[0].pmom = garcia_siewert(2);
     const auto b = c.title.find(" b = ");
-    if (b != std::string::npos && c.layers.size() == 1) c.layers[0].tau = std::stod(c.title.substr(b + 4));
+    if (b != std::string::npos && c.layers.size() == 1)
+        c.layers[0].tau = std::stod(c.title.substr(b + 4));
     Problem p;
     p.layers = c.layers;
     p.streams = c.streams;
@@ -187,7 +190,8 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
     // internal-source cases), and that floor / pi for intensities. Below it a relative
     // error is meaningless (the references are printed to 5 digits; 1b's zero dfdt, a
     // conservative layer's, is 0 to rounding).
-    const double incident = std::max(c.mu0 * c.fbeam + kPi * (c.fisot + p.top_emission), kPi * emitted);
+    const double incident =
+        std::max(c.mu0 * c.fbeam + kPi * (c.fisot + p.top_emission), kPi * emitted);
     const double flux_floor = 1e-3 * incident, int_floor = flux_floor / kPi;
     Errors e;
     auto check_flux = [&](double got, double want, const char* what, double utau) {
@@ -197,7 +201,9 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
         if (std::abs(want) > flux_floor) e.flux_rel = std::max(e.flux_rel, err / std::abs(want));
         if (err > tol) {
             ++e.flux_fail;
-            if (verbose) std::printf("  %s %s utau %g: got %.6g want %.6g\n", c.name.c_str(), what, utau, got, want);
+            if (verbose)
+                std::printf("  %s %s utau %g: got %.6g want %.6g\n", c.name.c_str(), what, utau,
+                            got, want);
         }
     };
     for (std::size_t i = 0; i < c.flux.size(); ++i) {
@@ -211,7 +217,8 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
     for (const auto& u : c.uu) {
         const std::size_t lev = std::find(p.utau.begin(), p.utau.end(), u.utau) - p.utau.begin();
         const std::size_t iu = std::find(p.umu.begin(), p.umu.end(), u.umu) - p.umu.begin();
-        const std::size_t ip = std::find(p.phi_deg.begin(), p.phi_deg.end(), u.phi) - p.phi_deg.begin();
+        const std::size_t ip =
+            std::find(p.phi_deg.begin(), p.phi_deg.end(), u.phi) - p.phi_deg.begin();
         const double got = r.levels.at(lev).intensity.at(iu * p.phi_deg.size() + ip);
         const double tol = std::max(1e-2 * std::abs(u.value), int_floor);
         const double err = std::abs(got - u.value);
@@ -219,8 +226,9 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
             ++e.ims_count;
             e.ims_rel = std::max(e.ims_rel, err / std::abs(u.value));
             if (verbose)
-                std::printf("  %s I utau %g mu %g phi %g: got %.6g want %.6g (needs IMS, not asserted)\n",
-                            c.name.c_str(), u.utau, u.umu, u.phi, got, u.value);
+                std::printf(
+                    "  %s I utau %g mu %g phi %g: got %.6g want %.6g (needs IMS, not asserted)\n",
+                    c.name.c_str(), u.utau, u.umu, u.phi, got, u.value);
             continue;
         }
         e.intensity = std::max(e.intensity, err / tol);
@@ -230,8 +238,8 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
         if (err > tol) {
             ++e.intensity_fail;
             if (verbose)
-                std::printf("  %s I utau %g mu %g phi %g: got %.6g want %.6g\n", c.name.c_str(), u.utau, u.umu,
-                            u.phi, got, u.value);
+                std::printf("  %s I utau %g mu %g phi %g: got %.6g want %.6g\n", c.name.c_str(),
+                            u.utau, u.umu, u.phi, got, u.value);
         }
     }
     return e;
@@ -240,12 +248,13 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
 void run_file(const std::string& file) {
     for (const Case& c : read_cases(file)) {
         const Errors e = run_case(c, 0.0, true);
-        std::printf("case %-3s flux max rel err %.2e (err/tol %.2f)  intensity max rel err %.2e "
-                    "(err/tol %.2f, %d values)\n",
-                    c.name.c_str(), e.flux_rel, e.flux, e.intensity_rel, e.intensity, e.intensity_count);
+        std::printf(
+            "case %-3s flux max rel err %.2e (err/tol %.2f)  intensity max rel err %.2e "
+            "(err/tol %.2f, %d values)\n",
+            c.name.c_str(), e.flux_rel, e.flux, e.intensity_rel, e.intensity, e.intensity_count);
         if (e.ims_count > 0)
-            std::printf("         %d beam-direction values needing IMS: max rel err %.2e\n", e.ims_count,
-                        e.ims_rel);
+            std::printf("         %d beam-direction values needing IMS: max rel err %.2e\n",
+                        e.ims_count, e.ims_rel);
         EXPECT_EQ(e.flux_fail, 0) << c.title;
         EXPECT_EQ(e.intensity_fail, 0) << c.title;
     }

@@ -47,8 +47,8 @@ TEST(PlanckBand, RayleighJeansAndWienLimits) {
         const double t = 200, lo = 500000.0, hi = 510000.0;  // m-1 (5000-5100 cm-1)
         const double a = h * c / (k * t);
         auto prim = [&](double nu) {  // antiderivative of nu^3 e^{-a nu}
-            return -std::exp(-a * nu) *
-                   (nu * nu * nu / a + 3 * nu * nu / (a * a) + 6 * nu / (a * a * a) + 6 / (a * a * a * a));
+            return -std::exp(-a * nu) * (nu * nu * nu / a + 3 * nu * nu / (a * a) +
+                                         6 * nu / (a * a * a) + 6 / (a * a * a * a));
         };
         const double wien = 2 * h * c * c * (prim(hi) - prim(lo));
         EXPECT_NEAR(planck_band(lo / 100, hi / 100, t) / wien, 1.0, 1e-9);
@@ -85,8 +85,10 @@ TEST(Solver, ConservativeScatteringConservesEnergy) {
             p.utau = {0, total};
             const Result r = solve(p);
             const double incident = p.beam_mu0 * p.beam_flux;
-            const double out = r.levels[0].diffuse_up + r.levels[1].diffuse_down + r.levels[1].direct_down;
-            EXPECT_NEAR(out / incident, 1.0, 1e-6) << "streams " << streams << " delta_m " << delta_m;
+            const double out =
+                r.levels[0].diffuse_up + r.levels[1].diffuse_down + r.levels[1].direct_down;
+            EXPECT_NEAR(out / incident, 1.0, 1e-6)
+                << "streams " << streams << " delta_m " << delta_m;
             // Net flux is constant with depth: dfdt = 0 (to the same relative 1e-6).
             EXPECT_NEAR(r.levels[0].dfdt / incident, 0.0, 1e-6);
         }
