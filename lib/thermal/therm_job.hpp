@@ -42,15 +42,22 @@ std::vector<double> sun_factors(const io::Shd& shd, const io::ShdFacet& facet,
 
 struct ThermResult {
     io::Tmp tmp;
-    double spinup_residual_k = 0;  // max over facets of |run 2 - run 1| at the scene time
+    double spinup_residual_k = 0;  // max over facets of |last run - run before| at the scene time
     std::string spinup_facet;      // where it is largest
+    int spinup_runs_max = 0;       // most runs any facet needed
     long facets_solved = 0, facets_fixed = 0;
 };
 
-// Reads the inputs and computes. The run starts at the .wth's first row (which must be
-// at least 24 h before the scene time) with every node at the air temperature; it is
-// then run again from the first run's profile 24 h after the start (the same time of
-// day, so the start's influence shows as the difference). The second run is the answer.
+// Spin-up: runs over the whole weather window, each from the previous run's profile
+// 24 h after the start, until the scene-time answers of two runs agree within this.
+inline constexpr double kSpinUpToleranceK = 0.01;
+inline constexpr int kSpinUpMaxRuns = 8;
+
+// Reads the inputs and computes. Every run starts at the .wth's first row (which must
+// be at least 24 h before the scene time): the first with every node at the air
+// temperature, each next one from the previous run's profile 24 h after the start
+// (the same time of day), until two runs' answers at the scene time agree within
+// kSpinUpToleranceK (or kSpinUpMaxRuns runs). The last run is the answer.
 ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks);
 
 // compute_temperatures, then writes the .tmp atomically.

@@ -115,7 +115,7 @@ assert_tmp_near() {
     [[ "$stderr" == *"Brutsaert"* ]] || fail "stderr: $stderr"
     [[ "$stderr" == *"taken as unshadowed"* ]] || fail "stderr: $stderr"
     [[ "$stderr" == *"back face insulated"* ]] || fail "stderr: $stderr"
-    [[ "$stderr" == *"spin-up residual "* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"spin-up: up to "*" runs per facet; residual "* ]] || fail "stderr: $stderr"
 }
 
 @test "therm keeps a temperature the .gdb fixes" {

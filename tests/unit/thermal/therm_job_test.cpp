@@ -67,11 +67,14 @@ TEST(ThermJob, SeedBoxOnPlane) {
     EXPECT_GT(t["1-1-1"], air_k);       // sunlit grass
     EXPECT_GT(t["2-1-1"], air_k);       // sunlit box top
     EXPECT_GT(t["2-1-2"], t["2-1-4"]);  // south wall warmer than the north wall
-    // Spin-up: a second run from the first run's state 24 h in changes the answer by
-    // less than 0.1 K (the start no longer matters).
-    EXPECT_LT(r.spinup_residual_k, 0.1) << r.spinup_facet;
+    // Spin-up: the runs from the first run's state 24 h in converge (the start no longer
+    // matters): the last two agree within the tolerance, in few runs for these thin
+    // facets (grass 1.3 cm, wood 5 cm: time constants of hours).
+    EXPECT_LT(r.spinup_residual_k, th::kSpinUpToleranceK) << r.spinup_facet;
+    EXPECT_LE(r.spinup_runs_max, 4);
     for (const auto& [id, k] : t) std::printf("%s %.3f K\n", id.c_str(), k);
-    std::printf("spin-up residual %.3g K (%s)\n", r.spinup_residual_k, r.spinup_facet.c_str());
+    std::printf("spin-up residual %.3g K (%s), up to %d runs\n", r.spinup_residual_k,
+                r.spinup_facet.c_str(), r.spinup_runs_max);
 }
 
 TEST(ThermJob, ResolvesUnitsFromTheMat) {
