@@ -198,3 +198,14 @@ assert_tmp_near() {
     run -0 awk '$1 == "1.2/2-1-2" { a = $2 } $1 == "1.1/2-1-2" { b = $2 }
         END { exit !(a + 5 < b) }' out.tmp
 }
+
+@test "therm warns when the spin-up has not converged" {
+    # The box made of 2 m of concrete (material 41, thickness 200 cm on every box
+    # facet): its surface keeps changing from one repeated first day to the next.
+    awk 'NR >= 40 && $0 == "37" { print "41"; next }
+         NR >= 40 && $0 == "5" { print "200"; next } { print }' "$GDB" > thick.gdb
+    run -0 --separate-stderr therm "$SHD" "$WTH" "$MAT" thick.gdb "$SND" -o out.tmp
+    [[ "$stderr" == "therm: warning: spin-up residual "*" K at facet 2-1-"*" after 8 runs"* ]] ||
+        fail "stderr: $stderr"
+    run -0 sigchain-check out.tmp
+}
