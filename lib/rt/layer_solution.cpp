@@ -132,13 +132,11 @@ bool reduced_particular(const Quadrature& q, double c, const double* xp, const d
             sc.pk[i * nn + j] = delta - sc.a[i * nn + j] * q.weight[j];
         }
     if (!linalg::lu_factor(sc.pb.data(), nn, sc.piv.data())) return false;
-    double col[64], y[64], rhs[64];
-    // Q = B'^-1 c M, column by column.
-    for (int j = 0; j < nn; ++j) {
-        for (int i = 0; i < nn; ++i) col[i] = i == j ? c * q.mu[j] : 0.0;
-        linalg::lu_solve(sc.pb.data(), nn, sc.piv.data(), col);
-        for (int i = 0; i < nn; ++i) sc.pq[i * nn + j] = col[i];
-    }
+    double y[64], rhs[64];
+    // Q = B'^-1 c M (all columns at once).
+    for (int i = 0; i < nn; ++i)
+        for (int j = 0; j < nn; ++j) sc.pq[i * nn + j] = i == j ? c * q.mu[j] : 0.0;
+    linalg::lu_solve_columns(sc.pb.data(), nn, sc.piv.data(), sc.pq.data(), nn);
     for (int i = 0; i < nn; ++i) y[i] = xp[i] - xm[i];
     linalg::lu_solve(sc.pb.data(), nn, sc.piv.data(), y);
     for (int i = 0; i < nn; ++i) {

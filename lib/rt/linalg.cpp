@@ -108,11 +108,12 @@ void symmetric_eigen(double* a, int n, double* eval, double* v) {
         while (lo > 0 && a[lo * n + lo - 1] != 0) --lo;
         const double e = a[hi * n + hi - 1];
         const double d = 0.5 * (a[(hi - 1) * n + hi - 1] - a[hi * n + hi]);
-        const double shift = a[hi * n + hi] - e * e / (d + (d >= 0 ? 1 : -1) * std::hypot(d, e));
+        const double shift =
+            a[hi * n + hi] - e * e / (d + (d >= 0 ? 1 : -1) * std::sqrt(d * d + e * e));
         double x = a[lo * n + lo] - shift, z = a[(lo + 1) * n + lo];
         for (int k = lo; k < hi; ++k) {
             // G^T [x; z] = [r; 0]: c = x / r, s = -z / r.
-            const double r = std::hypot(x, z);
+            const double r = std::sqrt(x * x + z * z);
             const double c = r == 0 ? 1.0 : x / r, s = r == 0 ? 0.0 : -z / r;
             rotate(a, n, v, k, c, s, lo, hi);
             if (k + 1 < hi) {
@@ -153,6 +154,25 @@ void lu_solve(const double* a, int n, const int* piv, double* b) {
         double s = b[i];
         for (int j = i + 1; j < n; ++j) s -= a[i * n + j] * b[j];
         b[i] = s / a[i * n + i];
+    }
+}
+
+void lu_solve_columns(const double* a, int n, const int* piv, double* b, int ncol) {
+    for (int k = 0; k < n; ++k)
+        if (piv[k] != k)
+            for (int c = 0; c < ncol; ++c) std::swap(b[k * ncol + c], b[piv[k] * ncol + c]);
+    for (int k = 0; k < n; ++k)
+        for (int i = k + 1; i < n; ++i) {
+            const double l = a[i * n + k];
+            for (int c = 0; c < ncol; ++c) b[i * ncol + c] -= l * b[k * ncol + c];
+        }
+    for (int i = n - 1; i >= 0; --i) {
+        for (int j = i + 1; j < n; ++j) {
+            const double u = a[i * n + j];
+            for (int c = 0; c < ncol; ++c) b[i * ncol + c] -= u * b[j * ncol + c];
+        }
+        const double inv = 1 / a[i * n + i];
+        for (int c = 0; c < ncol; ++c) b[i * ncol + c] *= inv;
     }
 }
 

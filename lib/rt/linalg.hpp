@@ -23,6 +23,8 @@ void symmetric_eigen(double* a, int n, double* eval, double* v);
 // when singular. solve_lu overwrites b with the solution.
 bool lu_factor(double* a, int n, int* piv);
 void lu_solve(const double* a, int n, const int* piv, double* b);
+// The same for the ncol right-hand sides in the columns of the row-major n x ncol b.
+void lu_solve_columns(const double* a, int n, const int* piv, double* b, int ncol);
 
 // Banded matrix with kl sub- and ku super-diagonals, factored by LU with partial
 // pivoting (the method of LINPACK/LAPACK gbtrf, written here from the algorithm).

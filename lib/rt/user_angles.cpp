@@ -85,6 +85,55 @@ double Solver::segment(int n, double mu, const UserSource& us, double ta, double
     return v;
 }
 
+namespace {
+
+struct HomogeneousPair {
+    int m, nl;
+    const double *lam_mu, *hmom, *k, *exp_k, *c;
+    double amu, et, dt;
+};
+
+// The homogeneous-solution part of full_layer_pair (see there); kNn > 0 fixes nn at
+// compile time, 0 takes it from nn_dynamic.
+template <int kNn>
+void homogeneous_pair(const HomogeneousPair& a, int nn_dynamic, double& vu, double& vd) {
+    const int nn = kNn > 0 ? kNn : nn_dynamic;
+    const double im = 1 / a.amu;
+    // Source moments: Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu) splits each sum into even
+    // and odd (l + m) parts shared by both directions.
+    double even[64], odd[64];
+    for (int j = 0; j < nn; ++j) even[j] = odd[j] = 0;
+    for (int l = a.m; l < a.nl; l += 2) {
+        const double* h = &a.hmom[l * nn];
+        const double lm = a.lam_mu[l];
+        for (int j = 0; j < nn; ++j) even[j] += lm * h[j];
+    }
+    for (int l = a.m + 1; l < a.nl; l += 2) {
+        const double* h = &a.hmom[l * nn];
+        const double lm = a.lam_mu[l];
+        for (int j = 0; j < nn; ++j) odd[j] += lm * h[j];
+    }
+    double same[64], other[64];
+    bool resonance = false;
+    for (int j = 0; j < nn; ++j) {
+        const double x = a.k[j] * a.amu, ek = a.exp_k[j];
+        same[j] = (1 - ek * a.et) / (1 + x);
+        other[j] = (a.et - ek) / (x - 1);
+        resonance |= std::abs(x - 1) * a.dt * im < 1e-3;
+    }
+    if (resonance)
+        for (int j = 0; j < nn; ++j)
+            if (std::abs(a.k[j] * a.amu - 1) * a.dt * im < 1e-3)
+                other[j] = two_exp(a.et, a.exp_k[j], im, a.k[j], a.dt) * im;
+    for (int j = 0; j < nn; ++j) {
+        const double plus = even[j] + odd[j], minus = even[j] - odd[j];
+        vu += a.c[j] * plus * same[j] + a.c[nn + j] * minus * other[j];
+        vd += a.c[j] * minus * other[j] + a.c[nn + j] * plus * same[j];
+    }
+}
+
+}  // namespace
+
 // segment(n, +-|mu|, us, 0, dtau) for both directions of one |mu| at once, without
 // exponentials (e^{-k dtau}, e^{-dtau/|mu|} = et and e^{-dtau/mu0'} are precomputed).
 // With x = k |mu|, the term decaying along the direction of travel integrates to
@@ -98,35 +147,23 @@ void Solver::full_layer_pair(int n, int m, const double* lam_mu, double amu, dou
     const double dt = o.dtau, im = 1 / amu;
     const int nn = m_q.nn, nl = s.nl;
     const double* c = &m_x[n * 2 * nn];
-    // Source moments: Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu) splits each sum into even
-    // and odd (l + m) parts shared by both directions.
-    double even[64], odd[64];
-    for (int j = 0; j < nn; ++j) even[j] = odd[j] = 0;
-    for (int l = m; l < nl; l += 2) {
-        const double* h = &s.hmom[l * nn];
-        for (int j = 0; j < nn; ++j) even[j] += lam_mu[l] * h[j];
-    }
-    for (int l = m + 1; l < nl; l += 2) {
-        const double* h = &s.hmom[l * nn];
-        for (int j = 0; j < nn; ++j) odd[j] += lam_mu[l] * h[j];
-    }
-    double same[64], other[64];
-    bool resonance = false;
-    for (int j = 0; j < nn; ++j) {
-        const double x = s.k[j] * amu, ek = s.exp_k[j];
-        same[j] = (1 - ek * et) / (1 + x);
-        other[j] = (et - ek) / (x - 1);
-        resonance |= std::abs(x - 1) * dt * im < 1e-3;
-    }
-    if (resonance)
-        for (int j = 0; j < nn; ++j)
-            if (std::abs(s.k[j] * amu - 1) * dt * im < 1e-3)
-                other[j] = two_exp(et, s.exp_k[j], im, s.k[j], dt) * im;
     double vu = 0, vd = 0;
-    for (int j = 0; j < nn; ++j) {
-        const double plus = even[j] + odd[j], minus = even[j] - odd[j];
-        vu += c[j] * plus * same[j] + c[nn + j] * minus * other[j];
-        vd += c[j] * minus * other[j] + c[nn + j] * plus * same[j];
+    const HomogeneousPair args{m,   nl, lam_mu, s.hmom.data(), s.k.data(), s.exp_k.data(), c,
+                               amu, et, dt};
+    // Fixed sizes for the usual stream counts let the compiler unroll and vectorise.
+    switch (nn) {
+        case 4:
+            homogeneous_pair<4>(args, nn, vu, vd);
+            break;
+        case 8:
+            homogeneous_pair<8>(args, nn, vu, vd);
+            break;
+        case 16:
+            homogeneous_pair<16>(args, nn, vu, vd);
+            break;
+        default:
+            homogeneous_pair<0>(args, nn, vu, vd);
+            break;
     }
     double be = 0, bo = 0, te = 0, to = 0;
     for (int l = m; l < nl; l += 2) be += lam_mu[l] * s.bmom[l], te += lam_mu[l] * s.tmom[l];
