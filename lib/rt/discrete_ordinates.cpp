@@ -35,8 +35,12 @@ void validate(const Problem& p) {
     if (p.top_isotropic < 0 || !(p.albedo >= 0 && p.albedo <= 1)) bad("bad top or albedo");
     if (!p.planck_levels.empty() && p.planck_levels.size() != p.layers.size() + 1)
         bad("planck_levels must have layers.size() + 1 values");
+    double total = 0;
+    for (const Layer& l : p.layers) total += l.tau;
     for (std::size_t i = 0; i < p.utau.size(); ++i)
-        if (p.utau[i] < 0 || (i > 0 && p.utau[i] < p.utau[i - 1])) bad("utau not ascending >= 0");
+        if (p.utau[i] < 0 || (i > 0 && p.utau[i] < p.utau[i - 1]) ||
+            p.utau[i] > total * (1 + 1e-9) + 1e-12)
+            bad("utau must ascend within [0, total optical depth]");
     for (double mu : p.umu)
         if (mu == 0 || std::abs(mu) > 1) bad("umu must be nonzero cosines");
 }

@@ -69,7 +69,7 @@ struct Result {
 // Solves the problem. Throws sigchain::Error on invalid input (with what is wrong):
 // no layers, streams odd or outside 4..128, tau < 0, ssa outside [0, 1], pmom[0] != 1
 // for a scattering layer, mu0 outside (0, 1] with a beam, planck_levels of the wrong
-// size, utau not ascending, a zero or |umu| > 1 cosine.
+// size, utau not ascending within [0, total tau], a zero or |umu| > 1 cosine.
 // Method notes: single-scattering albedo 1 is computed as 1 - 1e-9 (DISORT's dither);
 // with delta_m and intensity_correction the Nakajima-Tanaka TMS correction is applied
 // (not their IMS secondary-scattering term, which matters only within a few degrees of

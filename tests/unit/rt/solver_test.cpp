@@ -149,6 +149,30 @@ TEST(Solver, AzimuthConvergenceStopMatchesAllModes) {
                         1e-4 * std::abs(all.levels[i].intensity[k]) + 1e-12);
 }
 
+TEST(Solver, BeamAtAnEigenvalueResonance) {
+    // A nearly non-scattering layer has eigenvalues k_j = 1/mu_j; a beam along a quadrature
+    // cosine then hits the resonance k = 1/mu0, where the particular-solution system is
+    // singular (without the guard solve() throws). With omega = 1e-6 the diffuse field is
+    // below omega * mu0 F = 1e-6 (bound 1e-5), finite and non-negative; the direct beam is
+    // exact (1e-12).
+    Problem p;
+    p.streams = 8;
+    p.layers = {Layer{0.7, 1e-6, {1.0, 0.3, 0.09}}};
+    p.beam_flux = 1;
+    p.beam_mu0 = 0.5 + 0.5 * 0.8611363115940526;  // a 4-point Gauss node mapped to (0, 1)
+    p.utau = {0, 0.7};
+    p.umu = {-p.beam_mu0, p.beam_mu0};
+    p.phi_deg = {0};
+    const Result r = solve(p);
+    EXPECT_NEAR(r.levels[1].direct_down / (p.beam_mu0 * std::exp(-0.7 / p.beam_mu0)), 1.0, 1e-12);
+    for (const LevelResult& l : r.levels) {
+        EXPECT_TRUE(std::isfinite(l.diffuse_up) && std::isfinite(l.diffuse_down));
+        EXPECT_GE(l.diffuse_up, 0);
+        EXPECT_LT(l.diffuse_up + l.diffuse_down, 1e-5);
+        for (double v : l.intensity) EXPECT_TRUE(std::isfinite(v) && v >= 0 && v < 1e-5);
+    }
+}
+
 TEST(Solver, RejectsInvalidInput) {
     Problem p = beam_problem(0.5, 0.5, 1, 8);
     p.streams = 7;
@@ -158,6 +182,9 @@ TEST(Solver, RejectsInvalidInput) {
     EXPECT_THROW(solve(p), Error);
     p = beam_problem(0.5, 0.5, 1, 8);
     p.utau = {0.5, 0.1};
+    EXPECT_THROW(solve(p), Error);
+    p = beam_problem(0.5, 0.5, 1, 8);
+    p.utau = {0.0, 5.0};  // deeper than the layer
     EXPECT_THROW(solve(p), Error);
     p = beam_problem(0.5, 0.5, 1, 8);
     p.umu = {0.0};
