@@ -56,7 +56,8 @@ struct LevelResult {
     double direct_down = 0;     // direct-beam flux (horizontal surface)
     double diffuse_down = 0;    // diffuse downward flux
     double diffuse_up = 0;      // diffuse upward flux
-    double dfdt = 0;            // d(net flux)/d(tau)
+    double dfdt = 0;            // d(net flux)/d(tau), DISORT's: (1 - ssa) 4 pi (mean
+                                // intensity incl. beam - B); > 0 where absorption wins
     double mean_intensity = 0;  // diffuse mean intensity (average over 4 pi)
     // Diffuse intensity at umu[i], phi_deg[j]: intensity[i * phi_deg.size() + j].
     std::vector<double> intensity;
