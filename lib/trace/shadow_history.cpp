@@ -1,0 +1,503 @@
+// trace --shadow-history: sun rays from points on every facet at each step of the
+// history, sky rays for the sky-view factor (shadow_history.hpp; shd(5)).
+//
+// Conventions: a facet faces the side its wound normal points to (gdb(5): vertices
+// counter-clockwise seen from that side); the sun behind it (n.s <= 0) or below the
+// horizon gives 0. Rays leave from the point offset along that normal by the scene's
+// ray epsilon (1e-6 of its largest coordinate or extent, as render.cpp). A sky ray
+// counts as sky when it escapes the scene above the horizon; one that escapes below
+// it meets the ground beyond the scene (not sky), as trace renders it.
+#include "trace/shadow_history.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "atmos/solar_position.hpp"
+#include "core/error.hpp"
+#include "core/output.hpp"
+#include "io/check.hpp"
+#include "io/gdb.hpp"
+#include "io/mat.hpp"
+#include "io/odb.hpp"
+#include "scene/mesh_build.hpp"
+#include "trace/render.hpp"
+#include "trace/sampling.hpp"
+
+namespace sigchain::trace {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross3(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 axpy(const Vec3& p, double s, const Vec3& d) {
+    return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
+}
+
+// Days from 1970-01-01 of a proleptic Gregorian date, and back (the standard
+// era-based civil calendar conversion, H. Hinnant, "chrono-compatible low-level date
+// algorithms"); the same arithmetic as therm's ut_of_wth_hours.
+long days_from_civil(long y, int m, int d) {
+    y -= m <= 2;
+    const long era = (y >= 0 ? y : y - 399) / 400;
+    const long yoe = y - era * 400;
+    const long doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+    const long doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return era * 146097 + doe - 719468;
+}
+void civil_from_days(long z, int& y, int& m, int& d) {
+    z += 719468;
+    const long era = (z >= 0 ? z : z - 146096) / 146097;
+    const long doe = z - era * 146097;
+    const long yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    const long doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    const long mp = (5 * doy + 2) / 153;
+    d = static_cast<int>(doy - (153 * mp + 2) / 5 + 1);
+    m = static_cast<int>(mp < 10 ? mp + 3 : mp - 9);
+    y = static_cast<int>(yoe + era * 400 + (m <= 2));
+}
+
+// Affine (row-major 3x4) applied to a point.
+Vec3 apply(const scene::Affine& t, const Vec3& p) {
+    Vec3 r{};
+    for (int i = 0; i < 3; ++i)
+        r[i] = t[4 * i] * p[0] + t[4 * i + 1] * p[1] + t[4 * i + 2] * p[2] + t[4 * i + 3];
+    return r;
+}
+
+double determinant(const scene::Affine& t) {
+    return t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
+           t[2] * (t[4] * t[9] - t[5] * t[8]);
+}
+
+// An orthonormal basis (x, y, z = n) about a unit normal.
+struct Basis {
+    Vec3 x, y, z;
+    explicit Basis(const Vec3& n) : z(n) {
+        Vec3 a = std::abs(n[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+        x = cross3(a, n);
+        const double len = std::sqrt(dot3(x, x));
+        for (double& v : x) v /= len;
+        y = cross3(z, x);
+    }
+    Vec3 world(double lx, double ly, double lz) const {
+        return {lx * x[0] + ly * y[0] + lz * z[0], lx * x[1] + ly * y[1] + lz * z[1],
+                lx * x[2] + ly * y[2] + lz * z[2]};
+    }
+};
+
+// Sample points of a facet: its area centroid for one point; else point j of n in
+// the j-th of n equal slices of its cumulative area (triangles in order), jittered,
+// mapped into the triangle by the square-root warp (uniform by area).
+std::vector<Vec3> sample_points(const ShadowFacet& f, long n, std::uint64_t seed,
+                                std::uint64_t facet_index) {
+    std::vector<double> area;
+    double total = 0;
+    for (const auto& t : f.triangles) {
+        const Vec3 c = cross3(minus(t[1], t[0]), minus(t[2], t[0]));
+        area.push_back(0.5 * std::sqrt(dot3(c, c)));
+        total += area.back();
+    }
+    std::vector<Vec3> points;
+    if (n == 1 || total <= 0) {
+        Vec3 c{0, 0, 0};
+        for (std::size_t i = 0; i < f.triangles.size(); ++i) {
+            const double w = total > 0 ? area[i] / total : 1.0 / f.triangles.size();
+            for (const Vec3& v : f.triangles[i]) c = axpy(c, w / 3, v);
+        }
+        points.assign(static_cast<std::size_t>(n), c);
+        return points;
+    }
+    for (long j = 0; j < n; ++j) {
+        const double u = (static_cast<double>(j) + uniform01(seed, facet_index, 1, j, 0)) /
+                         static_cast<double>(n) * total;
+        const double v = uniform01(seed, facet_index, 1, j, 1);
+        std::size_t i = 0;
+        double below = 0;
+        while (i + 1 < area.size() && below + area[i] < u) below += area[i++];
+        const double s = std::sqrt(std::clamp((u - below) / area[i], 0.0, 1.0));
+        const auto& t = f.triangles[i];
+        Vec3 p{};
+        for (int k = 0; k < 3; ++k)
+            p[k] = (1 - s) * t[0][k] + s * (1 - v) * t[1][k] + s * v * t[2][k];
+        points.push_back(p);
+    }
+    return points;
+}
+
+// Per-thread scratch for the spectral transmittance of a sun ray.
+struct SunRay {
+    const scene::Scene& scene;
+    const radiometry::MaterialLibrary& materials;
+    int max_transmissions;
+    double eps;
+    std::vector<double> vis, t;
+
+    // Whether the sun reaches p (no opaque facet on the way, at most
+    // max_transmissions transmissive ones) and the mean over the grid of the product of
+    // the transmissive facets' slab transmittances (as render.cpp's sun_visibility).
+    bool reaches(const Vec3& p, const Vec3& sun, double& transmittance) {
+        transmittance = 1;
+        std::fill(vis.begin(), vis.end(), 1.0);
+        bool crossed = false;
+        double tnear = 0;
+        for (int crossing = 0;; ++crossing) {
+            auto hit = scene.intersect(p, sun, tnear, INFINITY);
+            if (!hit) break;
+            const auto& a = scene.attributes(*hit);
+            const radiometry::MaterialOptics* m = materials.find(a.material_id);
+            if (!m || !m->transmissive || crossing >= max_transmissions) return false;
+            m->transmittance(std::abs(dot3(hit->normal, sun)),
+                             a.thickness_cm >= 0 ? a.thickness_cm : m->thickness_cm, t);
+            for (std::size_t k = 0; k < vis.size(); ++k) vis[k] *= t[k];
+            crossed = true;
+            tnear = hit->distance + eps;
+        }
+        if (crossed && !vis.empty()) {
+            double mean = 0;
+            for (double v : vis) mean += v;
+            transmittance = std::clamp(mean / static_cast<double>(vis.size()), 0.0, 1.0);
+        }
+        return true;
+    }
+};
+
+// Cosine-weighted fraction of the hemisphere above the facet at p that is open sky:
+// sky_rays directions, the first m^2 (m = floor(sqrt(sky_rays))) jittered in an m x m
+// grid of (r^2, phi) strata (Malley's method), the rest at random.
+double sky_fraction(const scene::Scene& scene, const Vec3& p, const Basis& b, long rays,
+                    std::uint64_t seed, std::uint64_t facet_index, long point) {
+    const long m = static_cast<long>(std::floor(std::sqrt(static_cast<double>(rays))));
+    long sky = 0;
+    for (long i = 0; i < rays; ++i) {
+        double u1 = uniform01(seed, facet_index, 2 + point, i, 0);
+        double u2 = uniform01(seed, facet_index, 2 + point, i, 1);
+        if (i < m * m) {
+            u1 = (static_cast<double>(i / m) + u1) / static_cast<double>(m);
+            u2 = (static_cast<double>(i % m) + u2) / static_cast<double>(m);
+        }
+        const double r = std::sqrt(u1), phi = 2 * kPi * u2;
+        const Vec3 d = b.world(r * std::cos(phi), r * std::sin(phi), std::sqrt(1 - u1));
+        if (d[2] > 0 && !scene.occluded(p, d, 0.0, INFINITY)) ++sky;
+    }
+    return static_cast<double>(sky) / static_cast<double>(rays);
+}
+
+io::ShdFacet facet_history(const ShadowFacet& f, std::uint64_t index, const std::vector<SunStep>& sun,
+                           const ShadowOptions& o, SunRay& ray) {
+    io::ShdFacet out;
+    out.id = f.key;
+    out.points = o.points_per_facet;
+    const auto points = sample_points(f, o.points_per_facet, o.seed, index);
+    const Basis basis(f.normal);
+    std::vector<Vec3> lifted;
+    double svf = 0;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+        lifted.push_back(axpy(points[j], ray.eps, f.normal));
+        svf += sky_fraction(ray.scene, lifted.back(), basis, o.sky_rays, o.seed, index,
+                            static_cast<long>(j));
+    }
+    out.sky_view_factor = std::clamp(svf / static_cast<double>(points.size()), 0.0, 1.0);
+    out.sunlit_fraction.reserve(sun.size() * points.size());
+    out.transmittance.reserve(sun.size() * points.size());
+    for (const SunStep& s : sun) {
+        const bool facing = s.up && dot3(f.normal, s.direction) > 0;
+        for (const Vec3& p : lifted) {
+            double t = 1;
+            const bool lit = facing && ray.reaches(p, s.direction, t);
+            out.sunlit_fraction.push_back(lit ? 1.0 : 0.0);
+            out.transmittance.push_back(lit ? t : 1.0);
+        }
+    }
+    return out;
+}
+
+double scene_epsilon(const scene::Scene& sc) {
+    const scene::Bounds b = sc.bounds();
+    double scale = 1;
+    if (!b.empty())
+        for (int i = 0; i < 3; ++i)
+            scale = std::max({scale, std::abs(b.lower[i]), std::abs(b.upper[i]),
+                              b.upper[i] - b.lower[i]});
+    return 1e-6 * scale;  // render.cpp make_context: 17 float ulps at the largest coordinate
+}
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+}  // namespace
+
+long history_steps(double history_hours, double step_minutes) {
+    if (!(history_hours > 0) || !std::isfinite(history_hours))
+        throw UsageError("--history-hours: expected a positive number of hours");
+    if (!(step_minutes > 0) || !std::isfinite(step_minutes))
+        throw UsageError("--history-step-minutes: expected a positive number of minutes");
+    const double n = history_hours * 60 / step_minutes;
+    const double whole = std::round(n);
+    if (whole < 1 || std::abs(n - whole) > 1e-9 * std::max(1.0, n))
+        throw UsageError("--history-step-minutes: " + number(step_minutes) +
+                         " min does not divide --history-hours " + number(history_hours) +
+                         " h into whole steps");
+    if (whole > 1e6) throw UsageError("--history-step-minutes: more than 1000000 steps");
+    return static_cast<long>(whole) + 1;
+}
+
+double scene_time_hours(const io::Snd& snd) {
+    // therm's scene_wth_hours (lib/thermal/environment.cpp), which reads the .shd.
+    double local = std::fmod(snd.time_gmt_hours - snd.gmt_offset_hours, 24.0);
+    if (local < 0) local += 24;
+    return 24 + local;
+}
+
+std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hours) {
+    const double scene = scene_time_hours(snd);
+    const long day0 = days_from_civil(snd.year, snd.month, snd.day) - 1;
+    std::vector<SunStep> out;
+    out.reserve(static_cast<std::size_t>(steps));
+    for (long k = 0; k < steps; ++k) {
+        SunStep s;
+        s.time_hours = scene - static_cast<double>(steps - 1 - k) * step_hours;
+        const double days = static_cast<double>(day0) + (s.time_hours + snd.gmt_offset_hours) / 24;
+        const double whole = std::floor(days);
+        atmos::SolarPositionInput in;
+        civil_from_days(static_cast<long>(whole), in.year, in.month, in.day);
+        in.ut_hours = std::clamp((days - whole) * 24, 0.0, std::nextafter(24.0, 0.0));
+        in.delta_t_s = atmos::default_delta_t_s(in.year);
+        in.latitude_deg = snd.latitude_deg;
+        in.longitude_east_deg = snd.longitude_east_deg;
+        const atmos::SolarPosition sp = atmos::solar_position(in);
+        s.zenith_deg = sp.zenith_deg;
+        s.azimuth_deg = sp.azimuth_deg;
+        const double z = sp.zenith_deg * kDeg, a = sp.azimuth_deg * kDeg;
+        s.direction = {std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)};
+        s.up = sp.zenith_deg < 90;
+        out.push_back(s);
+    }
+    return out;
+}
+
+std::size_t ShadowScene::add_mesh(scene::MeshData mesh) {
+    m_meshes.push_back(mesh);
+    return m_scene.add_mesh(std::move(mesh));
+}
+
+void ShadowScene::place(std::size_t mesh, const scene::Affine& transform, std::string prefix) {
+    m_scene.place(mesh, transform, std::move(prefix));
+    m_placements.emplace_back(mesh, transform);
+}
+
+void ShadowScene::commit() {
+    m_scene.commit();
+    for (std::size_t object = 0; object < m_placements.size(); ++object) {
+        const auto& [mesh_index, t] = m_placements[object];
+        const scene::MeshData& mesh = m_meshes[mesh_index];
+        const std::size_t first = m_facets.size();
+        for (std::uint32_t f = 0; f < mesh.facets.size(); ++f) {
+            ShadowFacet sf;
+            sf.object = static_cast<std::uint32_t>(object);
+            sf.facet = f;
+            scene::Hit h;
+            h.object = sf.object;
+            h.facet = f;
+            sf.key = m_scene.facet_key(h);
+            m_facets.push_back(std::move(sf));
+        }
+        // A mirroring placement reverses the winding but not the side faced (scene.hpp).
+        const double side = determinant(t) < 0 ? -1.0 : 1.0;
+        std::vector<Vec3> sum(mesh.facets.size(), Vec3{0, 0, 0});
+        for (std::size_t k = 0; k < mesh.triangle_facet.size(); ++k) {
+            std::array<Vec3, 3> tri;
+            for (int v = 0; v < 3; ++v) {
+                const std::uint32_t i = mesh.triangles[3 * k + v];
+                tri[v] = apply(t, {mesh.vertices[3 * i], mesh.vertices[3 * i + 1],
+                                   mesh.vertices[3 * i + 2]});
+            }
+            const Vec3 c = cross3(minus(tri[1], tri[0]), minus(tri[2], tri[0]));
+            Vec3& s = sum[mesh.triangle_facet[k]];
+            s = axpy(s, side, c);
+            m_facets[first + mesh.triangle_facet[k]].triangles.push_back(tri);
+        }
+        for (std::size_t f = 0; f < sum.size(); ++f) {
+            const double len = std::sqrt(dot3(sum[f], sum[f]));
+            m_facets[first + f].normal =
+                len > 0 ? Vec3{sum[f][0] / len, sum[f][1] / len, sum[f][2] / len} : Vec3{0, 0, 1};
+        }
+    }
+}
+
+ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
+                              bool allow_degenerate, scene::LoadReport* report) {
+    const auto policy =
+        allow_degenerate ? scene::DegeneratePolicy::Skip : scene::DegeneratePolicy::Error;
+    std::vector<std::string> warnings;
+    ShadowScene sc;
+    const std::string ext = io::format_of_path(path);
+    if (ext == "gdb") {
+        sc.place(sc.add_mesh(scene::mesh_from_gdb(io::read_gdb_file(path), policy, &warnings)),
+                 scene::identity_affine());
+    } else if (ext == "odb") {
+        // As scene/load.cpp load_odb: one mesh per .gdb file, object k's instance i keyed
+        // "k.i/", coordinates scaled from the object's UNITS to scene units.
+        const io::Odb odb = io::read_odb_file(path);
+        std::map<std::string, std::size_t> meshes;
+        for (std::size_t k = 0; k < odb.objects.size(); ++k) {
+            const io::OdbObject& obj = odb.objects[k];
+            if (obj.source != io::OdbSource::Gdb)
+                throw DataError({odb.file, obj.line},
+                                "not implemented yet: OBJ and DEM objects in a shadow history "
+                                "(therm reads .gdb objects only)");
+            const std::string file = io::resolve_odb_path(odb, obj.path);
+            auto it = meshes.find(file);
+            if (it == meshes.end())
+                it = meshes
+                         .emplace(file, sc.add_mesh(scene::mesh_from_gdb(io::read_gdb_file(file),
+                                                                         policy, &warnings)))
+                         .first;
+            const double scale = io::meters_per_odb_unit(obj.units) / scene_meters_per_unit;
+            const auto placed = io::placements(obj);
+            for (std::size_t i = 0; i < placed.size(); ++i) {
+                scene::Affine a;
+                for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 4; ++c) a[4 * r + c] = scale * placed[i][4 * r + c];
+                sc.place(it->second, a, std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
+            }
+        }
+    } else {
+        throw UsageError(path + ": the scene must be a .gdb or .odb file");
+    }
+    sc.commit();
+    if (report) {
+        report->warnings = std::move(warnings);
+        report->placements = sc.scene().placement_count();
+        report->facets = sc.facets().size();
+        report->triangles = sc.scene().triangle_count();
+    }
+    return sc;
+}
+
+io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary& materials,
+                       const std::vector<SunStep>& sun, double step_hours,
+                       const ShadowOptions& o, const std::function<void(long, long)>& progress) {
+    if (sun.empty()) throw std::invalid_argument("shadow_history: no time steps");
+    if (o.points_per_facet < 1 || o.sky_rays < 1 || o.max_transmissions < 0)
+        throw std::invalid_argument("shadow_history: bad options");
+    io::Shd shd;
+    shd.scene_time_hours = sun.back().time_hours;
+    shd.steps = static_cast<long>(sun.size());
+    shd.step_hours = step_hours;
+    const auto& facets = sc.facets();
+    shd.facets.resize(facets.size());
+    std::size_t samples = 0;
+    for (const auto& m : materials.materials())
+        samples = std::max(samples, m.extinction_per_km.size());
+    const double eps = scene_epsilon(sc.scene());
+    const long total = static_cast<long>(facets.size());
+
+    unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max(1L, total))));
+    std::atomic<long> next{0}, done{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    auto work = [&](bool report) {
+        try {
+            SunRay ray{sc.scene(), materials, o.max_transmissions, eps,
+                       std::vector<double>(samples), std::vector<double>(samples)};
+            for (long i; !failed && (i = next.fetch_add(1)) < total;) {
+                const auto u = static_cast<std::size_t>(i);
+                shd.facets[u] = facet_history(facets[u], u, sun, o, ray);
+                const long d = done.fetch_add(1) + 1;
+                if (report && progress) progress(d, total);
+            }
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(error_mutex);
+            if (!error) error = std::current_exception();
+            failed = true;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, false);
+    work(true);
+    for (auto& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+    if (progress) progress(total, total);
+    return shd;
+}
+
+namespace {
+
+// The .snd's bands as a spectral grid (the grid trace renders on with matching .rad
+// files), on which the .mat's .ext curves are sampled.
+radiometry::SpectralGrid snd_grid(const io::Snd& snd) {
+    radiometry::SpectralGrid g;
+    for (std::size_t b = 0; b < snd.bands.size(); ++b) {
+        const io::SndBand& band = snd.bands[b];
+        std::vector<double> wl;
+        for (long k = 0; k < band.sample_count(); ++k)
+            wl.push_back(1e4 / (band.min_wavenumber_cm1 + static_cast<double>(k) *
+                                                              band.increment_cm1));  // um
+        std::sort(wl.begin(), wl.end());
+        for (double w : wl) {
+            g.wavelength_um.push_back(w);
+            g.band_of_sample.push_back(static_cast<int>(b));
+        }
+        g.band_names.push_back("band" + std::to_string(b + 1));
+    }
+    return g;
+}
+
+void check_options(const ShadowJob& job) {
+    if (job.output_path.empty()) throw UsageError("no output: give -o FILE.shd");
+    history_steps(job.options.history_hours, job.options.step_minutes);
+    if (job.options.points_per_facet < 1 || job.options.points_per_facet > 1000000)
+        throw UsageError("--points-per-facet: expected 1 to 1000000");
+    if (job.options.sky_rays < 1 || job.options.sky_rays > 1000000)
+        throw UsageError("--sky-rays: expected 1 to 1000000");
+    if (job.options.max_transmissions < 0)
+        throw UsageError("--max-transmissions: expected 0 or more");
+}
+
+}  // namespace
+
+io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks) {
+    check_options(job);
+    auto info = [&](const std::string& m) {
+        if (hooks.info) hooks.info(m);
+    };
+    const long steps = history_steps(job.options.history_hours, job.options.step_minutes);
+    const double step_hours = job.options.step_minutes / 60;
+    const io::Snd snd = io::read_snd_file(job.snd_path);
+    const radiometry::MaterialLibrary materials =
+        radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path,
+                                          snd_grid(snd));
+    scene::LoadReport load;
+    const ShadowScene sc = load_shadow_scene(job.scene_path, 1.0, job.allow_degenerate, &load);
+    for (const auto& w : load.warnings)
+        if (hooks.warn) hooks.warn(w);
+    if (sc.facets().empty()) throw DataError({job.scene_path, 0}, "the scene has no facets");
+    validate_scene(sc.scene(), materials);  // as trace: every facet's material exists
+    const std::vector<SunStep> sun = sun_history(snd, steps, step_hours);
+    const long up = std::count_if(sun.begin(), sun.end(), [](const SunStep& s) { return s.up; });
+    info("history: " + std::to_string(steps) + " steps of " + number(job.options.step_minutes) +
+         " min ending at " + number(sun.back().time_hours) + " h (.wth clock), sun up at " +
+         std::to_string(up) + "; " + std::to_string(sc.facets().size()) + " facets x " +
+         std::to_string(job.options.points_per_facet) + " point(s), " +
+         std::to_string(job.options.sky_rays) + " sky rays per point");
+    const io::Shd shd = shadow_history(sc, materials, sun, step_hours, job.options, hooks.progress);
+    write_atomically(job.output_path, [&](std::ostream& out) { io::write_shd(out, shd); });
+    return shd;
+}
+
+}  // namespace sigchain::trace

@@ -1,0 +1,119 @@
+// trace --shadow-history: per facet, the sunlit fraction and the sun's transmittance
+// through transmissive facets at each time step of the hours before the scene time,
+// and the facet's sky-view factor; written as a .shd (shd(5)) for therm (issue 6).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/shd.hpp"
+#include "io/snd.hpp"
+#include "radiometry/material.hpp"
+#include "scene/load.hpp"
+#include "scene/scene.hpp"
+
+namespace sigchain::trace {
+
+using Vec3 = std::array<double, 3>;
+
+// The sky-view factor's ray count per sample point (cosine-weighted, stratified).
+inline constexpr long kDefaultSkyRays = 256;
+
+struct ShadowOptions {
+    double history_hours = 24;   // > 0: the grid spans [scene - history, scene]
+    double step_minutes = 15;    // > 0, dividing history_hours * 60
+    long points_per_facet = 1;   // 1: the facet's area centroid; N: stratified by area
+    long sky_rays = kDefaultSkyRays;
+    int max_transmissions = 8;   // transmissive facets crossed per sun ray, as trace renders
+    std::uint64_t seed = 1;      // sample-point and sky-ray jitter; results depend on it only
+    unsigned threads = 0;        // over facets; 0: all cores; results do not depend on it
+};
+
+// One time step: its time (hours of the .wth clock, shd(5)) and the sun there.
+struct SunStep {
+    double time_hours = 0;
+    double zenith_deg = 0;   // topocentric, with refraction (NREL SPA)
+    double azimuth_deg = 0;  // clockwise from north
+    Vec3 direction{};        // unit, toward the sun, scene frame (x east, y north, z up)
+    bool up = false;         // zenith < 90 deg, as trace's Atmosphere::sun_up
+};
+
+// The number of steps of a history: history / step + 1 (both ends). UsageError
+// naming the option when a value is not positive or the step does not divide it.
+long history_steps(double history_hours, double step_minutes);
+
+// The scene time of the .snd in the .wth's clock (shd(5), therm(1)): hours from
+// midnight of the day before the scene's day, local time = GMT time - GMT offset.
+double scene_time_hours(const io::Snd& snd);
+
+// The sun (NREL SPA, lib/atmos, as build_radiance) at `steps` times ending at the
+// scene time, `step_hours` apart. The UT of a grid time t is therm's (environment.hpp
+// ut_of_wth_hours): the .snd's date - 1 day + (t + GMT offset) hours.
+std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hours);
+
+// A scene with its facets' geometry: the Scene traces the rays, and every placed
+// facet keeps its triangles (scene frame) and key (scene facet_key, tmp(5)).
+struct ShadowFacet {
+    std::uint32_t object = 0, facet = 0;
+    std::string key;
+    std::vector<std::array<Vec3, 3>> triangles;  // scene frame, scene units
+    Vec3 normal{};                               // unit, the side the facet faces
+};
+
+class ShadowScene {
+public:
+    // Adds a mesh (scene units) and returns its index for place().
+    std::size_t add_mesh(scene::MeshData mesh);
+    void place(std::size_t mesh, const scene::Affine& transform, std::string key_prefix = "");
+    // Builds the ray-tracing structures and the facet list; call once.
+    void commit();
+
+    const scene::Scene& scene() const { return m_scene; }
+    const std::vector<ShadowFacet>& facets() const { return m_facets; }
+
+private:
+    scene::Scene m_scene;
+    std::vector<scene::MeshData> m_meshes;
+    std::vector<std::pair<std::size_t, scene::Affine>> m_placements;
+    std::vector<ShadowFacet> m_facets;
+};
+
+// Loads a .gdb or an .odb of .gdb objects as load_scene() does (the same meshes,
+// placements, unit scaling and keys; therm reads the same subset). OBJ and DEM
+// objects are refused with a DataError at their .odb line. Degenerate facets are an
+// error, or skipped with a warning into `report` with allow_degenerate.
+ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
+                              bool allow_degenerate, scene::LoadReport* report = nullptr);
+
+// The history of every facet (scene order: placements, then facets) over `sun`, whose
+// last step is the scene time. `materials` gives transmissive facets their slab
+// transmittance exp(-k d/|cos|) (ext(5)), averaged over its grid's samples as trace's
+// shadow truth layer; a facet whose material is missing or opaque blocks the sun.
+// `progress(done, total)` is called from the calling thread (may be empty).
+io::Shd shadow_history(const ShadowScene& scene, const radiometry::MaterialLibrary& materials,
+                       const std::vector<SunStep>& sun, double step_hours,
+                       const ShadowOptions& options,
+                       const std::function<void(long, long)>& progress = {});
+
+// trace --shadow-history as a job: .snd + scene + .mat -> .shd.
+struct ShadowJob {
+    std::string snd_path, scene_path, mat_path;
+    std::string output_path;  // .shd; "-" is standard output
+    ShadowOptions options;
+    bool allow_degenerate = false;
+};
+
+struct ShadowHooks {
+    std::function<void(const std::string&)> warn;
+    std::function<void(const std::string&)> info;
+    std::function<void(long, long)> progress;
+};
+
+// Checks the options (UsageError), reads the inputs, computes and writes the .shd
+// atomically. DataError/IoError name the file and line of a bad input.
+io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks = {});
+
+}  // namespace sigchain::trace
