@@ -60,6 +60,62 @@ std::vector<rt::Layer> solver_layers(const std::vector<LayerOptics>& column, int
     return layers;
 }
 
+// The profile levels the solver keeps (ascending, from 0 to the top): the ground, the
+// sensor and the top always; elsewhere consecutive layers are merged, from the top
+// down, while their summed extinction optical depth stays within `max_tau` (0: keep
+// every level). Mixing thin layers by optical depth keeps their single scattering
+// exactly; only the order of attenuation inside a merged slab is lost, an error of
+// order max_tau^2.
+std::vector<std::size_t> kept_levels(const std::vector<LayerOptics>& col,
+                                     std::size_t sensor_level, double max_tau) {
+    auto tau = [&](std::size_t k) {
+        return col[k].tau_rayleigh + col[k].tau_aerosol + col[k].tau_gas;
+    };
+    const std::size_t n = col.size();  // layers; levels 0..n
+    std::vector<std::size_t> kept{n};
+    double acc = 0;
+    for (std::size_t k = n; k-- > 0;) {  // layer k spans levels k..k+1
+        acc += tau(k);
+        if (k == 0 || k == sensor_level || max_tau <= 0 || acc + tau(k - 1) > max_tau) {
+            kept.push_back(k);
+            acc = 0;
+        }
+    }
+    std::reverse(kept.begin(), kept.end());
+    return kept;
+}
+
+// The solver's layers (top first, one per profile layer) merged between the kept
+// levels: optical depths add, single-scattering albedo and phase moments are
+// weighted by extinction and by scattering optical depth.
+std::vector<rt::Layer> merged_layers(const std::vector<rt::Layer>& layers,
+                                     const std::vector<std::size_t>& kept) {
+    const std::size_t n = layers.size();
+    std::vector<rt::Layer> out;
+    for (std::size_t i = kept.size() - 1; i-- > 0;) {
+        const std::size_t lo = kept[i], hi = kept[i + 1];  // profile levels, lo < hi
+        if (hi - lo == 1) {
+            out.push_back(layers[n - 1 - lo]);
+            continue;
+        }
+        rt::Layer m;
+        m.pmom.assign(layers[0].pmom.size(), 0.0);
+        double scat = 0;
+        for (std::size_t k = lo; k < hi; ++k) {
+            const rt::Layer& l = layers[n - 1 - k];
+            m.tau += l.tau;
+            const double s = l.tau * l.ssa;
+            scat += s;
+            for (std::size_t j = 0; j < m.pmom.size(); ++j) m.pmom[j] += s * l.pmom[j];
+        }
+        m.ssa = m.tau > 0 ? std::clamp(scat / m.tau, 0.0, 1.0) : 0.0;
+        for (double& v : m.pmom) v = scat > 0 ? v / scat : 0.0;
+        if (!(scat > 0)) m.pmom[0] = 1;
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
 // The directions the tables need, as the solver's (mu, phi) and where each lands.
 struct Directions {
     std::vector<double> umu;  // ascending
@@ -366,17 +422,20 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             sun_up ? column.direct_transmittance(nu, col, 0, top_level, mu0) : 0.0;
 
         rt::Problem prob;
-        prob.layers = solver_layers(col, moments);
+        const std::vector<std::size_t> kept = kept_levels(col, sensor_level, o.merge_tau);
+        prob.layers = merged_layers(solver_layers(col, moments), kept);
         prob.streams = o.streams;
         prob.delta_m = true;
         prob.albedo = 0;  // black surface: the scene supplies the ground (seed 3.4)
-        double tau_above_sensor = 0, tau_total = 0;
-        for (std::size_t k = 0; k < col.size(); ++k) {
-            const double t = prob.layers[col.size() - 1 - k].tau;
-            tau_total += t;
-            if (k >= sensor_level) tau_above_sensor += t;
+        {  // depths of the sensor and the ground: sums of the solver's own layers (top
+           // first), so they land exactly on its boundaries
+            double sum = 0, above = 0;
+            for (std::size_t m = 0; m < prob.layers.size(); ++m) {
+                sum += prob.layers[m].tau;
+                if (kept[kept.size() - 2 - m] >= sensor_level) above = sum;
+            }
+            prob.utau = {above, sum};
         }
-        prob.utau = {tau_above_sensor, tau_total};
         prob.umu = dirs.umu;
         prob.phi_deg = dirs.phi;
 
@@ -394,8 +453,9 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             rt::Problem th = prob;
             th.beam_flux = 0;
             th.planck_levels.clear();
-            for (std::size_t lev = prof.size(); lev-- > 0;)
-                th.planck_levels.push_back(radiometry::planck_radiance(wavelength, prof.t_k[lev]));
+            for (std::size_t i = kept.size(); i-- > 0;)
+                th.planck_levels.push_back(
+                    radiometry::planck_radiance(wavelength, prof.t_k[kept[i]]));
             th.planck_surface = 0;  // the surface's emission belongs to the scene
             th.top_emission = 0;    // space
             thermal_result = rt::solve(th);

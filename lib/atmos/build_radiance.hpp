@@ -38,6 +38,8 @@ struct RadianceOptions {
                                              // from north); default: the deck's PSIPO
     double top_km = 100;                  // top of the modelled atmosphere
     double thermal_min_wavelength_um = 2.5;  // layer emission solved at and above this
+    double merge_tau = 0.01;              // the solver merges consecutive layers while
+                                          // their optical depth stays within this (0: never)
     unsigned threads = 0;                 // worker threads (0: every core); results do
                                           // not depend on it
     std::function<void(long done, long total)> progress;  // per spectral sample

@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
         "azimuth of positive view angles, clockwise from north (default: the deck's PSIPO)")(
         "top", cli::po::value<double>()->default_value(100)->value_name("KM"),
         "top of the modelled atmosphere")(
+        "merge-tau", cli::po::value<double>()->default_value(0.01)->value_name("TAU"),
+        "solver merges thin layers up to this optical depth (0: never)")(
         "thermal-from", cli::po::value<double>()->default_value(2.5)->value_name("UM"),
         "solve layer emission at wavelengths from UM up")(
         "threads", cli::po::value<unsigned>()->default_value(0)->value_name("N"),
@@ -62,6 +64,9 @@ int main(int argc, char** argv) {
         if (!(o.top_km > 0)) throw sigchain::UsageError("--top must be > 0 km");
         o.thermal_min_wavelength_um = vm["thermal-from"].as<double>();
         o.threads = vm["threads"].as<unsigned>();
+        o.merge_tau = vm["merge-tau"].as<double>();
+        if (!(o.merge_tau >= 0 && o.merge_tau <= 1))
+            throw sigchain::UsageError("--merge-tau must be in [0, 1]");
         atmos::check_radiance_options(o);
         const std::string pattern = vm["output"].as<std::string>();
 
