@@ -116,6 +116,18 @@ std::vector<rt::Layer> merged_layers(const std::vector<rt::Layer>& layers,
     return out;
 }
 
+// The optical depths (from the top) of the sensor level and of the ground: sums of the
+// solver's own layers (top first), so they land exactly on its boundaries.
+std::vector<double> solver_depths(const std::vector<rt::Layer>& layers,
+                                  const std::vector<std::size_t>& kept, std::size_t sensor_level) {
+    double sum = 0, above = 0;
+    for (std::size_t m = 0; m < layers.size(); ++m) {
+        sum += layers[m].tau;
+        if (kept[kept.size() - 2 - m] >= sensor_level) above = sum;
+    }
+    return {above, sum};
+}
+
 // The directions the tables need, as the solver's (mu, phi) and where each lands.
 struct Directions {
     std::vector<double> umu;  // ascending
@@ -330,6 +342,24 @@ std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
     return out;
 }
 
+std::vector<double> ColumnModel::gas_depths_from(double nu_cm1, std::size_t pivot) const {
+    const std::size_t n = m_profile.size() - 1;
+    std::vector<double> out(n, 0.0);
+    auto depth = [&](std::size_t i, std::size_t j) {  // -ln T vertical, levels i <= j
+        return i == j ? 0.0 : -std::log(m_gas->transmittance(nu_cm1, i, j, 1.0));
+    };
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = std::max(0.0, k >= pivot ? depth(pivot, k + 1) - depth(pivot, k)
+                                          : depth(k, pivot) - depth(k + 1, pivot));
+    return out;
+}
+
+std::vector<LayerOptics> ColumnModel::with_gas_depths(std::vector<LayerOptics> layers,
+                                                      const std::vector<double>& gas) {
+    for (std::size_t k = 0; k < layers.size(); ++k) layers[k].tau_gas = gas[k];
+    return layers;
+}
+
 double ColumnModel::direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                          std::size_t i, std::size_t j, double mu) const {
     double tau = 0;  // Rayleigh and aerosol follow Beer's law
@@ -427,15 +457,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         prob.streams = o.streams;
         prob.delta_m = true;
         prob.albedo = 0;  // black surface: the scene supplies the ground (seed 3.4)
-        {  // depths of the sensor and the ground: sums of the solver's own layers (top
-           // first), so they land exactly on its boundaries
-            double sum = 0, above = 0;
-            for (std::size_t m = 0; m < prob.layers.size(); ++m) {
-                sum += prob.layers[m].tau;
-                if (kept[kept.size() - 2 - m] >= sensor_level) above = sum;
-            }
-            prob.utau = {above, sum};
-        }
+        prob.utau = solver_depths(prob.layers, kept, sensor_level);
         prob.umu = dirs.umu;
         prob.phi_deg = dirs.phi;
 
@@ -446,19 +468,30 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             prob.beam_mu0 = mu0;
             solar_result = rt::solve(prob);
         }
-        // Layer emission: Planck at each level, no beam.
-        rt::Result thermal_result;
+        // Layer emission: Planck at each level, no beam, no surface (the scene's) and
+        // no emission from space. Solved twice, with the gas depths that make the
+        // absorption-only transmittance exact toward the ground (for L_de) and toward
+        // the sensor (for L_ue); ColumnModel::gas_depths_from says why.
+        rt::Result thermal_result, thermal_up_result;
         res.thermal = wavelength >= o.thermal_min_wavelength_um;
         if (res.thermal) {
-            rt::Problem th = prob;
-            th.beam_flux = 0;
-            th.planck_levels.clear();
-            for (std::size_t i = kept.size(); i-- > 0;)
-                th.planck_levels.push_back(
-                    radiometry::planck_radiance(wavelength, prof.t_k[kept[i]]));
-            th.planck_surface = 0;  // the surface's emission belongs to the scene
-            th.top_emission = 0;    // space
-            thermal_result = rt::solve(th);
+            auto thermal_solve = [&](std::size_t pivot) {
+                const auto c = ColumnModel::with_gas_depths(col, column.gas_depths_from(nu, pivot));
+                const std::vector<std::size_t> k = kept_levels(c, sensor_level, o.merge_tau);
+                rt::Problem th = prob;
+                th.beam_flux = 0;
+                th.layers = merged_layers(solver_layers(c, moments), k);
+                th.utau = solver_depths(th.layers, k, sensor_level);
+                th.planck_levels.clear();
+                for (std::size_t i = k.size(); i-- > 0;)
+                    th.planck_levels.push_back(
+                        radiometry::planck_radiance(wavelength, prof.t_k[k[i]]));
+                th.planck_surface = 0;
+                th.top_emission = 0;
+                return rt::solve(th);
+            };
+            thermal_result = thermal_solve(0);
+            thermal_up_result = thermal_solve(sensor_level);
         }
         auto intensity = [&](const rt::Result& r, std::size_t level, std::size_t mu,
                              std::size_t phi) {
@@ -470,7 +503,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             const double mu_v = std::cos(views[v] * kDeg);
             p.transmission = column.direct_transmittance(nu, col, 0, sensor_level, mu_v);
             p.scattered_radiance = intensity(solar_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
-            p.emitted_radiance = intensity(thermal_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
+            p.emitted_radiance = intensity(thermal_up_result, 0, dirs.view_mu[v], dirs.view_phi[v]);
             res.path.push_back(p);
         }
         for (const auto& subs : dirs.sky) {
@@ -485,7 +518,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         for (std::size_t r = 0; r < dirs.up_mu.size(); ++r)
             for (std::size_t a = 0; a < dirs.up_phi.size(); ++a) {
                 res.us.push_back(intensity(solar_result, 0, dirs.up_mu[r], dirs.up_phi[a]));
-                res.ue.push_back(intensity(thermal_result, 0, dirs.up_mu[r], dirs.up_phi[a]));
+                res.ue.push_back(intensity(thermal_up_result, 0, dirs.up_mu[r], dirs.up_phi[a]));
             }
         if (!solar_result.levels.empty()) res.ground_irradiance += solar_result.levels[1].diffuse_down;
         if (!thermal_result.levels.empty())

@@ -84,6 +84,17 @@ public:
     // Every layer (bottom first, profile().size() - 1 of them) at wavenumber nu.
     std::vector<LayerOptics> layers(double nu_cm1) const;
 
+    // Equivalent Beer's-law gas absorption depth of every layer (bottom first) such that
+    // the vertical band-model transmittance from level `pivot` to every other level is
+    // reproduced exactly. The band model is not multiplicative (a layer absorbs less
+    // behind a path that has saturated its lines), so no one set of layer depths is
+    // exact for every path: pivot = top suits the solar beam (layers() uses it),
+    // pivot = 0 the emission reaching the ground (L_de), pivot = the sensor level the
+    // emission reaching the sensor (L_ue).
+    std::vector<double> gas_depths_from(double nu_cm1, std::size_t pivot) const;
+    static std::vector<LayerOptics> with_gas_depths(std::vector<LayerOptics> layers,
+                                                    const std::vector<double>& gas);
+
     // Direct (unscattered) transmittance between levels i < j at cosine of zenith mu:
     // band-model gas transmittance times exp(-(Rayleigh + aerosol extinction) / mu).
     double direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,

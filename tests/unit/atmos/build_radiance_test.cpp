@@ -272,3 +272,59 @@ TEST(BuildRadiance, MergingThinLayersChangesTheTablesBelowATenthOfAPercent) {
 
 }  // namespace
 }  // namespace sigchain::atmos
+
+#include "radiometry/planck.hpp"
+
+namespace sigchain::atmos {
+namespace {
+
+// Thermal emission against the formal solution of the transfer equation without
+// scattering: with no aerosol (IHAZE 0) at 10 um Rayleigh scattering is negligible
+// (optical depth ~1e-5), so the upwelled emission at the sensor is
+// sum_k (B_k + B_k+1)/2 [T(k+1 -> S) - T(k -> S)] over the layers below it, and the
+// zenith sky at the ground sum_k (B_k + B_k+1)/2 [T(0 -> k) - T(0 -> k+1)], with the
+// band-model transmittances of the gases along those paths (GasColumn, independent of
+// the solver). The trapezoid in transmittance matches the solver's Planck function
+// linear in optical depth to second order in the layers' optical depth; 1 % covers
+// that and the sky cell's 2.5 deg centre.
+TEST(BuildRadiance, ThermalEmissionMatchesTheAbsorptionOnlyFormalSolution) {
+    auto deck = io::read_cdk_file(kSource + "/tests/data/build_radiance/rural23.cdk");
+    deck.runs[0].card2.ihaze = 0;
+    io::Snd snd = small_snd();
+    snd.bands = {{1000, 1000, 1}, {2500, 2500, 1}};
+    snd.view_min_deg = snd.view_max_deg = 0;
+    snd.view_increment_deg = 1;
+    RadianceOptions o = options();
+    o.sky_subsamples = 1;
+    const auto rads = build_radiance(deck, snd, o);
+    const ColumnModel column(deck.runs[0], snd.sensor_altitude_km, o);
+    const Profile& p = column.profile();
+    const std::size_t sensor = column.sensor_level();
+    const double mu_zenith = std::cos(2.5 * kDeg);
+    for (std::size_t b = 0; b < rads.size(); ++b) {
+        const double nu = rads[b].samples[0].wavenumber_cm1;
+        const auto col = column.layers(nu);
+        auto planck = [&](std::size_t level) {
+            return radiometry::planck_radiance(1e4 / nu, p.t_k[level]);
+        };
+        double up = 0;
+        for (std::size_t k = 0; k < sensor; ++k)
+            up += 0.5 * (planck(k) + planck(k + 1)) *
+                  (column.direct_transmittance(nu, col, k + 1, sensor, 1.0) -
+                   column.direct_transmittance(nu, col, k, sensor, 1.0));
+        double down = 0;
+        for (std::size_t k = 0; k + 1 < p.size(); ++k)
+            down += 0.5 * (planck(k) + planck(k + 1)) *
+                    (column.direct_transmittance(nu, col, 0, k, mu_zenith) -
+                     column.direct_transmittance(nu, col, 0, k + 1, mu_zenith));
+        const double l_ue = rads[b].views[0].path[0].emitted_radiance;
+        const double l_de = rads[b].sky->cells[0].emitted_radiance[0];
+        EXPECT_NEAR(l_ue / up, 1.0, 0.01) << nu << " cm-1: L_ue " << l_ue << " vs " << up;
+        EXPECT_NEAR(l_de / down, 1.0, 0.01) << nu << " cm-1: L_de " << l_de << " vs " << down;
+        std::printf("%g cm-1: L_ue %.5g (formal %.5g), L_de zenith %.5g (formal %.5g)\n", nu, l_ue,
+                    up, l_de, down);
+    }
+}
+
+}  // namespace
+}  // namespace sigchain::atmos
