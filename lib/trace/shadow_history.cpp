@@ -192,8 +192,8 @@ double sky_fraction(const scene::Scene& scene, const Vec3& p, const Basis& b, lo
     return static_cast<double>(sky) / static_cast<double>(rays);
 }
 
-io::ShdFacet facet_history(const ShadowFacet& f, std::uint64_t index, const std::vector<SunStep>& sun,
-                           const ShadowOptions& o, SunRay& ray) {
+io::ShdFacet facet_history(const ShadowFacet& f, std::uint64_t index,
+                           const std::vector<SunStep>& sun, const ShadowOptions& o, SunRay& ray) {
     io::ShdFacet out;
     out.id = f.key;
     out.points = o.points_per_facet;
@@ -226,8 +226,8 @@ double scene_epsilon(const scene::Scene& sc) {
     double scale = 1;
     if (!b.empty())
         for (int i = 0; i < 3; ++i)
-            scale = std::max({scale, std::abs(b.lower[i]), std::abs(b.upper[i]),
-                              b.upper[i] - b.lower[i]});
+            scale = std::max(
+                {scale, std::abs(b.lower[i]), std::abs(b.upper[i]), b.upper[i] - b.lower[i]});
     return 1e-6 * scale;  // render.cpp make_context: 17 float ulps at the largest coordinate
 }
 
@@ -321,8 +321,8 @@ void ShadowScene::commit() {
             std::array<Vec3, 3> tri;
             for (int v = 0; v < 3; ++v) {
                 const std::uint32_t i = mesh.triangles[3 * k + v];
-                tri[v] = apply(t, {mesh.vertices[3 * i], mesh.vertices[3 * i + 1],
-                                   mesh.vertices[3 * i + 2]});
+                tri[v] = apply(
+                    t, {mesh.vertices[3 * i], mesh.vertices[3 * i + 1], mesh.vertices[3 * i + 2]});
             }
             const Vec3 c = cross3(minus(tri[1], tri[0]), minus(tri[2], tri[0]));
             Vec3& s = sum[mesh.triangle_facet[k]];
@@ -388,8 +388,8 @@ ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_u
 }
 
 io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary& materials,
-                       const std::vector<SunStep>& sun, double step_hours,
-                       const ShadowOptions& o, const std::function<void(long, long)>& progress) {
+                       const std::vector<SunStep>& sun, double step_hours, const ShadowOptions& o,
+                       const std::function<void(long, long)>& progress) {
     if (sun.empty()) throw std::invalid_argument("shadow_history: no time steps");
     if (o.points_per_facet < 1 || o.sky_rays < 1 || o.max_transmissions < 0)
         throw std::invalid_argument("shadow_history: bad options");
@@ -413,8 +413,12 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
     std::mutex error_mutex;
     auto work = [&](bool report) {
         try {
-            SunRay ray{sc.scene(), materials, o.max_transmissions, eps,
-                       std::vector<double>(samples), std::vector<double>(samples)};
+            SunRay ray{sc.scene(),
+                       materials,
+                       o.max_transmissions,
+                       eps,
+                       std::vector<double>(samples),
+                       std::vector<double>(samples)};
             for (long i; !failed && (i = next.fetch_add(1)) < total;) {
                 const auto u = static_cast<std::size_t>(i);
                 shd.facets[u] = facet_history(facets[u], u, sun, o, ray);
@@ -446,8 +450,8 @@ radiometry::SpectralGrid snd_grid(const io::Snd& snd) {
         const io::SndBand& band = snd.bands[b];
         std::vector<double> wl;
         for (long k = 0; k < band.sample_count(); ++k)
-            wl.push_back(1e4 / (band.min_wavenumber_cm1 + static_cast<double>(k) *
-                                                              band.increment_cm1));  // um
+            wl.push_back(1e4 / (band.min_wavenumber_cm1 +
+                                static_cast<double>(k) * band.increment_cm1));  // um
         std::sort(wl.begin(), wl.end());
         for (double w : wl) {
             g.wavelength_um.push_back(w);
@@ -479,9 +483,8 @@ io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks) {
     const long steps = history_steps(job.options.history_hours, job.options.step_minutes);
     const double step_hours = job.options.step_minutes / 60;
     const io::Snd snd = io::read_snd_file(job.snd_path);
-    const radiometry::MaterialLibrary materials =
-        radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path,
-                                          snd_grid(snd));
+    const radiometry::MaterialLibrary materials = radiometry::MaterialLibrary::load(
+        io::read_mat_file(job.mat_path), job.mat_path, snd_grid(snd));
     scene::LoadReport load;
     const ShadowScene sc = load_shadow_scene(job.scene_path, 1.0, job.allow_degenerate, &load);
     for (const auto& w : load.warnings)

@@ -23,13 +23,13 @@ using Vec3 = std::array<double, 3>;
 inline constexpr long kDefaultSkyRays = 256;
 
 struct ShadowOptions {
-    double history_hours = 24;   // > 0: the grid spans [scene - history, scene]
-    double step_minutes = 15;    // > 0, dividing history_hours * 60
-    long points_per_facet = 1;   // 1: the facet's area centroid; N: stratified by area
+    double history_hours = 24;  // > 0: the grid spans [scene - history, scene]
+    double step_minutes = 15;   // > 0, dividing history_hours * 60
+    long points_per_facet = 1;  // 1: the facet's area centroid; N: stratified by area
     long sky_rays = kDefaultSkyRays;
-    int max_transmissions = 8;   // transmissive facets crossed per sun ray, as trace renders
-    std::uint64_t seed = 1;      // sample-point and sky-ray jitter; results depend on it only
-    unsigned threads = 0;        // over facets; 0: all cores; results do not depend on it
+    int max_transmissions = 8;  // transmissive facets crossed per sun ray, as trace renders
+    std::uint64_t seed = 1;     // sample-point and sky-ray jitter; results depend on it only
+    unsigned threads = 0;       // over facets; 0: all cores; results do not depend on it
 };
 
 // One time step: its time (hours of the .wth clock, shd(5)) and the sun there.

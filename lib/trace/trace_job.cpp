@@ -236,11 +236,23 @@ scene::Scene read_scene(const TraceJob& job, const Setup& st,
     return scene;
 }
 
+// From this wavelength on, thermal emission of scene-temperature facets is no longer
+// negligible beside reflected sunlight (B(300 K) is ~1e-4 of the solar-reflected
+// radiance at 1 um but comparable near 3-4 um): trace warns when it is left out.
+constexpr double kEmissiveFromUm = 2.5;
+
 // Facet temperatures by key from the .tmp, when one is given.
-Temperatures read_temperatures(const TraceJob& job, const TraceHooks& hooks) {
+Temperatures read_temperatures(const TraceJob& job, const radiometry::SpectralGrid& grid,
+                               const TraceHooks& hooks) {
     Temperatures temperatures;
     if (job.tmp_path.empty()) {
-        say(hooks.info, "no temperature file (--tmp): emission is left out");
+        const auto longest = std::max_element(grid.wavelength_um.begin(), grid.wavelength_um.end());
+        if (longest != grid.wavelength_um.end() && *longest >= kEmissiveFromUm)
+            say(hooks.warn, "the spectral grid reaches " + format("%.4g", *longest) +
+                                " um but no facet temperatures (--tmp) were given: facet "
+                                "emission is left out");
+        else
+            say(hooks.info, "no temperature file (--tmp): emission is left out");
         return temperatures;
     }
     const io::Tmp tmp = io::read_tmp_file(job.tmp_path);
@@ -315,7 +327,7 @@ TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
         radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path, grid);
     report.materials = materials.materials().size();
     const scene::Scene scene = read_scene(job, st, materials, report, hooks);
-    const Temperatures temperatures = read_temperatures(job, hooks);
+    const Temperatures temperatures = read_temperatures(job, grid, hooks);
     const FrameRayGenerator camera(geom::frame_camera(st.adv, job.adv_path));
     check_view_angles(camera, atmosphere, hooks);
 

@@ -371,3 +371,97 @@ band_bytes() {
     trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces 2 -o out.img
     trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces -1 -o out.img
 }
+
+# --- trace --shadow-history (issue 6): the sun/shadow history therm reads ---------------
+
+SHADOW="$SIGCHAIN_SOURCE_DIR/tests/data/shadow"
+
+# box_on_plane.mat of the therm tests beside the .ems it names (seed/fall_grass.ems):
+# --shadow-history reads the .mat's curves as trace does.
+therm_materials() {
+    cp "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/fall_grass.ems" .
+}
+
+@test "trace --shadow-history writes a valid .shd, the same with 1 and 2 threads, and therm reads it" {
+    therm_materials
+    trace_ok --shadow-history --points-per-facet 4 --threads 1 "$SEED/hawkeye.snd" "$GDB" \
+        box_on_plane.mat -o one.shd
+    trace_ok --shadow-history --points-per-facet 4 --threads 2 "$SEED/hawkeye.snd" "$GDB" \
+        box_on_plane.mat -o two.shd
+    cmp one.shd two.shd
+    run -0 sigchain-check one.shd
+    assert_output "one.shd: ok: 6 facets, 97 steps of 0.25 h ending at 38 h"
+    # The box's top sees the whole sky; at the scene time (14:00 local) it is sunlit,
+    # at midnight (24 h) not.
+    grep -q '^FACET 2-1-1 1 4$' one.shd
+    grep -q '^38 1 1 1 1 1 1 1 1$' <(sed -n '/^FACET 2-1-1/,/^FACET/p' one.shd)
+    grep -q '^24 0 1 0 1 0 1 0 1$' <(sed -n '/^FACET 2-1-1/,/^FACET/p' one.shd)
+    run -0 --separate-stderr therm one.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat \
+        "$GDB" "$SEED/hawkeye.snd" -o box.tmp
+    assert_equal "$stderr" ''
+    run -0 sigchain-check box.tmp
+    assert_output --partial "box.tmp: ok: 6 facets"
+    assert_no_temp_files .
+}
+
+@test "trace --shadow-history keys an .odb's facets as therm does (object.instance/FACE)" {
+    therm_materials
+    trace_ok --shadow-history --history-hours 24 --history-step-minutes 60 --sky-rays 64 \
+        "$SEED/hawkeye.snd" "$SEED/neighbourhood.odb" box_on_plane.mat -o odb.shd
+    run -0 sigchain-check odb.shd
+    assert_output "odb.shd: ok: 18 facets, 25 steps of 1 h ending at 38 h"
+    grep -q '^FACET 1.3/2-1-5 ' odb.shd
+    run -0 --separate-stderr therm odb.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat \
+        "$SEED/neighbourhood.odb" "$SEED/hawkeye.snd" -o odb.tmp
+    run -0 sigchain-check odb.tmp
+    assert_output --partial "odb.tmp: ok: 18 facets"
+}
+
+@test "trace --shadow-history: bad usage exits 2, a missing input 1, and nothing is written" {
+    therm_materials
+    local args=("$SEED/hawkeye.snd" "$GDB" box_on_plane.mat)
+    shadow_bad() {
+        local status="$1" prefix="$2"
+        shift 2
+        run "-$status" --separate-stderr trace "$@"
+        assert_output ''
+        [[ "$stderr" == "trace: $prefix"* ]] || fail "stderr: $stderr (wanted 'trace: $prefix...')"
+        [ ! -e out.shd ] || fail "out.shd was written"
+        assert_no_temp_files .
+    }
+    shadow_bad 2 "--history-step-minutes: 7 min does not divide" --shadow-history \
+        --history-step-minutes 7 "${args[@]}" -o out.shd
+    shadow_bad 2 "--history-hours: expected a positive" --shadow-history --history-hours 0 \
+        "${args[@]}" -o out.shd
+    shadow_bad 2 "--shadow-history: expected SND GDB|ODB MAT" --shadow-history \
+        "$SEED/hawkeye.snd" "$GDB" -o out.shd
+    shadow_bad 2 "no output: give -o" --shadow-history "${args[@]}"
+    shadow_bad 2 "--points-per-facet: expected 1 to" --shadow-history --points-per-facet 0 \
+        "${args[@]}" -o out.shd
+    shadow_bad 2 "--truth does not apply to --shadow-history" --shadow-history --truth t.img \
+        "${args[@]}" -o out.shd
+    shadow_bad 2 "--points-per-facet needs --shadow-history" --points-per-facet 4 $(inputs) \
+        -o out.shd
+    shadow_bad 1 "no_such.gdb: cannot open" --shadow-history "$SEED/hawkeye.snd" no_such.gdb \
+        box_on_plane.mat -o out.shd
+    shadow_bad 1 "no_such_dir/out.shd: cannot create" --shadow-history "${args[@]}" \
+        -o no_such_dir/out.shd
+}
+
+@test "trace --help documents --shadow-history" {
+    run -0 trace --help
+    assert_output --partial "or: trace --shadow-history [OPTIONS] SND GDB|ODB MAT -o FILE.shd"
+    assert_output --partial "--points-per-facet N"
+}
+
+@test "trace warns that emission is left out of a thermal band without --tmp, not with it" {
+    run -0 --separate-stderr trace "$DATA/box.adv" "$SHADOW/lwir.snd" "$GDB" "$DATA/box.mat" \
+        "$SHADOW/lwir.rad" -o lwir.img
+    assert_output ''
+    [[ "$stderr" == "trace: warning: the spectral grid reaches 10 um but no facet temperatures (--tmp) were given: facet emission is left out" ]] ||
+        fail "stderr: $stderr"
+    trace_ok "$DATA/box.adv" "$SHADOW/lwir.snd" "$GDB" "$DATA/box.mat" "$SHADOW/lwir.rad" \
+        --tmp "$DATA/box.tmp" -o lwir.img
+    # Visible bands: no warning (trace_ok wants an empty stderr).
+    trace_ok $(inputs) -o visible.img
+}

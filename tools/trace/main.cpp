@@ -3,20 +3,68 @@
 
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "trace/shadow_history.hpp"
 #include "trace/trace_job.hpp"
 
 namespace cli = sigchain::cli;
 namespace trace = sigchain::trace;
 
+namespace {
+
+// trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
+int shadow_history(const cli::po::variables_map& vm, cli::Context& ctx) {
+    for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
+                          "rows", "truth", "tmp"})
+        if (vm.count(o))
+            throw sigchain::UsageError(std::string("--") + o +
+                                       " does not apply to --shadow-history");
+    if (!vm["sampling"].defaulted())
+        throw sigchain::UsageError("--sampling does not apply to --shadow-history");
+    auto inputs = cli::args(vm, "input");
+    if (inputs.size() != 3)
+        throw sigchain::UsageError("--shadow-history: expected SND GDB|ODB MAT");
+    trace::ShadowJob job;
+    job.snd_path = inputs[0];
+    job.scene_path = inputs[1];
+    job.mat_path = inputs[2];
+    if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
+    if (vm.count("history-hours")) job.options.history_hours = vm["history-hours"].as<double>();
+    if (vm.count("history-step-minutes"))
+        job.options.step_minutes = vm["history-step-minutes"].as<double>();
+    if (vm.count("points-per-facet"))
+        job.options.points_per_facet = vm["points-per-facet"].as<long>();
+    if (vm.count("sky-rays")) job.options.sky_rays = vm["sky-rays"].as<long>();
+    if (vm.count("max-transmissions"))
+        job.options.max_transmissions = vm["max-transmissions"].as<int>();
+    job.options.seed = vm["seed"].as<std::uint64_t>();
+    job.options.threads = vm["threads"].as<unsigned>();
+    job.allow_degenerate = vm.count("allow-degenerate") > 0;
+    std::optional<cli::Progress> bar;
+    trace::ShadowHooks hooks;
+    hooks.warn = [&ctx](const std::string& m) { ctx.warn(m); };
+    hooks.info = [&ctx](const std::string& m) { ctx.info(m); };
+    hooks.progress = [&](long done, long total) {
+        if (!bar) bar.emplace(ctx, static_cast<std::size_t>(total), "shadow history");
+        bar->update(static_cast<std::size_t>(done));
+    };
+    trace::run_shadow_history(job, hooks);
+    return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     cli::Cli tool({"trace", "Ray-trace a scene into a spectral radiance cube.",
-                   "[OPTIONS] ADV SND GDB|ODB MAT RAD... -o CUBE"});
+                   "[OPTIONS] ADV SND GDB|ODB MAT RAD... -o CUBE\n"
+                   "   or: trace --shadow-history [OPTIONS] SND GDB|ODB MAT -o FILE.shd"});
     tool.add_positional("input", -1,
                         "look angles (.adv), scene node (.snd), scene (.gdb or .odb),\n"
-                        "                    materials (.mat), one .rad per band in band order");
+                        "                    materials (.mat), one .rad per band in band order;\n"
+                        "                    --shadow-history: SND GDB|ODB MAT");
     tool.add_options()(
         "output,o", cli::po::value<std::string>()->value_name("CUBE"),
-        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF); required")(
+        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF), or the .shd\n"
+        "of --shadow-history; required")(
         "sampling", cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
         "hemisphere sampling: dirsig, golfball or montecarlo")(
         "samples-per-pixel", cli::po::value<long>()->value_name("N"),
@@ -36,8 +84,22 @@ int main(int argc, char** argv) {
         "also write the truth layers to FILE")("tmp",
                                                cli::po::value<std::string>()->value_name("FILE"),
                                                "facet temperatures (.tmp): add emission")(
-        "allow-degenerate", "skip degenerate facets with a warning instead of failing");
+        "allow-degenerate", "skip degenerate facets with a warning instead of failing")(
+        "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
+        "history-hours", cli::po::value<double>()->value_name("H"),
+        "--shadow-history: hours of history before the scene time (default 24)")(
+        "history-step-minutes", cli::po::value<double>()->value_name("M"),
+        "--shadow-history: time step, dividing the history (default 15)")(
+        "points-per-facet", cli::po::value<long>()->value_name("N"),
+        "--shadow-history: sample points per facet (default 1: its centroid)")(
+        "sky-rays", cli::po::value<long>()->value_name("N"),
+        "--shadow-history: sky-view rays per point (default 256)");
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
+        if (vm.count("shadow-history")) return shadow_history(vm, ctx);
+        for (const char* o :
+             {"history-hours", "history-step-minutes", "points-per-facet", "sky-rays"})
+            if (vm.count(o))
+                throw sigchain::UsageError(std::string("--") + o + " needs --shadow-history");
         auto inputs = cli::args(vm, "input");
         if (inputs.size() < 5)
             throw sigchain::UsageError("expected ADV SND GDB|ODB MAT and at least one RAD");

@@ -145,8 +145,8 @@ TEST(ShadowHistory, NorthWallAtNoonIsInItsOwnShadow) {
     ASSERT_TRUE(sun[0].up);
     EXPECT_LT(sun[0].direction[1], 0);  // toward the south
     Mesh m;
-    m.quad({{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}}, 1);      // normal +y: north
-    m.quad({{{0, 5, 0}, {1, 5, 0}, {1, 5, 1}, {0, 5, 1}}}, 1);      // normal -y: south
+    m.quad({{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}}, 1);  // normal +y: north
+    m.quad({{{0, 5, 0}, {1, 5, 0}, {1, 5, 1}, {0, 5, 1}}}, 1);  // normal -y: south
     const ShadowScene sc = shadow_scene(m.data);
     EXPECT_NEAR(sc.facets()[0].normal[1], 1.0, 1e-12);
     EXPECT_NEAR(sc.facets()[1].normal[1], -1.0, 1e-12);
@@ -165,10 +165,10 @@ TEST(ShadowHistory, BoxShadowOnTheGroundFollowsTheGeometry) {
     // edge, y in [3, 5]: half shadowed. With 1024 stratified points the fraction is
     // 0.5 within 3 sigma of 1024 independent points (sigma <= 0.5/32): 0.047.
     Mesh m;
-    m.box({0, 0, 0}, {2, 2, 2}, 1);                                          // facets 1-5
+    m.box({0, 0, 0}, {2, 2, 2}, 1);                                             // facets 1-5
     m.quad({{{0.5, 2.5, 0}, {1.5, 2.5, 0}, {1.5, 3.5, 0}, {0.5, 3.5, 0}}}, 1);  // 1-1-6
-    m.quad({{{5, 5, 0}, {6, 5, 0}, {6, 6, 0}, {5, 6, 0}}}, 1);                 // 1-1-7
-    m.quad({{{0.5, 3, 0}, {1.5, 3, 0}, {1.5, 5, 0}, {0.5, 5, 0}}}, 1);         // 1-1-8
+    m.quad({{{5, 5, 0}, {6, 5, 0}, {6, 6, 0}, {5, 6, 0}}}, 1);                  // 1-1-7
+    m.quad({{{0.5, 3, 0}, {1.5, 3, 0}, {1.5, 5, 0}, {0.5, 5, 0}}}, 1);          // 1-1-8
     const ShadowScene sc = shadow_scene(m.data);
     const auto sun = sun_at(45, 180);
     ShadowOptions o;
