@@ -27,6 +27,7 @@
 #include "radiometry/planck.hpp"
 #include "trace/golfball.hpp"
 #include "trace/sampling.hpp"
+#include "trace/transmission.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -305,23 +306,15 @@ private:
             std::fill(vis, vis + m_c.n, 0.0);
             return 0;
         }
-        double tnear = 0;
         ArenaScope scope(m_arena);
         double* t = m_arena.take();
-        for (int crossing = 0;; ++crossing) {
-            auto hit = m_c.in.scene->intersect(p, m_c.sun, tnear, INFINITY);
-            if (!hit) break;
-            const MaterialOptics& m = material_of(*hit);
-            if (!m.transmissive || crossing >= m_c.opt.max_transmissions) {
-                std::fill(vis, vis + m_c.n, 0.0);
-                return 0;
-            }
-            const auto& a = m_c.in.scene->attributes(*hit);
-            m.transmittance(std::abs(dot3(hit->normal, m_c.sun)),
-                            thickness_of(a, m), {t, m_c.n});
-            for (std::size_t k = 0; k < m_c.n; ++k) vis[k] *= t[k];
-            tnear = hit->distance + m_c.eps;
-            ++counters.shadow;
+        auto material = [this](const scene::Hit& hit) -> const MaterialOptics& {
+            return material_of(hit);
+        };
+        if (!transmit_through(*m_c.in.scene, material, p, m_c.sun, m_c.eps,
+                              m_c.opt.max_transmissions, vis, t, m_c.n, counters.shadow)) {
+            std::fill(vis, vis + m_c.n, 0.0);
+            return 0;
         }
         double mean = 0;
         for (std::size_t k = 0; k < m_c.n; ++k) mean += vis[k];

@@ -27,6 +27,7 @@
 #include "scene/mesh_build.hpp"
 #include "trace/render.hpp"
 #include "trace/sampling.hpp"
+#include "trace/transmission.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -148,21 +149,15 @@ struct SunRay {
     bool reaches(const Vec3& p, const Vec3& sun, double& transmittance) {
         transmittance = 1;
         std::fill(vis.begin(), vis.end(), 1.0);
-        bool crossed = false;
-        double tnear = 0;
-        for (int crossing = 0;; ++crossing) {
-            auto hit = scene.intersect(p, sun, tnear, INFINITY);
-            if (!hit) break;
-            const auto& a = scene.attributes(*hit);
-            const radiometry::MaterialOptics* m = materials.find(a.material_id);
-            if (!m || !m->transmissive || crossing >= max_transmissions) return false;
-            m->transmittance(std::abs(dot3(hit->normal, sun)),
-                             a.thickness_cm >= 0 ? a.thickness_cm : m->thickness_cm, t);
-            for (std::size_t k = 0; k < vis.size(); ++k) vis[k] *= t[k];
-            crossed = true;
-            tnear = hit->distance + eps;
-        }
-        if (crossed && !vis.empty()) {
+        std::uint64_t crossed = 0;
+        // validate_scene() has checked that every facet's material exists.
+        auto material = [this](const scene::Hit& hit) -> const radiometry::MaterialOptics& {
+            return *materials.find(scene.attributes(hit).material_id);
+        };
+        if (!transmit_through(scene, material, p, sun, eps, max_transmissions, vis.data(), t.data(),
+                              vis.size(), crossed))
+            return false;
+        if (crossed > 0 && !vis.empty()) {
             double mean = 0;
             for (double v : vis) mean += v;
             transmittance = std::clamp(mean / static_cast<double>(vis.size()), 0.0, 1.0);
@@ -393,6 +388,7 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
     if (sun.empty()) throw std::invalid_argument("shadow_history: no time steps");
     if (o.points_per_facet < 1 || o.sky_rays < 1 || o.max_transmissions < 0)
         throw std::invalid_argument("shadow_history: bad options");
+    validate_scene(sc.scene(), materials);  // as trace: every facet's material exists
     io::Shd shd;
     shd.scene_time_hours = sun.back().time_hours;
     shd.steps = static_cast<long>(sun.size());
@@ -490,7 +486,6 @@ io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks) {
     for (const auto& w : load.warnings)
         if (hooks.warn) hooks.warn(w);
     if (sc.facets().empty()) throw DataError({job.scene_path, 0}, "the scene has no facets");
-    validate_scene(sc.scene(), materials);  // as trace: every facet's material exists
     const std::vector<SunStep> sun = sun_history(snd, steps, step_hours);
     const long up = std::count_if(sun.begin(), sun.end(), [](const SunStep& s) { return s.up; });
     info("history: " + std::to_string(steps) + " steps of " + number(job.options.step_minutes) +

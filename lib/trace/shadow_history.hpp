@@ -91,7 +91,8 @@ ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_u
 // The history of every facet (scene order: placements, then facets) over `sun`, whose
 // last step is the scene time. `materials` gives transmissive facets their slab
 // transmittance exp(-k d/|cos|) (ext(5)), averaged over its grid's samples as trace's
-// shadow truth layer; a facet whose material is missing or opaque blocks the sun.
+// shadow truth layer; opaque facets block the sun. DataError (validate_scene) when a
+// facet's material is not in `materials`.
 // `progress(done, total)` is called from the calling thread (may be empty).
 io::Shd shadow_history(const ShadowScene& scene, const radiometry::MaterialLibrary& materials,
                        const std::vector<SunStep>& sun, double step_hours,
