@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <map>
@@ -142,6 +143,7 @@ struct SunRay {
     int max_transmissions;
     double eps;
     std::vector<double> vis, t;
+    std::uint64_t rays = 0;  // cast by this thread, sun and sky
 
     // Whether the sun reaches p (no opaque facet on the way, at most
     // max_transmissions transmissive ones) and the mean over the grid of the product of
@@ -150,13 +152,17 @@ struct SunRay {
         transmittance = 1;
         std::fill(vis.begin(), vis.end(), 1.0);
         std::uint64_t crossed = 0;
+        ++rays;
         // validate_scene() has checked that every facet's material exists.
         auto material = [this](const scene::Hit& hit) -> const radiometry::MaterialOptics& {
             return *materials.find(scene.attributes(hit).material_id);
         };
         if (!transmit_through(scene, material, p, sun, eps, max_transmissions, vis.data(), t.data(),
-                              vis.size(), crossed))
+                              vis.size(), crossed)) {
+            rays += crossed;
             return false;
+        }
+        rays += crossed;
         if (crossed > 0 && !vis.empty()) {
             double mean = 0;
             for (double v : vis) mean += v;
@@ -198,6 +204,7 @@ io::ShdFacet facet_history(const ShadowFacet& f, std::uint64_t index,
     double svf = 0;
     for (std::size_t j = 0; j < points.size(); ++j) {
         lifted.push_back(axpy(points[j], ray.eps, f.normal));
+        ray.rays += static_cast<std::uint64_t>(o.sky_rays);
         svf += sky_fraction(ray.scene, lifted.back(), basis, o.sky_rays, o.seed, index,
                             static_cast<long>(j));
     }
@@ -384,7 +391,8 @@ ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_u
 
 io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary& materials,
                        const std::vector<SunStep>& sun, double step_hours, const ShadowOptions& o,
-                       const std::function<void(long, long)>& progress) {
+                       const std::function<void(long, long)>& progress, ShadowStats* stats) {
+    const auto start = std::chrono::steady_clock::now();
     if (sun.empty()) throw std::invalid_argument("shadow_history: no time steps");
     if (o.points_per_facet < 1 || o.sky_rays < 1 || o.max_transmissions < 0)
         throw std::invalid_argument("shadow_history: bad options");
@@ -404,6 +412,7 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
     unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
     threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max(1L, total))));
     std::atomic<long> next{0}, done{0};
+    std::atomic<std::uint64_t> rays{0};
     std::atomic<bool> failed{false};
     std::exception_ptr error;
     std::mutex error_mutex;
@@ -421,6 +430,7 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
                 const long d = done.fetch_add(1) + 1;
                 if (report && progress) progress(d, total);
             }
+            rays += ray.rays;
         } catch (...) {
             std::lock_guard<std::mutex> lock(error_mutex);
             if (!error) error = std::current_exception();
@@ -433,6 +443,11 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
     for (auto& t : pool) t.join();
     if (error) std::rethrow_exception(error);
     if (progress) progress(total, total);
+    if (stats) {
+        stats->rays = rays;
+        stats->seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     return shd;
 }
 
@@ -493,7 +508,13 @@ io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks) {
          std::to_string(up) + "; " + std::to_string(sc.facets().size()) + " facets x " +
          std::to_string(job.options.points_per_facet) + " point(s), " +
          std::to_string(job.options.sky_rays) + " sky rays per point");
-    const io::Shd shd = shadow_history(sc, materials, sun, step_hours, job.options, hooks.progress);
+    ShadowStats stats;
+    const io::Shd shd =
+        shadow_history(sc, materials, sun, step_hours, job.options, hooks.progress, &stats);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.3f s, %.2f Mrays/s", stats.seconds,
+                  stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
+    info(std::to_string(stats.rays) + " rays (sun and sky), " + buf);
     write_atomically(job.output_path, [&](std::ostream& out) { io::write_shd(out, shd); });
     return shd;
 }

@@ -94,10 +94,15 @@ ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_u
 // shadow truth layer; opaque facets block the sun. DataError (validate_scene) when a
 // facet's material is not in `materials`.
 // `progress(done, total)` is called from the calling thread (may be empty).
+struct ShadowStats {
+    std::uint64_t rays = 0;  // sun rays (each facet crossing counts one) and sky rays
+    double seconds = 0;      // wall-clock time of the computation
+};
 io::Shd shadow_history(const ShadowScene& scene, const radiometry::MaterialLibrary& materials,
                        const std::vector<SunStep>& sun, double step_hours,
                        const ShadowOptions& options,
-                       const std::function<void(long, long)>& progress = {});
+                       const std::function<void(long, long)>& progress = {},
+                       ShadowStats* stats = nullptr);
 
 // trace --shadow-history as a job: .snd + scene + .mat -> .shd.
 struct ShadowJob {

@@ -465,3 +465,18 @@ therm_materials() {
     # Visible bands: no warning (trace_ok wants an empty stderr).
     trace_ok $(inputs) -o visible.img
 }
+
+@test "trace --shadow-history: a glass box lets the sun through attenuated; --progress draws a bar" {
+    # transmissive.mat makes the box a 5 cm slab of glass.ext (t = 0.999 at normal
+    # incidence): lawn points behind it stay sunlit, with a transmittance below 1 (two
+    # walls, slanted: 0.99 to 1); every other value is 1 or the sunlit 0/1.
+    run -0 --separate-stderr trace --shadow-history --progress --points-per-facet 16 \
+        "$DATA/box.snd" "$GDB" "$DATA/transmissive.mat" -o glass.shd
+    assert_output ''
+    [[ "$stderr" == *"shadow history ["*"100%"* ]] || fail "no progress bar: $stderr"
+    run -0 sigchain-check glass.shd
+    run -0 awk '/^FACET 1-1-1 /{f=1; next} /^FACET/{f=0} f { for (i = 3; i <= NF; i += 2)
+            if ($i < 1) { n++; if ($(i-1) != 1 || $i < 0.99) bad++ } }
+        END { print n + 0, bad + 0 }' glass.shd
+    [[ "$output" =~ ^([0-9]+)\ 0$ ]] && [ "${BASH_REMATCH[1]}" -gt 0 ] || fail "attenuated, bad: $output"
+}

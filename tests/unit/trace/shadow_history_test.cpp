@@ -16,6 +16,7 @@
 #include "io/snd.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "scene/load.hpp"
 #include "test_scene.hpp"
 #include "thermal/environment.hpp"
 #include "thermal/scene_facets.hpp"
@@ -269,6 +270,34 @@ TEST(ShadowHistory, KeysAndNormalsAgreeWithThermsSceneReader) {
             for (int k = 0; k < 3; ++k)
                 EXPECT_NEAR(sc.facets()[i].normal[k], therm[i].normal[k], 1e-6) << therm[i].key;
         }
+    }
+}
+
+TEST(ShadowHistory, SceneIsTheOneLoadSceneBuilds) {
+    // load_shadow_scene re-assembles the .odb to keep each facet's triangles; the traced
+    // scene must be load_scene's: the same placements, facets (in order, by key),
+    // triangles and bounds (the .odb's stretched instance is twice as tall).
+    const std::string path = SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb";
+    scene::LoadOptions lo;
+    const scene::Scene ref = scene::load_scene(path, lo);
+    const ShadowScene sc = load_shadow_scene(path, 1.0, false);
+    ASSERT_EQ(sc.scene().placement_count(), ref.placement_count());
+    EXPECT_EQ(sc.scene().triangle_count(), ref.triangle_count());
+    std::size_t i = 0, triangles = 0;
+    for (std::size_t object = 0; object < ref.placement_count(); ++object)
+        for (std::uint32_t f = 0; f < ref.facet_count(ref.mesh_of_placement(object)); ++f) {
+            scene::Hit h;
+            h.object = static_cast<std::uint32_t>(object);
+            h.facet = f;
+            ASSERT_LT(i, sc.facets().size());
+            EXPECT_EQ(sc.facets()[i].key, ref.facet_key(h));
+            triangles += sc.facets()[i++].triangles.size();
+        }
+    EXPECT_EQ(i, sc.facets().size());
+    EXPECT_EQ(triangles, ref.triangle_count());
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_DOUBLE_EQ(sc.scene().bounds().lower[k], ref.bounds().lower[k]);
+        EXPECT_DOUBLE_EQ(sc.scene().bounds().upper[k], ref.bounds().upper[k]);
     }
 }
 
