@@ -16,6 +16,7 @@
 #include "io/snd.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "radiometry/planck.hpp"
 #include "scene/load.hpp"
 #include "test_scene.hpp"
 #include "thermal/environment.hpp"
@@ -333,6 +334,46 @@ TEST(RenderEmission, BlackbodyPlateThroughUnitTransmissionGivesPlanck) {
         EXPECT_NEAR(res.radiance.at(static_cast<int>(k), 0, 0), planck(wl[k], 300),
                     1e-6 * planck(wl[k], 300))
             << wl[k] << " um";
+}
+
+TEST(RenderEmission, EmittedSkyAndPathAreAddedOnlyWithTemperatures) {
+    // A grey Lambertian plate (r = 0.3) at 300 K under a sky that only emits (uniform
+    // L_de = 2e-4), seen through tau2 = 0.8 with an emitting path (L_ue = 1e-4), no sun
+    // (zenith 120): L = tau2 [(1 - r) B(300 K) + r L_de] + L_ue (seed 3.4; the golf
+    // ball's diffuse weights sum to 1 and every ray escapes the 1800 m plate upward).
+    // Without temperatures all three emitted terms are left out: L = 0. Tolerance:
+    // float output, 1e-6 relative.
+    const std::vector<double> wl{4.0, 10.0};
+    const double r = 0.3, ld = 2e-4, lu = 1e-4, tau2 = 0.8;
+    io::Rad rad = radiometry::uniform_rad(wl, 120, 0, 0.0, 0.0, tau2, 0.0);
+    for (auto& v : rad.views)
+        for (auto& p : v.path) p.emitted_radiance = lu;
+    for (auto& c : rad.sky->cells) c.emitted_radiance.assign(wl.size(), ld);
+    const auto atm = radiometry::Atmosphere::from_rads({rad}, {"e.rad"});
+    Mesh m;
+    m.quad({{{-900, -900, 0}, {900, -900, 0}, {900, 900, 0}, {-900, 900, 0}}}, 1);
+    const scene::Scene s = test::single(m.data);
+    const auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, wl.size())});
+    test::Ortho cam(1, 1, 1, 0, 0, {0, 0, -1});
+    Temperatures temps{{"1-1-1", 300.0}};
+    RenderInputs in;
+    in.scene = &s;
+    in.materials = &mats;
+    in.atmosphere = &atm;
+    in.camera = &cam;
+    in.temperatures = &temps;
+    RenderResult res = render(in, RenderOptions{});
+    for (std::size_t k = 0; k < wl.size(); ++k) {
+        const double b = radiometry::planck_radiance(wl[k], 300);
+        const double expected = tau2 * ((1 - r) * b + r * ld) + lu;
+        EXPECT_NEAR(res.radiance.at(static_cast<int>(k), 0, 0), expected, 1e-6 * expected)
+            << wl[k] << " um";
+    }
+    in.temperatures = nullptr;
+    res = render(in, RenderOptions{});
+    for (std::size_t k = 0; k < wl.size(); ++k)
+        EXPECT_EQ(res.radiance.at(static_cast<int>(k), 0, 0), 0.0f) << wl[k] << " um";
 }
 
 }  // namespace
