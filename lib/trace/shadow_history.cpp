@@ -1,9 +1,10 @@
 // trace --shadow-history: sun rays from points on every facet at each step of the
 // history, sky rays for the sky-view factor (shadow_history.hpp; shd(5)).
 //
-// Conventions: a facet faces the side its wound normal points to (gdb(5): vertices
-// counter-clockwise seen from that side); the sun behind it (n.s <= 0) or below the
-// horizon gives 0. Rays leave from the point offset along that normal by the scene's
+// Conventions: a facet faces the side its .gdb FACE normal points to (gdb(5): the
+// normal, not the winding, says which way it faces; the winding's normal when the
+// FACE gives a zero one), placed as therm places it; the sun behind it (n.s <= 0) or
+// below the horizon gives 0. Rays leave from the point offset along that normal by the scene's
 // ray epsilon (1e-6 of its largest coordinate or extent, as render.cpp). A sky ray
 // counts as sky when it escapes the scene above the horizon; one that escapes below
 // it meets the ground beyond the scene (not sky), as trace renders it.
@@ -12,8 +13,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -75,6 +76,23 @@ Vec3 apply(const scene::Affine& t, const Vec3& p) {
     for (int i = 0; i < 3; ++i)
         r[i] = t[4 * i] * p[0] + t[4 * i + 1] * p[1] + t[4 * i + 2] * p[2] + t[4 * i + 3];
     return r;
+}
+
+Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+
+// The cofactor matrix of the affine's 3x3 part times n: det(M) M^-T n, a normal of the
+// placed surface (therm's transform_normal up to the sign of det).
+Vec3 placed_normal(const scene::Affine& t, const Vec3& n) {
+    auto a = [&](int r, int c) { return t[4 * r + c]; };
+    Vec3 out{};
+    for (int r = 0; r < 3; ++r) {
+        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
+        for (int c = 0; c < 3; ++c) {
+            const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+            out[r] += (a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1)) * n[c];
+        }
+    }
+    return out;
 }
 
 double determinant(const scene::Affine& t) {
@@ -291,7 +309,9 @@ std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hou
     return out;
 }
 
-std::size_t ShadowScene::add_mesh(scene::MeshData mesh) {
+std::size_t ShadowScene::add_mesh(scene::MeshData mesh, std::vector<Vec3> facing) {
+    facing.resize(mesh.facets.size(), Vec3{0, 0, 0});
+    m_facing.push_back(std::move(facing));
     m_meshes.push_back(mesh);
     return m_scene.add_mesh(std::move(mesh));
 }
@@ -333,12 +353,35 @@ void ShadowScene::commit() {
             m_facets[first + mesh.triangle_facet[k]].triangles.push_back(tri);
         }
         for (std::size_t f = 0; f < sum.size(); ++f) {
-            const double len = std::sqrt(dot3(sum[f], sum[f]));
+            const Vec3& given = m_facing[mesh_index][f];
+            const Vec3 n = given == Vec3{0, 0, 0} ? sum[f] : scaled(placed_normal(t, given), side);
+            const double len = std::sqrt(dot3(n, n));
             m_facets[first + f].normal =
-                len > 0 ? Vec3{sum[f][0] / len, sum[f][1] / len, sum[f][2] / len} : Vec3{0, 0, 1};
+                len > 0 ? Vec3{n[0] / len, n[1] / len, n[2] / len} : Vec3{0, 0, 1};
         }
     }
 }
+
+namespace {
+
+// A .gdb's mesh and each meshed facet's FACE normal (gdb(5): the normal, not the
+// winding, says which way a facet faces), matched by the FACE line.
+std::pair<scene::MeshData, std::vector<Vec3>> gdb_mesh(const std::string& path,
+                                                       scene::DegeneratePolicy policy,
+                                                       std::vector<std::string>* warnings) {
+    const io::Gdb gdb = io::read_gdb_file(path);
+    std::map<int, Vec3> normals;
+    for (const auto& object : gdb.objects)
+        for (const auto& part : object.parts)
+            for (const auto& face : part.facets)
+                normals[face.line] = {face.normal[0], face.normal[1], face.normal[2]};
+    scene::MeshData mesh = scene::mesh_from_gdb(gdb, policy, warnings);
+    std::vector<Vec3> facing;
+    for (const auto& origin : mesh.origins) facing.push_back(normals[origin.line]);
+    return {std::move(mesh), std::move(facing)};
+}
+
+}  // namespace
 
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
                               bool allow_degenerate, scene::LoadReport* report) {
@@ -348,8 +391,8 @@ ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_u
     ShadowScene sc;
     const std::string ext = io::format_of_path(path);
     if (ext == "gdb") {
-        sc.place(sc.add_mesh(scene::mesh_from_gdb(io::read_gdb_file(path), policy, &warnings)),
-                 scene::identity_affine());
+        auto [mesh, facing] = gdb_mesh(path, policy, &warnings);
+        sc.place(sc.add_mesh(std::move(mesh), std::move(facing)), scene::identity_affine());
     } else if (ext == "odb") {
         // As scene/load.cpp load_odb: one mesh per .gdb file, object k's instance i keyed
         // "k.i/", coordinates scaled from the object's UNITS to scene units.
@@ -363,11 +406,10 @@ ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_u
                                 "(therm reads .gdb objects only)");
             const std::string file = io::resolve_odb_path(odb, obj.path);
             auto it = meshes.find(file);
-            if (it == meshes.end())
-                it = meshes
-                         .emplace(file, sc.add_mesh(scene::mesh_from_gdb(io::read_gdb_file(file),
-                                                                         policy, &warnings)))
-                         .first;
+            if (it == meshes.end()) {
+                auto [mesh, facing] = gdb_mesh(file, policy, &warnings);
+                it = meshes.emplace(file, sc.add_mesh(std::move(mesh), std::move(facing))).first;
+            }
             const double scale = io::meters_per_odb_unit(obj.units) / scene_meters_per_unit;
             const auto placed = io::placements(obj);
             for (std::size_t i = 0; i < placed.size(); ++i) {

@@ -60,13 +60,15 @@ struct ShadowFacet {
     std::uint32_t object = 0, facet = 0;
     std::string key;
     std::vector<std::array<Vec3, 3>> triangles;  // scene frame, scene units
-    Vec3 normal{};                               // unit, the side the facet faces
+    Vec3 normal{};  // unit, the side it faces: the given facing normal, else the winding's
 };
 
 class ShadowScene {
 public:
-    // Adds a mesh (scene units) and returns its index for place().
-    std::size_t add_mesh(scene::MeshData mesh);
+    // Adds a mesh (scene units) and returns its index for place(). `facing`: per
+    // facet, the normal of the side it faces in mesh coordinates (a .gdb FACE normal;
+    // any length); missing or zero: the normal of its winding.
+    std::size_t add_mesh(scene::MeshData mesh, std::vector<Vec3> facing = {});
     void place(std::size_t mesh, const scene::Affine& transform, std::string key_prefix = "");
     // Builds the ray-tracing structures and the facet list; call once.
     void commit();
@@ -77,12 +79,14 @@ public:
 private:
     scene::Scene m_scene;
     std::vector<scene::MeshData> m_meshes;
+    std::vector<std::vector<Vec3>> m_facing;  // per mesh, per facet
     std::vector<std::pair<std::size_t, scene::Affine>> m_placements;
     std::vector<ShadowFacet> m_facets;
 };
 
 // Loads a .gdb or an .odb of .gdb objects as load_scene() does (the same meshes,
-// placements, unit scaling and keys; therm reads the same subset). OBJ and DEM
+// placements, unit scaling and keys; therm reads the same subset), each facet facing
+// the way its FACE normal says, as therm takes it. OBJ and DEM
 // objects are refused with a DataError at their .odb line. Degenerate facets are an
 // error, or skipped with a warning into `report` with allow_degenerate.
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,

@@ -261,8 +261,9 @@ TEST(ShadowHistory, KeysAndNormalsAgreeWithThermsSceneReader) {
     // therm finds each facet's history by key: the .odb's keys (object.instance/FACE id)
     // and facing sides must be the ones therm reads, including the turned and the
     // stretched instance.
-    for (const std::string path : {SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb",
-                                   SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb"}) {
+    for (const std::string path :
+         {SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb", SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb",
+          SIGCHAIN_TEST_DATA "/shadow/facing.gdb"}) {
         const ShadowScene sc = load_shadow_scene(path, 1.0, false);
         const auto therm = thermal::read_scene_facets(path);
         ASSERT_EQ(sc.facets().size(), therm.size()) << path;
@@ -272,6 +273,24 @@ TEST(ShadowHistory, KeysAndNormalsAgreeWithThermsSceneReader) {
                 EXPECT_NEAR(sc.facets()[i].normal[k], therm[i].normal[k], 1e-6) << therm[i].key;
         }
     }
+}
+
+TEST(ShadowHistory, TheFaceNormalNotTheWindingSaysWhichWayAFacetFaces) {
+    // gdb(5): facing.gdb's 1-1-1 is wound clockwise from above with its normal up, 1-1-2
+    // counter-clockwise with its normal down. At the .snd's scene time (14:00 local,
+    // sun up) 1-1-1 is sunlit and sees the whole sky; 1-1-2 has the sun behind it and
+    // sees no sky (its hemisphere is below the horizon).
+    const ShadowScene sc = load_shadow_scene(SIGCHAIN_TEST_DATA "/shadow/facing.gdb", 1.0, false);
+    ASSERT_EQ(sc.facets().size(), 2u);
+    EXPECT_NEAR(sc.facets()[0].normal[2], 1.0, 1e-12);
+    EXPECT_NEAR(sc.facets()[1].normal[2], -1.0, 1e-12);
+    const auto sun = sun_history(io::read_snd_file(kSnd), 1, 0.25);
+    ASSERT_TRUE(sun[0].up);
+    const io::Shd shd = shadow_history(sc, grey(), sun, 0.25, ShadowOptions{});
+    EXPECT_EQ(facet(shd, "1-1-1").sunlit(0), 1.0);
+    EXPECT_EQ(facet(shd, "1-1-1").sky_view_factor, 1.0);
+    EXPECT_EQ(facet(shd, "1-1-2").sunlit(0), 0.0);
+    EXPECT_EQ(facet(shd, "1-1-2").sky_view_factor, 0.0);
 }
 
 TEST(ShadowHistory, SceneIsTheOneLoadSceneBuilds) {
