@@ -364,8 +364,9 @@ void ShadowScene::commit() {
 
 namespace {
 
-// A .gdb's mesh and each meshed facet's FACE normal (gdb(5): the normal, not the
-// winding, says which way a facet faces), matched by the FACE line.
+// A .gdb's mesh (degenerate facets an error, or reported and kept) and each facet's
+// FACE normal (gdb(5): the normal, not the winding, says which way a facet faces),
+// matched by the FACE line.
 std::pair<scene::MeshData, std::vector<Vec3>> gdb_mesh(const std::string& path,
                                                        scene::DegeneratePolicy policy,
                                                        std::vector<std::string>* warnings) {
@@ -375,7 +376,20 @@ std::pair<scene::MeshData, std::vector<Vec3>> gdb_mesh(const std::string& path,
         for (const auto& part : object.parts)
             for (const auto& face : part.facets)
                 normals[face.line] = {face.normal[0], face.normal[1], face.normal[2]};
-    scene::MeshData mesh = scene::mesh_from_gdb(gdb, policy, warnings);
+    // Skipped degenerate facets are reported but kept (a zero-area triangle is never
+    // hit), so that the .shd has every facet therm reads.
+    if (policy == scene::DegeneratePolicy::Skip && warnings) {
+        std::vector<std::string> found;
+        scene::mesh_from_gdb(gdb, policy, &found);
+        const std::string skipped = " (skipped)";
+        for (std::string& w : found) {
+            if (w.ends_with(skipped)) w.resize(w.size() - skipped.size());
+            warnings->push_back(w + " (kept as it is, for therm)");
+        }
+    }
+    scene::MeshData mesh = scene::mesh_from_gdb(
+        gdb, policy == scene::DegeneratePolicy::Skip ? scene::DegeneratePolicy::Keep : policy,
+        warnings);
     std::vector<Vec3> facing;
     for (const auto& origin : mesh.origins) facing.push_back(normals[origin.line]);
     return {std::move(mesh), std::move(facing)};

@@ -88,7 +88,9 @@ private:
 // placements, unit scaling and keys; therm reads the same subset), each facet facing
 // the way its FACE normal says, as therm takes it. OBJ and DEM
 // objects are refused with a DataError at their .odb line. Degenerate facets are an
-// error, or skipped with a warning into `report` with allow_degenerate.
+// error, or with allow_degenerate reported into `report` and kept as they are (a
+// zero-area facet is never hit; its history is that of its vertices' centroid), so
+// that therm finds every facet.
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
                               bool allow_degenerate, scene::LoadReport* report = nullptr);
 

@@ -480,3 +480,21 @@ therm_materials() {
         END { print n + 0, bad + 0 }' glass.shd
     [[ "$output" =~ ^([0-9]+)\ 0$ ]] && [ "${BASH_REMATCH[1]}" -gt 0 ] || fail "attenuated, bad: $output"
 }
+
+@test "trace --shadow-history --allow-degenerate reports a degenerate facet but keeps it for therm" {
+    therm_materials
+    local deg="$DATA/degenerate.gdb"
+    run -1 --separate-stderr trace --shadow-history "$SEED/hawkeye.snd" "$deg" box_on_plane.mat \
+        -o out.shd
+    [[ "$stderr" == "trace: $deg:37: "*"(2-1-1)"* ]] || fail "stderr: $stderr"
+    [ ! -e out.shd ]
+    run -0 --separate-stderr trace --shadow-history --allow-degenerate "$SEED/hawkeye.snd" "$deg" \
+        box_on_plane.mat -o deg.shd
+    [[ "$stderr" == "trace: warning: $deg:37: "*"(2-1-1): "*"(kept as it is, for therm)" ]] ||
+        fail "stderr: $stderr"
+    grep -q '^FACET 2-1-1 ' deg.shd
+    run -0 --separate-stderr therm deg.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat "$deg" \
+        "$SEED/hawkeye.snd" -o deg.tmp
+    run -0 sigchain-check deg.tmp
+    assert_output --partial "deg.tmp: ok: 6 facets"
+}
