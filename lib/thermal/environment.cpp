@@ -29,29 +29,6 @@ double measured_w_m2(double a_ly_h, double b_ly_h, double f) {
     return ((1 - f) * a_ly_h + f * b_ly_h) * kWattsPerSquareMeterPerLangleyPerHour;
 }
 
-// Days since 1970-01-01 of a proleptic Gregorian date (the era-based civil calendar
-// arithmetic of H. Hinnant, "chrono-compatible low-level date algorithms").
-long days_from_civil(long y, int m, int d) {
-    y -= m <= 2;
-    const long era = (y >= 0 ? y : y - 399) / 400;
-    const long yoe = y - era * 400;
-    const long doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-    const long doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-    return era * 146097 + doe - 719468;
-}
-
-void civil_from_days(long z, int& y, int& m, int& d) {
-    z += 719468;
-    const long era = (z >= 0 ? z : z - 146096) / 146097;
-    const long doe = z - era * 146097;
-    const long yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
-    const long doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    const long mp = (5 * doy + 2) / 153;
-    d = static_cast<int>(doy - (153 * mp + 2) / 5 + 1);
-    m = static_cast<int>(mp < 10 ? mp + 3 : mp - 9);
-    y = static_cast<int>(yoe + era * 400 + (m <= 2));
-}
-
 }  // namespace
 
 WeatherSample interpolate_weather(const io::Wth& wth, double time_h, const std::string& file) {
@@ -120,23 +97,6 @@ double clear_sky_diffuse_horizontal_w_m2(double zenith_deg, double earth_sun_au)
     if (zenith_deg >= 90) return 0;
     return 0.1 * clear_sky_direct_normal_w_m2(zenith_deg, earth_sun_au) *
            std::cos(zenith_deg * kDegToRad);
-}
-
-double scene_wth_hours(const io::Snd& snd) {
-    double local = std::fmod(snd.time_gmt_hours - snd.gmt_offset_hours, 24.0);
-    if (local < 0) local += 24;
-    return 24 + local;
-}
-
-UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours) {
-    // Days (and fraction) since 1970-01-01, local, then shifted to UT.
-    double days = static_cast<double>(days_from_civil(snd.year, snd.month, snd.day) - 1) +
-                  (wth_hours + snd.gmt_offset_hours) / 24.0;
-    double whole = std::floor(days);
-    UtTime t;
-    civil_from_days(static_cast<long>(whole), t.year, t.month, t.day);
-    t.ut_hours = std::clamp((days - whole) * 24.0, 0.0, std::nextafter(24.0, 0.0));
-    return t;
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "atmos/scene_clock.hpp"
 #include "io/snd.hpp"
 #include "io/wth.hpp"
 
@@ -70,15 +71,11 @@ struct EnvironmentStep {
     bool sun_up = false;
 };
 
-// The .wth clock in UT: the .snd's date is the scene's local date (the .wth's second
-// day), so hour H is local date - 1 day + H, and UT = local + gmt_offset.
-struct UtTime {
-    int year = 2000, month = 1, day = 1;
-    double ut_hours = 0;  // [0, 24)
-};
-UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours);
-// The .snd's scene time on the .wth clock: 24 + its local time of day.
-double scene_wth_hours(const io::Snd& snd);
+// The .wth clock and its UT (lib/atmos/scene_clock.hpp, shared with trace
+// --shadow-history).
+using atmos::scene_wth_hours;
+using atmos::ut_of_wth_hours;
+using atmos::UtTime;
 
 struct EnvironmentSummary {
     long computed_insolation_steps = 0;  // steps whose insolation was computed (file gave 0)

@@ -20,6 +20,7 @@
 #include <mutex>
 #include <thread>
 
+#include "atmos/scene_clock.hpp"
 #include "atmos/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
@@ -45,29 +46,6 @@ Vec3 cross3(const Vec3& a, const Vec3& b) {
 Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 axpy(const Vec3& p, double s, const Vec3& d) {
     return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
-}
-
-// Days from 1970-01-01 of a proleptic Gregorian date, and back (the standard
-// era-based civil calendar conversion, H. Hinnant, "chrono-compatible low-level date
-// algorithms"); the same arithmetic as therm's ut_of_wth_hours.
-long days_from_civil(long y, int m, int d) {
-    y -= m <= 2;
-    const long era = (y >= 0 ? y : y - 399) / 400;
-    const long yoe = y - era * 400;
-    const long doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-    const long doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-    return era * 146097 + doe - 719468;
-}
-void civil_from_days(long z, int& y, int& m, int& d) {
-    z += 719468;
-    const long era = (z >= 0 ? z : z - 146096) / 146097;
-    const long doe = z - era * 146097;
-    const long yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
-    const long doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    const long mp = (5 * doy + 2) / 153;
-    d = static_cast<int>(doy - (153 * mp + 2) / 5 + 1);
-    m = static_cast<int>(mp < 10 ? mp + 3 : mp - 9);
-    y = static_cast<int>(yoe + era * 400 + (m <= 2));
 }
 
 // Affine (row-major 3x4) applied to a point.
@@ -275,26 +253,21 @@ long history_steps(double history_hours, double step_minutes) {
     return static_cast<long>(whole) + 1;
 }
 
-double scene_time_hours(const io::Snd& snd) {
-    // therm's scene_wth_hours (lib/thermal/environment.cpp), which reads the .shd.
-    double local = std::fmod(snd.time_gmt_hours - snd.gmt_offset_hours, 24.0);
-    if (local < 0) local += 24;
-    return 24 + local;
-}
+double scene_time_hours(const io::Snd& snd) { return atmos::scene_wth_hours(snd); }
 
 std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hours) {
     const double scene = scene_time_hours(snd);
-    const long day0 = days_from_civil(snd.year, snd.month, snd.day) - 1;
     std::vector<SunStep> out;
     out.reserve(static_cast<std::size_t>(steps));
     for (long k = 0; k < steps; ++k) {
         SunStep s;
         s.time_hours = scene - static_cast<double>(steps - 1 - k) * step_hours;
-        const double days = static_cast<double>(day0) + (s.time_hours + snd.gmt_offset_hours) / 24;
-        const double whole = std::floor(days);
+        const atmos::UtTime ut = atmos::ut_of_wth_hours(snd, s.time_hours);
         atmos::SolarPositionInput in;
-        civil_from_days(static_cast<long>(whole), in.year, in.month, in.day);
-        in.ut_hours = std::clamp((days - whole) * 24, 0.0, std::nextafter(24.0, 0.0));
+        in.year = ut.year;
+        in.month = ut.month;
+        in.day = ut.day;
+        in.ut_hours = ut.ut_hours;
         in.delta_t_s = atmos::default_delta_t_s(in.year);
         in.latitude_deg = snd.latitude_deg;
         in.longitude_east_deg = snd.longitude_east_deg;

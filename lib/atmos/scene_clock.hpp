@@ -1,0 +1,28 @@
+// The scene's clock: the .wth/.shd time axis (hours from midnight of the day before the
+// scene's local date, seed 4.2.3.6) and its conversion to UT for the sun position.
+// Shared by therm (weather, sun) and trace --shadow-history (sun steps), so both read
+// the same moment from the same hour.
+#pragma once
+
+#include "io/snd.hpp"
+
+namespace sigchain::atmos {
+
+// A UT date and time of day.
+struct UtTime {
+    int year = 2000, month = 1, day = 1;
+    double ut_hours = 0;  // [0, 24)
+};
+
+// The .wth clock in UT: the .snd's date is the scene's local date (the .wth's second
+// day), so hour H is local date - 1 day + H, and UT = local + gmt_offset.
+UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours);
+
+// The .snd's scene time on the .wth clock: 24 + its local time of day.
+double scene_wth_hours(const io::Snd& snd);
+
+// Days since 1970-01-01 of a proleptic Gregorian date, and back.
+long days_from_civil(long year, int month, int day);
+void civil_from_days(long days, int& year, int& month, int& day);
+
+}  // namespace sigchain::atmos
