@@ -75,6 +75,7 @@ thermal::FacetThermal facet_thermal(const trace::ShadowFacet& f, const io::ShdFa
 struct Answer {
     double temperature_k = 0;
     int runs = 0;
+    double residual_k = 0;   // |last run - run before| at the scene time
     bool converged = false;  // the last two runs agree within kSpinUpToleranceK
 };
 
@@ -99,7 +100,8 @@ Answer solve(const thermal::FacetThermal& f, const io::Shd& shd, const io::ShdFa
         thermal::run_facet(f, env, sun, i24, env.size() - 1, slab, nullptr);
         a.temperature_k = slab.front_k();
         a.runs = run;
-        if (run > 1 && std::abs(a.temperature_k - previous) < thermal::kSpinUpToleranceK) {
+        if (run > 1) a.residual_k = std::abs(a.temperature_k - previous);
+        if (run > 1 && a.residual_k < thermal::kSpinUpToleranceK) {
             a.converged = true;
             break;
         }
@@ -130,7 +132,8 @@ void report_therm(const char* label, const std::vector<Answer>& a, std::size_t t
     double lo_t = 1e300, hi_t = -1e300, lo_v = 1e300, hi_v = -1e300;
     int runs_max = 0;
     double runs_sum = 0;
-    std::size_t at_limit = 0;  // facets stopped by kSpinUpMaxRuns, not by the tolerance
+    std::size_t at_limit = 0;
+    double residual_max = 0;  // facets stopped by kSpinUpMaxRuns, not by the tolerance
     for (std::size_t i = 0; i < a.size(); ++i) {
         double t = a[i].temperature_k;
         if (i < terrain_facets)
@@ -139,6 +142,7 @@ void report_therm(const char* label, const std::vector<Answer>& a, std::size_t t
             lo_v = std::min(lo_v, t), hi_v = std::max(hi_v, t);
         runs_max = std::max(runs_max, a[i].runs);
         runs_sum += a[i].runs;
+        residual_max = std::max(residual_max, a[i].residual_k);
         if (a[i].runs == thermal::kSpinUpMaxRuns && !a[i].converged) ++at_limit;
     }
     std::printf(
@@ -147,10 +151,10 @@ void report_therm(const char* label, const std::vector<Answer>& a, std::size_t t
         label, threads, seconds, cpu, a.size(), 1e3 * seconds / static_cast<double>(a.size()),
         1e3 * cpu / static_cast<double>(a.size()));
     std::printf(
-        "  spin-up runs: mean %.2f, max %d (%zu facets not within %.2f K after %d);\n"
-        "  surface temperature",
+        "  spin-up runs: mean %.2f, max %d (%zu facets not within %.2f K after %d; largest "
+        "residual %.3f K);\n  surface temperature",
         runs_sum / static_cast<double>(a.size()), runs_max, at_limit, thermal::kSpinUpToleranceK,
-        thermal::kSpinUpMaxRuns);
+        thermal::kSpinUpMaxRuns, residual_max);
     if (lo_t <= hi_t) std::printf(" terrain %.2f .. %.2f K", lo_t, hi_t);
     if (lo_v <= hi_v) std::printf(" trees %.2f .. %.2f K", lo_v, hi_v);
     std::printf("\n");
