@@ -25,7 +25,8 @@ Affine to_scene(const io::Matrix4& m, double scale) {
 }
 
 DegeneratePolicy policy_of(const LoadOptions& o) {
-    return o.allow_degenerate ? DegeneratePolicy::Skip : DegeneratePolicy::Error;
+    if (!o.allow_degenerate) return DegeneratePolicy::Error;
+    return o.keep_degenerate ? DegeneratePolicy::Report : DegeneratePolicy::Skip;
 }
 
 // The mesh of one .odb object in its own units, and a key that names what it depends
@@ -88,54 +89,80 @@ ObjectMesh object_mesh(const io::Odb& odb, const io::OdbObject& obj) {
     throw std::logic_error("unknown .odb object source");
 }
 
-Scene load_odb(const std::string& path, const LoadOptions& options,
-               std::vector<std::string>* warnings) {
+void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink& sink,
+                  std::vector<std::string>* warnings) {
     io::Odb odb = io::read_odb_file(path);
-    Scene scene;
     std::map<std::string, std::size_t> meshes;  // ObjectMesh::key -> mesh
     for (std::size_t k = 0; k < odb.objects.size(); ++k) {
         const io::OdbObject& obj = odb.objects[k];
         ObjectMesh om = object_mesh(odb, obj);
         auto it = meshes.find(om.key);
-        if (it == meshes.end())
-            it =
-                meshes.emplace(om.key, scene.add_mesh(om.build(odb, obj, options, warnings))).first;
+        if (it == meshes.end()) {
+            const SourceLocation at{odb.file, obj.line};
+            std::size_t mesh = 0;
+            if (obj.source == io::OdbSource::Gdb) {
+                const io::Gdb gdb = io::read_gdb_file(io::resolve_odb_path(odb, obj.path));
+                mesh = sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, at);
+            } else {
+                mesh = sink.add_mesh(om.build(odb, obj, options, warnings), nullptr, at);
+            }
+            it = meshes.emplace(om.key, mesh).first;
+        }
         double scale = io::meters_per_odb_unit(obj.units) / options.scene_meters_per_unit;
         auto placed = io::placements(obj);
         for (std::size_t i = 0; i < placed.size(); ++i)
-            scene.place(it->second, to_scene(placed[i], scale),
-                        std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
+            sink.place(it->second, to_scene(placed[i], scale),
+                       std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
     }
-    return scene;
 }
 
-Scene load_gdb(const std::string& path, const LoadOptions& options,
-               std::vector<std::string>* warnings) {
-    Scene scene;
-    std::size_t mesh =
-        scene.add_mesh(mesh_from_gdb(io::read_gdb_file(path), policy_of(options), warnings));
-    scene.place(mesh, identity_affine());
-    return scene;
+void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink& sink,
+                  std::vector<std::string>* warnings) {
+    const io::Gdb gdb = io::read_gdb_file(path);
+    const std::size_t mesh =
+        sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, {path, 0});
+    sink.place(mesh, identity_affine(), "");
 }
+
+// load_scene's builder: the Scene itself.
+class SceneBuilder final : public SceneSink {
+public:
+    explicit SceneBuilder(Scene& scene) : m_scene(scene) {}
+    std::size_t add_mesh(MeshData mesh, const io::Gdb*, const SourceLocation&) override {
+        return m_scene.add_mesh(std::move(mesh));
+    }
+    void place(std::size_t mesh, const Affine& t, const std::string& prefix) override {
+        m_scene.place(mesh, t, prefix);
+    }
+
+private:
+    Scene& m_scene;
+};
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const LoadOptions& options, LoadReport* report) {
+void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,
+                    std::vector<std::string>* warnings) {
     if (!(options.scene_meters_per_unit > 0))
-        throw std::invalid_argument("load_scene: scene_meters_per_unit must be positive");
+        throw std::invalid_argument("assemble_scene: scene_meters_per_unit must be positive");
     std::string ext = io::format_of_path(path);
-    std::vector<std::string> warnings;
-    Scene scene;
     if (ext == "gdb")
-        scene = load_gdb(path, options, &warnings);
+        assemble_gdb(path, options, sink, warnings);
     else if (ext == "odb")
-        scene = load_odb(path, options, &warnings);
+        assemble_odb(path, options, sink, warnings);
     else if (ext == "obj")
         throw UsageError(path +
                          ": a lone OBJ file has no material map; wrap it in an .odb "
                          "(OBJ_FILENAME, MATERIAL_MAP, UNITS; see odb(5))");
     else
         throw UsageError(path + ": the scene must be a .gdb or .odb file");
+}
+
+Scene load_scene(const std::string& path, const LoadOptions& options, LoadReport* report) {
+    std::vector<std::string> warnings;
+    Scene scene;
+    SceneBuilder builder(scene);
+    assemble_scene(path, options, builder, &warnings);
     scene.commit();
     if (report) {
         report->warnings = std::move(warnings);

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+#include "io/gdb.hpp"
 #include "scene/scene.hpp"
 
 namespace sigchain::scene {
@@ -31,12 +33,33 @@ struct LoadOptions {
     // Degenerate facets (zero area, repeated vertices) are an error naming file,
     // line, object, part and facet; with this set they are skipped with a warning.
     bool allow_degenerate = false;
+    // With allow_degenerate: keep them (still warned about) instead of skipping them.
+    bool keep_degenerate = false;
 };
 
 struct LoadReport {
     std::vector<std::string> warnings;  // "FILE:LINE: ..." each
     std::size_t meshes = 0, placements = 0, facets = 0, triangles = 0;  // placed counts
 };
+
+// What load_scene assembles, handed to a builder: each mesh once (with the .gdb it
+// came from, or null for OBJ and DEM objects, and the .odb object's file and line
+// when it came from an .odb) and each placement (mesh, transform to scene units, key
+// prefix "k.i/" or ""). load_scene builds a Scene through one; trace's shadow history
+// builds its own scene through another, so keys, units and mesh sharing are the same.
+class SceneSink {
+public:
+    virtual ~SceneSink() = default;
+    virtual std::size_t add_mesh(MeshData mesh, const io::Gdb* source,
+                                 const SourceLocation& object) = 0;
+    virtual void place(std::size_t mesh, const Affine& transform,
+                       const std::string& key_prefix) = 0;
+};
+
+// Assembles `path` (.gdb or .odb, as load_scene) into `sink`; warnings (degenerate
+// facets skipped or kept) go to `warnings`.
+void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,
+                    std::vector<std::string>* warnings);
 
 // Loads a .gdb, an .odb (GDB, OBJ with MATERIAL_MAP, DEM with MATERIAL_ID or
 // LANDUSE_FILENAME/LANDUSE_MAP; see odb(5)) or a lone OBJ. Throws DataError/IoError

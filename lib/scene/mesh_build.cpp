@@ -46,8 +46,13 @@ bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
                                 (origin.description.empty() ? "" : origin.description + ": ") +
                                     why +
                                     " (a degenerate facet; trace --allow-degenerate skips it)");
-            if (m_warnings) m_warnings->push_back(facet_where(origin) + ": " + why + " (skipped)");
-            return false;
+            if (m_policy == DegeneratePolicy::Report) {
+                if (m_warnings) m_warnings->push_back(facet_where(origin) + ": " + why + " (kept)");
+            } else {
+                if (m_warnings)
+                    m_warnings->push_back(facet_where(origin) + ": " + why + " (skipped)");
+                return false;
+            }
         }
     }
     auto facet = static_cast<std::uint32_t>(m_mesh.facets.size());

@@ -14,6 +14,8 @@ namespace sigchain::scene {
 enum class DegeneratePolicy {
     Keep,   // mesh it as it is (Embree never reports a hit on a zero-area triangle)
     Skip,   // leave it out and add a warning
+    Report, // keep it as it is and add a warning (trace --shadow-history: therm needs
+            // every facet's history)
     Error,  // throw DataError naming it
 };
 

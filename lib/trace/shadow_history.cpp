@@ -337,78 +337,48 @@ void ShadowScene::commit() {
 
 namespace {
 
-// A .gdb's mesh (degenerate facets an error, or reported and kept) and each facet's
-// FACE normal (gdb(5): the normal, not the winding, says which way a facet faces),
-// matched by the FACE line.
-std::pair<scene::MeshData, std::vector<Vec3>> gdb_mesh(const std::string& path,
-                                                       scene::DegeneratePolicy policy,
-                                                       std::vector<std::string>* warnings) {
-    const io::Gdb gdb = io::read_gdb_file(path);
-    std::map<int, Vec3> normals;
-    for (const auto& object : gdb.objects)
-        for (const auto& part : object.parts)
-            for (const auto& face : part.facets)
-                normals[face.line] = {face.normal[0], face.normal[1], face.normal[2]};
-    // Skipped degenerate facets are reported but kept (a zero-area triangle is never
-    // hit), so that the .shd has every facet therm reads.
-    if (policy == scene::DegeneratePolicy::Skip && warnings) {
-        std::vector<std::string> found;
-        scene::mesh_from_gdb(gdb, policy, &found);
-        const std::string skipped = " (skipped)";
-        for (std::string& w : found) {
-            if (w.ends_with(skipped)) w.resize(w.size() - skipped.size());
-            warnings->push_back(w + " (kept as it is, for therm)");
-        }
+// load_shadow_scene's builder: every mesh from a .gdb, each facet facing the way its
+// FACE normal says (gdb(5): the normal, not the winding), matched by the FACE line.
+class ShadowSink final : public scene::SceneSink {
+public:
+    explicit ShadowSink(ShadowScene& scene) : m_scene(scene) {}
+    std::size_t add_mesh(scene::MeshData mesh, const io::Gdb* gdb,
+                         const SourceLocation& object) override {
+        if (!gdb)
+            throw DataError(object,
+                            "not implemented yet: OBJ and DEM objects in a shadow history "
+                            "(therm reads .gdb objects only)");
+        std::map<int, Vec3> normals;
+        for (const auto& o : gdb->objects)
+            for (const auto& part : o.parts)
+                for (const auto& face : part.facets)
+                    normals[face.line] = {face.normal[0], face.normal[1], face.normal[2]};
+        std::vector<Vec3> facing;
+        for (const auto& origin : mesh.origins) facing.push_back(normals[origin.line]);
+        return m_scene.add_mesh(std::move(mesh), std::move(facing));
     }
-    scene::MeshData mesh = scene::mesh_from_gdb(
-        gdb, policy == scene::DegeneratePolicy::Skip ? scene::DegeneratePolicy::Keep : policy,
-        warnings);
-    std::vector<Vec3> facing;
-    for (const auto& origin : mesh.origins) facing.push_back(normals[origin.line]);
-    return {std::move(mesh), std::move(facing)};
-}
+    void place(std::size_t mesh, const scene::Affine& t, const std::string& prefix) override {
+        m_scene.place(mesh, t, prefix);
+    }
+
+private:
+    ShadowScene& m_scene;
+};
 
 }  // namespace
 
+// As load_scene (scene::assemble_scene: the same meshes, placements, units and keys),
+// with degenerate facets kept (and reported) so that therm finds every facet.
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
                               bool allow_degenerate, scene::LoadReport* report) {
-    const auto policy =
-        allow_degenerate ? scene::DegeneratePolicy::Skip : scene::DegeneratePolicy::Error;
+    scene::LoadOptions options;
+    options.scene_meters_per_unit = scene_meters_per_unit;
+    options.allow_degenerate = allow_degenerate;
+    options.keep_degenerate = true;
     std::vector<std::string> warnings;
     ShadowScene sc;
-    const std::string ext = io::format_of_path(path);
-    if (ext == "gdb") {
-        auto [mesh, facing] = gdb_mesh(path, policy, &warnings);
-        sc.place(sc.add_mesh(std::move(mesh), std::move(facing)), scene::identity_affine());
-    } else if (ext == "odb") {
-        // As scene/load.cpp load_odb: one mesh per .gdb file, object k's instance i keyed
-        // "k.i/", coordinates scaled from the object's UNITS to scene units.
-        const io::Odb odb = io::read_odb_file(path);
-        std::map<std::string, std::size_t> meshes;
-        for (std::size_t k = 0; k < odb.objects.size(); ++k) {
-            const io::OdbObject& obj = odb.objects[k];
-            if (obj.source != io::OdbSource::Gdb)
-                throw DataError({odb.file, obj.line},
-                                "not implemented yet: OBJ and DEM objects in a shadow history "
-                                "(therm reads .gdb objects only)");
-            const std::string file = io::resolve_odb_path(odb, obj.path);
-            auto it = meshes.find(file);
-            if (it == meshes.end()) {
-                auto [mesh, facing] = gdb_mesh(file, policy, &warnings);
-                it = meshes.emplace(file, sc.add_mesh(std::move(mesh), std::move(facing))).first;
-            }
-            const double scale = io::meters_per_odb_unit(obj.units) / scene_meters_per_unit;
-            const auto placed = io::placements(obj);
-            for (std::size_t i = 0; i < placed.size(); ++i) {
-                scene::Affine a;
-                for (int r = 0; r < 3; ++r)
-                    for (int c = 0; c < 4; ++c) a[4 * r + c] = scale * placed[i][4 * r + c];
-                sc.place(it->second, a, std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
-            }
-        }
-    } else {
-        throw UsageError(path + ": the scene must be a .gdb or .odb file");
-    }
+    ShadowSink sink(sc);
+    scene::assemble_scene(path, options, sink, &warnings);
     sc.commit();
     if (report) {
         report->warnings = std::move(warnings);

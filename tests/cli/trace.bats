@@ -490,7 +490,7 @@ therm_materials() {
     [ ! -e out.shd ]
     run -0 --separate-stderr trace --shadow-history --allow-degenerate "$SEED/hawkeye.snd" "$deg" \
         box_on_plane.mat -o deg.shd
-    [[ "$stderr" == "trace: warning: $deg:37: "*"(2-1-1): "*"(kept as it is, for therm)" ]] ||
+    [[ "$stderr" == "trace: warning: $deg:37: "*"(2-1-1): "*"(kept)" ]] ||
         fail "stderr: $stderr"
     grep -q '^FACET 2-1-1 ' deg.shd
     run -0 --separate-stderr therm deg.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat "$deg" \
