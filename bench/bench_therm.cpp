@@ -10,7 +10,6 @@
 // (default 1001 3000, every facet, 1 point per facet as trace --shadow-history).
 // Times are wall clock and CPU (all threads): on a shared machine the CPU time per
 // facet is the steadier figure.
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <atomic>
@@ -30,28 +29,16 @@
 #include "thermal/slab.hpp"
 #include "thermal/therm_job.hpp"
 #include "trace/shadow_history.hpp"
+#include "bench_timing.hpp"
 #include "trace_bench_scene.hpp"
 
 namespace {
 
 using namespace sigchain;
 using namespace sigchain::bench;
-using Clock = std::chrono::steady_clock;
 
 constexpr double kHistoryHours = 24, kStepMinutes = 15;  // trace --shadow-history defaults
 constexpr double kThermStepS = 60;                       // therm's default --time-step
-
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// CPU seconds used by the process so far (user + system, every thread).
-double cpu_seconds() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
 
 // Slabs (back insulated). Room-temperature values of Incropera & DeWitt, Fundamentals
 // of Heat and Mass Transfer, table A.3: softwood (fir, pine) across the grain, 510 kg

@@ -10,7 +10,6 @@
 // A plain program (not Google Benchmark): one long run, not repeated timings.
 // Usage: bench_trace [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]] (default 1001 3000 512).
 #include <embree3/rtcore.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <atomic>
@@ -29,29 +28,16 @@
 #include "scene/scene.hpp"
 #include "trace/golfball.hpp"
 #include "trace/render.hpp"
+#include "bench_timing.hpp"
 #include "trace_bench_scene.hpp"
 
 namespace {
 
 using namespace sigchain;
 using namespace sigchain::bench;
-using Clock = std::chrono::steady_clock;
 
 constexpr double kSunZenithDeg = 35, kSunAzimuthDeg = 150;
 constexpr int kRepeats = 2;  // render and the golf-ball bare loop: best of this many runs
-
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// CPU seconds used by the process so far (user + system, every thread): on a shared
-// machine, rays per CPU second compare the loops more fairly than wall-clock time.
-double cpu_seconds() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
 
 double peak_memory_mib() {
     rusage usage{};

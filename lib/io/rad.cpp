@@ -233,26 +233,28 @@ std::vector<double> read_spectrum(LineCursor& c, std::size_t n, const std::strin
     return v;
 }
 
-// Ring r of the grid shares its first cell's zenith; column a shares ring 0's azimuth.
-void check_cell_grid(const RadSky& sky, const RadSkyCell& cell, long r, long a,
+// A zenith x azimuth grid read cell by cell (the sky and the upwelled grid): ring r
+// shares its first cell's zenith, rings increase in zenith, azimuths increase within a
+// ring, and column a shares ring 0's azimuth. `zenith_of(i)`/`azimuth_of(i)` give the
+// cells read so far (index ring * columns + column); `what` names the zenith.
+template <class Zenith, class Azimuth>
+void check_grid_cell(double zenith, double azimuth, long r, long a, long columns,
+                     Zenith zenith_of, Azimuth azimuth_of, const std::string& what,
                      const SourceLocation& at, const std::vector<std::string_view>& f) {
-    auto index = [&](long rr, long aa) {
-        return static_cast<std::size_t>(rr * sky.azimuth_count + aa);
-    };
-    if (a > 0 && std::fabs(cell.zenith_deg - sky.cells[index(r, 0)].zenith_deg) > kSameAngleTol)
-        throw DataError(at, "expected zenith " + format_number(sky.cells[index(r, 0)].zenith_deg) +
+    auto index = [&](long rr, long aa) { return static_cast<std::size_t>(rr * columns + aa); };
+    if (a > 0 && std::fabs(zenith - zenith_of(index(r, 0))) > kSameAngleTol)
+        throw DataError(at, "expected " + what + " " + format_number(zenith_of(index(r, 0))) +
                                 " (as the first cell of its ring), found " + quoted(f[0]));
-    if (a == 0 && r > 0 && cell.zenith_deg <= sky.cells[index(r - 1, 0)].zenith_deg)
-        throw DataError(at, "expected zenith greater than " +
-                                format_number(sky.cells[index(r - 1, 0)].zenith_deg) +
+    if (a == 0 && r > 0 && zenith <= zenith_of(index(r - 1, 0)))
+        throw DataError(at, "expected " + what + " greater than " +
+                                format_number(zenith_of(index(r - 1, 0))) +
                                 " (rings in increasing zenith), found " + quoted(f[0]));
-    if (a > 0 && cell.azimuth_deg <= sky.cells[index(r, a - 1)].azimuth_deg)
+    if (a > 0 && azimuth <= azimuth_of(index(r, a - 1)))
         throw DataError(at, "expected azimuth greater than " +
-                                format_number(sky.cells[index(r, a - 1)].azimuth_deg) +
+                                format_number(azimuth_of(index(r, a - 1))) +
                                 " (increasing within a ring), found " + quoted(f[1]));
-    if (r > 0 && std::fabs(cell.azimuth_deg - sky.cells[index(0, a)].azimuth_deg) > kSameAngleTol)
-        throw DataError(at, "expected azimuth " +
-                                format_number(sky.cells[index(0, a)].azimuth_deg) +
+    if (r > 0 && std::fabs(azimuth - azimuth_of(index(0, a))) > kSameAngleTol)
+        throw DataError(at, "expected azimuth " + format_number(azimuth_of(index(0, a))) +
                                 " (as in the first ring), found " + quoted(f[1]));
 }
 
@@ -269,7 +271,10 @@ RadSkyCell read_cell(LineCursor& c, const RadSky& sky, long r, long a, std::size
         throw DataError(at,
                         "expected azimuth (deg)" + of + " in [0, 360)" + ", found " + quoted(f[1]));
     cell.solid_angle_sr = parse_at_least(f[2], at, "solid angle (sr)" + of, 0, true);
-    check_cell_grid(sky, cell, r, a, at, f);
+    check_grid_cell(
+        cell.zenith_deg, cell.azimuth_deg, r, a, sky.azimuth_count,
+        [&](std::size_t i) { return sky.cells[i].zenith_deg; },
+        [&](std::size_t i) { return sky.cells[i].azimuth_deg; }, "zenith", at, f);
     cell.scattered_radiance = read_spectrum(c, n, "L_ds per spectral sample" + of);
     cell.emitted_radiance = read_spectrum(c, n, "L_de per spectral sample" + of);
     return cell;
@@ -333,29 +338,10 @@ RadUpwelled read_upwelled(LineCursor& c, std::size_t n) {
                 throw DataError(where, "expected view zenith in [0, 90) and azimuth in [0, 360)" +
                                            of + ", found " + quoted(std::string(g[0]) + " " +
                                                                     std::string(g[1])));
-            auto idx = [&](long rr, long aa) {
-                return static_cast<std::size_t>(rr * up.azimuth_count + aa);
-            };
-            if (a > 0 && std::fabs(cell.view_zenith_deg - up.cells[idx(r, 0)].view_zenith_deg) >
-                             kSameAngleTol)
-                throw DataError(where, "expected view zenith " +
-                                           format_number(up.cells[idx(r, 0)].view_zenith_deg) +
-                                           " (as the first cell of its ring), found " +
-                                           quoted(g[0]));
-            if (a == 0 && r > 0 &&
-                cell.view_zenith_deg <= up.cells[idx(r - 1, 0)].view_zenith_deg)
-                throw DataError(where, "expected view zenith greater than " +
-                                           format_number(up.cells[idx(r - 1, 0)].view_zenith_deg) +
-                                           " (rings in increasing zenith), found " + quoted(g[0]));
-            if (a > 0 && cell.azimuth_deg <= up.cells[idx(r, a - 1)].azimuth_deg)
-                throw DataError(where, "expected azimuth greater than " +
-                                           format_number(up.cells[idx(r, a - 1)].azimuth_deg) +
-                                           " (increasing within a ring), found " + quoted(g[1]));
-            if (r > 0 &&
-                std::fabs(cell.azimuth_deg - up.cells[idx(0, a)].azimuth_deg) > kSameAngleTol)
-                throw DataError(where, "expected azimuth " +
-                                           format_number(up.cells[idx(0, a)].azimuth_deg) +
-                                           " (as in the first ring), found " + quoted(g[1]));
+            check_grid_cell(
+                cell.view_zenith_deg, cell.azimuth_deg, r, a, up.azimuth_count,
+                [&](std::size_t i) { return up.cells[i].view_zenith_deg; },
+                [&](std::size_t i) { return up.cells[i].azimuth_deg; }, "view zenith", where, g);
             cell.scattered_radiance = read_spectrum(c, n, "L_us per spectral sample" + of);
             cell.emitted_radiance = read_spectrum(c, n, "L_ue per spectral sample" + of);
             up.cells.push_back(std::move(cell));
