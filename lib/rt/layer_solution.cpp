@@ -40,9 +40,11 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
     auto& y = sc.mat;
     x.assign(nn * nn, 0.0);
     y.assign(nn * nn, 0.0);
+    double sqrt_w[64];
+    for (int i = 0; i < nn; ++i) sqrt_w[i] = std::sqrt(q.weight[i]);
     for (int i = 0; i < nn; ++i)
         for (int j = 0; j < nn; ++j) {
-            const double sw = std::sqrt(q.weight[i] * q.weight[j]);
+            const double sw = sqrt_w[i] * sqrt_w[j];
             const double delta = i == j ? 1.0 : 0.0;
             x[i * nn + j] = (delta - sw * ddif[i * nn + j]) / (q.mu[i] * q.mu[j]);
             y[i * nn + j] = delta - sw * dsum[i * nn + j];
@@ -78,7 +80,7 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
         for (int i = 0; i < nn; ++i) {
             double s = 0;
             for (int r = 0; r <= i; ++r) s += x[i * nn + r] * sc.ev[r * nn + j];
-            sc.s[i] = s / std::sqrt(q.weight[i]);
+            sc.s[i] = s / sqrt_w[i];
         }
         // D = G+ - G- = M^-1 (Dsum W - 1) S / k.
         for (int i = 0; i < nn; ++i) {

@@ -125,11 +125,19 @@ void homogeneous_pair(const HomogeneousPair& a, int nn_dynamic, double& vu, doub
         for (int j = 0; j < nn; ++j)
             if (std::abs(a.k[j] * a.amu - 1) * a.dt * im < 1e-3)
                 other[j] = two_exp(a.et, a.exp_k[j], im, a.k[j], a.dt) * im;
+    // Per-solution terms summed afterwards: local arrays keep the loop free of stores
+    // through vu/vd (which the compiler cannot prove unaliased) and let it vectorise.
+    double tu[64], td[64];
     for (int j = 0; j < nn; ++j) {
         const double plus = even[j] + odd[j], minus = even[j] - odd[j];
-        vu += a.c[j] * plus * same[j] + a.c[nn + j] * minus * other[j];
-        vd += a.c[j] * minus * other[j] + a.c[nn + j] * plus * same[j];
+        const double cd = a.c[j], cg = a.c[nn + j];
+        tu[j] = cd * plus * same[j] + cg * minus * other[j];
+        td[j] = cd * minus * other[j] + cg * plus * same[j];
     }
+    double su = 0, sd = 0;
+    for (int j = 0; j < nn; ++j) su += tu[j], sd += td[j];
+    vu += su;
+    vd += sd;
 }
 
 }  // namespace
@@ -262,7 +270,8 @@ void Solver::intensity_correction() {
                               (layer.ssa * exact / (1 - layer.ssa * m_s.f[n]) - o.ssa * trunc);
         }
     }
-    std::vector<double> tn(m_L), e(npos * nmom), pl(std::max<std::size_t>(nmom, 2));
+    std::vector<double> tn(m_L), e(npos * nmom);
+    std::vector<double> cs(nphi), p0(nphi), p1(nphi), corr(npos * nphi);
     std::vector<double> rec_a(nmom), rec_b(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
     for (std::size_t l = 2; l < nmom; ++l) rec_a[l] = (2.0 * l - 1) / l, rec_b[l] = (l - 1.0) / l;
     for (std::size_t u = 0; u < nu; ++u) {
@@ -300,20 +309,34 @@ void Solver::intensity_correction() {
                 for (std::size_t l = 0; l < nmom; ++l) e[i * nmom + l] += d[n * nmom + l] * tn[n];
             }
         }
+        // Legendre recursion in cos(scattering angle) for all azimuths at once (the
+        // inner loops run over azimuth and vectorise); corr[i * nphi + f] accumulates
+        // sum_l P_l e_l in the same order as a per-azimuth loop would.
         for (std::size_t f = 0; f < nphi; ++f) {
             const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
-            const double cos_scat =
-                -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
-            pl[0] = 1;
-            pl[1] = cos_scat;
-            for (std::size_t l = 2; l < nmom; ++l)
-                pl[l] = rec_a[l] * cos_scat * pl[l - 1] - rec_b[l] * pl[l - 2];
+            cs[f] = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
+            p0[f] = 1;
+            p1[f] = cs[f];
+        }
+        for (std::size_t i = 0; i < npos; ++i)
+            for (std::size_t f = 0; f < nphi; ++f)
+                corr[i * nphi + f] = e[i * nmom] + cs[f] * e[i * nmom + 1];
+        for (std::size_t l = 2; l < nmom; ++l) {
+            const double ra = rec_a[l], rb = rec_b[l];
+            for (std::size_t f = 0; f < nphi; ++f) {
+                const double p2 = ra * cs[f] * p1[f] - rb * p0[f];
+                p0[f] = p1[f];
+                p1[f] = p2;
+            }
             for (std::size_t i = 0; i < npos; ++i) {
-                double corr = 0;
-                for (std::size_t l = 0; l < nmom; ++l) corr += pl[l] * e[i * nmom + l];
-                m_result.levels[i].intensity[u * nphi + f] += corr;
+                const double el = e[i * nmom + l];
+                double* ci = &corr[i * nphi];
+                for (std::size_t f = 0; f < nphi; ++f) ci[f] += p1[f] * el;
             }
         }
+        for (std::size_t i = 0; i < npos; ++i)
+            for (std::size_t f = 0; f < nphi; ++f)
+                m_result.levels[i].intensity[u * nphi + f] += corr[i * nphi + f];
     }
 }
 
