@@ -1,0 +1,252 @@
+# pipelines/scene.mk: the rules that chain sigchain's tools for one scene (issue 7).
+#
+# A scene folder holds its inputs and a short Makefile that sets the variables below
+# and includes this file; `make -C data/scenes/NAME` then rebuilds only what changed,
+# into NAME/out/. `make help` lists the variables. See pipelines/README.md and
+# sigchain(7), PIPELINES.
+#
+#   ANSWERS (+ .rsd) --control7--> out/DECK.cdk
+#   ADV + SCENE_GDB [, CARDS_ADV + CARDS_GDB] --find_min_max_view_angle--> out/*.view
+#   SND + out/*.view --(replace the view-angle line)--> out/NAME.snd, out/NAME.azimuth
+#   out/NAME.snd --(one band each)--> out/band-K.snd
+#   out/DECK.cdk + out/band-K.snd --build_radiance--> out/NAME-K.rad   (K = 1..BANDS)
+#   SND + SCENE_GDB + SCENE_MAT --trace --shadow-history--> out/NAME.shd    (WTH set)
+#   out/NAME.shd + WTH + ... --therm--> out/NAME.tmp                       (WTH set)
+#   ADV + out/NAME.snd + SCENE_GDB + SCENE_MAT + rads [+ tmp] --trace--> out/NAME.img
+#       (TILES > 1: trace --rows per tile, out/NAME.tile-T.img, merged by this file)
+#   CARDS_ADV + CARDS_GDB ... --trace--> out/cards.img --sensorize --calibrate-->
+#       out/calibrated/*.sen                                              (CARDS_GDB set)
+#   out/NAME.img + sens --sensorize--> out/NAME.tif (counts), out/NAME.png (preview)
+#   out/NAME.tif + REFERENCE + CPT --compare--> out/NAME.report       (REFERENCE set)
+#
+# Every stage is a variable, so another program that reads and writes the same files
+# (section 5 of the manual) can take its place, e.g. BUILD_RADIANCE=my_modtran_wrapper.
+
+# A failing recipe leaves no target behind; no built-in rules or suffixes.
+.DELETE_ON_ERROR:
+.SUFFIXES:
+MAKEFLAGS += --no-builtin-rules
+
+SCENE_MK_DIR := $(patsubst %/,%,$(dir $(abspath $(lastword $(MAKEFILE_LIST)))))
+
+## Where the tools are, one variable per stage --------------------------------------
+SIGCHAIN_BIN   ?= $(SCENE_MK_DIR)/../build/bin
+CONTROL7       ?= $(SIGCHAIN_BIN)/control7
+BUILD_RADIANCE ?= $(SIGCHAIN_BIN)/build_radiance
+FIND_VIEW      ?= $(SIGCHAIN_BIN)/find_min_max_view_angle
+TRACE          ?= $(SIGCHAIN_BIN)/trace
+SHADOW         ?= $(SIGCHAIN_BIN)/trace --shadow-history
+THERM          ?= $(SIGCHAIN_BIN)/therm
+SENSORIZE      ?= $(SIGCHAIN_BIN)/sensorize
+COMPARE        ?= $(SIGCHAIN_BIN)/compare
+
+## Options per stage ----------------------------------------------------------------
+CONTROL7_FLAGS       ?= -q
+BUILD_RADIANCE_FLAGS ?= -q
+FIND_VIEW_FLAGS      ?=
+TRACE_FLAGS          ?= -q
+SHADOW_FLAGS         ?= --points-per-facet 16
+THERM_FLAGS          ?= -q
+CALIBRATE_FLAGS      ?= -q
+SENSORIZE_FLAGS      ?= -q
+PREVIEW_FLAGS        ?= -q
+COMPARE_FLAGS        ?=
+
+## The scene's files (a scene's Makefile sets these) --------------------------------
+NAME      ?= $(notdir $(CURDIR))
+OUT       ?= out
+ANSWERS   ?= $(NAME).answers
+RSD       ?= $(wildcard *.rsd)
+SND       ?= $(NAME).snd
+ADV       ?= $(NAME).adv
+SCENE_GDB ?= $(NAME).gdb
+SCENE_MAT ?= $(NAME).mat
+# Files the .mat names (read by trace and therm): a change to one reruns them.
+MAT_FILES ?= $(wildcard *.ems *.ext *.asc)
+SENS      ?= $(wildcard *.sen)
+# Optional: weather (thermal chain), calibration cards, reference image.
+WTH       ?=
+CARDS_GDB ?=
+CARDS_ADV ?=
+CARD1     ?=
+CARD2     ?=
+TARGET1   ?=
+TARGET2   ?=
+REFERENCE ?=
+CPT       ?=
+# Number of bands (from the .snd's second value line) and of row tiles.
+BANDS ?= $(shell awk '!/^[ \t]*(\#|$$)/ { if (++n == 2) { print $$1; exit } }' $(SND))
+TILES ?= 1
+# The image's rows (the .adv's fifth value line).
+ROWS  ?= $(shell awk '!/^[ \t]*(\#|$$)/ { if (++n == 5) { print $$1; exit } }' $(ADV))
+# Emission from therm's temperatures in the cube: on when the scene has weather.
+CUBE_TMP ?= $(if $(WTH),yes,no)
+
+## Derived names --------------------------------------------------------------------
+CDK       := $(OUT)/$(basename $(notdir $(ANSWERS))).cdk
+RUN_SND   := $(OUT)/$(NAME).snd
+AZIMUTH   := $(OUT)/$(NAME).azimuth
+BAND_IDS  := $(shell seq 1 $(BANDS))
+RADS      := $(foreach k,$(BAND_IDS),$(OUT)/$(NAME)-$(k).rad)
+TILE_IDS  := $(shell seq 0 $$(($(TILES) - 1)))
+TILE_IMGS := $(foreach t,$(TILE_IDS),$(OUT)/$(NAME).tile-$(t).img)
+CUBE      := $(OUT)/$(NAME).img
+SHD       := $(OUT)/$(NAME).shd
+TMP       := $(OUT)/$(NAME).tmp
+COUNTS    := $(OUT)/$(NAME).tif
+PREVIEW   := $(OUT)/$(NAME).png
+REPORT    := $(OUT)/$(NAME).report
+VIEWS     := $(OUT)/$(NAME).view $(if $(CARDS_GDB),$(OUT)/cards.view)
+CARDS_CUBE := $(OUT)/cards.img
+# The .sen files sensorize uses for the counts: calibrated when there are cards.
+CAL_SENS  := $(addprefix $(OUT)/calibrated/,$(notdir $(SENS)))
+COUNT_SENS := $(if $(CARDS_GDB),$(CAL_SENS),$(SENS))
+TRACE_TMP := $(if $(filter yes,$(CUBE_TMP)),$(TMP))
+
+# Files made by pattern rules stay after the build (else make removes them as
+# intermediate and remakes them next time).
+.SECONDARY: $(CDK) $(foreach k,$(BAND_IDS),$(OUT)/band-$(k).snd) $(TILE_IMGS) \
+  $(TILE_IMGS:.img=.hdr)
+
+.PHONY: all rad view cube counts preview thermal calibrate report clean help
+all: counts preview $(if $(REFERENCE),report) $(if $(WTH),thermal)
+rad: $(RADS)
+view: $(RUN_SND)
+cube: $(CUBE)
+counts: $(COUNTS)
+preview: $(PREVIEW)
+thermal: $(TMP)
+calibrate: $(CAL_SENS)
+report: $(REPORT)
+
+$(OUT) $(OUT)/calibrated:
+	mkdir -p $@
+
+## control7: the answers (and the radiosonde they name, opened from the scene folder)
+## -> LOWTRAN 7 card deck.
+$(OUT)/%.cdk: %.answers $(RSD) | $(OUT)
+	$(CONTROL7) $(CONTROL7_FLAGS) --answers $< -o $@
+
+## find_min_max_view_angle: the view-angle range of a camera over its scene: the
+## .snd line (--snd), then the full report (which names the look azimuth).
+define find_view
+$(FIND_VIEW) $(FIND_VIEW_FLAGS) --snd $^ > $@
+$(FIND_VIEW) $(FIND_VIEW_FLAGS) $^ >> $@
+endef
+$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) | $(OUT)
+	$(find_view)
+$(OUT)/cards.view: $(CARDS_ADV) $(CARDS_GDB) | $(OUT)
+	$(find_view)
+
+## The scene node used downstream: SND with its view-angle line replaced by the union
+## of the ranges in out/*.view (rounded outward to the smallest increment), and the
+## look azimuth for build_radiance --view-azimuth. Each file is replaced only when
+## its content changes, so a camera move that keeps the range does not rerun
+## build_radiance; the stamp records that the check ran.
+$(OUT)/$(NAME).snd.stamp: $(SND) $(VIEWS) | $(OUT)
+	awk 'FNR == 1 { seen = 0 } !/^[ \t]*#/ && NF >= 3 && !seen { seen = 1; \
+	    if (n++ == 0 || $$1 < lo) lo = $$1; if ($$2 > hi || n == 1) hi = $$2; \
+	    if ($$3 < inc || n == 1) inc = $$3 } \
+	  function fl(x) { return x == int(x) || x >= 0 ? int(x) : int(x) - 1 } \
+	  END { e = 1e-9; lo = fl(lo / inc + e) * inc; hi = -fl(-hi / inc + e) * inc; \
+	    printf "%g %g %g\n", lo, hi, inc }' $(VIEWS) > $@.range
+	awk -v range="$$(cat $@.range)" '/^[ \t]*(#|$$)/ { print; next } \
+	  { n++ } n == 2 { nb = $$1 } n == 3 + nb { \
+	    print range "\t# view angles: min, max, increment (deg), find_min_max_view_angle"; next } \
+	  { print }' $(SND) > $(RUN_SND).new
+	sed -n 's/.*positive toward azimuth \([-0-9.]*\).*/\1/p' $(OUT)/$(NAME).view | head -n 1 \
+	  > $(AZIMUTH).new
+	test -s $(AZIMUTH).new
+	for f in $(RUN_SND) $(AZIMUTH); do \
+	  if cmp -s $$f.new $$f; then rm -f $$f.new; else mv -f $$f.new $$f; fi; done
+	rm -f $@.range
+	touch $@
+$(RUN_SND) $(AZIMUTH): $(OUT)/$(NAME).snd.stamp
+	@test -f $@ || { rm -f $<; $(MAKE) --no-print-directory $<; }
+
+## One scene node per band (band K alone), so that each band's .rad is a target of its
+## own and `make -j` computes bands in parallel.
+$(OUT)/band-%.snd: $(RUN_SND)
+	awk -v k=$* '/^[ \t]*(#|$$)/ { print; next } { n++ } \
+	  n == 2 { nb = $$1; print "1\t# number of bands (band " k " of " nb ")"; next } \
+	  n >= 3 && n < 3 + nb && n != 2 + k { next } { print }' $< > $@
+
+## build_radiance: card deck + one-band scene node -> that band's radiance table.
+## Called as BUILD_RADIANCE [FLAGS] --view-azimuth DEG CDK SND -o FILE.rad.
+$(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH)
+	$(BUILD_RADIANCE) $(BUILD_RADIANCE_FLAGS) --view-azimuth $$(cat $(AZIMUTH)) \
+	  $(CDK) $(OUT)/band-$*.snd -o $@
+
+## trace --shadow-history: 24 h of sun and shadow per facet, for therm.
+$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) | $(OUT)
+	$(SHADOW) $(SHADOW_FLAGS) $(SND) $(SCENE_GDB) $(SCENE_MAT) -o $@
+
+## therm: shadow history + weather -> facet temperatures.
+$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES)
+	$(THERM) $(THERM_FLAGS) $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) -o $@
+
+## trace: the radiance cube (with emission from out/NAME.tmp when CUBE_TMP=yes).
+TRACE_INPUTS := $(ADV) $(RUN_SND) $(SCENE_GDB) $(SCENE_MAT) $(RADS)
+define trace_cube
+$(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(TRACE_TMP)) $(2) $(TRACE_INPUTS) -o $(1)
+endef
+ifeq ($(TILES),1)
+$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(TRACE_TMP)
+	$(call trace_cube,$(CUBE))
+else
+## trace --rows: tile T holds rows T*ROWS/TILES to (T+1)*ROWS/TILES - 1.
+$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(TRACE_TMP)
+	$(call trace_cube,$(OUT)/$(NAME).tile-$*.img,--rows $$(($* * $(ROWS) / $(TILES))):$$((($* + 1) * $(ROWS) / $(TILES))))
+
+## Merge the tiles (trace(1), EXAMPLES): the cube is band-sequential float32, so for
+## each band in turn append that band's plane of every tile, in row order; the
+## header is tile 0's with all the rows.
+$(CUBE) $(basename $(CUBE)).hdr &: $(TILE_IMGS)
+	set -e; hdr=$(OUT)/$(NAME).tile-0.hdr; \
+	cols=$$(sed -n 's/^samples *= *//p' $$hdr); nb=$$(sed -n 's/^bands *= *//p' $$hdr); \
+	: > $(CUBE).tmp.$$$$; b=0; while [ $$b -lt $$nb ]; do for t in $(TILE_IDS); do \
+	  r=$$(( (t + 1) * $(ROWS) / $(TILES) - t * $(ROWS) / $(TILES) )); \
+	  dd if=$(OUT)/$(NAME).tile-$$t.img bs=$$((cols * 4)) skip=$$((b * r)) count=$$r \
+	    status=none >> $(CUBE).tmp.$$$$; done; b=$$((b + 1)); done; \
+	sed 's/^lines *=.*/lines   = $(ROWS)/' $$hdr > $(basename $(CUBE)).hdr; mv -f $(CUBE).tmp.$$$$ $(CUBE)
+endif
+
+## The calibration scene: trace the cards with the same tables, then
+## sensorize --calibrate derives each band's gain and bias (seed 4.2.4) into
+## out/calibrated/ (its table of radiances and counts into out/calibration.txt).
+$(CARDS_CUBE) $(basename $(CARDS_CUBE)).hdr &: $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(MAT_FILES) $(RADS)
+	$(TRACE) $(TRACE_FLAGS) $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(RADS) -o $(CARDS_CUBE)
+$(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) | $(OUT)/calibrated
+	$(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) --card2 $(CARD2) \
+	  --target1 $(TARGET1) --target2 $(TARGET2) $(CARDS_CUBE) $(SENS) -o $(OUT)/calibrated \
+	  > $(OUT)/calibration.txt
+
+## sensorize: radiance cube -> digital counts (TIFF), and an 8-bit preview PNG.
+$(COUNTS): $(CUBE) $(COUNT_SENS)
+	$(SENSORIZE) $(SENSORIZE_FLAGS) $(CUBE) $(COUNT_SENS) -o $@
+$(PREVIEW): $(CUBE) $(COUNT_SENS)
+	$(SENSORIZE) $(PREVIEW_FLAGS) $(CUBE) $(COUNT_SENS) -o $@
+
+## compare: counts against the reference image at the control points -> report.
+$(REPORT): $(COUNTS) $(REFERENCE) $(CPT)
+	$(COMPARE) $(COMPARE_FLAGS) $(COUNTS) $(REFERENCE) $(CPT) -o $@
+
+clean:
+	rm -rf $(OUT)
+
+help:
+	@echo 'make [TARGET] [VARIABLE=VALUE ...] in a scene folder (pipelines/scene.mk)'
+	@echo 'targets: all (counts, preview, report, thermal), rad, view, cube, counts,'
+	@echo '  preview, thermal, calibrate, report, clean, help'
+	@echo 'stages (programs): CONTROL7 BUILD_RADIANCE FIND_VIEW TRACE SHADOW THERM'
+	@echo '  SENSORIZE COMPARE; default $$(SIGCHAIN_BIN)/TOOL, SIGCHAIN_BIN=$(SIGCHAIN_BIN)'
+	@echo 'options: CONTROL7_FLAGS BUILD_RADIANCE_FLAGS FIND_VIEW_FLAGS TRACE_FLAGS'
+	@echo '  SHADOW_FLAGS THERM_FLAGS CALIBRATE_FLAGS SENSORIZE_FLAGS PREVIEW_FLAGS'
+	@echo '  COMPARE_FLAGS'
+	@echo 'scene: NAME=$(NAME) OUT=$(OUT) ANSWERS=$(ANSWERS) RSD=$(RSD) SND=$(SND)'
+	@echo '  ADV=$(ADV) SCENE_GDB=$(SCENE_GDB) SCENE_MAT=$(SCENE_MAT) MAT_FILES=$(MAT_FILES)'
+	@echo '  SENS=$(SENS) WTH=$(WTH) CUBE_TMP=$(CUBE_TMP)'
+	@echo '  CARDS_GDB=$(CARDS_GDB) CARDS_ADV=$(CARDS_ADV) CARD1=$(CARD1) CARD2=$(CARD2)'
+	@echo '  TARGET1=$(TARGET1) TARGET2=$(TARGET2) REFERENCE=$(REFERENCE) CPT=$(CPT)'
+	@echo 'parallelism: BANDS=$(BANDS) (one .rad target each), TILES=$(TILES) (trace --rows'
+	@echo '  tiles of ROWS=$(ROWS) rows, merged); use make -j'
