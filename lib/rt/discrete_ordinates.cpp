@@ -84,8 +84,11 @@ std::vector<Position> locate(const Problem& p, const Scaled& s) {
         std::size_t n = 0;
         while (n + 1 < L && ut > s.tau_level[n + 1] * (1 + 1e-12)) ++n;
         const double ratio = s.optics[n].dtau / std::max(p.layers[n].tau, 1e-300);
-        const double t = std::clamp((ut - s.tau_level[n]) * (p.layers[n].tau > 0 ? ratio : 0), 0.0,
-                                    s.optics[n].dtau);
+        double t = std::clamp((ut - s.tau_level[n]) * (p.layers[n].tau > 0 ? ratio : 0), 0.0,
+                              s.optics[n].dtau);
+        // A depth within rounding of the layer's bottom is the bottom exactly, so that the
+        // user-angle sweep can take the level's value instead of a partial-layer integral.
+        if (s.optics[n].dtau - t <= 1e-12 * s.optics[n].dtau) t = s.optics[n].dtau;
         out.push_back({static_cast<int>(n), t});
     }
     return out;

@@ -74,6 +74,7 @@ private:
     void solve_mode(int m);
     void fluxes();
     void user_intensities(int m, std::vector<double>& im);
+    bool interior(const Position& ps) const;  // strictly inside its layer (not at a level)
     void user_source(int n, int m, const double* lam_mu, UserSource& up, UserSource& down) const;
     double segment(int n, double mu, const UserSource& us, double ta, double tb) const;
     void full_layer_pair(int n, int m, const double* lam_mu, double amu, double et, double& up,

@@ -191,6 +191,10 @@ void Solver::full_layer_pair(int n, int m, const double* lam_mu, double amu, dou
     down = vd + a0d * (1 - et) + a1 * (dt - amu * (1 - et));
 }
 
+bool Solver::interior(const Position& ps) const {
+    return ps.t > 0 && ps.t < m_s.optics[ps.layer].dtau;
+}
+
 // Intensities of mode m at every output depth and user direction: im[level * nu + u].
 void Solver::user_intensities(int m, std::vector<double>& im) {
     const std::size_t nu = m_p.umu.size();
@@ -221,8 +225,11 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
         for (int n = 0; n < m_L; ++n)
             full_layer_pair(n, m, lam_mu.data(), amu, m_trans[n * nu + u], m_full_up[n],
                             m_full_down[n]);
+        // Partial-layer sources only for depths inside a layer; at a level the swept
+        // level intensity is the answer.
         for (const Position& ps : m_pos)
-            user_source(ps.layer, m, lam_mu.data(), m_us[ps.layer], m_us_down[ps.layer]);
+            if (interior(ps))
+                user_source(ps.layer, m, lam_mu.data(), m_us[ps.layer], m_us_down[ps.layer]);
         if (mu > 0) {
             m_level_int[m_L] = bottom;
             for (int n = m_L - 1; n >= 0; --n)
@@ -230,8 +237,13 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
             for (std::size_t i = 0; i < m_pos.size(); ++i) {
                 const Position& ps = m_pos[i];
                 const double dt = m_s.optics[ps.layer].dtau;
-                im[i * nu + u] = m_level_int[ps.layer + 1] * std::exp(-(dt - ps.t) / mu) +
-                                 segment(ps.layer, mu, m_us[ps.layer], ps.t, dt);
+                if (ps.t == 0)
+                    im[i * nu + u] = m_level_int[ps.layer];
+                else if (ps.t == dt)
+                    im[i * nu + u] = m_level_int[ps.layer + 1];
+                else
+                    im[i * nu + u] = m_level_int[ps.layer + 1] * std::exp(-(dt - ps.t) / mu) +
+                                     segment(ps.layer, mu, m_us[ps.layer], ps.t, dt);
             }
         }
         const std::ptrdiff_t d = mu < 0 ? static_cast<std::ptrdiff_t>(u) : m_mirror[u];
@@ -242,8 +254,14 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
             m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + m_full_down[n];
         for (std::size_t i = 0; i < m_pos.size(); ++i) {
             const Position& ps = m_pos[i];
-            im[i * nu + d] = m_level_int[ps.layer] * std::exp(ps.t / mud) +
-                             segment(ps.layer, mud, m_us_down[ps.layer], 0, ps.t);
+            const double dt = m_s.optics[ps.layer].dtau;
+            if (ps.t == 0)
+                im[i * nu + d] = m_level_int[ps.layer];
+            else if (ps.t == dt)
+                im[i * nu + d] = m_level_int[ps.layer + 1];
+            else
+                im[i * nu + d] = m_level_int[ps.layer] * std::exp(ps.t / mud) +
+                                 segment(ps.layer, mud, m_us_down[ps.layer], 0, ps.t);
         }
     }
 }
