@@ -116,7 +116,7 @@ cube: $(CUBE)
 counts: $(COUNTS)
 preview: $(PREVIEW)
 thermal: $(TMP)
-calibrate: $(CAL_SENS)
+calibrate: $(if $(CARDS_GDB),$(CAL_SENS))
 report: $(REPORT)
 
 $(OUT) $(OUT)/calibrated:
@@ -211,6 +211,7 @@ $(CUBE) $(basename $(CUBE)).hdr &: $(TILE_IMGS)
 	sed 's/^lines *=.*/lines   = $(ROWS)/' $$hdr > $(basename $(CUBE)).hdr; mv -f $(CUBE).tmp.$$$$ $(CUBE)
 endif
 
+ifneq ($(CARDS_GDB),)
 ## The calibration scene: trace the cards with the same tables, then
 ## sensorize --calibrate derives each band's gain and bias (seed 4.2.4) into
 ## out/calibrated/ (its table of radiances and counts into out/calibration.txt).
@@ -220,6 +221,7 @@ $(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) | $(OUT)/calibrated
 	$(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) --card2 $(CARD2) \
 	  --target1 $(TARGET1) --target2 $(TARGET2) $(CARDS_CUBE) $(SENS) -o $(OUT)/calibrated \
 	  > $(OUT)/calibration.txt
+endif
 
 ## sensorize: radiance cube -> digital counts (TIFF), and an 8-bit preview PNG.
 $(COUNTS): $(CUBE) $(COUNT_SENS)

@@ -243,6 +243,19 @@ EOF
     done <<< "$output"
 }
 
+@test "pipeline: a scene without cards, weather or reference runs the plain chain" {
+    cp -R "$SCENE_SRC" training
+    rm -rf training/out
+    mk CARDS_GDB= WTH= REFERENCE=
+    assert_success
+    # One view range, no thermal chain, no calibration, no report; the counts use
+    # the scene's own .sen files.
+    [ "$(stages)" = "control7=1 build_radiance=3 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=2 compare=0" ] \
+        || { echo "$output"; stages; return 1; }
+    assert_output --partial 'training.img blue.sen green.sen red.sen -o out/training.tif'
+    [ ! -e training/out/training.tmp ] && [ ! -e training/out/cards.img ]
+}
+
 @test "pipeline: make help lists the stage and scene variables" {
     copy_built
     mk help
