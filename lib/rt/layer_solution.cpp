@@ -156,6 +156,60 @@ bool reduced_particular(const Quadrature& q, double c, const double* xp, const d
     return true;
 }
 
+// The same particular solution through the homogeneous problem's eigen-decomposition
+// (O(nn^2) instead of two LU factorisations): in the W^1/2-symmetrised variables of
+// homogeneous() (S~ = W^1/2 S, X = L L^T, C = L^T Y L = V diag(k^2) V^T) the reduced
+// equations become (X Y - c^2) S~ = X Xs~ - c M^-1 Xd~ and M D~ = X^-1 (M^-1 Xd~ - c S~);
+// with S~ = L v and q = L^-1 M^-1 Xd~:  v = V (k^2 - c^2)^-1 V^T (L^T Xs~ - c q),
+// M D~ = L^-T (q - c v). Needs sc.c (L), sc.ev (V) and sc.lam (k^2) from homogeneous(),
+// and c^2 away from every k^2 (beam_particular moves mu0 off a resonance).
+void eigen_particular(const Quadrature& q, double c, const double* xp, const double* xm, double* z,
+                      const Scratch& sc) {
+    const int nn = q.nn;
+    const double* el = sc.c.data();  // L in the lower triangle, row-major
+    double sw[64], xs[64], qv[64], r[64], t[64], v[64], sv[64], dv[64];
+    for (int i = 0; i < nn; ++i) {
+        sw[i] = std::sqrt(q.weight[i]);
+        xs[i] = sw[i] * (xp[i] + xm[i]);
+        qv[i] = sw[i] * (xp[i] - xm[i]) / q.mu[i];
+    }
+    for (int i = 0; i < nn; ++i) {  // q = L^-1 M^-1 Xd~
+        double s = qv[i];
+        for (int k = 0; k < i; ++k) s -= el[i * nn + k] * qv[k];
+        qv[i] = s / el[i * nn + i];
+    }
+    for (int i = 0; i < nn; ++i) {  // r = L^T Xs~ - c q
+        double s = 0;
+        for (int k = i; k < nn; ++k) s += el[k * nn + i] * xs[k];
+        r[i] = s - c * qv[i];
+    }
+    for (int j = 0; j < nn; ++j) {  // t = (k^2 - c^2)^-1 V^T r
+        double s = 0;
+        for (int i = 0; i < nn; ++i) s += sc.ev[i * nn + j] * r[i];
+        t[j] = s / (sc.lam[j] - c * c);
+    }
+    for (int i = 0; i < nn; ++i) {  // v = V t
+        double s = 0;
+        for (int j = 0; j < nn; ++j) s += sc.ev[i * nn + j] * t[j];
+        v[i] = s;
+    }
+    for (int i = 0; i < nn; ++i) {  // S~ = L v
+        double s = 0;
+        for (int k = 0; k <= i; ++k) s += el[i * nn + k] * v[k];
+        sv[i] = s;
+    }
+    for (int i = nn - 1; i >= 0; --i) {  // M D~ = L^-T (q - c v)
+        double s = qv[i] - c * v[i];
+        for (int k = i + 1; k < nn; ++k) s -= el[k * nn + i] * dv[k];
+        dv[i] = s / el[i * nn + i];
+    }
+    for (int i = 0; i < nn; ++i) {
+        const double s = sv[i] / sw[i], d = dv[i] / (q.mu[i] * sw[i]);
+        z[i] = 0.5 * (s + d);
+        z[nn + i] = 0.5 * (s - d);
+    }
+}
+
 // Beam particular solution Z e^{-t/mu0}: (1 + mu_a/mu0) Z_a - sum_b w_b p_ab Z_b = X0_a,
 // X0_a = (omega F/4pi)(2 - delta_m0) sum_l (2l+1) g_l Lambda_l(mu_a) Lambda_l(-mu0)
 // (Stamnes et al. 1988, eqs. 12-13). Near a resonance k_j = 1/mu0 the beam cosine used
@@ -176,8 +230,7 @@ void beam_particular(const Quadrature& q, int m, const LayerOptics& o, const dou
         for (int a = 0; a < n2; ++a) x[a] += x0mom[l] * lam[l * n2 + a];
     }
     out.beam.resize(n2);
-    if (!reduced_particular(q, inv_mu0, x, x + nn, out.beam.data(), sc))
-        throw Error("discrete-ordinate solver: singular beam particular-solution system");
+    eigen_particular(q, inv_mu0, x, x + nn, out.beam.data(), sc);
     scatter_moments(q, m, o, lam, nl, out.beam.data(), out.bmom.data());
     for (int l = m; l < nl; ++l) out.bmom[l] += x0mom[l];
 }
