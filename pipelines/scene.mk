@@ -64,6 +64,9 @@ SCENE_MAT ?= $(NAME).mat
 # Files the .mat names (read by trace and therm): a change to one reruns them.
 MAT_FILES ?= $(wildcard *.ems *.ext *.asc)
 SENS      ?= $(wildcard *.sen)
+# Files an .odb scene places (.gdb, .obj, DEM rasters): a change to one reruns the
+# stages that read the geometry.
+GEOM_FILES ?=
 # Optional: weather (thermal chain), calibration cards, reference image.
 WTH       ?=
 CARDS_GDB ?=
@@ -133,7 +136,7 @@ define find_view
 $(FIND_VIEW) $(FIND_VIEW_FLAGS) --snd $^ > $@
 $(FIND_VIEW) $(FIND_VIEW_FLAGS) $^ >> $@
 endef
-$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) | $(OUT)
+$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) $(GEOM_FILES) | $(OUT)
 	$(find_view)
 $(OUT)/cards.view: $(CARDS_ADV) $(CARDS_GDB) | $(OUT)
 	$(find_view)
@@ -178,11 +181,11 @@ $(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH)
 	  $(CDK) $(OUT)/band-$*.snd -o $@
 
 ## trace --shadow-history: 24 h of sun and shadow per facet, for therm.
-$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) | $(OUT)
+$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) $(GEOM_FILES) | $(OUT)
 	$(SHADOW) $(SHADOW_FLAGS) $(SND) $(SCENE_GDB) $(SCENE_MAT) -o $@
 
 ## therm: shadow history + weather -> facet temperatures.
-$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES)
+$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES) $(GEOM_FILES)
 	$(THERM) $(THERM_FLAGS) $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) -o $@
 
 ## trace: the radiance cube (with emission from out/NAME.tmp when CUBE_TMP=yes).
@@ -191,11 +194,11 @@ define trace_cube
 $(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(TRACE_TMP)) $(2) $(TRACE_INPUTS) -o $(1)
 endef
 ifeq ($(TILES),1)
-$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(TRACE_TMP)
+$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP)
 	$(call trace_cube,$(CUBE))
 else
 ## trace --rows: tile T holds rows T*ROWS/TILES to (T+1)*ROWS/TILES - 1.
-$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(TRACE_TMP)
+$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP)
 	$(call trace_cube,$(OUT)/$(NAME).tile-$*.img,--rows $$(($* * $(ROWS) / $(TILES))):$$((($* + 1) * $(ROWS) / $(TILES))))
 
 ## Merge the tiles (trace(1), EXAMPLES): the cube is band-sequential float32, so for
@@ -247,7 +250,7 @@ help:
 	@echo '  COMPARE_FLAGS'
 	@echo 'scene: NAME=$(NAME) OUT=$(OUT) ANSWERS=$(ANSWERS) RSD=$(RSD) SND=$(SND)'
 	@echo '  ADV=$(ADV) SCENE_GDB=$(SCENE_GDB) SCENE_MAT=$(SCENE_MAT) MAT_FILES=$(MAT_FILES)'
-	@echo '  SENS=$(SENS) WTH=$(WTH) CUBE_TMP=$(CUBE_TMP)'
+	@echo '  GEOM_FILES=$(GEOM_FILES) SENS=$(SENS) WTH=$(WTH) CUBE_TMP=$(CUBE_TMP)'
 	@echo '  CARDS_GDB=$(CARDS_GDB) CARDS_ADV=$(CARDS_ADV) CARD1=$(CARD1) CARD2=$(CARD2)'
 	@echo '  TARGET1=$(TARGET1) TARGET2=$(TARGET2) REFERENCE=$(REFERENCE) CPT=$(CPT)'
 	@echo 'parallelism: BANDS=$(BANDS) (one .rad target each), TILES=$(TILES) (trace --rows'
