@@ -67,62 +67,62 @@ void tridiagonalize(double* a, int n, double* q) {
     }
 }
 
-// Rotation in the (k, k+1) plane, t <- G^T t G and q <- q G with G = [[c, s], [-s, c]];
-// only rows/columns lo..hi of the tridiagonal block (plus its bulge) are touched.
-void rotate(double* t, int n, double* q, int k, double c, double s, int lo, int hi) {
-    const int r0 = std::max(lo, k - 1), r1 = std::min(hi, k + 2);
-    for (int j = r0; j <= r1; ++j) {
-        const double x = t[k * n + j], y = t[(k + 1) * n + j];
-        t[k * n + j] = c * x - s * y;
-        t[(k + 1) * n + j] = s * x + c * y;
-    }
-    for (int i = r0; i <= r1; ++i) {
-        const double x = t[i * n + k], y = t[i * n + k + 1];
-        t[i * n + k] = c * x - s * y;
-        t[i * n + k + 1] = s * x + c * y;
-    }
-    for (int i = 0; i < n; ++i) {
-        const double x = q[i * n + k], y = q[i * n + k + 1];
-        q[i * n + k] = c * x - s * y;
-        q[i * n + k + 1] = s * x + c * y;
-    }
-}
-
 }  // namespace
 
 // Tridiagonalisation, then implicit symmetric QR steps with the Wilkinson shift and
-// deflation (Golub & Van Loan, algs. 8.3.2-8.3.3); the tridiagonal stays in the dense
-// array and each step chases the bulge down with Givens rotations.
+// deflation (Golub & Van Loan, algs. 8.3.2-8.3.3) on the diagonal d and off-diagonal e
+// (e[i] couples i and i + 1), chasing the bulge down with Givens rotations
+// G = [[c, s], [-s, c]] (T <- G^T T G). The rotations update the rows of Q^T, which are
+// contiguous, and Q^T is transposed back into v at the end.
 void symmetric_eigen(double* a, int n, double* eval, double* v) {
     tridiagonalize(a, n, v);
+    double d[128], e[128], qt[128 * 128];
+    for (int i = 0; i < n; ++i) {
+        d[i] = a[i * n + i];
+        e[i] = i + 1 < n ? a[(i + 1) * n + i] : 0.0;
+        for (int j = 0; j < n; ++j) qt[j * n + i] = v[i * n + j];
+    }
     constexpr double kEps = 2.2e-16;
     for (int iter = 0; iter < 60 * n; ++iter) {
         for (int i = 0; i + 1 < n; ++i)
-            if (std::abs(a[(i + 1) * n + i]) <=
-                kEps * (std::abs(a[i * n + i]) + std::abs(a[(i + 1) * n + i + 1])))
-                a[(i + 1) * n + i] = a[i * n + i + 1] = 0;
+            if (std::abs(e[i]) <= kEps * (std::abs(d[i]) + std::abs(d[i + 1]))) e[i] = 0;
         int hi = n - 1;
-        while (hi > 0 && a[hi * n + hi - 1] == 0) --hi;
+        while (hi > 0 && e[hi - 1] == 0) --hi;
         if (hi == 0) break;
         int lo = hi - 1;
-        while (lo > 0 && a[lo * n + lo - 1] != 0) --lo;
-        const double e = a[hi * n + hi - 1];
-        const double d = 0.5 * (a[(hi - 1) * n + hi - 1] - a[hi * n + hi]);
+        while (lo > 0 && e[lo - 1] != 0) --lo;
+        const double eh = e[hi - 1];
+        const double delta = 0.5 * (d[hi - 1] - d[hi]);
         const double shift =
-            a[hi * n + hi] - e * e / (d + (d >= 0 ? 1 : -1) * std::sqrt(d * d + e * e));
-        double x = a[lo * n + lo] - shift, z = a[(lo + 1) * n + lo];
+            d[hi] - eh * eh / (delta + (delta >= 0 ? 1 : -1) * std::sqrt(delta * delta + eh * eh));
+        double x = d[lo] - shift, z = e[lo];
         for (int k = lo; k < hi; ++k) {
             // G^T [x; z] = [r; 0]: c = x / r, s = -z / r.
             const double r = std::sqrt(x * x + z * z);
             const double c = r == 0 ? 1.0 : x / r, s = r == 0 ? 0.0 : -z / r;
-            rotate(a, n, v, k, c, s, lo, hi);
+            if (k > lo) e[k - 1] = r;  // the bulge below it is annihilated
+            const double p = d[k], q = d[k + 1], b = e[k];
+            d[k] = p * c * c - 2 * b * c * s + q * s * s;
+            d[k + 1] = p * s * s + 2 * b * c * s + q * c * c;
+            e[k] = (p - q) * c * s + b * (c * c - s * s);
             if (k + 1 < hi) {
-                x = a[(k + 1) * n + k];
-                z = a[(k + 2) * n + k];
+                z = -s * e[k + 1];  // new bulge at (k + 2, k)
+                e[k + 1] *= c;
+                x = e[k];
+            }
+            double* r0 = &qt[k * n];
+            double* r1 = &qt[(k + 1) * n];
+            for (int i = 0; i < n; ++i) {
+                const double u = r0[i], w = r1[i];
+                r0[i] = c * u - s * w;
+                r1[i] = s * u + c * w;
             }
         }
     }
-    for (int i = 0; i < n; ++i) eval[i] = a[i * n + i];
+    for (int i = 0; i < n; ++i) {
+        eval[i] = d[i];
+        for (int j = 0; j < n; ++j) v[i * n + j] = qt[j * n + i];
+    }
 }
 
 bool lu_factor(double* a, int n, int* piv) {
