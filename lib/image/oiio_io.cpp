@@ -67,7 +67,12 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
             throw DataError({path, 0}, "PGM/PPM output holds 8-bit counts only");
         spec.attribute("pnm:binary", 0);  // plain (text) Netpbm: readable and diffable
     }
-    if (ext == "tif" || ext == "tiff") spec.attribute("compression", "none");
+    if (ext == "tif" || ext == "tiff") {
+        spec.attribute("compression", "none");
+        // OpenImageIO stamps a TIFF with the wall-clock time unless the spec has a
+        // DateTime: an empty one keeps reruns byte-identical (STYLE: no time stamps).
+        spec.attribute("DateTime", "");
+    }
     const std::string temp = detail::temp_name(path);
     bool ok = out->open(temp, spec) && out->write_image(type, pixels) && out->close();
     if (!ok) {

@@ -158,3 +158,10 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
     [[ "$stderr" == *"must be a .tif, .png, .pgm or .ppm file"* ]] || fail "stderr: $stderr"
     assert_no_temp_files .
 }
+
+@test "a TIFF written twice is byte-identical (no wall-clock time stamp)" {
+    sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o first.tif
+    sleep 1.1
+    sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o second.tif
+    cmp first.tif second.tif
+}
