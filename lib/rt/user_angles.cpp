@@ -115,16 +115,22 @@ void homogeneous_pair(const HomogeneousPair& a, int nn_dynamic, double& vu, doub
     }
     double same[64], other[64];
     bool resonance = false;
+    // One division for both: 1 / ((1 + x)(x - 1)); x - 1 is exact near 1 (Sterbenz).
     for (int j = 0; j < nn; ++j) {
         const double x = a.k[j] * a.amu, ek = a.exp_k[j];
-        same[j] = (1 - ek * a.et) / (1 + x);
-        other[j] = (a.et - ek) / (x - 1);
-        resonance |= std::abs(x - 1) * a.dt * im < 1e-3;
+        const double xm = x - 1, xp = 1 + x, r = 1 / (xp * xm);
+        same[j] = (1 - ek * a.et) * xm * r;
+        other[j] = (a.et - ek) * xp * r;
+        resonance |= std::abs(xm) * a.dt * im < 1e-3;
     }
     if (resonance)
-        for (int j = 0; j < nn; ++j)
-            if (std::abs(a.k[j] * a.amu - 1) * a.dt * im < 1e-3)
+        for (int j = 0; j < nn; ++j) {
+            const double x = a.k[j] * a.amu;
+            if (std::abs(x - 1) * a.dt * im < 1e-3) {
+                same[j] = (1 - a.exp_k[j] * a.et) / (1 + x);
                 other[j] = two_exp(a.et, a.exp_k[j], im, a.k[j], a.dt) * im;
+            }
+        }
     // Per-solution terms summed afterwards: local arrays keep the loop free of stores
     // through vu/vd (which the compiler cannot prove unaliased) and let it vectorise.
     double tu[64], td[64];
@@ -173,9 +179,14 @@ void Solver::full_layer_pair(int n, int m, const double* lam_mu, double amu, dou
             homogeneous_pair<0>(args, nn, vu, vd);
             break;
     }
+    // Beam moments, and thermal ones where they exist (m = 0 with emission; zero otherwise).
     double be = 0, bo = 0, te = 0, to = 0;
-    for (int l = m; l < nl; l += 2) be += lam_mu[l] * s.bmom[l], te += lam_mu[l] * s.tmom[l];
-    for (int l = m + 1; l < nl; l += 2) bo += lam_mu[l] * s.bmom[l], to += lam_mu[l] * s.tmom[l];
+    for (int l = m; l < nl; l += 2) be += lam_mu[l] * s.bmom[l];
+    for (int l = m + 1; l < nl; l += 2) bo += lam_mu[l] * s.bmom[l];
+    if (m == 0 && m_thermal) {
+        for (int l = m; l < nl; l += 2) te += lam_mu[l] * s.tmom[l];
+        for (int l = m + 1; l < nl; l += 2) to += lam_mu[l] * s.tmom[l];
+    }
     if (be != 0 || bo != 0) {
         const double eb = s.exp_beam;
         vu += im * (be + bo) * two_exp(eb * et, 1.0, s.inv_mu0 + im, 0.0, dt);
