@@ -276,12 +276,29 @@ void solve_layer(const Quadrature& q, int m, const LayerOptics& optics, const do
     out.gp.assign(nn * nn, 0.0);
     out.gm.assign(nn * nn, 0.0);
     homogeneous(q, m, optics, lam, out, scratch);
+    // Scattering moments of every decaying solution (scatter_moments for each), folded
+    // with Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu): w (G+ + G-) serves even l + m, w (G+ - G-)
+    // odd; hmom[l][j] = (omega/2)(2l+1) g_l sum_a Lambda_l(mu_a) w_a (G+ +- G-)_a.
     out.hmom.assign(nn * nl, 0.0);
-    double v[128], mom[128];
-    for (int j = 0; j < nn; ++j) {
-        for (int a = 0; a < n2; ++a) v[a] = out.dec(j, a);
-        scatter_moments(q, m, optics, lam, nl, v, mom);
-        for (int l = 0; l < nl; ++l) out.hmom[l * nn + j] = mom[l];
+    scratch.fold.resize(2 * nn * nn);
+    double* sp = scratch.fold.data();
+    double* sm = sp + nn * nn;
+    for (int a = 0; a < nn; ++a)
+        for (int j = 0; j < nn; ++j) {
+            const double gp = out.gp[j * nn + a], gm = out.gm[j * nn + a];
+            sp[a * nn + j] = q.weight[a] * (gp + gm);
+            sm[a * nn + j] = q.weight[a] * (gp - gm);
+        }
+    for (int l = m; l < nl; ++l) {
+        const double c = 0.5 * optics.ssa * (2 * l + 1) * optics.g[l];
+        if (c == 0) continue;
+        const double* fold = (l + m) % 2 == 0 ? sp : sm;
+        const double* lm = lam + l * n2;
+        double* h = &out.hmom[l * nn];
+        for (int a = 0; a < nn; ++a) {
+            const double la = c * lm[a];
+            for (int j = 0; j < nn; ++j) h[j] += la * fold[a * nn + j];
+        }
     }
     out.beam.assign(n2, 0.0);
     out.bmom.assign(nl, 0.0);

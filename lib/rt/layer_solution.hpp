@@ -51,7 +51,7 @@ struct LayerSolution {
 // Scratch space reused across layers and modes.
 struct Scratch {
     std::vector<double> a, b, c, v, lam, ev, s, mat, rhs, work;
-    std::vector<double> pb, pk, pq;
+    std::vector<double> pb, pk, pq, fold;
     std::vector<int> piv, piv2;
 };
 
