@@ -333,6 +333,7 @@ private:
                 m_c.in.atmosphere->add_sky_radiance(dir, 1.0, {out, m_c.n}, m_c.emission);
             return hit;
         }
+        refine(origin, dir, *hit);
         ++counters.hits;
         const MaterialOptics& m = material_of(*hit);
         const auto& a = m_c.in.scene->attributes(*hit);
@@ -355,6 +356,24 @@ private:
             for (std::size_t k = 0; k < m_c.n; ++k) out[k] += t[k] * behind[k];
         }
         return hit;
+    }
+
+    // Embree intersects in single precision: a hit distance d is known to about
+    // 2^-23 d. From a sensor far from the scene (a satellite 705 km up) that error
+    // exceeds the ray offset eps, and the offset point can land below its own facet
+    // (which then shadows itself). When the error could reach a tenth of eps, the hit
+    // is found again from a point on the ray just before it, where single precision is
+    // ample, and the distance is summed in double precision.
+    void refine(const Vec3& origin, const Vec3& dir, scene::Hit& hit) {
+        constexpr double kFloatRelative = 1.2e-7;  // 2^-23
+        if (hit.distance * kFloatRelative <= 0.1 * m_c.eps) return;
+        const double back = std::max(100 * m_c.eps, 1e-4 * hit.distance);
+        const double base = hit.distance - back;
+        const Vec3 near = plus(origin, scaled(dir, base));
+        if (auto again = m_c.in.scene->intersect(near, dir, 0.0, 2 * back)) {
+            again->distance += base;
+            hit = *again;
+        }
     }
 
     // Secondary hit B, one bounce deep (seed 5.2.3 step 4):
