@@ -260,19 +260,24 @@ Result Solver::run() {
         if (m == 0) fluxes();
         if (nu == 0) continue;
         user_intensities(m, im);
-        double worst = 0;
+        // Converged mode: |added| <= accuracy |total| wherever the total is nonzero
+        // (compared without a division per value).
+        const double acc = m_p.azimuth_accuracy;
+        bool small = true;
         for (std::size_t f = 0; f < nphi; ++f)
             cos_m[f] = std::cos(m * (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180);
         for (std::size_t i = 0; i < m_pos.size(); ++i)
-            for (std::size_t u = 0; u < nu; ++u)
+            for (std::size_t u = 0; u < nu; ++u) {
+                double* total = &m_result.levels[i].intensity[u * nphi];
+                const double a = im[i * nu + u];
                 for (std::size_t f = 0; f < nphi; ++f) {
-                    const double add = im[i * nu + u] * cos_m[f];
-                    double& total = m_result.levels[i].intensity[u * nphi + f];
-                    total += add;
-                    if (total != 0) worst = std::max(worst, std::abs(add / total));
+                    const double add = a * cos_m[f];
+                    total[f] += add;
+                    small &= total[f] == 0 || std::abs(add) <= acc * std::abs(total[f]);
                 }
-        if (m > 0 && m_p.azimuth_accuracy > 0) {
-            converged = worst <= m_p.azimuth_accuracy ? converged + 1 : 0;
+            }
+        if (m > 0 && acc > 0) {
+            converged = small ? converged + 1 : 0;
             if (converged >= 2) break;
         }
     }
