@@ -94,7 +94,9 @@ private:
     std::vector<double> m_lam, m_lam0;
     std::vector<UserSource> m_us, m_us_down;  // per layer, for +|mu| and -|mu|
     std::vector<std::ptrdiff_t> m_mirror;     // index of -umu[u] in umu, or -1
-    std::vector<double> m_level_int, m_full_up, m_full_down;
+    std::vector<double> m_level_int;
+    std::vector<double> m_lam_user;              // Lambda_l^m(|umu|) of the computed cosines
+    std::vector<double> m_full_up, m_full_down;  // full-layer integrals, [cosine * L + layer]
     std::vector<double> m_trans;  // m_trans[n * umu.size() + u] = exp(-dtau_n / |umu_u|)
     Result m_result;
     bool m_thermal = false;

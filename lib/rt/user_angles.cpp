@@ -210,10 +210,7 @@ bool Solver::interior(const Position& ps) const {
 void Solver::user_intensities(int m, std::vector<double>& im) {
     const std::size_t nu = m_p.umu.size();
     im.assign(m_pos.size() * nu, 0.0);
-    std::vector<double> lam_mu(m_N);
     m_level_int.assign(m_L + 1, 0.0);
-    m_full_up.assign(m_L, 0.0);
-    m_full_down.assign(m_L, 0.0);
     const int nn = m_q.nn;
     // Lambertian surface: upward intensity of mode 0 at the bottom.
     double bottom = 0;
@@ -227,24 +224,39 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
                  (1 - m_p.albedo) * m_p.planck_surface;
     }
     const double top = m == 0 ? m_p.top_isotropic + m_p.top_emission : 0.0;
-    for (std::size_t u = 0; u < nu; ++u) {
+    // The cosines computed (a downward cosine whose upward mirror is also wanted is done
+    // with the mirror), their Legendre functions, and the full-layer integrals of every
+    // layer for each, layer by layer so that a layer's solution stays in cache.
+    std::vector<std::size_t> primary;
+    for (std::size_t u = 0; u < nu; ++u)
+        if (!(m_p.umu[u] < 0 && m_mirror[u] >= 0)) primary.push_back(u);
+    const std::size_t np = primary.size();
+    m_lam_user.resize(np * m_N);
+    for (std::size_t k = 0; k < np; ++k)
+        normalized_legendre(m, m_N - 1, std::abs(m_p.umu[primary[k]]), &m_lam_user[k * m_N]);
+    m_full_up.resize(np * m_L);
+    m_full_down.resize(np * m_L);
+    for (int n = 0; n < m_L; ++n)
+        for (std::size_t k = 0; k < np; ++k) {
+            const std::size_t u = primary[k];
+            full_layer_pair(n, m, &m_lam_user[k * m_N], std::abs(m_p.umu[u]), m_trans[n * nu + u],
+                            m_full_up[k * m_L + n], m_full_down[k * m_L + n]);
+        }
+    for (std::size_t k = 0; k < np; ++k) {
+        const std::size_t u = primary[k];
         const double mu = m_p.umu[u];
-        // A downward cosine whose upward mirror is also wanted is done with the mirror.
-        if (mu < 0 && m_mirror[u] >= 0) continue;
-        const double amu = std::abs(mu);
-        normalized_legendre(m, m_N - 1, amu, lam_mu.data());
-        for (int n = 0; n < m_L; ++n)
-            full_layer_pair(n, m, lam_mu.data(), amu, m_trans[n * nu + u], m_full_up[n],
-                            m_full_down[n]);
+        const double* lam_mu = &m_lam_user[k * m_N];
+        const double* full_up = &m_full_up[k * m_L];
+        const double* full_down = &m_full_down[k * m_L];
         // Partial-layer sources only for depths inside a layer; at a level the swept
         // level intensity is the answer.
         for (const Position& ps : m_pos)
             if (interior(ps))
-                user_source(ps.layer, m, lam_mu.data(), m_us[ps.layer], m_us_down[ps.layer]);
+                user_source(ps.layer, m, lam_mu, m_us[ps.layer], m_us_down[ps.layer]);
         if (mu > 0) {
             m_level_int[m_L] = bottom;
             for (int n = m_L - 1; n >= 0; --n)
-                m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + m_full_up[n];
+                m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + full_up[n];
             for (std::size_t i = 0; i < m_pos.size(); ++i) {
                 const Position& ps = m_pos[i];
                 const double dt = m_s.optics[ps.layer].dtau;
@@ -262,7 +274,7 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
         const double mud = m_p.umu[d];
         m_level_int[0] = top;
         for (int n = 0; n < m_L; ++n)
-            m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + m_full_down[n];
+            m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + full_down[n];
         for (std::size_t i = 0; i < m_pos.size(); ++i) {
             const Position& ps = m_pos[i];
             const double dt = m_s.optics[ps.layer].dtau;
