@@ -154,8 +154,8 @@ io::GdbObject extrude(const Ring& ring, double height_m, long object_number,
         std::vector<io::Vec3> verts;
         for (int k : t) verts.push_back({ring[k][0], ring[k][1], height_m});
         const std::string id = n + "-1-" + std::to_string(roof.facets.size() + 1);
-        roof.facets.push_back(make_facet(std::move(verts), {0, 0, 1}, "roof", id, m.roof_id,
-                                         m.roof_name, "roof"));
+        roof.facets.push_back(
+            make_facet(std::move(verts), {0, 0, 1}, "roof", id, m.roof_id, m.roof_name, "roof"));
     }
     io::GdbPart walls{"walls", n + "-2-0", {}, 0};
     for (std::size_t i = 0, count = ring.size(); i < count; ++i) {
@@ -164,11 +164,11 @@ io::GdbObject extrude(const Ring& ring, double height_m, long object_number,
         const double dx = q[0] - p[0], dy = q[1] - p[1], len = std::hypot(dx, dy);
         // Counter-clockwise ring: the outward normal of edge (dx, dy) is (dy, -dx).
         const io::Vec3 normal{dy / len, -dx / len, 0};
-        std::vector<io::Vec3> verts{{p[0], p[1], 0}, {q[0], q[1], 0}, {q[0], q[1], height_m},
-                                    {p[0], p[1], height_m}};
+        std::vector<io::Vec3> verts{
+            {p[0], p[1], 0}, {q[0], q[1], 0}, {q[0], q[1], height_m}, {p[0], p[1], height_m}};
         const std::string id = n + "-2-" + std::to_string(walls.facets.size() + 1);
-        walls.facets.push_back(make_facet(std::move(verts), normal, "wall", id, m.wall_id,
-                                          m.wall_name, "walls"));
+        walls.facets.push_back(
+            make_facet(std::move(verts), normal, "wall", id, m.wall_id, m.wall_name, "walls"));
     }
     object.parts.push_back(std::move(roof));
     object.parts.push_back(std::move(walls));

@@ -1,11 +1,11 @@
 // Building footprints read with GDAL/OGR into a local metric frame.
 #include "scenegen/footprints.hpp"
 
-#include <cmath>
-#include <memory>
-
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+
+#include <cmath>
+#include <memory>
 
 #include "core/error.hpp"
 #include "image/gdal.hpp"

@@ -1,6 +1,7 @@
 // Building footprints read with GDAL/OGR from a vector file (GeoPackage, shapefile, ...).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -17,8 +18,9 @@ struct Footprint {
 };
 
 struct Footprints {
-    std::string crs_name;         // the layer's projected CRS name
-    std::array<double, 2> origin{};  // local origin in the layer's CRS (m): extent centre, rounded to 1 m
+    std::string crs_name;  // the layer's projected CRS name
+    // Local origin in the layer's CRS (m): the extent's centre, rounded to 1 m.
+    std::array<double, 2> origin{};
     std::array<double, 4> extent{};  // local frame min x, min y, max x, max y (m)
     std::vector<Footprint> buildings;
 };

@@ -1,6 +1,8 @@
 // soho_scene: the Soho scene's geometry generator (see README.md here): building
 // footprints from a GeoPackage extruded by the seeded storey rule, on an asphalt ground
 // plane, written as a .gdb. Not an installed tool: a scene helper built from this folder.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -8,8 +10,6 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-
-#include <unistd.h>
 
 #include "core/error.hpp"
 #include "io/gdb.hpp"
@@ -35,11 +35,16 @@ Options parse(int argc, char** argv) {
         const std::string a = argv[i];
         if ((a == "-o" || a == "--seed") && i + 1 >= argc)
             throw sigchain::UsageError("option " + a + " needs a value");
-        if (a == "-o") o.output = argv[++i];
-        else if (a == "--seed") o.seed = std::strtoull(argv[++i], nullptr, 10);
-        else if (a == "-h" || a == "--help") throw sigchain::UsageError("");
-        else if (!a.empty() && a[0] == '-') throw sigchain::UsageError("unknown option " + a);
-        else o.input = a;
+        if (a == "-o")
+            o.output = argv[++i];
+        else if (a == "--seed")
+            o.seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "-h" || a == "--help")
+            throw sigchain::UsageError("");
+        else if (!a.empty() && a[0] == '-')
+            throw sigchain::UsageError("unknown option " + a);
+        else
+            o.input = a;
     }
     if (o.input.empty() || o.output.empty())
         throw sigchain::UsageError("expected FOOTPRINTS and -o OUT.gdb");
@@ -80,7 +85,8 @@ void write(const Options& o, const sg::Footprints& fp, const sigchain::io::Gdb& 
     s << "# soho.gdb: written by soho_scene (sigchain issue 7, scene 4) from " << o.input << "\n"
       << "# Building footprints: buildings.gpkg from the R package sf 1.0-9 (see README.md).\n"
       << "# CRS " << fp.crs_name << "; local frame: x east, y north (m) about\n"
-      << "# easting " << fp.origin[0] << ", northing " << fp.origin[1] << "; z up from the ground.\n"
+      << "# easting " << fp.origin[0] << ", northing " << fp.origin[1]
+      << "; z up from the ground.\n"
       << "# Heights: storeys 3-7 by splitmix64(seed ^ feature id) mod 5, x 3.2 m; seed " << o.seed
       << ".\n";
     sigchain::io::write_gdb(s, gdb);
@@ -108,8 +114,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr,
                      "soho_scene: %zu footprints, %zu buildings (%zu skipped as degenerate), "
                      "%zu facets: %zu roof triangles, %zu wall quads, 1 ground quad\n",
-                     c.footprints, c.buildings, c.skipped, c.roofs + c.walls + 1, c.roofs,
-                     c.walls);
+                     c.footprints, c.buildings, c.skipped, c.roofs + c.walls + 1, c.roofs, c.walls);
         return 0;
     } catch (const sigchain::UsageError& e) {
         std::cerr << "soho_scene: " << e.what()

@@ -1,11 +1,12 @@
 // Tests of lib/scenegen: ring cleaning, ear-clipping triangulation, extrusion, height rule.
+#include "scenegen/extrude.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
 #include "io/gdb.hpp"
-#include "scenegen/extrude.hpp"
 
 namespace sg = sigchain::scenegen;
 using sigchain::io::Vec3;
@@ -87,8 +88,8 @@ TEST(ScenegenTriangulate, LShapedConcaveFootprintAreasSumToPolygonArea) {
 
 TEST(ScenegenTriangulate, CombShapedFootprintWithSeveralReflexVertices) {
     // A comb: 30 x 10 m base with three 6 x 15 m teeth (gaps of 6 m): 300 + 3 * 90 m^2.
-    const sg::Ring ring{{0, 0},  {30, 0},  {30, 25}, {24, 25}, {24, 10}, {18, 10}, {18, 25},
-                        {12, 25}, {12, 10}, {6, 10},  {6, 25},  {0, 25}};
+    const sg::Ring ring{{0, 0},   {30, 0},  {30, 25}, {24, 25}, {24, 10}, {18, 10},
+                        {18, 25}, {12, 25}, {12, 10}, {6, 10},  {6, 25},  {0, 25}};
     ASSERT_GT(sg::signed_area(ring), 0);
     expect_valid_triangulation(ring, 570.0);
 }

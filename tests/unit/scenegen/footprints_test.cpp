@@ -1,5 +1,7 @@
 // Tests of lib/scenegen/footprints: the Soho GeoPackage read with OGR, and every one of
 // its real footprints triangulated and extruded without loss.
+#include "scenegen/footprints.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 
 #include "core/error.hpp"
 #include "scenegen/extrude.hpp"
-#include "scenegen/footprints.hpp"
 
 namespace sg = sigchain::scenegen;
 
