@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "rt/quadrature.hpp"
@@ -284,7 +285,7 @@ Result Solver::run() {
     bool peaked = false;
     for (double f : m_s.f) peaked = peaked || f != 0;
     if (beam && m_p.delta_m && m_p.intensity_correction && peaked && nu > 0) intensity_correction();
-    return m_result;
+    return std::move(m_result);
 }
 
 }  // namespace detail
