@@ -132,9 +132,11 @@ $(OUT)/%.cdk: %.answers $(RSD) | $(OUT)
 
 ## find_min_max_view_angle: the view-angle range of a camera over its scene: the
 ## .snd line (--snd), then the full report (which names the look azimuth).
+## (The camera and the scene are the first two prerequisites; GEOM_FILES, the files an
+## .odb places, only make the range depend on them.)
 define find_view
-$(FIND_VIEW) $(FIND_VIEW_FLAGS) --snd $^ > $@
-$(FIND_VIEW) $(FIND_VIEW_FLAGS) $^ >> $@
+$(FIND_VIEW) $(FIND_VIEW_FLAGS) --snd $(wordlist 1,2,$^) > $@
+$(FIND_VIEW) $(FIND_VIEW_FLAGS) $(wordlist 1,2,$^) >> $@
 endef
 $(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) $(GEOM_FILES) | $(OUT)
 	$(find_view)

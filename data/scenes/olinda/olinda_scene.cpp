@@ -17,6 +17,7 @@
 #include "io/cpt.hpp"
 #include "landcover/classify.hpp"
 #include "landcover/fit.hpp"
+#include "landcover/preview.hpp"
 #include "landcover/raster.hpp"
 
 namespace lc = sigchain::landcover;
@@ -177,12 +178,22 @@ int ems(const std::string& refl_path, const std::string& scales_path, const std:
     return 0;
 }
 
+// The synthetic counts beside the reference, bands 3, 2, 1 as red, green, blue.
+int preview(const std::string& synthetic, const std::string& reference, const std::string& out) {
+    const auto image = sigchain::landcover::side_by_side(sigchain::image::read_image(synthetic),
+                                                         sigchain::image::read_image(reference),
+                                                         {3, 2, 1});
+    sigchain::image::write_counts(out, image, 8);
+    return 0;
+}
+
 int usage() {
     std::cerr << "usage: olinda_scene classify ETM.tif DEM.tif OUTDIR\n"
                  "       olinda_scene points CLASSES_IMAGE.tif LANDUSE.tif PER_CLASS SEED MARGIN "
                  "PREFIX\n"
                  "       olinda_scene fit FIT.cpt DARK.tif BASE.tif REFERENCE.tif\n"
-                 "       olinda_scene ems REFLECTANCE.txt SCALES.txt|- OUTDIR\n";
+                 "       olinda_scene ems REFLECTANCE.txt SCALES.txt|- OUTDIR\n"
+                 "       olinda_scene preview SYNTHETIC.tif REFERENCE.tif OUT.png\n";
     return 2;
 }
 
@@ -196,6 +207,7 @@ int main(int argc, char** argv) {
             return points(a[1], a[2], std::stoi(a[3]), std::stoul(a[4]), std::stol(a[5]), a[6]);
         if (a.size() == 5 && a[0] == "fit") return fit(a[1], a[2], a[3], a[4]);
         if (a.size() == 4 && a[0] == "ems") return ems(a[1], a[2], a[3]);
+        if (a.size() == 4 && a[0] == "preview") return preview(a[1], a[2], a[3]);
         return usage();
     } catch (const std::exception& e) {
         std::cerr << "olinda_scene: " << e.what() << "\n";
