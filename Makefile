@@ -4,7 +4,7 @@ PREFIX  ?= /usr/local
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test man install demo fuzz bench clean
+.PHONY: all deps configure build test man install demo fuzz bench chart clean
 
 all: build
 
@@ -29,8 +29,8 @@ man: deps configure
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
-# The main job. Until the demo scene lands (issue 7) it runs the seed's sample
-# files through the tools that exist.
+# The main job: the Olinda scene against the real Landsat-7 image, then the seed's
+# sample files and the training scene (scripts/demo).
 demo: build
 	@scripts/demo $(BUILD)
 
@@ -39,6 +39,11 @@ fuzz: deps
 
 bench: build
 	@for b in $(BUILD)/bench/bench_*; do [ -x "$$b" ] && "$$b"; done
+
+# Speed versus accuracy of trace's sampling strategies on the demo scenes: chart,
+# table and error map into docs/chart/ (a few minutes; not part of `make test`).
+chart: build
+	@scripts/chart $(BUILD)
 
 clean:
 	rm -rf $(BUILD)
