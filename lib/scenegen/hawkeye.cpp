@@ -110,8 +110,8 @@ public:
     }
     void part(const std::string& name) {
         auto& o = gdb.objects.back();
-        const std::string id = std::to_string(gdb.objects.size()) + "-" +
-                               std::to_string(o.parts.size() + 1) + "-0";
+        const std::string id =
+            std::to_string(gdb.objects.size()) + "-" + std::to_string(o.parts.size() + 1) + "-0";
         o.parts.push_back({name, id, {}, 0});
     }
     void facet(std::vector<Vec3> v, long material, const std::string& name) {
@@ -153,10 +153,9 @@ public:
         facet({{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}, sides, "west side");
     }
     static std::string material_name(long id) {
-        static const char* names[] = {"",         "grass",         "water",
-                                      "asphalt",  "concrete",      "tree canopy",
-                                      "bark",     "shingle dark",  "shingle brown",
-                                      "flat roof", "brick"};
+        static const char* names[] = {
+            "",     "grass",        "water",         "asphalt",   "concrete", "tree canopy",
+            "bark", "shingle dark", "shingle brown", "flat roof", "brick"};
         if (id >= 1 && id <= 10) return names[id];
         return "siding " + std::to_string(id - m::kSidingFirst + 1);
     }
@@ -223,8 +222,7 @@ io::Gdb tree_gdb() {
     b.box(-t, -t, -0.5, t, t, 3, m::kBark, m::kBark);
     auto& trunk = b.gdb.objects.back().parts.back().facets;
     trunk.erase(trunk.begin());  // the top is inside the crown
-    for (std::size_t k = 0; k < trunk.size(); ++k)
-        trunk[k].id = "1-1-" + std::to_string(k + 1);
+    for (std::size_t k = 0; k < trunk.size(); ++k) trunk[k].id = "1-1-" + std::to_string(k + 1);
     b.part("crown");
     const double rc = 3.5, zc = 6, zb = 2.5, zt = 11;
     for (int k = 0; k < 8; ++k) {
@@ -348,8 +346,8 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
         return true;
     };
     auto base_z = [&](double x0, double y0, double x1, double y1) {
-        return std::min({t.height_m(x0, y0), t.height_m(x1, y0), t.height_m(x1, y1),
-                         t.height_m(x0, y1)});
+        return std::min(
+            {t.height_m(x0, y0), t.height_m(x1, y0), t.height_m(x1, y1), t.height_m(x0, y1)});
     };
     auto add_big = [&](const std::string& name, double x0, double y0, double x1, double y1,
                        double h) {
@@ -385,8 +383,8 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
                 }
             }
             // Residential: four lots of 26 m on each side; the house 8 m back from the
-            // street edge (sidewalk and lawn), a garage behind 56% of them (a total near the seed's 850 structures), a tree in
-            // front of each lot and one in the back yard.
+            // street edge (sidewalk and lawn), a garage behind 56% of them (a total near the seed's
+            // 850 structures), a tree in front of each lot and one in the back yard.
             for (int side = 0; side < 2; ++side)
                 for (int k = 0; k < 4; ++k) {
                     const double lx = x0 + 2 + 26.5 * k + 13.25 + rng.uniform(-2, 2);
@@ -395,9 +393,9 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
                     const double hy = edge + dir * (8 + kHouseHalfY + 0.5);
                     const double scale = rng.uniform(0.9, 1.1);
                     if (!lot_ok(lx - 8, std::min(hy, hy - dir * 7.5), lx + 8,
-                                std::max(hy, hy - dir * 7.5) + 0.0) ||
-                        !lot_ok(lx - 8, std::min(edge + dir * 2, hy + dir * 5),
-                                lx + 8, std::max(edge + dir * 2, hy + dir * 5)))
+                                std::max(hy, hy - dir * 7.5)) ||
+                        !lot_ok(lx - 8, std::min(edge + dir * 2, hy + dir * 5), lx + 8,
+                                std::max(edge + dir * 2, hy + dir * 5)))
                         continue;
                     const int type = static_cast<int>(rng.uniform() * 3);
                     const int colour = static_cast<int>(rng.uniform() * m::kColours);
@@ -414,8 +412,8 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
                         ++s.counts.garages;
                     }
                     const double tx = lx - 10 + rng.uniform(-1, 1), ty = edge + dir * 4;
-                    tree_places.push_back(place(tx, ty, t.height_m(tx, ty),
-                                                rng.uniform(0.7, 1.2), rng.uniform(0, 360)));
+                    tree_places.push_back(place(tx, ty, t.height_m(tx, ty), rng.uniform(0.7, 1.2),
+                                                rng.uniform(0, 360)));
                     const double bx = lx + rng.uniform(-8, 0), by = edge + dir * 34;
                     if (lot_ok(bx, by, bx, by))
                         tree_places.push_back(place(bx, by, t.height_m(bx, by),
@@ -498,8 +496,8 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
     // the parking lots (one cell in two).
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
-            const bool street = at(i, j) == kStreet && j % kRowPeriod == kRowStreet &&
-                                i % kColPeriod != kColStreet;
+            const bool street =
+                at(i, j) == kStreet && j % kRowPeriod == kRowStreet && i % kColPeriod != kColStreet;
             const bool lot = at(i, j) == kParking;
             if (!((street && rng.uniform() < 0.25) || (lot && rng.uniform() < 0.5))) continue;
             const double x = cx(i) + rng.uniform(-2, 2), y = cx(j) + (street ? 3.5 : 0);
@@ -512,8 +510,7 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
     // Trees: street and yard trees above; the forest of the gorge's walls (randomly
     // placed, as in the seed) brings the total to about 3000 (seed 4.2.3.1 TREES).
     const int target = 3000 + static_cast<int>(rng.uniform(-150, 150));
-    for (int tries = 0; static_cast<int>(tree_places.size()) < target && tries < 200000;
-         ++tries) {
+    for (int tries = 0; static_cast<int>(tree_places.size()) < target && tries < 200000; ++tries) {
         const double x = rng.uniform(t.origin_m, -t.origin_m),
                      y = rng.uniform(t.origin_m, -t.origin_m);
         const int i = cell_of(x), j = cell_of(y);
@@ -526,7 +523,6 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
 
     // Files and the assembly.
     auto add = [&](const std::string& name, io::Gdb gdb, std::vector<io::OdbInstance> inst) {
-        if (inst.empty() && !inst.empty()) return;
         io::OdbObject o;
         o.source = io::OdbSource::Gdb;
         o.path = name;

@@ -44,8 +44,8 @@ inline constexpr double kGorgeFloorHalfWidthM = 30;  // river: 60 m wide
 inline constexpr double kGorgeRimHalfWidthM = 110;   // rim to rim: 220 m
 inline constexpr double kMinHillM = 15;
 inline constexpr double kMaxHillM = 25;
-inline constexpr double kStreetRaiseM = 0.1;    // streets and parking (the issue)
-inline constexpr double kSidewalkRaiseM = 0.15; // "typically a six inch elevation" (seed 4.2.3.1)
+inline constexpr double kStreetRaiseM = 0.1;     // streets and parking (the issue)
+inline constexpr double kSidewalkRaiseM = 0.15;  // "typically a six inch elevation" (seed 4.2.3.1)
 
 // The terrain: heights at the nodes of a square grid covering the scene.
 struct HawkeyeTerrain {
@@ -75,12 +75,10 @@ struct HawkeyeCounts {
     std::size_t houses = 0, garages = 0, large_buildings = 0, plants = 0, bridges = 0;
     std::size_t trees = 0, vehicles = 0;
     std::size_t street_cells = 0, sidewalk_strips = 0, parking_cells = 0;
-    std::size_t facets = 0;        // facets over all .gdb files (each mesh once)
-    std::size_t placed_facets = 0; // facets of every placed copy
+    std::size_t facets = 0;            // facets over all .gdb files (each mesh once)
+    std::size_t placed_facets = 0;     // facets of every placed copy
     std::size_t placed_triangles = 0;  // of every placed copy, quads counted as 2
-    std::size_t structures() const {
-        return houses + garages + large_buildings + plants + bridges;
-    }
+    std::size_t structures() const { return houses + garages + large_buildings + plants + bridges; }
 };
 
 // The generated scene: .gdb files (name, content) and the .odb placing them.
@@ -95,9 +93,9 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed);
 
 // Material ids of the scene (data/scenes/hawkeye/hawkeye.mat).
 namespace hawkeye_material {
-inline constexpr long kGrass = 1, kWater = 2, kAsphalt = 3, kConcrete = 4, kCanopy = 5,
-                      kBark = 6, kShingleDark = 7, kShingleBrown = 8, kFlatRoof = 9,
-                      kBrick = 10, kSidingFirst = 11;  // 11..20: the ten siding colours
+inline constexpr long kGrass = 1, kWater = 2, kAsphalt = 3, kConcrete = 4, kCanopy = 5, kBark = 6,
+                      kShingleDark = 7, kShingleBrown = 8, kFlatRoof = 9, kBrick = 10,
+                      kSidingFirst = 11;  // 11..20: the ten siding colours
 inline constexpr int kColours = 10;
 }  // namespace hawkeye_material
 

@@ -1,8 +1,6 @@
 // Tests of lib/scenegen/hawkeye: the hawkeye scene's terrain (the 60 m gorge, hills of
 // 15-25 m), its counts against the issue's "about 850 structures" and "about 3000
 // trees", raised pavement, placement on the terrain, and determinism.
-#include "scenegen/hawkeye.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +10,7 @@
 
 #include "io/gdb.hpp"
 #include "io/odb.hpp"
+#include "scenegen/hawkeye.hpp"
 
 namespace sg = sigchain::scenegen;
 
@@ -80,7 +79,8 @@ TEST(HawkeyeTerrain, HillsAreWithin15To25MetresAndVaryWithTheSeed) {
                     lo = std::min(lo, t.node_z(i, j));
                     hi = std::max(hi, t.node_z(i, j));
                 }
-        EXPECT_GE(hi - lo, 0.8 * sg::kMinHillM) << "seed " << seed;  // extremes may fall in the gorge
+        EXPECT_GE(hi - lo, 0.8 * sg::kMinHillM)
+            << "seed " << seed;  // extremes may fall in the gorge
         EXPECT_LE(hi - lo, sg::kMaxHillM + kTolM) << "seed " << seed;
         const auto [hlo, hhi] = std::minmax_element(t.hills_m.begin(), t.hills_m.end());
         EXPECT_GE(*hhi - *hlo, sg::kMinHillM);
@@ -118,9 +118,9 @@ TEST(HawkeyeScene, CountsAreNearTheSeeds850StructuresAnd3000Trees) {
         EXPECT_GT(c.large_buildings, 5u);
         EXPECT_GT(c.vehicles, 100u);
         // The counts agree with the .odb's instances.
-        EXPECT_EQ(instances_of(s, "fancy-") + instances_of(s, "house1-") +
-                      instances_of(s, "house2-"),
-                  c.houses);
+        EXPECT_EQ(
+            instances_of(s, "fancy-") + instances_of(s, "house1-") + instances_of(s, "house2-"),
+            c.houses);
         EXPECT_EQ(instances_of(s, "garage-"), c.garages);
         EXPECT_EQ(instances_of(s, "tree.gdb"), c.trees);
         EXPECT_EQ(instances_of(s, "vehicle-"), c.vehicles);
@@ -150,8 +150,8 @@ TEST(HawkeyeScene, PavementIsRaisedOnTheTerrain) {
             }
     }
     EXPECT_GT(checked, 10000u);
-    EXPECT_EQ(checked, 6 * (s.counts.street_cells + s.counts.parking_cells +
-                            s.counts.sidewalk_strips));
+    EXPECT_EQ(checked,
+              6 * (s.counts.street_cells + s.counts.parking_cells + s.counts.sidewalk_strips));
 }
 
 TEST(HawkeyeScene, HousesStandOnThePlateauAtTheirLowestCorner) {
