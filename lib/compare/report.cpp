@@ -182,15 +182,18 @@ void write_text_report(std::ostream& out, const PixelComparison& cmp) {
         << " columns; d = synthetic - reference\n"
         << "rms = sqrt(mean(d^2)), bias = mean(d), max_abs = max |d|,\n"
         << "mean_relative = mean |d|/|reference| over pixels where reference != 0\n\n";
+    // Columns are separated by at least one space: "%.6g" of a negative number in
+    // exponent form (-1.08729e-05) is 12 characters wide.
     out << std::left << std::setw(6) << "band" << std::right << std::setw(10) << "syn_band"
-        << std::setw(10) << "ref_band" << std::setw(12) << "rms" << std::setw(12) << "bias"
-        << std::setw(12) << "max_abs" << std::setw(14) << "mean_relative" << '\n';
+        << std::setw(10) << "ref_band" << std::setw(14) << "rms" << std::setw(14) << "bias"
+        << std::setw(14) << "max_abs" << std::setw(14) << "mean_relative" << '\n';
     for (const auto& b : cmp.bands) {
         out << std::left << std::setw(6) << b.name << std::right << std::setw(10)
             << (b.synthetic_band ? std::to_string(b.synthetic_band) : "-") << std::setw(10)
             << (b.reference_band ? std::to_string(b.reference_band) : "-");
-        for (double v : {b.rms, b.bias, b.max_abs}) out << std::setw(12) << short_number(v);
-        out << std::setw(14) << short_number(b.mean_relative) << '\n';
+        for (double v : {b.rms, b.bias, b.max_abs, b.mean_relative})
+            out << ' ' << std::setw(13) << short_number(v);
+        out << '\n';
     }
 }
 

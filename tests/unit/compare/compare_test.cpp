@@ -193,3 +193,29 @@ TEST(ComparePoints, AllValuesTiedInOneImageIsAnError) {
                      "rank-order correlation is undefined");
     }
 }
+
+namespace sigchain::compare {
+namespace {
+
+// The text report keeps columns apart even for a negative bias in exponent form
+// (-1.08729e-05 is 12 characters): every field splits on whitespace.
+TEST(ComparePixels, TextReportColumnsStaySeparate) {
+    image::Image a(1, 2, 1), b(1, 2, 1);
+    a.data = {1.0f, 1.0f};
+    b.data = {1.0000109f, 1.0000109f};
+    const PixelComparison cmp = compare_pixels({"a", &a}, {"b", &b}, {});
+    std::ostringstream out;
+    write_text_report(out, cmp);
+    std::istringstream lines(out.str());
+    std::string line, last;
+    while (std::getline(lines, line))
+        if (!line.empty()) last = line;
+    std::istringstream fields(last);
+    std::vector<std::string> f;
+    for (std::string w; fields >> w;) f.push_back(w);
+    ASSERT_EQ(f.size(), 7u) << last;
+    EXPECT_LT(std::stod(f[4]), 0);  // the bias
+}
+
+}  // namespace
+}  // namespace sigchain::compare
