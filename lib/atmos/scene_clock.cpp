@@ -45,4 +45,17 @@ UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours) {
     return t;
 }
 
+SolarPosition sun_at_wth_hours(const io::Snd& snd, double wth_hours) {
+    const UtTime ut = ut_of_wth_hours(snd, wth_hours);
+    SolarPositionInput in;
+    in.year = ut.year;
+    in.month = ut.month;
+    in.day = ut.day;
+    in.ut_hours = ut.ut_hours;
+    in.delta_t_s = default_delta_t_s(ut.year);
+    in.latitude_deg = snd.latitude_deg;
+    in.longitude_east_deg = snd.longitude_east_deg;
+    return solar_position(in);
+}
+
 }  // namespace sigchain::atmos

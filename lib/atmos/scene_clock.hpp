@@ -4,6 +4,7 @@
 // the same moment from the same hour.
 #pragma once
 
+#include "atmos/solar_position.hpp"
 #include "io/snd.hpp"
 
 namespace sigchain::atmos {
@@ -17,6 +18,10 @@ struct UtTime {
 // The .wth clock in UT: the .snd's date is the scene's local date (the .wth's second
 // day), so hour H is local date - 1 day + H, and UT = local + gmt_offset.
 UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours);
+
+// The sun (NREL SPA) at the .snd's place at hour `wth_hours` of the .wth clock, sea
+// level, standard refraction, Delta T from default_delta_t_s.
+SolarPosition sun_at_wth_hours(const io::Snd& snd, double wth_hours);
 
 // The .snd's scene time on the .wth clock: 24 + its local time of day.
 double scene_wth_hours(const io::Snd& snd);

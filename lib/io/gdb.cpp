@@ -195,20 +195,6 @@ Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
-// Newell's method: a normal whose length is twice the polygon's area, robust for
-// slightly non-planar quads.
-Vec3 newell_normal(const std::vector<Vec3>& v) {
-    Vec3 n{};
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const Vec3& a = v[i];
-        const Vec3& b = v[(i + 1) % v.size()];
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    return n;
-}
-
 // The largest distance between two vertices (0 when all coincide).
 double facet_size(const std::vector<Vec3>& v) {
     double size = 0;
@@ -259,6 +245,18 @@ std::string label(const std::string& kind, const std::string& name, const std::s
 }
 
 }  // namespace
+
+Vec3 newell_normal(const std::vector<Vec3>& v) {
+    Vec3 n{};
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Vec3& a = v[i];
+        const Vec3& b = v[(i + 1) % v.size()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    return n;
+}
 
 std::string polygon_degeneracy(const std::vector<Vec3>& v) {
     double size = facet_size(v);

@@ -68,6 +68,10 @@ inline constexpr double kGdbPlanarTolerance = 1e-3;
 inline constexpr double kGdbNormalToleranceDeg = 1.0;
 std::vector<std::string> gdb_problems(const Gdb& gdb);
 
+// Newell's normal of a polygon (vertices in order): its length is twice the polygon's
+// area; robust for slightly non-planar quads.
+Vec3 newell_normal(const std::vector<Vec3>& polygon);
+
 // Why a polygon (3 or more vertices, in order) is degenerate, or "" when it is not:
 // the first of gdb_problems' degeneracy criteria that it meets: all vertices coincide;
 // two vertices closer than 1e-9 x the polygon's size (its largest vertex distance);

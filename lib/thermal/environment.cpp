@@ -104,16 +104,7 @@ namespace {
 EnvironmentStep environment_at(const io::Wth& wth, const std::string& wth_file, const io::Snd& snd,
                                double time_h, EnvironmentSummary* summary) {
     const WeatherSample w = interpolate_weather(wth, time_h, wth_file);
-    const UtTime ut = ut_of_wth_hours(snd, time_h);
-    atmos::SolarPositionInput in;
-    in.year = ut.year;
-    in.month = ut.month;
-    in.day = ut.day;
-    in.ut_hours = ut.ut_hours;
-    in.delta_t_s = atmos::default_delta_t_s(ut.year);
-    in.latitude_deg = snd.latitude_deg;
-    in.longitude_east_deg = snd.longitude_east_deg;
-    const atmos::SolarPosition sp = atmos::solar_position(in);
+    const atmos::SolarPosition sp = atmos::sun_at_wth_hours(snd, time_h);
 
     EnvironmentStep e;
     e.time_h = time_h;

@@ -17,19 +17,6 @@ Vec3 unit(const Vec3& v) {
     return {v[0] / n, v[1] / n, v[2] / n};
 }
 
-// Newell's normal of a polygon (unnormalised).
-Vec3 newell(const std::vector<io::Vec3>& p) {
-    Vec3 n{0, 0, 0};
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const auto& a = p[i];
-        const auto& b = p[(i + 1) % p.size()];
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    return n;
-}
-
 // Normal transformed by the inverse transpose of the 3x3 part of a row-major 4x4:
 // the cofactor matrix (inverse transpose x det), which keeps the direction for det > 0
 // and keeps the normal on the same side of the surface when det < 0 once re-signed.
@@ -58,7 +45,7 @@ void add_gdb(const io::Gdb& gdb, const io::Matrix4* placement, const std::string
                 SceneFacet f;
                 f.key = prefix + face.id;
                 Vec3 n = unit(face.normal);
-                if (n == Vec3{0, 0, 0}) n = unit(newell(face.vertices));
+                if (n == Vec3{0, 0, 0}) n = unit(io::newell_normal(face.vertices));
                 if (n == Vec3{0, 0, 0})
                     throw DataError({gdb.file, face.line},
                                     "facet " + face.id + ": no normal (zero area)");

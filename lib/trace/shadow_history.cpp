@@ -262,16 +262,7 @@ std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hou
     for (long k = 0; k < steps; ++k) {
         SunStep s;
         s.time_hours = scene - static_cast<double>(steps - 1 - k) * step_hours;
-        const atmos::UtTime ut = atmos::ut_of_wth_hours(snd, s.time_hours);
-        atmos::SolarPositionInput in;
-        in.year = ut.year;
-        in.month = ut.month;
-        in.day = ut.day;
-        in.ut_hours = ut.ut_hours;
-        in.delta_t_s = atmos::default_delta_t_s(in.year);
-        in.latitude_deg = snd.latitude_deg;
-        in.longitude_east_deg = snd.longitude_east_deg;
-        const atmos::SolarPosition sp = atmos::solar_position(in);
+        const atmos::SolarPosition sp = atmos::sun_at_wth_hours(snd, s.time_hours);
         s.zenith_deg = sp.zenith_deg;
         s.azimuth_deg = sp.azimuth_deg;
         const double z = sp.zenith_deg * kDeg, a = sp.azimuth_deg * kDeg;
