@@ -150,8 +150,6 @@ std::size_t index_of(const std::vector<double>& v, double x) {
     return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
 }
 
-void add_unique(std::vector<double>& v, double x) { v.push_back(x); }
-
 void sort_unique(std::vector<double>& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -169,8 +167,8 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
         return wrap_degrees(view_azimuth_deg + (v < 0 ? 180.0 : 0.0) - sun_azimuth_deg);
     };
     for (double v : view_angles_deg) {
-        add_unique(d.umu, view_mu(v));
-        add_unique(d.phi, view_phi(v));
+        d.umu.push_back(view_mu(v));
+        d.phi.push_back(view_phi(v));
     }
     // Sky: a cell at azimuth A sends light travelling toward A + 180, down.
     d.zenith_count = std::lround(90.0 / o.sky_zenith_step_deg);
@@ -199,8 +197,8 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
                 for (int q = 0; q < n; ++q) {
                     const double a = a0 + da * (q + 0.5) / n;
                     subs.push_back({-mu, wrap_degrees(a - sun_azimuth_deg), 1.0 / (n * n)});
-                    add_unique(d.umu, -mu);
-                    add_unique(d.phi, wrap_degrees(a - sun_azimuth_deg));
+                    d.umu.push_back(-mu);
+                    d.phi.push_back(wrap_degrees(a - sun_azimuth_deg));
                 }
             }
             pending.push_back(std::move(subs));
@@ -214,7 +212,7 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
     for (long j = 0; j < up_cells; ++j) {
         const double a = 360.0 * static_cast<double>(j) / static_cast<double>(up_cells);
         d.up_azimuth_deg.push_back(a);
-        add_unique(d.phi, wrap_degrees(a - sun_azimuth_deg));
+        d.phi.push_back(wrap_degrees(a - sun_azimuth_deg));
     }
     sort_unique(d.umu);
     sort_unique(d.phi);

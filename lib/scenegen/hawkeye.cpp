@@ -449,28 +449,25 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
     // along every street edge that meets a lot).
     GdbBuilder& pav = ground;
     pav.object("pavement");
-    pav.part("streets");
-    for (int j = 0; j < cells; ++j)
-        for (int i = 0; i < cells; ++i)
-            if (at(i, j) == kStreet) {
-                const double r = kStreetRaiseM;
-                pav.facet({node(i, j, r), node(i + 1, j, r), node(i + 1, j + 1, r)}, m::kAsphalt,
-                          "street");
-                pav.facet({node(i, j, r), node(i + 1, j + 1, r), node(i, j + 1, r)}, m::kAsphalt,
-                          "street");
-                ++s.counts.street_cells;
-            }
-    pav.part("parking");
-    for (int j = 0; j < cells; ++j)
-        for (int i = 0; i < cells; ++i)
-            if (at(i, j) == kParking) {
-                const double r = kStreetRaiseM;
-                pav.facet({node(i, j, r), node(i + 1, j, r), node(i + 1, j + 1, r)}, m::kAsphalt,
-                          "parking");
-                pav.facet({node(i, j, r), node(i + 1, j + 1, r), node(i, j + 1, r)}, m::kAsphalt,
-                          "parking");
-                ++s.counts.parking_cells;
-            }
+    struct Paved {
+        int cell;
+        const char *part, *facet;
+        std::size_t* count;
+    };
+    for (const Paved& p : {Paved{kStreet, "streets", "street", &s.counts.street_cells},
+                           Paved{kParking, "parking", "parking", &s.counts.parking_cells}}) {
+        pav.part(p.part);
+        const double r = kStreetRaiseM;
+        for (int j = 0; j < cells; ++j)
+            for (int i = 0; i < cells; ++i)
+                if (at(i, j) == p.cell) {
+                    pav.facet({node(i, j, r), node(i + 1, j, r), node(i + 1, j + 1, r)},
+                              m::kAsphalt, p.facet);
+                    pav.facet({node(i, j, r), node(i + 1, j + 1, r), node(i, j + 1, r)},
+                              m::kAsphalt, p.facet);
+                    ++*p.count;
+                }
+    }
     pav.part("sidewalks");
     auto walk_point = [&](double x, double y) {
         return Vec3{x, y, t.height_m(x, y) + kSidewalkRaiseM};
