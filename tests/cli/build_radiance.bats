@@ -175,3 +175,39 @@ line_of() { sed -n "${2}p" "$1"; }
     run grep -c '^HEMISPHERE 18 36$' seed-3.rad
     assert_output 1
 }
+
+@test "the grid, solver and emission options have their documented effect" {
+    # --upwelled-azimuth-step 90: rings at |view angle| 0 and 10, four azimuths.
+    run -0 build_radiance "${QUICK[@]}" --upwelled-azimuth-step 90 "$HAWKEYE" "$DATA/small.snd" -o 'u-%d.rad'
+    run -0 grep -c '^UPWELLED 2 4$' u-1.rad
+    # --sky-subsamples 2 averages directions inside a cell: a different sky, same grid.
+    build_radiance --streams 8 --sky-zenith-step 15 --sky-azimuth-step 30 --sky-subsamples 2 \
+        "$HAWKEYE" "$DATA/small.snd" -o 's-%d.rad'
+    build_radiance "${QUICK[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'q-%d.rad'
+    run -0 grep -c '^HEMISPHERE 6 12$' s-1.rad
+    ! cmp -s s-1.rad q-1.rad
+    # --merge-tau 0 keeps every level: tau1 and L_us within 1e-3 of the merged solver.
+    build_radiance "${QUICK[@]}" --merge-tau 0 "$HAWKEYE" "$DATA/small.snd" -o 'm-%d.rad'
+    paste -d ' ' <(sed -n '13,27p' m-1.rad) <(sed -n '13,27p' q-1.rad) | awk '
+        NF == 8 { if (($4 / $8 - 1)^2 > 1e-6) bad = 1 }
+        NF == 6 { if ($3 > 0 && ($3 / $6 - 1)^2 > 1e-6) bad = 1 }
+        END { exit bad }'
+    # --thermal-from 0.4: layer emission is solved in the visible too (tiny, not zero).
+    build_radiance "${QUICK[@]}" --thermal-from 0.4 "$HAWKEYE" "$DATA/small.snd" -o 't-%d.rad'
+    awk 'NR == 17 { exit !($2 > 0) }' t-1.rad
+    awk 'NR == 17 { exit !($2 == 0) }' q-1.rad
+    # --top 50: a lower top of the atmosphere changes the sun's path, not the format.
+    build_radiance "${QUICK[@]}" --top 50 "$HAWKEYE" "$DATA/small.snd" -o 'p-%d.rad'
+    run -0 sigchain-check p-1.rad
+}
+
+@test "out-of-range grid and solver options are usage errors" {
+    run -2 --separate-stderr build_radiance --upwelled-azimuth-step 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"upwelled azimuth step must divide 360"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --merge-tau 2 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"--merge-tau must be in [0, 1]"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --top 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"--top must be > 0 km"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --sky-subsamples 9 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"sky subsamples must be 1 to 8"* ]] || fail "stderr: $stderr"
+}
