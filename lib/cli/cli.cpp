@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <new>
 
@@ -26,24 +28,50 @@ void Context::note(const std::string& message) const {
     if (m_verbosity >= 0) std::cerr << m_tool << ": " << message << '\n';
 }
 
-Progress::Progress(const Context& ctx, std::size_t total, std::string label)
-    : m_enabled(ctx.progress_enabled() && ctx.verbosity() >= 0 && total > 0),
-      m_total(total),
-      m_label(ctx.tool() + ": " + std::move(label)) {}
-
-Progress::~Progress() {
-    if (m_enabled && m_last_percent >= 0) std::cerr << '\n';
+std::string format_duration(double seconds) {
+    long s = seconds > 0 ? static_cast<long>(seconds + 0.5) : 0;
+    const long h = s / 3600, m = (s / 60) % 60;
+    s %= 60;
+    char buf[32];
+    if (h > 0)
+        std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", h, m, s);
+    else
+        std::snprintf(buf, sizeof buf, "%ld:%02ld", m, s);
+    return buf;
 }
 
-void Progress::update(std::size_t done) {
-    if (!m_enabled) return;
-    int percent =
-        static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(m_total));
-    if (percent == m_last_percent) return;
-    m_last_percent = percent;
-    int filled = percent / 5;
-    std::cerr << '\r' << m_label << " [" << std::string(filled, '#')
-              << std::string(20 - filled, ' ') << "] " << percent << '%' << std::flush;
+void Context::progress_update(const std::string& label, long done, long total) const {
+    if (!m_progress || m_verbosity < 0 || total <= 0) return;
+    std::lock_guard lock(m_mutex);
+    const auto now = std::chrono::steady_clock::now();
+    if (label != m_bar_label || m_bar_percent < 0) {
+        m_bar_label = label;
+        m_bar_start = now;
+        m_bar_percent = -1;
+        m_bar_seconds = -1;
+    }
+    const double fraction = std::clamp(static_cast<double>(done) / static_cast<double>(total), 0.0, 1.0);
+    const int percent = static_cast<int>(100.0 * fraction);
+    const double elapsed = std::chrono::duration<double>(now - m_bar_start).count();
+    const long whole_seconds = static_cast<long>(elapsed);
+    if (percent == m_bar_percent && whole_seconds == m_bar_seconds) return;
+    m_bar_percent = percent;
+    m_bar_seconds = whole_seconds;
+    const int filled = percent / 5;
+    std::cerr << '\r' << m_tool << ": " << label << " [" << std::string(filled, '#')
+              << std::string(20 - filled, ' ') << "] " << percent << "% "
+              << format_duration(elapsed);
+    // The time left, extrapolated from the rate so far once there is a rate to go by.
+    if (fraction > 0 && fraction < 1 && elapsed > 0.5)
+        std::cerr << ", " << format_duration(elapsed * (1 - fraction) / fraction) << " left";
+    std::cerr << "\x1b[K" << std::flush;
+}
+
+void Context::progress_finish(const std::string& label) const {
+    std::lock_guard lock(m_mutex);
+    if (label == m_bar_label && m_bar_percent >= 0) std::cerr << '\n';
+    m_bar_label.clear();
+    m_bar_percent = -1;
 }
 
 Cli::Cli(ToolInfo info) : m_info(std::move(info)), m_options("Options"), m_hidden("hidden") {
@@ -65,6 +93,20 @@ void Cli::add_positional(const char* name, int count, const char* help) {
 void Cli::add_output_option(const std::string& default_value) {
     m_options.add_options()("output,o", po::value<std::string>()->default_value(default_value),
                             "write to FILE ('-' is standard output)");
+}
+
+void Cli::add_required_output_option(const char* value_name, const char* help) {
+    m_options.add_options()("output,o", po::value<std::string>()->value_name(value_name), help);
+}
+
+void Cli::add_threads_option() {
+    m_options.add_options()("threads", po::value<unsigned>()->default_value(0)->value_name("N"),
+                            "worker threads (0: all cores); outputs do not depend on it");
+}
+
+void Cli::add_seed_option(const char* help) {
+    m_options.add_options()("seed", po::value<std::uint64_t>()->default_value(1)->value_name("N"),
+                            help);
 }
 
 void Cli::print_help() const {
@@ -122,5 +164,14 @@ std::vector<std::string> args(const po::variables_map& vm, const char* name) {
     if (!vm.count(name)) return {};
     return vm[name].as<std::vector<std::string>>();
 }
+
+std::string output_path(const po::variables_map& vm) {
+    if (!vm.count("output")) throw UsageError("-o FILE is required");
+    return vm["output"].as<std::string>();
+}
+
+unsigned threads(const po::variables_map& vm) { return vm["threads"].as<unsigned>(); }
+
+std::uint64_t seed(const po::variables_map& vm) { return vm["seed"].as<std::uint64_t>(); }
 
 }  // namespace sigchain::cli

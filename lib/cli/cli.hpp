@@ -8,46 +8,52 @@
 #pragma once
 
 #include <boost/program_options.hpp>
+#include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
+
+#include "core/report.hpp"
 
 namespace sigchain::cli {
 
 namespace po = boost::program_options;
 
-// Messages and progress for one tool run. Messages go to stderr as "TOOL: message".
-class Context {
+// The reporter of one tool run, built by Cli::run from -q, -v and --progress: messages
+// go to stderr as "TOOL: message", progress as a bar with the elapsed time and an
+// estimate of the time left ("TOOL: rendering [#####     ] 25% 0:12, 0:36 left"),
+// drawn only on a terminal or with --progress, never when quiet.
+class Context final : public Reporter {
 public:
     Context(std::string tool, int verbosity, bool progress);
     const std::string& tool() const { return m_tool; }
     // -1 quiet, 0 normal, 1+ verbose.
     int verbosity() const { return m_verbosity; }
     bool progress_enabled() const { return m_progress; }
-    void warn(const std::string& message) const;  // "TOOL: warning: message" unless quiet
-    void info(const std::string& message) const;  // "TOOL: message" when verbose
-    void note(const std::string& message) const;  // "TOOL: message" unless quiet
+    void warn(const std::string& message) const override;  // "TOOL: warning: message" unless quiet
+    void info(const std::string& message) const override;  // "TOOL: message" when verbose
+    void note(const std::string& message) const override;  // "TOOL: message" unless quiet
+    bool verbose() const override { return m_verbosity >= 1; }
+    void progress_update(const std::string& label, long done, long total) const override;
+    void progress_finish(const std::string& label) const override;
 
 private:
     std::string m_tool;
     int m_verbosity;
     bool m_progress;
+    // The bar being drawn (one at a time).
+    mutable std::mutex m_mutex;
+    mutable std::string m_bar_label;
+    mutable std::chrono::steady_clock::time_point m_bar_start;
+    mutable int m_bar_percent = -1;
+    mutable long m_bar_seconds = -1;
 };
 
-// A progress bar on stderr, drawn only when the context enables progress.
-class Progress {
-public:
-    Progress(const Context& ctx, std::size_t total, std::string label);
-    ~Progress();
-    void update(std::size_t done);
-
-private:
-    bool m_enabled;
-    std::size_t m_total;
-    std::string m_label;
-    int m_last_percent = -1;
-};
+// "M:SS" or "H:MM:SS" for a duration in seconds (progress bars).
+std::string format_duration(double seconds);
 
 struct ToolInfo {
     std::string name;     // binary name
@@ -64,8 +70,17 @@ public:
     po::options_description_easy_init add_options() { return m_options.add_options(); }
     // A positional argument: `count` 1 for one, -1 for the rest.
     void add_positional(const char* name, int count, const char* help);
-    // Adds -o/--output FILE with the given default ("-" means stdout).
+    // The shared options: defined here once, with one meaning in every tool.
+    // -o/--output FILE, default standard output ("-").
     void add_output_option(const std::string& default_value = "-");
+    // -o/--output FILE (or PATTERN) with no default: the tool fails with a usage
+    // error when it is missing (output_path() checks).
+    void add_required_output_option(const char* value_name = "FILE", const char* help =
+                                        "write to FILE ('-' is standard output); required");
+    // --threads N: worker threads, 0 (the default) every core; outputs never depend on it.
+    void add_threads_option();
+    // --seed N: the seed of every random choice (default 1); outputs depend only on it.
+    void add_seed_option(const char* help = "seed of the random numbers (default 1)");
 
     // Parses argv and runs `body`; returns the process exit status.
     int run(int argc, char** argv,
@@ -82,6 +97,11 @@ private:
 
 // The values of a positional argument (empty if absent).
 std::vector<std::string> args(const po::variables_map& vm, const char* name);
+
+// The shared options' values (the options must have been added).
+std::string output_path(const po::variables_map& vm);  // UsageError if -o is required and missing
+unsigned threads(const po::variables_map& vm);
+std::uint64_t seed(const po::variables_map& vm);
 
 // Whether standard error is a terminal (progress bars default on only then).
 bool stderr_is_terminal();

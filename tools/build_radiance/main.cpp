@@ -84,8 +84,8 @@ int main(int argc, char** argv) {
 
         long total = 0;
         for (const auto& b : snd.bands) total += b.sample_count();
-        cli::Progress bar(ctx, static_cast<std::size_t>(total), "build_radiance");
-        o.progress = [&](long done, long) { bar.update(static_cast<std::size_t>(done)); };
+        sigchain::ProgressScope bar(ctx, "spectral samples");
+        o.progress = bar.callback();
         const auto start = std::chrono::steady_clock::now();
         atmos::RadianceReport report;
         const auto rads = atmos::build_radiance(deck, snd, o, &report);

@@ -39,14 +39,11 @@ int shadow_history(const cli::po::variables_map& vm, cli::Context& ctx) {
     job.options.seed = vm["seed"].as<std::uint64_t>();
     job.options.threads = vm["threads"].as<unsigned>();
     job.allow_degenerate = vm.count("allow-degenerate") > 0;
-    std::optional<cli::Progress> bar;
+    sigchain::ProgressScope bar(ctx, "shadow history");
     trace::ShadowHooks hooks;
     hooks.warn = [&ctx](const std::string& m) { ctx.warn(m); };
     hooks.info = [&ctx](const std::string& m) { ctx.info(m); };
-    hooks.progress = [&](long done, long total) {
-        if (!bar) bar.emplace(ctx, static_cast<std::size_t>(total), "shadow history");
-        bar->update(static_cast<std::size_t>(done));
-    };
+    hooks.progress = bar.callback();
     trace::run_shadow_history(job, hooks);
     return 0;
 }
@@ -126,14 +123,11 @@ int main(int argc, char** argv) {
         job.allow_degenerate = vm.count("allow-degenerate") > 0;
         job.golfball_jitter = vm.count("golfball-jitter") > 0;
 
-        std::optional<cli::Progress> bar;
+        sigchain::ProgressScope bar(ctx, "rendering");
         trace::TraceHooks hooks;
         hooks.warn = [&ctx](const std::string& m) { ctx.warn(m); };
         hooks.info = [&ctx](const std::string& m) { ctx.info(m); };
-        hooks.progress = [&](long done, long total) {
-            if (!bar) bar.emplace(ctx, static_cast<std::size_t>(total), "rendering");
-            bar->update(static_cast<std::size_t>(done));
-        };
+        hooks.progress = bar.callback();
         trace::run_trace(job, hooks);
         return 0;
     });

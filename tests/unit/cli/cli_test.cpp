@@ -19,11 +19,16 @@ struct Result {
 };
 
 // Runs a Cli named "tool" with `args` and `body`, capturing stdout and stderr.
+// `configure` adds options instead of the default -o.
 Result run(std::vector<std::string> args,
-           std::function<int(const po::variables_map&, cli::Context&)> body) {
+           std::function<int(const po::variables_map&, cli::Context&)> body,
+           const std::function<void(cli::Cli&)>& configure = {}) {
     cli::Cli c({"tool", "Does a thing.", "[OPTIONS] FILE"});
     c.add_positional("file", -1, "input files");
-    c.add_output_option();
+    if (configure)
+        configure(c);
+    else
+        c.add_output_option();
     args.insert(args.begin(), "tool");
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
@@ -96,17 +101,55 @@ TEST(Cli, QuietSilencesWarnings) {
 
 TEST(Cli, ProgressOnlyWhenEnabled) {
     auto off = run({"a"}, [](const auto&, cli::Context& ctx) {
-        cli::Progress p(ctx, 10, "tracing");
-        p.update(5);
+        sigchain::ProgressScope p(ctx, "tracing");
+        p.callback()(5, 10);
         return 0;
     });
     // Under the test runner stderr is not a terminal: nothing is drawn.
     EXPECT_EQ(off.err, "");
     auto on = run({"--progress", "a"}, [](const auto&, cli::Context& ctx) {
-        cli::Progress p(ctx, 10, "tracing");
-        p.update(5);
+        sigchain::ProgressScope p(ctx, "tracing");
+        p.callback()(5, 10);
         return 0;
     });
     EXPECT_NE(on.err.find("tool: tracing ["), std::string::npos);
-    EXPECT_NE(on.err.find("50%"), std::string::npos);
+    EXPECT_NE(on.err.find("50% 0:00"), std::string::npos);
+    // The scope ends the line.
+    EXPECT_EQ(on.err.back(), '\n');
+    auto quiet = run({"--progress", "-q", "a"}, [](const auto&, cli::Context& ctx) {
+        sigchain::ProgressScope p(ctx, "tracing");
+        p.callback()(5, 10);
+        return 0;
+    });
+    EXPECT_EQ(quiet.err, "");
+}
+
+TEST(Cli, DurationsAsClockTimes) {
+    EXPECT_EQ(cli::format_duration(0), "0:00");
+    EXPECT_EQ(cli::format_duration(59.4), "0:59");
+    EXPECT_EQ(cli::format_duration(61), "1:01");
+    EXPECT_EQ(cli::format_duration(3600 + 125), "1:02:05");
+    EXPECT_EQ(cli::format_duration(-3), "0:00");
+}
+
+TEST(Cli, SharedOptionsMeanTheSameEverywhere) {
+    auto r = run({"--threads", "3", "--seed", "42", "-o", "x", "a"},
+                 [](const auto& vm, cli::Context&) {
+                     EXPECT_EQ(cli::threads(vm), 3u);
+                     EXPECT_EQ(cli::seed(vm), 42u);
+                     EXPECT_EQ(cli::output_path(vm), "x");
+                     return 0;
+                 },
+                 [](cli::Cli& c) {
+                     c.add_threads_option();
+                     c.add_seed_option();
+                     c.add_required_output_option();
+                 });
+    EXPECT_EQ(r.status, 0);
+    auto missing = run({"a"}, [](const auto& vm, cli::Context&) {
+        (void)cli::output_path(vm);
+        return 0;
+    }, [](cli::Cli& c) { c.add_required_output_option(); });
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_NE(missing.err.find("-o FILE is required"), std::string::npos);
 }
