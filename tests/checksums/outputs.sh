@@ -80,17 +80,26 @@ run_full() {
         make -s -C "$src/data/scenes/hawkeye" --no-print-directory -j2 SIGCHAIN_BIN="$bin" \
             VIEW=$view OUT="$out/hawkeye/$view" "$flags" TRACE_FLAGS="-q $topt" >/dev/null
     done
-    # make demo writes into BUILD/demo; copy what it made.
-    (cd "$src" && scripts/demo "$build" >/dev/null 2>&1)
-    mkdir -p "$out/demo"
-    (cd "$src/$build" 2>/dev/null || cd "$build"; tar cf - demo) | (cd "$out" && tar xf -)
+    # make demo writes into BUILD/demo (made afresh here); copy what it made.
+    rm -rf "$build/demo"
+    (cd "$src" && scripts/demo "$build" >/dev/null)
+    (cd "$build" && tar cf - demo) | (cd "$out" && tar xf -)
 }
 
-# sums OUT: "SHA256  FILE" for every file under OUT, sorted.
+# sums OUT: "SHA256  FILE" for every file under OUT, sorted. Some outputs name the
+# files they were made from (compare's reports, the Olinda fit's .ems comments), whose
+# paths contain OUT (or BUILD, for make demo's): in a file that holds either, they are
+# replaced by "OUT" and "BUILD" before hashing, so that runs into different folders
+# compare equal.
 sums() {
     (cd "$1" && find . -type f ! -name '*.stamp' -print | sed 's|^\./||' | LC_ALL=C sort |
         while IFS= read -r f; do
-            printf '%s  %s\n' "$(sha256sum < "$f" | cut -d' ' -f1)" "$f"
+            if grep -qF -e "$1" -e "$build" "$f"; then
+                sum=$(sed -e "s|$1|OUT|g" -e "s|$build|BUILD|g" "$f" | sha256sum | cut -d' ' -f1)
+            else
+                sum=$(sha256sum < "$f" | cut -d' ' -f1)
+            fi
+            printf '%s  %s\n' "$sum" "$f"
         done)
 }
 
@@ -106,6 +115,11 @@ while [ $# -gt 0 ]; do
 done
 [ $# -eq 2 ] || { echo "usage: outputs.sh [--full] [--threads N] [--check MANIFEST] BUILD OUTDIR" >&2; exit 2; }
 build="$(cd "$1" && pwd)" out="$2"
+# Make skips what is up to date: a folder holding an earlier run would hide changes.
+if [ -d "$out" ] && [ -n "$(ls -A "$out")" ]; then
+    echo "outputs.sh: $out is not empty: give an empty or new folder" >&2
+    exit 2
+fi
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 
