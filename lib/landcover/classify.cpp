@@ -10,10 +10,14 @@ namespace sigchain::landcover {
 
 const char* class_name(LandCover c) {
     switch (c) {
-        case LandCover::Water: return "water";
-        case LandCover::Vegetation: return "vegetation";
-        case LandCover::Urban: return "urban";
-        case LandCover::Sand: return "sand";
+        case LandCover::Water:
+            return "water";
+        case LandCover::Vegetation:
+            return "vegetation";
+        case LandCover::Urban:
+            return "urban";
+        case LandCover::Sand:
+            return "sand";
     }
     return "?";
 }
@@ -28,8 +32,12 @@ LandCover classify_pixel(const EtmPixel& p, const Rule& rule) {
     return LandCover::Urban;
 }
 
-std::vector<int> classify_raster(const GeoRaster& etm, const Rule& rule) {
-    if (etm.bands < 5) throw DataError({"", 0}, "classification needs ETM+ bands 1-5");
+std::vector<int> classify_raster(const geo::GeoRaster& etm, const Rule& rule,
+                                 const std::string& path) {
+    // A raster has no lines: the error names the file alone.
+    if (etm.bands < 5)
+        throw DataError({path, 0},
+                        "classification needs ETM+ bands 1-5, found " + std::to_string(etm.bands));
     std::vector<int> out(static_cast<std::size_t>(etm.rows) * etm.columns);
     for (long r = 0; r < etm.rows; ++r)
         for (long c = 0; c < etm.columns; ++c) {

@@ -5,9 +5,10 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
-#include "landcover/raster.hpp"
+#include "geo/raster.hpp"
 
 namespace sigchain::landcover {
 
@@ -37,9 +38,11 @@ struct Rule {
 
 LandCover classify_pixel(const EtmPixel& p, const Rule& rule);
 
-// Classifies an ETM+ raster with at least 5 bands (band order 1, 2, 3, 4, 5, ...).
-// Returns rows * columns class numbers, row-major. Throws DataError for < 5 bands.
-std::vector<int> classify_raster(const GeoRaster& etm, const Rule& rule);
+// Classifies an ETM+ raster with at least 5 bands (band order 1, 2, 3, 4, 5, ...) read
+// from `path`. Returns rows * columns class numbers, row-major. Throws DataError
+// (naming `path`) for < 5 bands.
+std::vector<int> classify_raster(const geo::GeoRaster& etm, const Rule& rule,
+                                 const std::string& path);
 
 // Fraction of each class (index 0 = class 1) among the given class numbers.
 std::array<double, kClassCount> class_fractions(const std::vector<int>& classes);

@@ -8,11 +8,14 @@
 #include <memory>
 
 #include "core/error.hpp"
-#include "image/gdal.hpp"
+#include "geo/crs.hpp"
 
 namespace sigchain::scenegen {
 
 namespace {
+
+// The errors in this file name the file without a line: a GeoPackage (SQLite) or other
+// OGR source has no lines. They name the feature (its fid) where there is one.
 
 struct DatasetCloser {
     void operator()(GDALDataset* ds) const { GDALClose(ds); }
@@ -45,10 +48,10 @@ void check_crs(const OGRLayer& layer, const std::string& path, std::string& name
 }  // namespace
 
 Footprints read_footprints(const std::string& path) {
-    image::gdal_init();
+    geo::gdal_init();
     std::unique_ptr<GDALDataset, DatasetCloser> ds(static_cast<GDALDataset*>(
         GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
-    if (!ds) throw IoError(path + ": " + image::gdal_message());
+    if (!ds) throw IoError(path + ": " + geo::gdal_message());
     if (ds->GetLayerCount() < 1) throw DataError({path, 0}, "expected a vector layer, found none");
     OGRLayer* layer = ds->GetLayer(0);
     Footprints out;

@@ -1,18 +1,12 @@
-// The hawkeye scene generator: see hawkeye.hpp. Layout after seed sections 4.1-4.2;
-// sizes not given by the seed are plausible values, stated where they are chosen.
+// The hawkeye scene generator: see hawkeye.hpp. Layout after White (1996), sections
+// 4.1-4.2; sizes it does not give are plausible values, stated where they are chosen.
 #include "scenegen/hawkeye.hpp"
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
 
-#include "core/error.hpp"
-#include "scenegen/extrude.hpp"
+#include "core/output.hpp"
+#include "scenegen/hawkeye_meshes.hpp"
 
 namespace sigchain::scenegen {
 
@@ -93,206 +87,103 @@ HawkeyeTerrain hawkeye_terrain(std::uint64_t seed) {
 
 namespace {
 
-using io::Vec3;
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-// Builds .gdb objects: facets numbered N-P-F within their part, normals from the
-// vertex order (counter-clockwise seen from the front).
-class GdbBuilder {
-public:
-    io::Gdb gdb;
-    void object(const std::string& name) {
-        const std::string n = std::to_string(gdb.objects.size() + 1);
-        gdb.objects.push_back({name, n + "-0-0", {}, 0});
-    }
-    void part(const std::string& name) {
-        auto& o = gdb.objects.back();
-        const std::string id =
-            std::to_string(gdb.objects.size()) + "-" + std::to_string(o.parts.size() + 1) + "-0";
-        o.parts.push_back({name, id, {}, 0});
-    }
-    void facet(std::vector<Vec3> v, long material, const std::string& name) {
-        auto& o = gdb.objects.back();
-        auto& p = o.parts.back();
-        Vec3 a{0, 0, 0};  // Newell's normal
-        for (std::size_t i = 0; i < v.size(); ++i) {
-            const auto c = cross(v[i], v[(i + 1) % v.size()]);
-            for (int k = 0; k < 3; ++k) a[k] += c[k];
-        }
-        const double len = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        if (!(len > 0)) return;  // degenerate: skipped
-        io::GdbFacet f;
-        f.name = name;
-        f.id = std::to_string(gdb.objects.size()) + "-" + std::to_string(o.parts.size()) + "-" +
-               std::to_string(p.facets.size() + 1);
-        f.material_name = material_name(material);
-        f.material_id = material;
-        f.legacy_name = p.name;
-        f.temperature_c = -1;
-        f.thickness_cm = -1;
-        f.vertices = std::move(v);
-        f.normal = {a[0] / len, a[1] / len, a[2] / len};
-        const double h = std::hypot(f.normal[0], f.normal[1]);
-        // Slope zenith from +z; azimuth clockwise from north (gdb(5)).
-        f.slope_zenith_deg = std::atan2(h, f.normal[2]) * 180.0 / M_PI;
-        f.slope_azimuth_deg = h > 0 ? std::atan2(f.normal[0], f.normal[1]) * 180.0 / M_PI : 0.0;
-        f.spare = "null";
-        p.facets.push_back(std::move(f));
-    }
-    // An axis-aligned box from (x0, y0, z0) to (x1, y1, z1): top and four sides
-    // (no bottom: it stands on or in the ground).
-    void box(double x0, double y0, double z0, double x1, double y1, double z1, long top,
-             long sides) {
-        facet({{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}, top, "top");
-        facet({{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}, sides, "south side");
-        facet({{x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}}, sides, "east side");
-        facet({{x1, y1, z0}, {x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}}, sides, "north side");
-        facet({{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}, sides, "west side");
-    }
-    static std::string material_name(long id) {
-        static const char* names[] = {
-            "",     "grass",        "water",         "asphalt",   "concrete", "tree canopy",
-            "bark", "shingle dark", "shingle brown", "flat roof", "brick"};
-        if (id >= 1 && id <= 10) return names[id];
-        return "siding " + std::to_string(id - m::kSidingFirst + 1);
-    }
-};
-
-// House meshes: 10 m (x) by 8 m (y) footprints about the origin, front to -y, walls
-// from 1 m below the ground (they sink into slopes) to 6 m, ridge at 10.5 m (the seed's
-// houses are 33-37 ft = 10.1-11.3 m high). Type 0 "fancy house" (gable roof and a
-// porch), 1 "house 1" (gable roof), 2 "house 2" (hip roof).
-constexpr double kHouseHalfX = 5, kHouseHalfY = 4, kHouseBase = -1, kEave = 6, kRidge = 10.5;
-
-io::Gdb house_gdb(int type, long siding, long roof) {
-    GdbBuilder b;
-    const double x = kHouseHalfX, y = kHouseHalfY, z0 = kHouseBase, e = kEave, r = kRidge;
-    b.object(type == 0 ? "fancy house" : type == 1 ? "house 1" : "house 2");
-    b.part("walls");
-    b.facet({{-x, -y, z0}, {x, -y, z0}, {x, -y, e}, {-x, -y, e}}, siding, "front wall");
-    b.facet({{x, -y, z0}, {x, y, z0}, {x, y, e}, {x, -y, e}}, siding, "east wall");
-    b.facet({{x, y, z0}, {-x, y, z0}, {-x, y, e}, {x, y, e}}, siding, "back wall");
-    b.facet({{-x, y, z0}, {-x, -y, z0}, {-x, -y, e}, {-x, y, e}}, siding, "west wall");
-    b.part("roof");
-    if (type == 2) {  // hip roof: ridge along x, 3 m in from each end
-        const double rx = x - 3;
-        b.facet({{-x, -y, e}, {x, -y, e}, {rx, 0, r}, {-rx, 0, r}}, roof, "front roof");
-        b.facet({{x, y, e}, {-x, y, e}, {-rx, 0, r}, {rx, 0, r}}, roof, "back roof");
-        b.facet({{x, -y, e}, {x, y, e}, {rx, 0, r}}, roof, "east hip");
-        b.facet({{-x, y, e}, {-x, -y, e}, {-rx, 0, r}}, roof, "west hip");
-    } else {  // gable roof: ridge along x, gable walls in the siding
-        b.facet({{-x, -y, e}, {x, -y, e}, {x, 0, r}, {-x, 0, r}}, roof, "front roof");
-        b.facet({{x, y, e}, {-x, y, e}, {-x, 0, r}, {x, 0, r}}, roof, "back roof");
-        b.facet({{x, -y, e}, {x, y, e}, {x, 0, r}}, siding, "east gable");
-        b.facet({{-x, y, e}, {-x, -y, e}, {-x, 0, r}}, siding, "west gable");
-    }
-    if (type == 0) {  // porch: 6 m by 2.5 m in front, 3 m high, roof sloping forward
-        b.part("porch");
-        const double px = 3, py0 = -y - 2.5, h = 3.0, hf = 2.6;
-        b.facet({{-px, py0, z0}, {px, py0, z0}, {px, py0, hf}, {-px, py0, hf}}, siding,
-                "porch front");
-        b.facet({{px, py0, z0}, {px, -y, z0}, {px, -y, h}, {px, py0, hf}}, siding, "porch east");
-        b.facet({{-px, -y, z0}, {-px, py0, z0}, {-px, py0, hf}, {-px, -y, h}}, siding,
-                "porch west");
-        b.facet({{-px, py0, hf}, {px, py0, hf}, {px, -y, h}, {-px, -y, h}}, roof, "porch roof");
-    }
-    return b.gdb;
-}
-
-// Garage: 6 m by 6 m, 3 m high, flat roof in the roof colour.
-io::Gdb garage_gdb(long siding, long roof) {
-    GdbBuilder b;
-    b.object("garage");
-    b.part("garage");
-    b.box(-3, -3, kHouseBase, 3, 3, 3, roof, siding);
-    return b.gdb;
-}
-
-// Tree: 20 facets (the seed's budget, 4.2.3.1 TREES): a trunk of four quads 0.4 m wide
-// from 0.5 m below the ground to 3 m, and a crown of 16 triangles (an octagonal
-// bipyramid from 2.5 m to 11 m, 3.5 m in radius at 6 m).
-io::Gdb tree_gdb() {
-    GdbBuilder b;
-    b.object("tree");
-    b.part("trunk");
-    const double t = 0.2;
-    b.box(-t, -t, -0.5, t, t, 3, m::kBark, m::kBark);
-    auto& trunk = b.gdb.objects.back().parts.back().facets;
-    trunk.erase(trunk.begin());  // the top is inside the crown
-    for (std::size_t k = 0; k < trunk.size(); ++k) trunk[k].id = "1-1-" + std::to_string(k + 1);
-    b.part("crown");
-    const double rc = 3.5, zc = 6, zb = 2.5, zt = 11;
-    for (int k = 0; k < 8; ++k) {
-        const double a0 = k * M_PI / 4, a1 = (k + 1) * M_PI / 4;
-        const Vec3 p{rc * std::cos(a0), rc * std::sin(a0), zc};
-        const Vec3 q{rc * std::cos(a1), rc * std::sin(a1), zc};
-        b.facet({p, q, {0, 0, zt}}, m::kCanopy, "crown top");
-        b.facet({q, p, {0, 0, zb}}, m::kCanopy, "crown bottom");
-    }
-    return b.gdb;
-}
-
-// Vehicle: a box 4.6 m by 1.8 m by 1.45 m (a sedan's size; the seed's three vehicles
-// are not given), long axis along x, standing from 0.
-io::Gdb vehicle_gdb(long paint) {
-    GdbBuilder b;
-    b.object("vehicle");
-    b.part("body");
-    b.box(-2.3, -0.9, 0, 2.3, 0.9, 1.45, paint, paint);
-    return b.gdb;
-}
+using geo::Vec3;
+using namespace hawkeye_detail;
 
 enum Cell : unsigned char { kLot, kStreet, kGorge, kWater, kPlant, kParking };
-
-io::OdbInstance place(double x, double y, double z, double s = 1, double rz = 0) {
-    io::OdbInstance in;
-    in.translation = {x, y, z};
-    in.scale = {s, s, s};
-    in.rotation_deg = {0, 0, rz};
-    return in;
-}
-
-std::size_t triangles(const io::Gdb& g) {
-    std::size_t n = 0;
-    for (const auto& o : g.objects)
-        for (const auto& p : o.parts)
-            for (const auto& f : p.facets) n += f.vertices.size() - 2;
-    return n;
-}
 
 // The street grid: E-W streets on rows j with j % 9 == 4, N-S streets on columns i
 // with i % 12 == 5 (blocks of 80 m by 110 m between 10 m streets, a plausible
 // Rochester residential grid), outside the gorge.
 constexpr int kRowPeriod = 9, kRowStreet = 4, kColPeriod = 12, kColStreet = 5;
 
-}  // namespace
+// The plant (White (1996), section 4.1: the Hawkeye plant on the east side of the
+// river): 300 m by 50 m, 18 m high, north-south.
+constexpr double kPlantHalfX = 25, kPlantHalfY = 150, kPlantHeight = 18;
 
-HawkeyeScene hawkeye_scene(std::uint64_t seed) {
-    HawkeyeScene s;
-    s.seed = seed;
-    s.terrain = hawkeye_terrain(seed);
-    const HawkeyeTerrain& t = s.terrain;
-    SplitMix64 rng(seed ^ 0x6861776b657965ULL);  // "hawkeye"
-    const int cells = t.nodes - 1;
-    const double g = t.spacing_m;
-    auto cx = [&](int i) { return t.origin_m + g * (i + 0.5); };  // cell centre
-    auto cell_of = [&](double v) { return static_cast<int>(std::floor((v - t.origin_m) / g)); };
+// The generator's working state: the land use of every terrain cell, the two files
+// built in place (terrain with pavement; larger buildings) and the places of the
+// instanced meshes. Its steps draw from one generator in a fixed order.
+struct Layout {
+    const HawkeyeTerrain& t;
+    HawkeyeCounts& counts;
+    SplitMix64 rng;
+    int cells;
+    double g;
+    double plant_x = 0, plant_y = 0;
+    int bridge_row = 0;
+    std::vector<Cell> use;
+    GdbBuilder ground, big;
+    std::vector<std::vector<io::OdbInstance>> house_places, garage_places, vehicle_places;
+    std::vector<io::OdbInstance> tree_places;
 
-    // The plant (seed 4.1: the Hawkeye plant on the east side of the river): 300 m by
-    // 50 m, 18 m high, north-south, 150-200 m east of the gorge's rim.
-    const double plant_x = t.gorge_centre_m(0) + kGorgeRimHalfWidthM + rng.uniform(150, 200);
-    const double plant_y = rng.uniform(-80, 80), plant_hx = 25, plant_hy = 150, plant_h = 18;
-    // The bridge (the Driving Park bridge, bottom centre of the scene): on the street
-    // row nearest 380 m south of the centre.
-    int bridge_row = cell_of(-380);
+    Layout(const HawkeyeTerrain& terrain, HawkeyeCounts& c, std::uint64_t seed)
+        : t(terrain),
+          counts(c),
+          rng(seed ^ 0x6861776b657965ULL),  // "hawkeye"
+          cells(terrain.nodes - 1),
+          g(terrain.spacing_m),
+          use(static_cast<std::size_t>(cells) * cells, kLot),
+          house_places(3 * m::kColours),
+          garage_places(m::kColours),
+          vehicle_places(m::kColours) {}
+
+    double cx(int i) const { return t.origin_m + g * (i + 0.5); }  // cell centre
+    int cell_of(double v) const { return static_cast<int>(std::floor((v - t.origin_m) / g)); }
+    Cell& at(int i, int j) { return use[static_cast<std::size_t>(j) * cells + i]; }
+    bool in_grid(int i, int j) const { return i >= 0 && j >= 0 && i < cells && j < cells; }
+    bool is(int i, int j, Cell c) { return in_grid(i, j) && at(i, j) == c; }
+
+    // Whether a rectangle lies on lot cells: its corners and points at most 5 m apart.
+    bool lot_ok(double x0, double y0, double x1, double y1) {
+        const int ny = 1 + static_cast<int>(std::ceil((y1 - y0) / 5)),
+                  nx = 1 + static_cast<int>(std::ceil((x1 - x0) / 5));
+        for (int a = 0; a <= ny; ++a)
+            for (int b = 0; b <= nx; ++b) {
+                const double x = x0 + (x1 - x0) * b / nx, y = y0 + (y1 - y0) * a / ny;
+                const int i = cell_of(x), j = cell_of(y);
+                if (!in_grid(i, j) || at(i, j) != kLot) return false;
+            }
+        return true;
+    }
+    // The lowest terrain height at a rectangle's corners.
+    double base_z(double x0, double y0, double x1, double y1) const {
+        return std::min(
+            {t.height_m(x0, y0), t.height_m(x1, y0), t.height_m(x1, y1), t.height_m(x0, y1)});
+    }
+    void add_big(const std::string& name, double x0, double y0, double x1, double y1, double h) {
+        const double z = base_z(x0, y0, x1, y1);
+        big.object(name);
+        big.part("building");
+        big.box(x0, y0, z - 1, x1, y1, z + h, m::kFlatRoof, m::kBrick);
+    }
+    Vec3 node(int i, int j, double raise) const {
+        return Vec3{t.node_x(i), t.node_x(j), t.node_z(i, j) + raise};
+    }
+
+    void choose_sites();
+    void classify_cells();
+    void terrain_facets();
+    bool commercial_block(int bi, int bj, double x0, double y0, double x1);
+    void residential_lot(int side, int k, double x0, double y0, double y1);
+    void blocks();
+    void plant_and_bridge();
+    void pavement();
+    void sidewalks();
+    void vehicles();
+    void forest();
+};
+
+// The plant 150-200 m east of the gorge's rim; the bridge (the Driving Park bridge,
+// bottom centre of the scene) on the street row nearest 380 m south of the centre.
+void Layout::choose_sites() {
+    plant_x = t.gorge_centre_m(0) + kGorgeRimHalfWidthM + rng.uniform(150, 200);
+    plant_y = rng.uniform(-80, 80);
+    bridge_row = cell_of(-380);
     while (bridge_row % kRowPeriod != kRowStreet) ++bridge_row;
+}
 
-    std::vector<Cell> use(static_cast<std::size_t>(cells) * cells, kLot);
-    auto at = [&](int i, int j) -> Cell& { return use[static_cast<std::size_t>(j) * cells + i]; };
-    auto in_grid = [&](int i, int j) { return i >= 0 && j >= 0 && i < cells && j < cells; };
+void Layout::classify_cells() {
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
             double wmax = 0, wmin = 1;
@@ -307,190 +198,170 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
                 at(i, j) = kWater;
             else if (wmax > 0 || d < kGorgeRimHalfWidthM + 10)  // a 10 m verge at the rim
                 at(i, j) = kGorge;
-            else if (std::abs(cx(i) - plant_x) < plant_hx + 20 &&
-                     std::abs(cx(j) - plant_y) < plant_hy + 20)
+            else if (std::abs(cx(i) - plant_x) < kPlantHalfX + 20 &&
+                     std::abs(cx(j) - plant_y) < kPlantHalfY + 20)
                 at(i, j) = kPlant;
             else if (j % kRowPeriod == kRowStreet || i % kColPeriod == kColStreet)
                 at(i, j) = kStreet;
         }
+}
 
-    GdbBuilder ground;
+void Layout::terrain_facets() {
     ground.object("terrain");
     ground.part("ground");
-    auto node = [&](int i, int j, double raise) {
-        return Vec3{t.node_x(i), t.node_x(j), t.node_z(i, j) + raise};
-    };
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
             const long mat = at(i, j) == kWater ? m::kWater : m::kGrass;
             ground.facet({node(i, j, 0), node(i + 1, j, 0), node(i + 1, j + 1, 0)}, mat, "ground");
             ground.facet({node(i, j, 0), node(i + 1, j + 1, 0), node(i, j + 1, 0)}, mat, "ground");
         }
+}
 
-    // Houses, garages, larger buildings and parking lots, block by block. A block is
-    // the lot cells between two street rows and two street columns.
-    std::vector<std::vector<io::OdbInstance>> house_places(3 * m::kColours),
-        garage_places(m::kColours), vehicle_places(m::kColours);
-    std::vector<io::OdbInstance> tree_places;
-    GdbBuilder big;
-    auto lot_ok = [&](double x0, double y0, double x1, double y1) {
-        // Corners and points at most 5 m apart.
-        const int ny = 1 + static_cast<int>(std::ceil((y1 - y0) / 5)),
-                  nx = 1 + static_cast<int>(std::ceil((x1 - x0) / 5));
-        for (int a = 0; a <= ny; ++a)
-            for (int b = 0; b <= nx; ++b) {
-                const double x = x0 + (x1 - x0) * b / nx, y = y0 + (y1 - y0) * a / ny;
-                const int i = cell_of(x), j = cell_of(y);
-                if (!in_grid(i, j) || at(i, j) != kLot) return false;
-            }
-        return true;
-    };
-    auto base_z = [&](double x0, double y0, double x1, double y1) {
-        return std::min(
-            {t.height_m(x0, y0), t.height_m(x1, y0), t.height_m(x1, y1), t.height_m(x0, y1)});
-    };
-    auto add_big = [&](const std::string& name, double x0, double y0, double x1, double y1,
-                       double h) {
-        const double z = base_z(x0, y0, x1, y1);
-        big.object(name);
-        big.part("building");
-        big.box(x0, y0, z - 1, x1, y1, z + h, m::kFlatRoof, m::kBrick);
-    };
+// A commercial block (schools, churches, businesses; White (1996), section 4.2.3.1
+// OTHER STRUCTURES): one or two larger buildings and a parking lot on the block's
+// northern three cell rows. False when no building fits (the block is then residential).
+bool Layout::commercial_block(int bi, int bj, double x0, double y0, double x1) {
+    const int nb = rng.uniform() < 0.5 ? 1 : 2;
+    const double w = (x1 - x0 - 8) / nb;
+    int placed = 0;
+    for (int k = 0; k < nb; ++k) {
+        const double bw = rng.uniform(0.6, 0.9) * w, bd = rng.uniform(20, 35);
+        const double bx0 = x0 + 4 + k * w, by0 = y0 + 6;
+        if (!lot_ok(bx0, by0, bx0 + bw, by0 + bd)) continue;
+        add_big("large building", bx0, by0, bx0 + bw, by0 + bd, rng.uniform(8, 16));
+        ++counts.large_buildings;
+        ++placed;
+    }
+    if (placed == 0) return false;
+    for (int j = bj + kRowPeriod - 3; j < bj + kRowPeriod; ++j)
+        for (int i = bi + 1; i < bi + kColPeriod; ++i)
+            if (in_grid(i, j) && at(i, j) == kLot) at(i, j) = kParking;
+    return true;
+}
+
+// Lot k (of four, 26 m each) on side 0 (south, y0) or 1 (north, y1) of a block: the
+// house 8 m back from the street edge (sidewalk and lawn), a garage behind 56% of them
+// (a total near White (1996)'s 850 structures), a tree in front of each lot and one in
+// the back yard.
+void Layout::residential_lot(int side, int k, double x0, double y0, double y1) {
+    const double lx = x0 + 2 + 26.5 * k + 13.25 + rng.uniform(-2, 2);
+    const double dir = side == 0 ? 1 : -1;  // away from the street
+    const double edge = side == 0 ? y0 : y1;
+    const double hy = edge + dir * (8 + kHouseHalfY + 0.5);
+    const double scale = rng.uniform(0.9, 1.1);
+    if (!lot_ok(lx - 8, std::min(hy, hy - dir * 7.5), lx + 8, std::max(hy, hy - dir * 7.5)) ||
+        !lot_ok(lx - 8, std::min(edge + dir * 2, hy + dir * 5), lx + 8,
+                std::max(edge + dir * 2, hy + dir * 5)))
+        return;
+    const int type = static_cast<int>(rng.uniform() * 3);
+    const int colour = static_cast<int>(rng.uniform() * m::kColours);
+    const double z = base_z(lx - 6, hy - 5, lx + 6, hy + 5);
+    house_places[type * m::kColours + colour].push_back(
+        place(lx, hy, z, scale, side == 0 ? 0 : 180));
+    ++counts.houses;
+    const double gy = edge + dir * 27;
+    if (rng.uniform() < 0.56 &&
+        lot_ok(lx + 2, std::min(gy - 3, gy + 3), lx + 10, std::max(gy - 3, gy + 3))) {
+        const double gx = lx + 6;
+        garage_places[colour].push_back(place(gx, gy, base_z(gx - 3, gy - 3, gx + 3, gy + 3)));
+        ++counts.garages;
+    }
+    const double tx = lx - 10 + rng.uniform(-1, 1), ty = edge + dir * 4;
+    tree_places.push_back(
+        place(tx, ty, t.height_m(tx, ty), rng.uniform(0.7, 1.2), rng.uniform(0, 360)));
+    const double bx = lx + rng.uniform(-8, 0), by = edge + dir * 34;
+    if (lot_ok(bx, by, bx, by))
+        tree_places.push_back(
+            place(bx, by, t.height_m(bx, by), rng.uniform(0.7, 1.3), rng.uniform(0, 360)));
+}
+
+// Houses, garages, larger buildings and parking lots, block by block. A block is the
+// lot cells between two street rows and two street columns.
+void Layout::blocks() {
     for (int bj = kRowStreet; bj + kRowPeriod < cells + kRowPeriod; bj += kRowPeriod)
         for (int bi = kColStreet - kColPeriod; bi < cells; bi += kColPeriod) {
             // Block interior: cells bj+1 .. bj+8 north, bi+1 .. bi+11 east.
             const double x0 = t.origin_m + g * (bi + 1), x1 = x0 + g * (kColPeriod - 1);
             const double y0 = t.origin_m + g * (bj + 1), y1 = y0 + g * (kRowPeriod - 1);
-            if (rng.uniform() < 0.16) {
-                // A commercial block (schools, churches, businesses; seed 4.2.3.1
-                // OTHER STRUCTURES): one or two larger buildings and a parking lot.
-                const int nb = rng.uniform() < 0.5 ? 1 : 2;
-                const double w = (x1 - x0 - 8) / nb;
-                int placed = 0;
-                for (int k = 0; k < nb; ++k) {
-                    const double bw = rng.uniform(0.6, 0.9) * w, bd = rng.uniform(20, 35);
-                    const double bx0 = x0 + 4 + k * w, by0 = y0 + 6;
-                    if (!lot_ok(bx0, by0, bx0 + bw, by0 + bd)) continue;
-                    add_big("large building", bx0, by0, bx0 + bw, by0 + bd, rng.uniform(8, 16));
-                    ++s.counts.large_buildings;
-                    ++placed;
-                }
-                if (placed > 0) {  // parking: the block's northern three cell rows
-                    for (int j = bj + kRowPeriod - 3; j < bj + kRowPeriod; ++j)
-                        for (int i = bi + 1; i < bi + kColPeriod; ++i)
-                            if (in_grid(i, j) && at(i, j) == kLot) at(i, j) = kParking;
-                    continue;
-                }
-            }
-            // Residential: four lots of 26 m on each side; the house 8 m back from the
-            // street edge (sidewalk and lawn), a garage behind 56% of them (a total near the seed's
-            // 850 structures), a tree in front of each lot and one in the back yard.
+            if (rng.uniform() < 0.16 && commercial_block(bi, bj, x0, y0, x1)) continue;
             for (int side = 0; side < 2; ++side)
-                for (int k = 0; k < 4; ++k) {
-                    const double lx = x0 + 2 + 26.5 * k + 13.25 + rng.uniform(-2, 2);
-                    const double dir = side == 0 ? 1 : -1;  // away from the street
-                    const double edge = side == 0 ? y0 : y1;
-                    const double hy = edge + dir * (8 + kHouseHalfY + 0.5);
-                    const double scale = rng.uniform(0.9, 1.1);
-                    if (!lot_ok(lx - 8, std::min(hy, hy - dir * 7.5), lx + 8,
-                                std::max(hy, hy - dir * 7.5)) ||
-                        !lot_ok(lx - 8, std::min(edge + dir * 2, hy + dir * 5), lx + 8,
-                                std::max(edge + dir * 2, hy + dir * 5)))
-                        continue;
-                    const int type = static_cast<int>(rng.uniform() * 3);
-                    const int colour = static_cast<int>(rng.uniform() * m::kColours);
-                    const double z = base_z(lx - 6, hy - 5, lx + 6, hy + 5);
-                    house_places[type * m::kColours + colour].push_back(
-                        place(lx, hy, z, scale, side == 0 ? 0 : 180));
-                    ++s.counts.houses;
-                    const double gy = edge + dir * 27;
-                    if (rng.uniform() < 0.56 && lot_ok(lx + 2, std::min(gy - 3, gy + 3), lx + 10,
-                                                       std::max(gy - 3, gy + 3))) {
-                        const double gx = lx + 6;
-                        garage_places[colour].push_back(
-                            place(gx, gy, base_z(gx - 3, gy - 3, gx + 3, gy + 3)));
-                        ++s.counts.garages;
-                    }
-                    const double tx = lx - 10 + rng.uniform(-1, 1), ty = edge + dir * 4;
-                    tree_places.push_back(place(tx, ty, t.height_m(tx, ty), rng.uniform(0.7, 1.2),
-                                                rng.uniform(0, 360)));
-                    const double bx = lx + rng.uniform(-8, 0), by = edge + dir * 34;
-                    if (lot_ok(bx, by, bx, by))
-                        tree_places.push_back(place(bx, by, t.height_m(bx, by),
-                                                    rng.uniform(0.7, 1.3), rng.uniform(0, 360)));
-                }
+                for (int k = 0; k < 4; ++k) residential_lot(side, k, x0, y0, y1);
         }
+}
 
-    // The plant (seed 4.2.3.1 HAWKEYE): the long main building and a lower wing.
-    {
-        add_big("Hawkeye plant", plant_x - plant_hx, plant_y - plant_hy, plant_x + plant_hx,
-                plant_y + plant_hy, plant_h);
-        add_big("Hawkeye plant wing", plant_x - plant_hx - 15, plant_y - 40, plant_x - plant_hx,
-                plant_y + 40, 9);
-        s.counts.plants = 1;
-    }
-    // The bridge (seed 4.2.3.1 BRIDGE): a deck 14 m wide, 1.5 m thick, rim to rim on the
-    // bridge row, level with the higher rim, on two piers.
-    {
-        const double by = cx(bridge_row), c = t.gorge_centre_m(by);
-        const double xw = c - kGorgeRimHalfWidthM - 10, xe = c + kGorgeRimHalfWidthM + 10;
-        const double deck = std::max(t.height_m(xw, by), t.height_m(xe, by)) + kStreetRaiseM;
-        big.object("bridge");
-        big.part("deck");
-        big.box(xw, by - 7, deck - 1.5, xe, by + 7, deck, m::kAsphalt, m::kConcrete);
-        big.part("piers");
-        for (double px : {c - 45.0, c + 45.0})
-            big.box(px - 3, by - 5, t.height_m(px, by) - 1, px + 3, by + 5, deck - 1.5,
-                    m::kConcrete, m::kConcrete);
-        s.counts.bridges = 1;
-    }
+// The plant (White (1996), section 4.2.3.1 HAWKEYE): the long main building and a
+// lower wing. The bridge (section 4.2.3.1 BRIDGE): a deck 14 m wide, 1.5 m thick, rim
+// to rim on the bridge row, level with the higher rim, on two piers.
+void Layout::plant_and_bridge() {
+    add_big("Hawkeye plant", plant_x - kPlantHalfX, plant_y - kPlantHalfY, plant_x + kPlantHalfX,
+            plant_y + kPlantHalfY, kPlantHeight);
+    add_big("Hawkeye plant wing", plant_x - kPlantHalfX - 15, plant_y - 40, plant_x - kPlantHalfX,
+            plant_y + 40, 9);
+    counts.plants = 1;
+    const double by = cx(bridge_row), c = t.gorge_centre_m(by);
+    const double xw = c - kGorgeRimHalfWidthM - 10, xe = c + kGorgeRimHalfWidthM + 10;
+    const double deck = std::max(t.height_m(xw, by), t.height_m(xe, by)) + kStreetRaiseM;
+    big.object("bridge");
+    big.part("deck");
+    big.box(xw, by - 7, deck - 1.5, xe, by + 7, deck, m::kAsphalt, m::kConcrete);
+    big.part("piers");
+    for (double px : {c - 45.0, c + 45.0})
+        big.box(px - 3, by - 5, t.height_m(px, by) - 1, px + 3, by + 5, deck - 1.5, m::kConcrete,
+                m::kConcrete);
+    counts.bridges = 1;
+}
 
-    // Streets and parking lots (raised 0.1 m) and sidewalks (2 m wide, raised 0.15 m
-    // along every street edge that meets a lot).
-    GdbBuilder& pav = ground;
-    pav.object("pavement");
+// Streets and parking lots, raised 0.1 m on the terrain.
+void Layout::pavement() {
+    ground.object("pavement");
     struct Paved {
-        int cell;
+        Cell cell;
         const char *part, *facet;
         std::size_t* count;
     };
-    for (const Paved& p : {Paved{kStreet, "streets", "street", &s.counts.street_cells},
-                           Paved{kParking, "parking", "parking", &s.counts.parking_cells}}) {
-        pav.part(p.part);
+    for (const Paved& p : {Paved{kStreet, "streets", "street", &counts.street_cells},
+                           Paved{kParking, "parking", "parking", &counts.parking_cells}}) {
+        ground.part(p.part);
         const double r = kStreetRaiseM;
         for (int j = 0; j < cells; ++j)
             for (int i = 0; i < cells; ++i)
                 if (at(i, j) == p.cell) {
-                    pav.facet({node(i, j, r), node(i + 1, j, r), node(i + 1, j + 1, r)},
-                              m::kAsphalt, p.facet);
-                    pav.facet({node(i, j, r), node(i + 1, j + 1, r), node(i, j + 1, r)},
-                              m::kAsphalt, p.facet);
+                    ground.facet({node(i, j, r), node(i + 1, j, r), node(i + 1, j + 1, r)},
+                                 m::kAsphalt, p.facet);
+                    ground.facet({node(i, j, r), node(i + 1, j + 1, r), node(i, j + 1, r)},
+                                 m::kAsphalt, p.facet);
                     ++*p.count;
                 }
     }
-    pav.part("sidewalks");
+}
+
+// Sidewalks: 2 m wide, raised 0.15 m, along every street edge that meets a lot.
+void Layout::sidewalks() {
+    ground.part("sidewalks");
     auto walk_point = [&](double x, double y) {
         return Vec3{x, y, t.height_m(x, y) + kSidewalkRaiseM};
+    };
+    auto strip = [&](double ax, double ay, double bx, double by) {  // CCW corners
+        const Vec3 p = walk_point(ax, ay), q = walk_point(bx, ay), r = walk_point(bx, by),
+                   u = walk_point(ax, by);
+        ground.facet({p, q, r}, m::kConcrete, "sidewalk");
+        ground.facet({p, r, u}, m::kConcrete, "sidewalk");
+        ++counts.sidewalk_strips;
     };
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
             if (at(i, j) != kStreet) continue;
             const double x0 = t.node_x(i), x1 = x0 + g, y0 = t.node_x(j), y1 = y0 + g;
-            auto strip = [&](double ax, double ay, double bx, double by) {  // CCW corners
-                const Vec3 p = walk_point(ax, ay), q = walk_point(bx, ay), r = walk_point(bx, by),
-                           u = walk_point(ax, by);
-                pav.facet({p, q, r}, m::kConcrete, "sidewalk");
-                pav.facet({p, r, u}, m::kConcrete, "sidewalk");
-                ++s.counts.sidewalk_strips;
-            };
-            if (in_grid(i, j + 1) && at(i, j + 1) == kLot) strip(x0, y1, x1, y1 + 2);
-            if (in_grid(i, j - 1) && at(i, j - 1) == kLot) strip(x0, y0 - 2, x1, y0);
-            if (in_grid(i + 1, j) && at(i + 1, j) == kLot) strip(x1, y0, x1 + 2, y1);
-            if (in_grid(i - 1, j) && at(i - 1, j) == kLot) strip(x0 - 2, y0, x0, y1);
+            if (is(i, j + 1, kLot)) strip(x0, y1, x1, y1 + 2);
+            if (is(i, j - 1, kLot)) strip(x0, y0 - 2, x1, y0);
+            if (is(i + 1, j, kLot)) strip(x1, y0, x1 + 2, y1);
+            if (is(i - 1, j, kLot)) strip(x0 - 2, y0, x0, y1);
         }
+}
 
-    // Vehicles: parked along the E-W streets (one street cell in four, at random) and in
-    // the parking lots (one cell in two).
+// Vehicles: parked along the E-W streets (one street cell in four, at random) and in
+// the parking lots (one cell in two).
+void Layout::vehicles() {
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
             const bool street =
@@ -501,11 +372,13 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
             const int colour = static_cast<int>(rng.uniform() * m::kColours);
             vehicle_places[colour].push_back(
                 place(x, y, t.height_m(x, y) + kStreetRaiseM, 1, street ? 0 : 90));
-            ++s.counts.vehicles;
+            ++counts.vehicles;
         }
+}
 
-    // Trees: street and yard trees above; the forest of the gorge's walls (randomly
-    // placed, as in the seed) brings the total to about 3000 (seed 4.2.3.1 TREES).
+// Trees: the street and yard trees, then the forest of the gorge's walls (randomly
+// placed, as in White (1996)) up to about 3000 (section 4.2.3.1 TREES).
+void Layout::forest() {
     const int target = 3000 + static_cast<int>(rng.uniform(-150, 150));
     for (int tries = 0; static_cast<int>(tree_places.size()) < target && tries < 200000; ++tries) {
         const double x = rng.uniform(t.origin_m, -t.origin_m),
@@ -516,61 +389,70 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
         tree_places.push_back(
             place(x, y, t.height_m(x, y), rng.uniform(0.7, 1.3), rng.uniform(0, 360)));
     }
-    s.counts.trees = tree_places.size();
+    counts.trees = tree_places.size();
+}
 
-    // Files and the assembly.
-    auto add = [&](const std::string& name, io::Gdb gdb, std::vector<io::OdbInstance> inst) {
-        io::OdbObject o;
-        o.source = io::OdbSource::Gdb;
-        o.path = name;
-        o.units = io::OdbUnits::Meters;
-        const std::size_t copies = inst.empty() ? 1 : inst.size();
-        o.instances = std::move(inst);
-        s.counts.facets += io::gdb_facet_count(gdb);
-        s.counts.placed_facets += copies * io::gdb_facet_count(gdb);
-        s.counts.placed_triangles += copies * triangles(gdb);
-        s.odb.objects.push_back(std::move(o));
-        s.files.emplace_back(name, std::move(gdb));
-    };
-    add("terrain.gdb", std::move(ground.gdb), {});
-    add("buildings.gdb", std::move(big.gdb), {});
+// Adds a .gdb file and its object in the .odb (one copy without instances).
+void add_file(HawkeyeScene& s, const std::string& name, io::Gdb gdb,
+              std::vector<io::OdbInstance> inst) {
+    io::OdbObject o;
+    o.source = io::OdbSource::Gdb;
+    o.path = name;
+    o.units = io::OdbUnits::Meters;
+    const std::size_t copies = inst.empty() ? 1 : inst.size();
+    o.instances = std::move(inst);
+    s.counts.facets += io::gdb_facet_count(gdb);
+    s.counts.placed_facets += copies * io::gdb_facet_count(gdb);
+    s.counts.placed_triangles += copies * triangles(gdb);
+    s.odb.objects.push_back(std::move(o));
+    s.files.emplace_back(name, std::move(gdb));
+}
+
+// The files: terrain (with pavement), larger buildings, then the instanced meshes.
+void add_files(HawkeyeScene& s, Layout& l) {
+    add_file(s, "terrain.gdb", std::move(l.ground.gdb), {});
+    add_file(s, "buildings.gdb", std::move(l.big.gdb), {});
     static const char* type_names[] = {"fancy", "house1", "house2"};
     for (int type = 0; type < 3; ++type)
         for (int c = 0; c < m::kColours; ++c) {
-            auto& p = house_places[type * m::kColours + c];
+            auto& p = l.house_places[type * m::kColours + c];
             if (p.empty()) continue;
             const long roof = c % 2 == 0 ? m::kShingleDark : m::kShingleBrown;
-            add(std::string(type_names[type]) + "-" + std::to_string(c + 1) + ".gdb",
-                house_gdb(type, m::kSidingFirst + c, roof), std::move(p));
+            add_file(s, std::string(type_names[type]) + "-" + std::to_string(c + 1) + ".gdb",
+                     house_gdb(type, m::kSidingFirst + c, roof), std::move(p));
         }
     for (int c = 0; c < m::kColours; ++c) {
-        if (garage_places[c].empty()) continue;
+        if (l.garage_places[c].empty()) continue;
         const long roof = c % 2 == 0 ? m::kShingleDark : m::kShingleBrown;
-        add("garage-" + std::to_string(c + 1) + ".gdb", garage_gdb(m::kSidingFirst + c, roof),
-            std::move(garage_places[c]));
+        add_file(s, "garage-" + std::to_string(c + 1) + ".gdb",
+                 garage_gdb(m::kSidingFirst + c, roof), std::move(l.garage_places[c]));
     }
     for (int c = 0; c < m::kColours; ++c)
-        if (!vehicle_places[c].empty())
-            add("vehicle-" + std::to_string(c + 1) + ".gdb", vehicle_gdb(m::kSidingFirst + c),
-                std::move(vehicle_places[c]));
-    if (!tree_places.empty()) add("tree.gdb", tree_gdb(), std::move(tree_places));
-    return s;
+        if (!l.vehicle_places[c].empty())
+            add_file(s, "vehicle-" + std::to_string(c + 1) + ".gdb",
+                     vehicle_gdb(m::kSidingFirst + c), std::move(l.vehicle_places[c]));
+    if (!l.tree_places.empty()) add_file(s, "tree.gdb", tree_gdb(), std::move(l.tree_places));
 }
 
-namespace {
-void write_atomically(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        if (!out.flush()) throw IoError(tmp + ": cannot write");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw IoError(path + ": cannot rename " + tmp);
-    }
-}
 }  // namespace
+
+HawkeyeScene hawkeye_scene(std::uint64_t seed) {
+    HawkeyeScene s;
+    s.seed = seed;
+    s.terrain = hawkeye_terrain(seed);
+    Layout l(s.terrain, s.counts, seed);
+    l.choose_sites();
+    l.classify_cells();
+    l.terrain_facets();
+    l.blocks();
+    l.plant_and_bridge();
+    l.pavement();
+    l.sidewalks();
+    l.vehicles();
+    l.forest();
+    add_files(s, l);
+    return s;
+}
 
 void write_hawkeye_scene(const HawkeyeScene& scene, const std::string& outdir) {
     const std::string header = "# Written by hawkeye_scene (sigchain issue 7, scene 2), seed " +
@@ -578,18 +460,16 @@ void write_hawkeye_scene(const HawkeyeScene& scene, const std::string& outdir) {
                                ": see data/scenes/hawkeye/README.md.\n"
                                "# Local frame: x east, y north, z up (m) about the scene's "
                                "centre; z = 0 the base of the hills.\n";
-    for (const auto& [name, gdb] : scene.files) {
-        std::ostringstream s;
-        s.precision(10);
-        s << header;
-        io::write_gdb(s, gdb);
-        write_atomically(outdir + "/" + name, s.str());
-    }
-    std::ostringstream s;
-    s.precision(10);
-    s << header;
-    io::write_odb(s, scene.odb);
-    write_atomically(outdir + "/hawkeye.odb", s.str());
+    auto write = [&](const std::string& name, const auto& write_body) {
+        AtomicOutput out(outdir + "/" + name);
+        out.stream().precision(10);
+        out.stream() << header;
+        write_body(out.stream());
+        out.commit();
+    };
+    for (const auto& [name, gdb] : scene.files)
+        write(name, [&gdb](std::ostream& o) { io::write_gdb(o, gdb); });
+    write("hawkeye.odb", [&scene](std::ostream& o) { io::write_odb(o, scene.odb); });
 }
 
 }  // namespace sigchain::scenegen

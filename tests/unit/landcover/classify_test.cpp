@@ -40,7 +40,7 @@ TEST(Classify, ThresholdsAreInclusiveWhereDocumented) {
 }
 
 TEST(Classify, RasterAndFractions) {
-    GeoRaster r;
+    sigchain::geo::GeoRaster r;
     r.rows = 1;
     r.columns = 4;
     r.bands = 5;
@@ -50,7 +50,7 @@ TEST(Classify, RasterAndFractions) {
             const double v[5] = {p.blue, p.green, p.red, p.nir, p.swir1};
             r.values.push_back(v[b]);
         }
-    const auto classes = classify_raster(r, Rule{});
+    const auto classes = classify_raster(r, Rule{}, "etm.tif");
     EXPECT_EQ(classes, (std::vector<int>{1, 2, 4, 1}));
     const auto f = class_fractions(classes);
     EXPECT_DOUBLE_EQ(f[0], 0.5);
@@ -60,11 +60,16 @@ TEST(Classify, RasterAndFractions) {
 }
 
 TEST(Classify, RasterNeedsFiveBands) {
-    GeoRaster r;
+    sigchain::geo::GeoRaster r;
     r.rows = r.columns = 1;
     r.bands = 4;
     r.values = {1, 2, 3, 4};
-    EXPECT_THROW(classify_raster(r, Rule{}), sigchain::DataError);
+    try {
+        classify_raster(r, Rule{}, "etm.tif");
+        FAIL() << "no DataError";
+    } catch (const sigchain::DataError& e) {
+        EXPECT_STREQ(e.what(), "etm.tif: classification needs ETM+ bands 1-5, found 4");
+    }
 }
 
 // A 6 x 6 source of 10 m pixels under a 2 x 2 DEM of 30 m cells with the same origin:

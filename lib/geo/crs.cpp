@@ -1,0 +1,79 @@
+// CRS -> WGS84 (GDAL/OGR) -> local east-north-up (GeographicLib), and GDAL's set-up.
+#include "geo/crs.hpp"
+
+#include <cpl_conv.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <mutex>
+
+namespace sigchain::geo {
+
+void gdal_init() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        CPLSetErrorHandler(CPLQuietErrorHandler);
+        CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");
+        GDALAllRegister();
+    });
+}
+
+std::string gdal_message() {
+    const char* m = CPLGetLastErrorMsg();
+    return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
+}
+
+Crs Crs::from_ogr(const OGRSpatialReference* srs) {
+    Crs crs;
+    if (srs && !srs->IsEmpty()) crs.m_srs = std::make_shared<const OGRSpatialReference>(*srs);
+    return crs;
+}
+
+Crs Crs::from_wkt(const std::string& wkt, const SourceLocation& where) {
+    auto srs = std::make_shared<OGRSpatialReference>();
+    if (srs->importFromWkt(wkt.c_str()) != OGRERR_NONE)
+        throw DataError(where, "not a coordinate reference system (WKT): " + gdal_message());
+    Crs crs;
+    crs.m_srs = std::move(srs);
+    return crs;
+}
+
+std::string Crs::wkt() const {
+    if (!m_srs) return "";
+    char* text = nullptr;
+    m_srs->exportToWkt(&text);
+    std::string out = text ? text : "";
+    CPLFree(text);
+    return out;
+}
+
+bool Crs::same_as(const Crs& other) const {
+    if (!m_srs || !other.m_srs) return !m_srs && !other.m_srs;
+    return m_srs->IsSame(other.m_srs.get());
+}
+
+Wgs84Transform::Wgs84Transform(const Crs& from, const SourceLocation& where) : m_where(where) {
+    if (from.empty()) throw DataError(where, "no coordinate reference system");
+    OGRSpatialReference src(*from.ogr()), wgs84;
+    src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = easting or longitude
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    m_transform.reset(OGRCreateCoordinateTransformation(&src, &wgs84));
+    if (!m_transform)
+        throw DataError(where, "cannot transform the CRS to WGS84: " + gdal_message());
+}
+
+Wgs84Transform::~Wgs84Transform() = default;
+
+bool Wgs84Transform::transform(std::size_t n, double* x, double* y, int* ok) const {
+    return m_transform->Transform(n, x, y, nullptr, ok) != 0;
+}
+
+LatLon Wgs84Transform::lat_lon(double x, double y) const {
+    int ok = 0;
+    if (!transform(1, &x, &y, &ok) || !ok)
+        throw DataError(m_where, "cannot transform a point to WGS84: " + gdal_message());
+    return {y, x};
+}
+
+}  // namespace sigchain::geo

@@ -1,0 +1,73 @@
+// GDAL geo-raster reading, and a raster's placement on WGS84.
+#include "geo/raster.hpp"
+
+#include <gdal_priv.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+namespace sigchain::geo {
+
+namespace {
+
+struct DatasetCloser {
+    void operator()(GDALDataset* ds) const { GDALClose(ds); }
+};
+using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+void read_band(GDALDataset& ds, int band, GeoRaster& r, const std::string& path) {
+    double* dst = r.values.data() + static_cast<std::size_t>(band) * r.rows * r.columns;
+    const int rows = static_cast<int>(r.rows), columns = static_cast<int>(r.columns);
+    if (ds.GetRasterBand(band + 1)->RasterIO(GF_Read, 0, 0, columns, rows, dst, columns, rows,
+                                             GDT_Float64, 0, 0) != CE_None)
+        throw IoError(path + ": read error: " + gdal_message());
+}
+
+}  // namespace
+
+bool GeoRaster::valid(double v) const { return std::isfinite(v) && !(nodata && v == *nodata); }
+
+// The errors below name the file without a line: a raster is binary.
+GeoRaster read_geo_raster(const std::string& path, Bands bands) {
+    gdal_init();
+    Dataset ds(static_cast<GDALDataset*>(
+        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    if (!ds) throw IoError(path + ": cannot open the raster: " + gdal_message());
+    if (ds->GetRasterCount() < 1) throw DataError({path, 0}, "the raster has no band");
+    GeoRaster r;
+    if (ds->GetGeoTransform(r.geotransform.data()) != CE_None)
+        throw DataError({path, 0}, "the raster has no geotransform (not geo-referenced)");
+    r.rows = ds->GetRasterYSize();
+    r.columns = ds->GetRasterXSize();
+    r.bands = bands == Bands::All ? ds->GetRasterCount() : 1;
+    r.crs = Crs::from_ogr(ds->GetSpatialRef());
+    int has_nodata = 0;
+    const double nodata = ds->GetRasterBand(1)->GetNoDataValue(&has_nodata);
+    if (has_nodata) r.nodata = nodata;
+    r.values.resize(static_cast<std::size_t>(r.bands) * r.rows * r.columns);
+    for (int b = 0; b < r.bands; ++b) read_band(*ds, b, r, path);
+    return r;
+}
+
+void require_north_up_with_crs(const GeoRaster& raster, const std::string& path) {
+    if (raster.geotransform[2] != 0 || raster.geotransform[4] != 0)
+        throw DataError({path, 0}, "rotated raster grids are not supported");
+    if (raster.crs.empty())
+        throw DataError({path, 0}, "the raster has no coordinate reference system");
+}
+
+RasterPlacement raster_placement(const GeoRaster& raster, const std::string& path) {
+    const auto& g = raster.geotransform;
+    const double xc = g[0] + g[1] * raster.columns / 2.0;
+    const double yc = g[3] + g[5] * raster.rows / 2.0;
+    const Wgs84Transform to_wgs84(raster.crs, {path, 0});
+    const LatLon centre = to_wgs84.lat_lon(xc, yc);
+    const LatLon east = to_wgs84.lat_lon(xc + 1000.0, yc);
+    const LocalEnu enu(centre.latitude_deg, centre.longitude_deg, 0.0);
+    const Vec3 e = enu.forward(east.latitude_deg, east.longitude_deg, 0.0);
+    return {centre.latitude_deg, centre.longitude_deg,
+            std::atan2(e[1], e[0]) * 180.0 / std::numbers::pi};
+}
+
+}  // namespace sigchain::geo
