@@ -11,7 +11,7 @@ HAWKEYE="$SIGCHAIN_SOURCE_DIR/data/scenes/hawkeye"
 
 setup() {
     cd "$BATS_TEST_TMPDIR" || return 1
-    # hawkeye_scene is built from data/scenes/hawkeye/ into the build's bin/.
+    # hawkeye_scene (tools/hawkeye_scene) is built into the build's bin/.
     command -v hawkeye_scene > /dev/null || skip "hawkeye_scene not built in $SIGCHAIN_BIN"
 }
 
@@ -59,12 +59,26 @@ odb_instances() {
     run -1 cmp -s a/terrain.gdb c/terrain.gdb
 }
 
-@test "hawkeye: hawkeye_scene usage errors" {
+@test "hawkeye: hawkeye_scene --help, --version, usage and I/O errors" {
+    run -0 --separate-stderr hawkeye_scene --help
+    assert_line --index 0 "Usage: hawkeye_scene [OPTIONS] SEED OUTDIR"
+    assert_line "See hawkeye_scene(1)."
+    run -0 --separate-stderr hawkeye_scene --version
+    assert_output --regexp "^hawkeye_scene \(sigchain\) [0-9]+[.][0-9]+[.][0-9]+$"
     run -2 --separate-stderr hawkeye_scene 4
-    [[ "$stderr" == *"usage: hawkeye_scene SEED OUTDIR"* ]]
+    [ "$stderr" = "hawkeye_scene: expected SEED (a non-negative integer) and OUTDIR
+Try 'hawkeye_scene --help'." ]
     run -2 --separate-stderr hawkeye_scene four out
+    [[ "$stderr" == "hawkeye_scene: expected SEED (a non-negative integer) and OUTDIR, found SEED 'four'"* ]]
+    run -2 --separate-stderr hawkeye_scene 99999999999999999999 out
+    [[ "$stderr" == "hawkeye_scene: SEED 99999999999999999999 is larger than 2^64 - 1"* ]]
+    run -2 --separate-stderr hawkeye_scene --frobnicate 4 out
     run -1 --separate-stderr hawkeye_scene 4 no/such/dir
     [[ "$stderr" == "hawkeye_scene: no/such/dir/"* ]]
+    # -q silences the report.
+    mkdir q
+    run -0 --separate-stderr hawkeye_scene -q 4 q
+    [ -z "$stderr" ] && [ -s q/hawkeye.odb ]
 }
 
 @test "hawkeye: make runs the chain to counts and a preview (both views, reduced size)" {

@@ -10,7 +10,7 @@ OLINDA="$SIGCHAIN_SOURCE_DIR/data/scenes/olinda"
 
 setup() {
     cd "$BATS_TEST_TMPDIR" || return 1
-    # olinda_scene is built from data/scenes/olinda/ into the same bin/ as the tools.
+    # olinda_scene (tools/olinda_scene) is built into the same bin/ as the other tools.
     [ -x "$SIGCHAIN_BIN/olinda_scene" ] || skip "olinda_scene not built in $SIGCHAIN_BIN"
 }
 
@@ -27,9 +27,31 @@ setup() {
     run -0 diff -u "$OLINDA/olinda_held.cpt" olinda_held.cpt
 }
 
-@test "olinda: olinda_scene usage errors exit 2" {
+@test "olinda: olinda_scene --help, --version, usage and data errors" {
+    run -0 --separate-stderr olinda_scene --help
+    assert_line --index 0 "Usage: olinda_scene [OPTIONS] COMMAND ARGS..."
+    assert_line "See olinda_scene(1)."
+    run -0 --separate-stderr olinda_scene --version
+    assert_output --regexp "^olinda_scene \(sigchain\) [0-9]+[.][0-9]+[.][0-9]+$"
     run -2 --separate-stderr olinda_scene frobnicate
-    [[ "$stderr" == *"usage: olinda_scene"* ]]
+    [ "$stderr" = "olinda_scene: unknown command 'frobnicate'
+Try 'olinda_scene --help'." ]
+    run -2 --separate-stderr olinda_scene
+    run -2 --separate-stderr olinda_scene --frobnicate classify a b c
+    run -2 --separate-stderr olinda_scene fit a.cpt b.tif
+    [[ "$stderr" == "olinda_scene: fit takes 4 arguments, found 2"* ]]
+    run -2 --separate-stderr olinda_scene points a.tif b.tif thirty 1 6 p
+    [[ "$stderr" == "olinda_scene: PER_CLASS must be an integer"* ]]
+    # A malformed reflectance table names its file and line.
+    printf 'water 0.05 0.04 0.03 0.02\nsand 0.2 0.3\n' > bad.txt
+    run -1 --separate-stderr olinda_scene ems bad.txt - .
+    [ "$stderr" = "olinda_scene: bad.txt:2: expected a class and 4 values" ]
+    # "-": every scale is 1.
+    printf 'water 0.05 0.04 0.03 0.02\n' > good.txt
+    run -0 olinda_scene ems good.txt - .
+    run -0 grep -c '^0.4[5][0-9]* 0.95$' water.ems
+    run -1 --separate-stderr olinda_scene classify /nonexistent.tif "$OLINDA/olinda_dem_utm25s.tif" .
+    [[ "$stderr" == "olinda_scene: /nonexistent.tif: cannot open the raster"* ]]
 }
 
 @test "olinda: make runs the chain; held-out ROC and RMS per band stay within the floor" {

@@ -11,7 +11,7 @@ SOHO="$SIGCHAIN_SOURCE_DIR/data/scenes/soho"
 
 setup() {
     cd "$BATS_TEST_TMPDIR" || return 1
-    # soho_scene is built from data/scenes/soho/ into the same bin/ as the tools.
+    # soho_scene (tools/soho_scene) is built into the same bin/ as the other tools.
     command -v soho_scene > /dev/null || skip "soho_scene not built in $SIGCHAIN_BIN"
 }
 
@@ -50,6 +50,11 @@ PY
     run -0 soho_scene --seed 7 "$SOHO/buildings.gpkg" -o a.gdb
     run -0 soho_scene --seed 7 "$SOHO/buildings.gpkg" -o b.gdb
     run -0 cmp a.gdb b.gdb
+    # The default seed is the scene's 7; "-o -" writes the same bytes to stdout.
+    run -0 soho_scene "$SOHO/buildings.gpkg" -o d.gdb
+    run -0 cmp a.gdb d.gdb
+    soho_scene -q "$SOHO/buildings.gpkg" -o - > e.gdb
+    run -0 cmp a.gdb e.gdb
     run -0 soho_scene --seed 8 "$SOHO/buildings.gpkg" -o c.gdb
     run -1 cmp -s a.gdb c.gdb
     # Every roof vertex's z (field 13 after FACE is the vertex count, the vertices
@@ -61,9 +66,15 @@ PY
     assert_output "$(printf '9.6\n12.8\n16\n19.2\n22.4')"
 }
 
-@test "soho: soho_scene usage and data errors" {
+@test "soho: soho_scene --help, --version, usage and data errors" {
+    run -0 --separate-stderr soho_scene --help
+    assert_line --index 0 "Usage: soho_scene [OPTIONS] FOOTPRINTS -o GDB"
+    assert_line "See soho_scene(1)."
+    run -0 --separate-stderr soho_scene --version
+    assert_output --regexp "^soho_scene \(sigchain\) [0-9]+[.][0-9]+[.][0-9]+$"
     run -2 --separate-stderr soho_scene "$SOHO/buildings.gpkg"
-    [[ "$stderr" == *"usage: soho_scene"* ]]
+    [ "$stderr" = "soho_scene: -o FILE is required
+Try 'soho_scene --help'." ]
     run -2 --separate-stderr soho_scene --frobnicate "$SOHO/buildings.gpkg" -o x.gdb
     echo "not a vector file" > bad.gpkg
     run -1 --separate-stderr soho_scene bad.gpkg -o x.gdb
