@@ -104,9 +104,9 @@ void Cli::add_threads_option() {
                             "worker threads (0: all cores); outputs do not depend on it");
 }
 
-void Cli::add_seed_option(const char* help) {
-    m_options.add_options()("seed", po::value<std::uint64_t>()->default_value(1)->value_name("N"),
-                            help);
+void Cli::add_seed_option(const char* help, std::uint64_t default_value) {
+    m_options.add_options()(
+        "seed", po::value<std::uint64_t>()->default_value(default_value)->value_name("N"), help);
 }
 
 void Cli::print_help() const {

@@ -80,7 +80,10 @@ public:
     // --threads N: worker threads, 0 (the default) every core; outputs never depend on it.
     void add_threads_option();
     // --seed N: the seed of every random choice (default 1); outputs depend only on it.
-    void add_seed_option(const char* help = "seed of the random numbers (default 1)");
+    void add_seed_option(const char* help = "seed of the random numbers (default 1)",
+                         std::uint64_t default_value = 1);
+    // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
+    po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
     // Parses argv and runs `body`; returns the process exit status.
     int run(int argc, char** argv,

@@ -40,7 +40,7 @@ PixelComparison compare_pixels(const NamedImage& synthetic, const NamedImage& re
                                const BandMap& map) {
     const auto& syn = *synthetic.image;
     const auto& ref = *reference.image;
-    if (syn.rows != ref.rows || syn.columns != ref.columns)
+    if (syn.rows != ref.rows || syn.columns != ref.columns)  // rasters have no lines
         throw DataError({reference.path, 0}, "size mismatch: " + std::to_string(ref.rows) +
                                                  " rows, " + std::to_string(ref.columns) +
                                                  " columns, but " + synthetic.path + " has " +

@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,7 +39,8 @@ void fill_whole_image(Side& side, const std::vector<double>& pixels) {
     side.median = stats::median(pixels);
 }
 
-// All control-point values equal: the ranks have no spread and rho is undefined.
+// All control-point values equal: the ranks have no spread and rho is undefined. A
+// condition of all the points together, so the error names the .cpt without a line.
 void require_spread(const std::vector<double>& values, const std::string& band,
                     const std::string& image, const std::string& cpt_path) {
     for (double v : values)
@@ -51,20 +51,22 @@ void require_spread(const std::vector<double>& values, const std::string& band,
 }
 
 // Ranks, RMS, bias and ROC of one band whose point values are filled in, then the
-// whole-image statistics and histograms.
+// whole-image statistics and histograms. A statistic left undefined (StatsError)
+// becomes a DataError naming the band and the .cpt: it concerns all the points
+// together, so no line.
 void finish_band(BandComparison& band, const std::vector<double>& syn_pixels,
                  const std::vector<double>& ref_pixels, int bins, const PointComparison& cmp) {
     const std::string& cpt_path = cmp.cpt_path;
     std::string label = band.name == "combined" ? band.name : "band " + band.name;
     require_spread(band.synthetic.values, label, cmp.synthetic_path, cpt_path);
     require_spread(band.reference.values, label, cmp.reference_path, cpt_path);
-    band.synthetic.ranks = stats::average_ranks(band.synthetic.values);
-    band.reference.ranks = stats::average_ranks(band.reference.values);
-    band.rms = stats::rms_difference(band.synthetic.values, band.reference.values);
-    band.bias = stats::bias(band.synthetic.values, band.reference.values);
     try {
+        band.synthetic.ranks = stats::average_ranks(band.synthetic.values);
+        band.reference.ranks = stats::average_ranks(band.reference.values);
+        band.rms = stats::rms_difference(band.synthetic.values, band.reference.values);
+        band.bias = stats::bias(band.synthetic.values, band.reference.values);
         band.roc = stats::rank_order_correlation(band.synthetic.values, band.reference.values);
-    } catch (const std::invalid_argument& e) {
+    } catch (const stats::StatsError& e) {
         throw DataError({cpt_path, 0}, label + ": " + e.what());
     }
     fill_whole_image(band.synthetic, syn_pixels);
@@ -119,6 +121,7 @@ std::vector<std::pair<int, int>> band_pairs(const BandMap& map, int synthetic_ch
     return pairs;
 }
 
+// Errors name the image without a line: it is a raster, not a text file of records.
 void require_no_nan_pixels(const NamedImage& img) {
     const auto& im = *img.image;
     if (im.data.empty()) throw DataError({img.path, 0}, "empty image (no pixels)");
@@ -165,7 +168,7 @@ PointComparison compare_points(const NamedImage& synthetic, const NamedImage& re
     const auto& syn = *synthetic.image;
     const auto& ref = *reference.image;
     auto pairs = band_pairs(map, syn.channels, ref.channels);
-    if (cpt.points.size() < 2)
+    if (cpt.points.size() < 2)  // a condition of the whole .cpt: no line
         throw DataError({cpt_path, 0}, "only " + std::to_string(cpt.points.size()) +
                                            " control point: the rank-order correlation "
                                            "needs at least 2");

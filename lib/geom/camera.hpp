@@ -5,13 +5,13 @@
 // right x down = forward. Conventions are those of adv(5).
 #pragma once
 
-#include <array>
-
+#include "geo/vec3.hpp"
 #include "io/adv.hpp"
 
 namespace sigchain::geom {
 
-using Vec3 = std::array<double, 3>;
+// The shared 3-vector; the name geom::Vec3 stays for callers outside geom.
+using geo::Vec3;
 
 struct FrameCamera {
     Vec3 position{};  // pinhole, scene units
@@ -36,8 +36,10 @@ struct FrameCamera {
 // angles line) if the azimuth's vector is parallel to the line of sight.
 FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file = "");
 
-Vec3 cross(const Vec3& a, const Vec3& b);
-double dot(const Vec3& a, const Vec3& b);
-Vec3 normalized(const Vec3& v);
+// Forwarders to lib/geo/vec3.hpp, kept only for bench/bench_trace.cpp until it calls
+// geo::cross, geo::dot and geo::unit itself.
+using geo::cross;
+using geo::dot;
+inline Vec3 normalized(const Vec3& v) { return geo::unit(v); }
 
 }  // namespace sigchain::geom

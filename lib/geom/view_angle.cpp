@@ -29,11 +29,11 @@ Vec3 reference_direction(const FrameCamera& cam) {
     double n = std::hypot(h[0], h[1]);
     if (n > std::sin(0.01 / kRad)) return {h[0] / n, h[1] / n, 0.0};
     Vec3 up{-cam.down[0], -cam.down[1], 0.0};
-    return normalized(up);
+    return geo::unit(up);
 }
 
 double signed_view_angle_deg(const Vec3& d, const Vec3& ref) {
-    Vec3 u = normalized(d);
+    Vec3 u = geo::unit(d);
     double off_nadir = std::acos(std::clamp(-u[2], -1.0, 1.0)) * kRad;
     double along = u[0] * ref[0] + u[1] * ref[1];
     return along < 0 ? -off_nadir : off_nadir;
@@ -62,7 +62,7 @@ ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& sce
                     (i & 4) ? b.upper[2] : b.lower[2]};
         Vec3 d{corner[0] - cam.position[0], corner[1] - cam.position[1],
                corner[2] - cam.position[2]};
-        if (dot(d, d) > 0) box.add(signed_view_angle_deg(d, ref));
+        if (geo::dot(d, d) > 0) box.add(signed_view_angle_deg(d, ref));
     }
     rep.bounding_box = box.range();
 

@@ -54,7 +54,7 @@ scene::GeoOrigin parse_geo_origin(const std::string& text, const std::string& op
     double v[3] = {0, 0, 0};
     for (std::size_t i = 0; i < fields.size(); ++i) {
         try {
-            v[i] = parse_double(fields[i], {option, 0}, "a number");
+            v[i] = parse_double(fields[i], {option, 0}, "a number");  // an option: no line
         } catch (const DataError&) {
             throw bad("numbers");
         }
@@ -72,6 +72,7 @@ void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
     load.allow_degenerate = true;  // geometry only: a degenerate facet is never hit
     load.origin = job.origin;
     scene::Scene sc = scene::load_scene(job.scene_path, load);
+    // The scene as a whole and the whole field of view: conditions of no single line.
     if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
     ViewAngleReport rep = find_view_angles(cam, sc, job.grid);
     if (job.method == ViewAngleMethod::FieldOfView && !rep.field_of_view)

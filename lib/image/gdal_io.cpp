@@ -76,6 +76,7 @@ std::string envi_data_file(const std::string& path) {
     throw IoError(path + ": cannot open: no ENVI data file (.img, .bsq, .dat) beside the header");
 }
 
+// Errors name the image only: GDAL reads its metadata without line numbers.
 void read_wavelengths(GDALDataset& ds, const std::string& path, Image& image) {
     std::vector<double> values;
     std::string units;
@@ -117,6 +118,7 @@ void read_units(GDALDataset& ds, Image& image) {
 
 namespace detail {
 
+// Errors name the image only: a binary raster has no lines.
 Image read_gdal(const std::string& path) {
     gdal_init();
     const std::string data_path = envi_data_file(path);
@@ -158,6 +160,7 @@ std::string wavelength_list(const std::vector<double>& wavelength_um) {
     return s + "}";
 }
 
+// Errors name the output file only: they concern the cube in memory, not a line.
 void check_cube(const std::string& path, const Image& cube) {
     if (cube.channels < 1 || cube.rows < 1 || cube.columns < 1)
         throw DataError({path, 0}, "cannot write an empty cube");

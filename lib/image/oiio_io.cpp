@@ -37,6 +37,7 @@ std::vector<T> interleave(const Image& image) {
 }
 
 template <typename T>
+// Errors in this file name the image only: binary rasters have no lines.
 void read_as(ImageInput& in, TypeDesc type, const std::string& path, Image& image) {
     std::vector<T> buffer(image.plane_size() * image.channels);
     if (!in.read_image(0, 0, 0, image.channels, type, buffer.data()))

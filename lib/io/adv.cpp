@@ -10,7 +10,7 @@ namespace sigchain::io {
 
 namespace {
 
-std::array<double, 3> parse_point(LineCursor& cur, const char* what) {
+geo::Vec3 parse_point(LineCursor& cur, const char* what) {
     auto f = cur.fields(3, what);
     SourceLocation at = cur.where();
     std::string w(what);

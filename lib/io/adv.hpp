@@ -2,11 +2,11 @@
 // where it looks.
 #pragma once
 
-#include <array>
 #include <ostream>
 #include <string>
 
 #include "core/text.hpp"
+#include "geo/vec3.hpp"
 #include "io/registry.hpp"
 
 namespace sigchain::io {
@@ -18,9 +18,9 @@ enum class SensorKind { Frame, Line, Pushbroom };
 // The line of sight runs from `camera` to `target`; the angles only orient the image
 // (adv(5) gives the full convention).
 struct Adv {
-    std::array<double, 3> target{};  // target point (scene units)
-    std::array<double, 3> camera{};  // camera point (scene units)
-    double elevation_deg = 0;        // camera angles as AutoCAD DVIEW records them
+    geo::Vec3 target{};        // target point (scene units)
+    geo::Vec3 camera{};        // camera point (scene units)
+    double elevation_deg = 0;  // camera angles as AutoCAD DVIEW records them
     double azimuth_deg = 0;
     double twist_deg = 0;
     double focal_length_mm = 0;

@@ -191,15 +191,12 @@ std::size_t gdb_facet_count(const Gdb& gdb) {
 
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
 // The largest distance between two vertices (0 when all coincide).
 double facet_size(const std::vector<Vec3>& v) {
     double size = 0;
     for (std::size_t i = 0; i < v.size(); ++i)
-        for (std::size_t j = i + 1; j < v.size(); ++j) size = std::max(size, norm(sub(v[i], v[j])));
+        for (std::size_t j = i + 1; j < v.size(); ++j)
+            size = std::max(size, geo::norm(geo::sub(v[i], v[j])));
     return size;
 }
 
@@ -212,11 +209,11 @@ void facet_problems(const GdbFacet& f, std::vector<std::string>& out) {
     }
     for (std::size_t i = 0; i < v.size(); ++i)
         for (std::size_t j = i + 1; j < v.size(); ++j)
-            if (norm(sub(v[i], v[j])) <= 1e-9 * size)
+            if (geo::norm(geo::sub(v[i], v[j])) <= 1e-9 * size)
                 out.push_back("vertices " + std::to_string(i + 1) + " and " +
                               std::to_string(j + 1) + " coincide");
     Vec3 n = newell_normal(v);
-    double twice_area = norm(n);
+    double twice_area = geo::norm(n);
     if (twice_area <= 1e-9 * size * size) {
         out.push_back("zero area (collinear vertices)");
         return;
@@ -227,13 +224,13 @@ void facet_problems(const GdbFacet& f, std::vector<std::string>& out) {
         for (const auto& p : v)
             for (int k = 0; k < 3; ++k) centre[k] += p[k] / 4;
         double off = 0;
-        for (const auto& p : v) off = std::max(off, std::abs(dot(sub(p, centre), unit)));
+        for (const auto& p : v) off = std::max(off, std::abs(geo::dot(geo::sub(p, centre), unit)));
         if (off > kGdbPlanarTolerance * size)
             out.push_back("non-planar quad (a vertex is " + format_number(off) +
                           " from the plane, tolerance " +
                           format_number(kGdbPlanarTolerance * size) + ")");
     }
-    double c = std::min(1.0, std::abs(dot(unit, f.normal)) / norm(f.normal));
+    double c = std::min(1.0, std::abs(geo::dot(unit, f.normal)) / geo::norm(f.normal));
     double off_deg = std::acos(c) * 180.0 / 3.14159265358979323846;
     if (off_deg > kGdbNormalToleranceDeg)
         out.push_back("normal is " + format_number(std::round(off_deg * 100) / 100) +
@@ -263,10 +260,10 @@ std::string polygon_degeneracy(const std::vector<Vec3>& v) {
     if (size == 0) return "all vertices coincide";
     for (std::size_t i = 0; i < v.size(); ++i)
         for (std::size_t j = i + 1; j < v.size(); ++j)
-            if (norm(sub(v[i], v[j])) <= 1e-9 * size)
+            if (geo::norm(geo::sub(v[i], v[j])) <= 1e-9 * size)
                 return "vertices " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
                        " coincide";
-    if (norm(newell_normal(v)) <= 1e-9 * size * size) return "zero area (collinear vertices)";
+    if (geo::norm(newell_normal(v)) <= 1e-9 * size * size) return "zero area (collinear vertices)";
     return "";
 }
 

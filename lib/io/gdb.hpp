@@ -8,11 +8,13 @@
 #include <vector>
 
 #include "core/text.hpp"
+#include "geo/vec3.hpp"
 #include "io/registry.hpp"
 
 namespace sigchain::io {
 
-using Vec3 = std::array<double, 3>;
+// The shared 3-vector; the name io::Vec3 stays for the geometry writers (lib/scenegen).
+using geo::Vec3;
 
 // One facet (FACE). Coordinates in scene units (from the .odb or the .adv `units`),
 // scene frame x east, y north, z up.

@@ -30,7 +30,7 @@ struct Atmosphere::Data {
     SpectralGrid grid;
     bool sun_known = false;
     double sun_zenith_deg = 0, sun_azimuth_deg = 0;
-    Vec3 sun_direction{0, 0, 1};
+    geo::Vec3 sun_direction{0, 0, 1};
     std::vector<double> es_tau1;        // Es * tau1 per sample
     std::vector<double> sun_at_ground;  // es_tau1, or zeros when the sun is down
     // View angles (increasing) and, per view, per sample: tau2, L_us, L_ue.
@@ -56,10 +56,13 @@ struct Atmosphere::Data {
         sun_known = true;
         sun_zenith_deg = zenith_deg;
         sun_azimuth_deg = azimuth_deg;
-        sun_direction = direction_from_angles(zenith_deg, azimuth_deg);
+        sun_direction = geo::direction_from_angles(zenith_deg * kDegToRad, azimuth_deg * kDegToRad);
         sun_at_ground = sun_up() ? es_tau1 : std::vector<double>(es_tau1.size(), 0.0);
     }
+    void merge_spectra(const std::vector<io::Rad>& rads, const std::vector<std::string>& files);
+    void merge_views(const std::vector<io::Rad>& rads);
     void build_sky_grid(const io::RadSky& sky);
+    SkyCell merge_sky_cell(const std::vector<io::Rad>& rads, std::size_t c);
     void load_upwelled(const std::vector<io::Rad>& rads, const std::vector<std::string>& files);
 };
 
@@ -72,7 +75,8 @@ double azimuth_difference_deg(double a, double b) {
     return std::min(d, 360 - d);
 }
 
-// The grids of `rad` (file `file`) against those of the first file.
+// The grids of `rad` (file `file`) against those of the first file. Errors name the
+// file only: a disagreement between two files belongs to no line of either.
 void check_same_grids(const io::Rad& first, const std::string& first_file, const io::Rad& rad,
                       const std::string& file) {
     auto fail = [&](const std::string& what) {
@@ -100,6 +104,9 @@ void check_same_grids(const io::Rad& first, const std::string& first_file, const
             fail("sky hemisphere grid differs from that of");
 }
 
+// The tables' sizes and order. parse_rad checks these at their lines as it reads; here
+// they guard a Rad made in memory (uniform_rad, tests), which has no lines: the errors
+// name the file only.
 void check_shape(const io::Rad& rad, const std::string& file) {
     if (rad.samples.empty()) throw DataError({file, 0}, "no spectral samples");
     if (rad.views.empty()) throw DataError({file, 0}, "no view angles");
@@ -128,7 +135,8 @@ void check_shape(const io::Rad& rad, const std::string& file) {
 }  // namespace
 
 // The UPWELLED grids of every band merged on the spectral grid, when all files have
-// one and the grids agree; none when no file has one.
+// one and the grids agree; none when no file has one. The errors compare whole grids
+// (or re-check a Rad made in memory, as check_shape), so they name the file only.
 void Atmosphere::Data::load_upwelled(const std::vector<io::Rad>& rads,
                                      const std::vector<std::string>& files) {
     Data& d = *this;
@@ -143,15 +151,14 @@ void Atmosphere::Data::load_upwelled(const std::vector<io::Rad>& rads,
         if (up->zenith_count < 1 || up->azimuth_count < 1 ||
             up->cells.size() != static_cast<std::size_t>(up->zenith_count * up->azimuth_count))
             throw DataError({files[b], 0}, "UPWELLED grid: cell count is not rings x cells");
-        bool same = up->zenith_count == first->zenith_count &&
-                    up->azimuth_count == first->azimuth_count;
+        bool same =
+            up->zenith_count == first->zenith_count && up->azimuth_count == first->azimuth_count;
         for (std::size_t c = 0; same && c < up->cells.size(); ++c)
             same = std::abs(up->cells[c].view_zenith_deg - first->cells[c].view_zenith_deg) <=
                        kGridTolerance_deg &&
                    std::abs(up->cells[c].azimuth_deg - first->cells[c].azimuth_deg) <=
                        kGridTolerance_deg;
-        if (!same)
-            throw DataError({files[b], 0}, "UPWELLED grid differs from that of " + files[0]);
+        if (!same) throw DataError({files[b], 0}, "UPWELLED grid differs from that of " + files[0]);
         for (const auto& c : up->cells)
             if (c.scattered_radiance.size() != rads[b].samples.size() ||
                 c.emitted_radiance.size() != rads[b].samples.size())
@@ -207,6 +214,80 @@ void Atmosphere::Data::build_sky_grid(const io::RadSky& sky) {
     }
 }
 
+// The spectral grid: the samples of every band in file order, each band named by its
+// file's stem, with Es * tau1 per sample.
+void Atmosphere::Data::merge_spectra(const std::vector<io::Rad>& rads,
+                                     const std::vector<std::string>& files) {
+    for (std::size_t b = 0; b < rads.size(); ++b) {
+        grid.band_names.push_back(stem_of(files[b]));
+        for (const auto& s : rads[b].samples) {
+            grid.wavelength_um.push_back(s.wavelength_um);
+            grid.band_of_sample.push_back(static_cast<int>(b));
+            es_tau1.push_back(s.solar_irradiance * s.sun_transmission);
+        }
+    }
+}
+
+// The path terms of every view angle, the bands' samples side by side.
+void Atmosphere::Data::merge_views(const std::vector<io::Rad>& rads) {
+    const std::size_t n = grid.size();
+    const auto& views = rads[0].views;
+    std::size_t nv = views.size();
+    tau2.resize(nv * n), scattered.resize(nv * n), emitted.resize(nv * n);
+    for (std::size_t v = 0; v < nv; ++v) {
+        view_angles_deg.push_back(views[v].view_angle_deg);
+        range_km.push_back(views[v].range_km);
+        std::size_t k = 0;
+        for (const auto& rad : rads)
+            for (const auto& p : rad.views[v].path) {
+                tau2[v * n + k] = p.transmission;
+                scattered[v * n + k] = p.scattered_radiance;
+                emitted[v * n + k] = p.emitted_radiance;
+                ++k;
+            }
+    }
+}
+
+// Sky cell `c` of the first file's grid with the radiances of every band, its edges,
+// exact solid angle and direction; adds its share to the horizontal irradiances.
+SkyCell Atmosphere::Data::merge_sky_cell(const std::vector<io::Rad>& rads, std::size_t c) {
+    const io::RadSky& sky = *rads[0].sky;
+    int r = static_cast<int>(c) / columns, col = static_cast<int>(c) % columns;
+    SkyCell cell;
+    cell.zenith_deg = sky.cells[c].zenith_deg;
+    cell.azimuth_deg = sky.cells[c].azimuth_deg;
+    cell.zenith_lo_deg = ring_edges_deg[r];
+    cell.zenith_hi_deg = ring_edges_deg[r + 1];
+    cell.azimuth_hi_deg = azimuth_hi_deg[col];
+    cell.azimuth_lo_deg = col > 0 ? azimuth_hi_deg[col - 1] : azimuth_hi_deg[columns - 1] - 360;
+    // The solid angle of the cell's edges, exactly: (cos z_lo - cos z_hi)(a_hi -
+    // a_lo), so that lookup (sky_cell), solid angles and irradiance describe one
+    // partition of the hemisphere (the file's values agree when its centres lie
+    // midway, as build_radiance and uniform_rad write them).
+    double c_lo = std::cos(cell.zenith_lo_deg * kDegToRad);
+    double c_hi = std::cos(cell.zenith_hi_deg * kDegToRad);
+    cell.solid_angle_sr = (c_lo - c_hi) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
+    cell.direction =
+        geo::direction_from_angles(cell.zenith_deg * kDegToRad, cell.azimuth_deg * kDegToRad);
+    for (const auto& rad : rads) {
+        const auto& src = rad.sky->cells[c];
+        cell.scattered.insert(cell.scattered.end(), src.scattered_radiance.begin(),
+                              src.scattered_radiance.end());
+        cell.emitted.insert(cell.emitted.end(), src.emitted_radiance.begin(),
+                            src.emitted_radiance.end());
+    }
+    // Int cos(z) d(omega) over the cell = 0.5 (sin^2 z_hi - sin^2 z_lo) (a_hi - a_lo).
+    double s_hi = std::sin(cell.zenith_hi_deg * kDegToRad);
+    double s_lo = std::sin(cell.zenith_lo_deg * kDegToRad);
+    double projected =
+        0.5 * (s_hi * s_hi - s_lo * s_lo) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        sky_irradiance[k] += cell.scattered[k] * projected;
+        sky_emitted_irradiance[k] += cell.emitted[k] * projected;
+    }
+    return cell;
+}
+
 Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
                                  const std::vector<std::string>& files) {
     if (rads.empty() || rads.size() != files.size())
@@ -216,31 +297,9 @@ Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
         if (i > 0) check_same_grids(rads[0], files[0], rads[i], files[i]);
     }
     auto d = std::make_shared<Data>();
-    std::size_t n = 0;
-    for (const auto& rad : rads) n += rad.samples.size();
-    for (std::size_t b = 0; b < rads.size(); ++b) {
-        d->grid.band_names.push_back(stem_of(files[b]));
-        for (const auto& s : rads[b].samples) {
-            d->grid.wavelength_um.push_back(s.wavelength_um);
-            d->grid.band_of_sample.push_back(static_cast<int>(b));
-            d->es_tau1.push_back(s.solar_irradiance * s.sun_transmission);
-        }
-    }
-    const auto& views = rads[0].views;
-    std::size_t nv = views.size();
-    d->tau2.resize(nv * n), d->scattered.resize(nv * n), d->emitted.resize(nv * n);
-    for (std::size_t v = 0; v < nv; ++v) {
-        d->view_angles_deg.push_back(views[v].view_angle_deg);
-        d->range_km.push_back(views[v].range_km);
-        std::size_t k = 0;
-        for (const auto& rad : rads)
-            for (const auto& p : rad.views[v].path) {
-                d->tau2[v * n + k] = p.transmission;
-                d->scattered[v * n + k] = p.scattered_radiance;
-                d->emitted[v * n + k] = p.emitted_radiance;
-                ++k;
-            }
-    }
+    d->merge_spectra(rads, files);
+    d->merge_views(rads);
+    const std::size_t n = d->grid.size();
     d->sky_irradiance.assign(n, 0.0);
     d->sky_emitted_irradiance.assign(n, 0.0);
     d->sun_at_ground.assign(n, 0.0);
@@ -248,43 +307,8 @@ Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
         const io::RadSky& sky = *rads[0].sky;
         d->has_sky = true;
         d->build_sky_grid(sky);
-        for (std::size_t c = 0; c < sky.cells.size(); ++c) {
-            int r = static_cast<int>(c) / d->columns, col = static_cast<int>(c) % d->columns;
-            SkyCell cell;
-            cell.zenith_deg = sky.cells[c].zenith_deg;
-            cell.azimuth_deg = sky.cells[c].azimuth_deg;
-            cell.zenith_lo_deg = d->ring_edges_deg[r];
-            cell.zenith_hi_deg = d->ring_edges_deg[r + 1];
-            cell.azimuth_hi_deg = d->azimuth_hi_deg[col];
-            cell.azimuth_lo_deg =
-                col > 0 ? d->azimuth_hi_deg[col - 1] : d->azimuth_hi_deg[d->columns - 1] - 360;
-            // The solid angle of the cell's edges, exactly: (cos z_lo - cos z_hi)(a_hi -
-            // a_lo), so that lookup (sky_cell), solid angles and irradiance describe one
-            // partition of the hemisphere (the file's values agree when its centres lie
-            // midway, as build_radiance and uniform_rad write them).
-            double c_lo = std::cos(cell.zenith_lo_deg * kDegToRad);
-            double c_hi = std::cos(cell.zenith_hi_deg * kDegToRad);
-            cell.solid_angle_sr =
-                (c_lo - c_hi) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
-            cell.direction = direction_from_angles(cell.zenith_deg, cell.azimuth_deg);
-            for (const auto& rad : rads) {
-                const auto& src = rad.sky->cells[c];
-                cell.scattered.insert(cell.scattered.end(), src.scattered_radiance.begin(),
-                                      src.scattered_radiance.end());
-                cell.emitted.insert(cell.emitted.end(), src.emitted_radiance.begin(),
-                                    src.emitted_radiance.end());
-            }
-            // Int cos(z) d(omega) over the cell = 0.5 (sin^2 z_hi - sin^2 z_lo) (a_hi - a_lo).
-            double s_hi = std::sin(cell.zenith_hi_deg * kDegToRad);
-            double s_lo = std::sin(cell.zenith_lo_deg * kDegToRad);
-            double projected = 0.5 * (s_hi * s_hi - s_lo * s_lo) *
-                               (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
-            for (std::size_t k = 0; k < n; ++k) {
-                d->sky_irradiance[k] += cell.scattered[k] * projected;
-                d->sky_emitted_irradiance[k] += cell.emitted[k] * projected;
-            }
-            d->cells.push_back(std::move(cell));
-        }
+        for (std::size_t c = 0; c < sky.cells.size(); ++c)
+            d->cells.push_back(d->merge_sky_cell(rads, c));
         d->place_sun(sky.sun_zenith_deg, sky.sun_azimuth_deg);
         d->load_upwelled(rads, files);
     }
@@ -294,7 +318,7 @@ Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
 }
 
 const SpectralGrid& Atmosphere::grid() const { return m_data->grid; }
-Vec3 Atmosphere::sun_direction() const { return m_data->sun_direction; }
+geo::Vec3 Atmosphere::sun_direction() const { return m_data->sun_direction; }
 bool Atmosphere::sun_up() const { return m_data->sun_up(); }
 double Atmosphere::sun_zenith_deg() const { return m_data->sun_zenith_deg; }
 double Atmosphere::sun_azimuth_deg() const { return m_data->sun_azimuth_deg; }
@@ -340,7 +364,7 @@ void Atmosphere::path(double view_angle_deg, std::span<double> tau2, std::span<d
 
 bool Atmosphere::has_upwelled() const { return m_data->has_upwelled; }
 
-void Atmosphere::path(const Vec3& line_of_sight, double view_angle_deg, std::span<double> tau2,
+void Atmosphere::path(const geo::Vec3& line_of_sight, double view_angle_deg, std::span<double> tau2,
                       std::span<double> scattered, std::span<double> emitted) const {
     const Data& d = *m_data;
     if (!d.has_upwelled) {
@@ -350,9 +374,7 @@ void Atmosphere::path(const Vec3& line_of_sight, double view_angle_deg, std::spa
     path(view_angle_deg, tau2, {}, {});
     const std::size_t n = d.grid.size();
     // View zenith off nadir and azimuth of the line of sight (clockwise from north).
-    const double len = std::sqrt(line_of_sight[0] * line_of_sight[0] +
-                                 line_of_sight[1] * line_of_sight[1] +
-                                 line_of_sight[2] * line_of_sight[2]);
+    const double len = geo::norm(line_of_sight);
     if (!(len > 0)) throw std::invalid_argument("Atmosphere::path: zero line of sight");
     const double zenith = std::acos(std::clamp(-line_of_sight[2] / len, -1.0, 1.0)) / kDegToRad;
     double azimuth = std::atan2(line_of_sight[0], line_of_sight[1]) / kDegToRad;
@@ -367,8 +389,8 @@ void Atmosphere::path(const Vec3& line_of_sight, double view_angle_deg, std::spa
     std::size_t j0 = 0, j1 = 0;
     double g = 0;
     if (na > 1) {
-        const auto hi = static_cast<std::size_t>(std::upper_bound(az.begin(), az.end(), azimuth) -
-                                                 az.begin());
+        const auto hi =
+            static_cast<std::size_t>(std::upper_bound(az.begin(), az.end(), azimuth) - az.begin());
         if (hi == 0 || hi == na) {  // across north
             j0 = na - 1, j1 = 0;
             const double span = az[0] + 360 - az[na - 1];
@@ -405,7 +427,7 @@ const std::vector<SkyCell>& Atmosphere::sky_cells() const { return m_data->cells
 // Ring by binary search over the cosines of the ring edges (log of <= ~100 rings, no
 // acos); column directly on a uniform azimuth grid, else by binary search over the
 // azimuth edges after wrapping the azimuth into [lo_0, lo_0 + 360).
-int Atmosphere::sky_cell(const Vec3& dir) const {
+int Atmosphere::sky_cell(const geo::Vec3& dir) const {
     const Data& d = *m_data;
     if (!d.has_sky || !(dir[2] > 0)) return -1;
     // Zenith beyond edge r <=> dir.z < cos(edge r): count the edges with cos > dir.z.
@@ -428,7 +450,7 @@ int Atmosphere::sky_cell(const Vec3& dir) const {
     return ring * d.columns + column;
 }
 
-void Atmosphere::add_sky_radiance(const Vec3& dir, double weight, std::span<double> out,
+void Atmosphere::add_sky_radiance(const geo::Vec3& dir, double weight, std::span<double> out,
                                   bool emitted) const {
     int c = sky_cell(dir);
     if (c < 0) return;
@@ -455,55 +477,8 @@ void Atmosphere::set_sun(double zenith_deg, double azimuth_deg) {
     m_data = d;
 }
 
-io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith_deg,
-                    double sun_azimuth_deg, double sun_irradiance_at_ground, double sky_radiance,
-                    double tau2, double path_radiance, const std::vector<double>& view_angles_deg,
-                    int zenith_rings, int azimuth_cells) {
-    if (wavelengths_um.empty() || view_angles_deg.empty() || zenith_rings < 1 || azimuth_cells < 1)
-        throw std::invalid_argument("uniform_rad: empty grid");
-    std::vector<double> wl = wavelengths_um, va = view_angles_deg;
-    std::sort(wl.begin(), wl.end());
-    std::sort(va.begin(), va.end());
-    io::Rad rad;
-    rad.sensor_altitude_km = 1;
-    rad.min_wavelength_um = wl.front(), rad.max_wavelength_um = wl.back();
-    rad.min_wavenumber_cm1 = 1e4 / wl.back(), rad.max_wavenumber_cm1 = 1e4 / wl.front();
-    rad.wavenumber_increment_cm1 =
-        wl.size() > 1 ? (rad.max_wavenumber_cm1 - rad.min_wavenumber_cm1) / (wl.size() - 1) : 0;
-    rad.min_view_angle_deg = va.front(), rad.max_view_angle_deg = va.back();
-    rad.view_angle_increment_deg = va.size() > 1 ? (va.back() - va.front()) / (va.size() - 1) : 0;
-    for (double w : wl) rad.samples.push_back({w, 1e4 / w, sun_irradiance_at_ground, 1.0});
-    for (double a : va) {
-        io::RadView v;
-        v.view_angle_deg = a;
-        v.range_km = rad.sensor_altitude_km / std::cos(std::min(std::abs(a), 89.0) * kDegToRad);
-        v.path.assign(wl.size(), io::RadPathSample{tau2, 0.0, path_radiance});
-        rad.views.push_back(std::move(v));
-    }
-    io::RadSky sky;
-    sky.sun_zenith_deg = sun_zenith_deg, sky.sun_azimuth_deg = sun_azimuth_deg;
-    sky.zenith_count = zenith_rings, sky.azimuth_count = azimuth_cells;
-    double dz = 90.0 / zenith_rings, da = 360.0 / azimuth_cells;
-    for (int r = 0; r < zenith_rings; ++r)
-        for (int c = 0; c < azimuth_cells; ++c) {
-            io::RadSkyCell cell;
-            cell.zenith_deg = (r + 0.5) * dz;
-            cell.azimuth_deg = (c + 0.5) * da;
-            // Exact: (cos z_lo - cos z_hi)(a_hi - a_lo).
-            cell.solid_angle_sr =
-                (std::cos(r * dz * kDegToRad) - std::cos((r + 1) * dz * kDegToRad)) * da *
-                kDegToRad;
-            cell.scattered_radiance.assign(wl.size(), sky_radiance);
-            cell.emitted_radiance.assign(wl.size(), 0.0);
-            sky.cells.push_back(std::move(cell));
-        }
-    rad.sky = std::move(sky);
-    return rad;
-}
-
-Vec3 direction_from_angles(double zenith_deg, double azimuth_deg) {
-    double z = zenith_deg * kDegToRad, a = azimuth_deg * kDegToRad;
-    return {std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)};
+geo::Vec3 direction_from_angles(double zenith_deg, double azimuth_deg) {
+    return geo::direction_from_angles(zenith_deg * kDegToRad, azimuth_deg * kDegToRad);
 }
 
 }  // namespace sigchain::radiometry

@@ -6,30 +6,28 @@
 // W cm-2 sr-1 um-1, angles degrees, range km.
 #pragma once
 
-#include <array>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "geo/vec3.hpp"
 #include "io/rad.hpp"
 #include "radiometry/spectral.hpp"
 
 namespace sigchain::radiometry {
 
-using Vec3 = std::array<double, 3>;
-
 // One cell of the downwelled hemisphere, with its centre direction and its
 // radiance on the render's spectral grid.
 struct SkyCell {
-    double zenith_deg = 0, azimuth_deg = 0;  // centre (azimuth clockwise from north)
+    double zenith_deg = 0, azimuth_deg = 0;         // centre (azimuth clockwise from north)
     double zenith_lo_deg = 0, zenith_hi_deg = 0;    // ring edges
     double azimuth_lo_deg = 0, azimuth_hi_deg = 0;  // cell edges (lo may be < 0)
-    double solid_angle_sr = 0;  // of the edges above, exact (the .rad's own value
-                                // agrees when its centres lie midway between edges)
-    Vec3 direction{};                // unit, ENU, toward the sky
-    std::vector<double> scattered;   // L_ds per grid sample
-    std::vector<double> emitted;     // L_de per grid sample
+    double solid_angle_sr = 0;      // of the edges above, exact (the .rad's own value
+                                    // agrees when its centres lie midway between edges)
+    geo::Vec3 direction{};          // unit, ENU, toward the sky
+    std::vector<double> scattered;  // L_ds per grid sample
+    std::vector<double> emitted;    // L_de per grid sample
 };
 
 class Atmosphere {
@@ -47,7 +45,7 @@ public:
     const SpectralGrid& grid() const;
 
     // Unit vector toward the sun (ENU) and whether it is above the horizon.
-    Vec3 sun_direction() const;
+    geo::Vec3 sun_direction() const;
     bool sun_up() const;
     double sun_zenith_deg() const;
     double sun_azimuth_deg() const;
@@ -63,7 +61,7 @@ public:
     // whose signed view angle is `view_angle_deg`: tau2 from the view-angle table, and
     // L_us and L_ue from the UPWELLED grid (rad(5)) when the tables have one, bilinear
     // in view zenith and azimuth (periodic), clamped in zenith; otherwise as path() above.
-    void path(const Vec3& line_of_sight, double view_angle_deg, std::span<double> tau2,
+    void path(const geo::Vec3& line_of_sight, double view_angle_deg, std::span<double> tau2,
               std::span<double> scattered, std::span<double> emitted) const;
     bool has_upwelled() const;
     double range_km(double view_angle_deg) const;
@@ -74,10 +72,10 @@ public:
     const std::vector<SkyCell>& sky_cells() const;
     // Index of the sky cell containing unit direction `dir` (ENU, dir[2] > 0), or -1
     // for a direction at or below the horizon. Constant time.
-    int sky_cell(const Vec3& dir) const;
+    int sky_cell(const geo::Vec3& dir) const;
     // Adds weight * (L_ds [+ L_de when `emitted`]) of the cell containing `dir` to
     // `out` (nothing for directions at or below the horizon, or without a sky).
-    void add_sky_radiance(const Vec3& dir, double weight, std::span<double> out,
+    void add_sky_radiance(const geo::Vec3& dir, double weight, std::span<double> out,
                           bool emitted) const;
     // Downwelled irradiance on a horizontal surface, sum of L cos(zenith) solid angle
     // over the cells, per grid sample (scattered, and emitted).
@@ -98,12 +96,14 @@ private:
 // zenith steps; solid angles exact, summing to 2 pi), one view angle per entry of
 // `view_angles_deg` with tau2 = `tau2` and L_us = `path_radiance`, no emission.
 io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith_deg,
-                    double sun_azimuth_deg, double sun_irradiance_at_ground,
-                    double sky_radiance, double tau2, double path_radiance,
+                    double sun_azimuth_deg, double sun_irradiance_at_ground, double sky_radiance,
+                    double tau2, double path_radiance,
                     const std::vector<double>& view_angles_deg = {-60, 0, 60},
                     int zenith_rings = 18, int azimuth_cells = 36);
 
-// Unit ENU vector for a zenith (from up) and an azimuth (clockwise from north), deg.
-Vec3 direction_from_angles(double zenith_deg, double azimuth_deg);
+// Unit ENU vector for a zenith (from up) and an azimuth (clockwise from north), deg:
+// geo::direction_from_angles of the angles in radians (kept for the tests and
+// bench/bench_trace.cpp, which give degrees).
+geo::Vec3 direction_from_angles(double zenith_deg, double azimuth_deg);
 
 }  // namespace sigchain::radiometry

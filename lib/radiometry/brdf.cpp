@@ -231,7 +231,7 @@ struct Brdf::Impl {
     }
     bool lobed() const { return shape != LobeShape::None && shape != LobeShape::Delta; }
     // lobe(alpha) / m(theta_o) for wi, wo in the facet frame (wi above the horizon).
-    double lobe_over_mass(const Vec3& wi, const Vec3& wo) const {
+    double lobe_over_mass(const geo::Vec3& wi, const geo::Vec3& wo) const {
         double c = clamp_unit(-wi[0] * wo[0] - wi[1] * wo[1] + wi[2] * wo[2]);  // cos alpha
         double u = wo[2];
         switch (shape) {
@@ -353,7 +353,7 @@ bool Brdf::is_delta() const { return shape() == LobeShape::Delta; }
 // w = (1 - s) cos(theta_i) / pi + s lobe(alpha) / m(theta_o) (brdf.hpp). Lambertian and
 // Delta have no lobe here: Lambertian ignores s (its specularity is 0), Delta leaves
 // the s part to the caller.
-double Brdf::weight(const Vec3& wi, const Vec3& wo, double specularity) const {
+double Brdf::weight(const geo::Vec3& wi, const geo::Vec3& wo, double specularity) const {
     if (wi[2] <= 0) return 0;
     if (!m_impl || m_impl->shape == LobeShape::None) return wi[2] / kPi;
     double diffuse = (1 - specularity) * wi[2] / kPi;
@@ -361,7 +361,7 @@ double Brdf::weight(const Vec3& wi, const Vec3& wo, double specularity) const {
     return diffuse + specularity * m_impl->lobe_over_mass(wi, wo);
 }
 
-double Brdf::lobe_weight(const Vec3& wi, const Vec3& wo) const {
+double Brdf::lobe_weight(const geo::Vec3& wi, const geo::Vec3& wo) const {
     if (wi[2] <= 0 || !m_impl || !m_impl->lobed()) return 0;
     return m_impl->lobe_over_mass(wi, wo);
 }
@@ -370,15 +370,15 @@ namespace {
 
 // Unit vector at (alpha, phi) about unit axis `a`, phi measured from any fixed
 // perpendicular (Frisvad-style branchless basis; the sign avoids the singularity).
-Vec3 about_axis(const Vec3& a, double alpha, double phi) {
+geo::Vec3 about_axis(const geo::Vec3& a, double alpha, double phi) {
     double sign = std::copysign(1.0, a[2]);
     double p = -1 / (sign + a[2]);
     double q = a[0] * a[1] * p;
-    Vec3 t{1 + sign * a[0] * a[0] * p, sign * q, -sign * a[0]};
-    Vec3 b{q, sign + a[1] * a[1] * p, -a[1]};
+    geo::Vec3 t{1 + sign * a[0] * a[0] * p, sign * q, -sign * a[0]};
+    geo::Vec3 b{q, sign + a[1] * a[1] * p, -a[1]};
     double sa = std::sin(alpha), ca = std::cos(alpha);
     double cp = std::cos(phi), sp = std::sin(phi);
-    Vec3 v;
+    geo::Vec3 v;
     for (int i = 0; i < 3; ++i) v[i] = sa * (cp * t[i] + sp * b[i]) + ca * a[i];
     return v;
 }
@@ -388,11 +388,12 @@ Vec3 about_axis(const Vec3& a, double alpha, double phi) {
 // Mixture sampling: a cosine direction (Malley's method) with probability 1 - s, a lobe
 // direction (alpha by the lobe's inverse CDF, azimuth uniform) with probability s.
 // Lambertian and Delta: cosine only (Delta's mirror term is the caller's).
-BrdfSample Brdf::sample(const Vec3& wo, double specularity, double u1, double u2, double u3) const {
+BrdfSample Brdf::sample(const geo::Vec3& wo, double specularity, double u1, double u2,
+                        double u3) const {
     BrdfSample out;
     bool lobe = m_impl && m_impl->lobed() && u1 < specularity;
     if (lobe) {
-        Vec3 axis = mirror(wo);
+        geo::Vec3 axis = mirror(wo);
         double radius = m_impl->shape == LobeShape::LinearCone
                             ? m_impl->cone_radius(std::acos(std::clamp(wo[2], 0.0, 1.0)))
                             : 0;
@@ -406,7 +407,7 @@ BrdfSample Brdf::sample(const Vec3& wo, double specularity, double u1, double u2
     return out;
 }
 
-double Brdf::pdf(const Vec3& wi, const Vec3& wo, double specularity) const {
+double Brdf::pdf(const geo::Vec3& wi, const geo::Vec3& wo, double specularity) const {
     double cosine = std::max(0.0, wi[2]) / kPi;
     if (!m_impl || !m_impl->lobed()) return cosine;
     double s = std::clamp(specularity, 0.0, 1.0);

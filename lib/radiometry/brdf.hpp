@@ -22,9 +22,9 @@
 #include <memory>
 #include <vector>
 
-namespace sigchain::radiometry {
+#include "geo/vec3.hpp"
 
-using Vec3 = std::array<double, 3>;
+namespace sigchain::radiometry {
 
 enum class LobeShape {
     None,         // lambertian: no specular part
@@ -36,15 +36,15 @@ enum class LobeShape {
 };
 
 struct BrdfSample {
-    Vec3 wi{};         // sampled direction (local frame); may be below the horizon
-    double pdf = 0;    // density per steradian of the whole mixture (pdf())
+    geo::Vec3 wi{};  // sampled direction (local frame); may be below the horizon
+    double pdf = 0;  // density per steradian of the whole mixture (pdf())
 };
 
 class Brdf {
 public:
     static Brdf lambertian();
-    static Brdf delta();                              // dirsig
-    static Brdf cone(double half_angle_deg);          // uniform within the half angle
+    static Brdf delta();                      // dirsig
+    static Brdf cone(double half_angle_deg);  // uniform within the half angle
     // White's cone (seed 5.2.3): radius interpolated in the specular angle from the
     // .ems table rows at 0, 15, ..., 90 deg (base_radius_deg of each row).
     static Brdf linear_cone(const std::array<double, 7>& base_radius_deg);
@@ -56,18 +56,18 @@ public:
 
     // w(wi, wo) of the header comment for specularity s (0 below the horizon; the
     // delta part is not included: 0 for Delta's specular term).
-    double weight(const Vec3& wi, const Vec3& wo, double specularity) const;
+    double weight(const geo::Vec3& wi, const geo::Vec3& wo, double specularity) const;
     // The specular part alone: lobe(alpha) / m(theta_o), per sr.
-    double lobe_weight(const Vec3& wi, const Vec3& wo) const;
+    double lobe_weight(const geo::Vec3& wi, const geo::Vec3& wo) const;
     // Importance sampling of w for montecarlo: with probability 1 - s a cosine-
     // weighted direction, with probability s a direction from the (untruncated)
     // lobe about the mirror direction; u1, u2, u3 uniform in [0, 1). pdf() is the
     // density of that mixture, so that w / pdf is an unbiased estimator weight.
     // Lambertian and Delta: cosine samples only, pdf = cos/pi (Delta's mirror term
     // s * L_i(mirror) is the caller's, one exact ray; weight() excludes it).
-    BrdfSample sample(const Vec3& wo, double specularity, double u1, double u2,
+    BrdfSample sample(const geo::Vec3& wo, double specularity, double u1, double u2,
                       double u3) const;
-    double pdf(const Vec3& wi, const Vec3& wo, double specularity) const;
+    double pdf(const geo::Vec3& wi, const geo::Vec3& wo, double specularity) const;
 
 private:
     struct Impl;
@@ -75,6 +75,6 @@ private:
 };
 
 // Mirror direction of wo about the local normal (0, 0, 1).
-inline Vec3 mirror(const Vec3& wo) { return {-wo[0], -wo[1], wo[2]}; }
+inline geo::Vec3 mirror(const geo::Vec3& wo) { return {-wo[0], -wo[1], wo[2]}; }
 
 }  // namespace sigchain::radiometry

@@ -23,7 +23,7 @@ std::vector<BandSamples> group_bands(const std::vector<io::Sen>& sens,
         groups.push_back({first, count});
         first += count;
     }
-    if (first != cube_bands)
+    if (first != cube_bands)  // the cube is a binary raster: no line
         throw DataError({cube_path, 0}, std::to_string(cube_bands) +
                                             " bands, but the .sen files (" + sen_paths.front() +
                                             (sens.size() > 1 ? " ..." : "") + ") have " +
@@ -62,7 +62,7 @@ std::vector<float> band_radiance(const image::Image& cube, BandSamples samples,
         const float* band = cube.data.data() + (samples.first + k) * plane;
         for (std::size_t p = 0; p < plane; ++p) sum[p] += w * band[p];
     }
-    if (!(weight_sum > 0))
+    if (!(weight_sum > 0))  // a sum over all the .sen's responses: no single line
         throw DataError({sen_path, 0}, "the response integrates to zero over the band's samples");
     std::vector<float> out(plane);
     for (std::size_t p = 0; p < plane; ++p) out[p] = static_cast<float>(sum[p] / weight_sum);

@@ -15,7 +15,7 @@ PixelBox parse_box(const std::string& text, const std::string& option) {
     long v[4];
     for (int i = 0; i < 4; ++i) {
         try {
-            v[i] = parse_count(fields[i], {option, 0}, "a pixel index");
+            v[i] = parse_count(fields[i], {option, 0}, "a pixel index");  // an option: no line
         } catch (const DataError&) {
             throw UsageError(option +
                              ": expected ROW0,COL0,ROW1,COL1 (non-negative integers), "
@@ -42,6 +42,7 @@ double box_mean(const std::vector<float>& plane, long rows, long columns, const 
 GainBias solve_gain_bias(double radiance1, double count1, double radiance2, double count2,
                          const std::string& where_file) {
     // Two equations count_i = gain * L_i + bias (seed 4.2.4, two gray cards).
+    // The errors name `where_file` only: they concern both cards, not one of its lines.
     if (radiance1 == radiance2)
         throw DataError({where_file, 0},
                         "the two cards have the same band radiance: gain is undefined");

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <stdexcept>
 
 namespace sigchain::stats {
 
@@ -12,12 +11,12 @@ namespace {
 
 void require_same_size(std::span<const double> a, std::span<const double> b) {
     if (a.size() != b.size())
-        throw std::invalid_argument("samples of different lengths (" + std::to_string(a.size()) +
-                                    " and " + std::to_string(b.size()) + ")");
+        throw StatsError("samples of different lengths (" + std::to_string(a.size()) + " and " +
+                         std::to_string(b.size()) + ")");
 }
 
 void require_some(std::span<const double> values) {
-    if (values.empty()) throw std::invalid_argument("no values");
+    if (values.empty()) throw StatsError("no values");
 }
 
 }  // namespace
@@ -52,7 +51,7 @@ const char* rank_method_name(RankMethod method) {
 
 double pearson(std::span<const double> a, std::span<const double> b) {
     require_same_size(a, b);
-    if (a.size() < 2) throw std::invalid_argument("fewer than 2 values: correlation undefined");
+    if (a.size() < 2) throw StatsError("fewer than 2 values: correlation undefined");
     double ma = mean(a), mb = mean(b);
     double sab = 0, saa = 0, sbb = 0;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -60,8 +59,7 @@ double pearson(std::span<const double> a, std::span<const double> b) {
         saa += (a[i] - ma) * (a[i] - ma);
         sbb += (b[i] - mb) * (b[i] - mb);
     }
-    if (saa == 0 || sbb == 0)
-        throw std::invalid_argument("all values are equal: correlation undefined");
+    if (saa == 0 || sbb == 0) throw StatsError("all values are equal: correlation undefined");
     // r = sum (a - ma)(b - mb) / sqrt(sum (a - ma)^2 sum (b - mb)^2) (Pearson 1896).
     return sab / std::sqrt(saa * sbb);
 }
@@ -69,7 +67,7 @@ double pearson(std::span<const double> a, std::span<const double> b) {
 RankCorrelation rank_order_correlation(std::span<const double> a, std::span<const double> b) {
     require_same_size(a, b);
     if (a.size() < 2)
-        throw std::invalid_argument("fewer than 2 points: the rank-order correlation is undefined");
+        throw StatsError("fewer than 2 points: the rank-order correlation is undefined");
     require_no_nan(a, "first sample");
     require_no_nan(b, "second sample");
     auto ra = average_ranks(a);
@@ -145,18 +143,18 @@ Range common_range(std::span<const std::span<const double>> samples) {
             r.lo = std::min(r.lo, v);
             r.hi = std::max(r.hi, v);
         }
-    if (!any) throw std::invalid_argument("no values for a histogram");
+    if (!any) throw StatsError("no values for a histogram");
     return r;
 }
 
 Histogram histogram(std::span<const double> values, Range range, int bins) {
-    if (bins < 1) throw std::invalid_argument("a histogram needs at least 1 bin");
+    if (bins < 1) throw StatsError("a histogram needs at least 1 bin");
     Histogram h{range.lo, range.hi, {}};
     h.counts.assign(range.hi > range.lo ? static_cast<std::size_t>(bins) : 1, 0);
     double width = h.bin_width();
     for (double v : values) {
         if (!(v >= range.lo && v <= range.hi))
-            throw std::invalid_argument("value outside the histogram range");
+            throw StatsError("value outside the histogram range");
         std::size_t i = width > 0 ? static_cast<std::size_t>((v - range.lo) / width) : 0;
         h.counts[std::min(i, h.counts.size() - 1)] += 1;
     }
@@ -165,8 +163,7 @@ Histogram histogram(std::span<const double> values, Range range, int bins) {
 
 void require_no_nan(std::span<const double> values, const std::string& what) {
     for (std::size_t i = 0; i < values.size(); ++i)
-        if (std::isnan(values[i]))
-            throw std::invalid_argument(what + ": NaN at index " + std::to_string(i));
+        if (std::isnan(values[i])) throw StatsError(what + ": NaN at index " + std::to_string(i));
 }
 
 }  // namespace sigchain::stats

@@ -3,8 +3,8 @@
 // histograms with shared bin edges.
 //
 // All functions take plain value sequences and are pure (thread-safe). Bad arguments
-// (too few values, NaN, sequences of different lengths) throw std::invalid_argument
-// with a message that callers wrap with the file and band in question.
+// (too few values, NaN, sequences of different lengths) throw StatsError with a
+// message that callers wrap with the file and band in question.
 #pragma once
 
 #include <cstddef>
@@ -12,7 +12,19 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace sigchain::stats {
+
+// A statistic the values leave undefined (too few values, NaN, all values tied,
+// sequences of different lengths, a value outside a histogram's range). what() is the
+// bare reason: the values carry no file or line, so a caller that knows them rethrows
+// a DataError at the record concerned. Uncaught, it is still an Error (exit status 1
+// with the message), not an internal error.
+class StatsError : public Error {
+public:
+    using Error::Error;
+};
 
 // Ranks 1..n in ascending order of value (rank 1 = lowest, as in seed tables 4.5 and
 // 4.6); tied values all get the mean of the ranks they span ("average ranks").
@@ -34,7 +46,7 @@ struct RankCorrelation {
 
 // Rank-order correlation of two paired samples (n >= 2, no NaN). Without ties in
 // either sample, Spearman's formula of seed 3.5; with ties, the Pearson correlation of
-// the average ranks (the tie-corrected coefficient). Throws std::invalid_argument for
+// the average ranks (the tie-corrected coefficient). Throws StatsError for
 // n < 2 (undefined), NaN, different lengths, or a sample whose values all tie (its
 // ranks have no spread, so the correlation is undefined).
 RankCorrelation rank_order_correlation(std::span<const double> a, std::span<const double> b);
@@ -76,7 +88,7 @@ Range common_range(std::span<const std::span<const double>> samples);
 // use common_range). bins >= 1.
 Histogram histogram(std::span<const double> values, Range range, int bins);
 
-// Throws std::invalid_argument "WHAT: NaN at index I" for the first NaN.
+// Throws StatsError "WHAT: NaN at index I" for the first NaN.
 void require_no_nan(std::span<const double> values, const std::string& what);
 
 }  // namespace sigchain::stats

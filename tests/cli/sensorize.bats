@@ -95,14 +95,30 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
 }
 
 @test "noise is reproducible with a seed and --float writes a TIFF" {
-    run -0 --separate-stderr sensorize --shot-noise 2 --read-noise 1 --noise-seed 4 --psf-sigma 0.7 \
+    run -0 --separate-stderr sensorize --shot-noise 2 --read-noise 1 --seed 4 --psf-sigma 0.7 \
         "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen" "$CUBE/red1.sen" -o a.ppm
-    run -0 --separate-stderr sensorize --shot-noise 2 --read-noise 1 --noise-seed 4 --psf-sigma 0.7 \
+    run -0 --separate-stderr sensorize --shot-noise 2 --read-noise 1 --seed 4 --psf-sigma 0.7 \
         "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen" "$CUBE/red1.sen" -o b.ppm
     cmp a.ppm b.ppm
     run -0 --separate-stderr sensorize --float "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o f.tif
     [ -s f.tif ]
     run -2 --separate-stderr sensorize --float "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o f.png
+}
+
+@test "--noise-seed is a deprecated alias of --seed; the default seed is 0" {
+    local noisy=(--shot-noise 2 --read-noise 1 "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/green1.sen"
+        "$CUBE/red1.sen")
+    run -0 --separate-stderr sensorize "${noisy[@]}" --seed 4 -o new.ppm
+    run -0 --separate-stderr sensorize "${noisy[@]}" --noise-seed 4 -o old.ppm
+    assert_equal "${stderr_lines[0]}" "sensorize: warning: --noise-seed is deprecated: use --seed"
+    cmp new.ppm old.ppm
+    run -0 --separate-stderr sensorize "${noisy[@]}" -o default.ppm
+    run -0 --separate-stderr sensorize "${noisy[@]}" --seed 0 -o zero.ppm
+    cmp default.ppm zero.ppm
+    ! cmp -s default.ppm new.ppm || fail "seeds 0 and 4 gave the same noise"
+    run -2 --separate-stderr sensorize "${noisy[@]}" --seed 4 --noise-seed 4 -o both.ppm
+    [[ "$stderr" == *"give --seed or --noise-seed, not both"* ]] || fail "stderr: $stderr"
+    [ ! -e both.ppm ]
 }
 
 @test "--psf reads a kernel file; a bad one exits 1 naming FILE:LINE" {

@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
         auto job = job_from(vm);
         std::vector<std::string> failures;
         try {
-            sigchain::AtomicOutput out(vm["output"].as<std::string>());
+            sigchain::AtomicOutput out(cli::output_path(vm));
             failures = cmp::run_compare_job(job, out.stream());
             out.commit();
         } catch (const sigchain::UsageError&) {

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
         if (job.grid < 1) throw sigchain::UsageError("--grid must be at least 1");
         if (vm.count("origin"))
             job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
-        sigchain::AtomicOutput out(vm["output"].as<std::string>());
+        sigchain::AtomicOutput out(cli::output_path(vm));
         geom::run_view_angle_job(job, out.stream());
         out.commit();
         return 0;

@@ -43,6 +43,48 @@ void report(const sensor::SensorizeReport& r, const sensor::SensorizeJob& job,
     }
 }
 
+// --seed, or its former name --noise-seed (with a warning); not both.
+std::uint64_t noise_seed(const cli::po::variables_map& vm, const cli::Context& ctx) {
+    if (!vm.count("noise-seed")) return cli::seed(vm);
+    if (!vm["seed"].defaulted())
+        throw sigchain::UsageError("give --seed or --noise-seed, not both");
+    ctx.warn("--noise-seed is deprecated: use --seed");
+    return vm["noise-seed"].as<std::uint64_t>();
+}
+
+// The job from the options (usage errors for missing or contradictory ones).
+sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Context& ctx) {
+    auto inputs = cli::args(vm, "input");
+    if (inputs.size() < 2) throw sigchain::UsageError("expected a cube and at least one .sen file");
+    sensor::SensorizeJob job;
+    job.cube_path = inputs[0];
+    job.sen_paths.assign(inputs.begin() + 1, inputs.end());
+    // Missing -o: check_job's usage error says what -o must name (image or directory).
+    job.output_path = vm.count("output") ? cli::output_path(vm) : std::string();
+    job.bits = vm["bits"].as<int>();
+    job.float_output = vm.count("float") > 0;
+    job.noise.seed = noise_seed(vm, ctx);
+    if (vm.count("shot-noise")) job.noise.electrons_per_count = vm["shot-noise"].as<double>();
+    if (vm.count("shot-noise") && job.noise.electrons_per_count <= 0)
+        throw sigchain::UsageError("--shot-noise must be positive");
+    if (vm.count("read-noise")) job.noise.read_noise_counts = vm["read-noise"].as<double>();
+    if (vm.count("psf-sigma")) {
+        job.psf_sigma_px = vm["psf-sigma"].as<double>();
+        if (!(job.psf_sigma_px > 0)) throw sigchain::UsageError("--psf-sigma must be positive");
+    }
+    if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
+    job.calibrate = vm.count("calibrate") > 0;
+    if (job.calibrate) {
+        for (const char* o : {"card1", "card2", "target1", "target2"})
+            if (!vm.count(o)) throw sigchain::UsageError(std::string("--calibrate needs --") + o);
+        job.calibration.card1 = sensor::parse_box(vm["card1"].as<std::string>(), "--card1");
+        job.calibration.card2 = sensor::parse_box(vm["card2"].as<std::string>(), "--card2");
+        job.calibration.target1 = parse_targets(vm["target1"].as<std::string>(), "--target1");
+        job.calibration.target2 = parse_targets(vm["target2"].as<std::string>(), "--target2");
+    }
+    return job;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,7 +96,6 @@ int main(int argc, char** argv) {
     tool.add_options()("bits,b", cli::po::value<int>()->default_value(8),
                        "bits per count: 8, 12 or 16")(
         "float", "write band radiance unquantised (float TIFF) instead of counts")(
-        "noise-seed", cli::po::value<std::uint64_t>()->default_value(0), "seed of the noise")(
         "shot-noise", cli::po::value<double>(), "photo-electrons per count E (adds shot noise)")(
         "read-noise", cli::po::value<double>(), "read noise standard deviation, counts")(
         "psf-sigma", cli::po::value<double>(), "Gaussian point-spread function, sigma in pixels")(
@@ -64,37 +105,15 @@ int main(int argc, char** argv) {
         "card2", cli::po::value<std::string>(), "card 2 pixel box ROW0,COL0,ROW1,COL1")(
         "target1", cli::po::value<std::string>(), "card 1 target counts: C or C1,C2,...")(
         "target2", cli::po::value<std::string>(), "card 2 target counts: C or C1,C2,...");
-    tool.add_output_option();
+    // Default 0, as --noise-seed had: an image with noise and no seed stays the same.
+    tool.add_seed_option("seed of the noise (default 0)", 0);
+    // The former name of --seed, still accepted (sensorize(1), DEPRECATED OPTIONS).
+    tool.add_hidden_options()("noise-seed", cli::po::value<std::uint64_t>(), "use --seed");
+    tool.add_required_output_option(
+        "IMAGE",
+        "the image to write (required); with --calibrate, the directory for the .sen files");
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
-        auto inputs = cli::args(vm, "input");
-        if (inputs.size() < 2)
-            throw sigchain::UsageError("expected a cube and at least one .sen file");
-        sensor::SensorizeJob job;
-        job.cube_path = inputs[0];
-        job.sen_paths.assign(inputs.begin() + 1, inputs.end());
-        job.output_path = vm["output"].as<std::string>();
-        job.bits = vm["bits"].as<int>();
-        job.float_output = vm.count("float") > 0;
-        job.noise.seed = vm["noise-seed"].as<std::uint64_t>();
-        if (vm.count("shot-noise")) job.noise.electrons_per_count = vm["shot-noise"].as<double>();
-        if (vm.count("shot-noise") && job.noise.electrons_per_count <= 0)
-            throw sigchain::UsageError("--shot-noise must be positive");
-        if (vm.count("read-noise")) job.noise.read_noise_counts = vm["read-noise"].as<double>();
-        if (vm.count("psf-sigma")) {
-            job.psf_sigma_px = vm["psf-sigma"].as<double>();
-            if (!(job.psf_sigma_px > 0)) throw sigchain::UsageError("--psf-sigma must be positive");
-        }
-        if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
-        job.calibrate = vm.count("calibrate") > 0;
-        if (job.calibrate) {
-            for (const char* o : {"card1", "card2", "target1", "target2"})
-                if (!vm.count(o))
-                    throw sigchain::UsageError(std::string("--calibrate needs --") + o);
-            job.calibration.card1 = sensor::parse_box(vm["card1"].as<std::string>(), "--card1");
-            job.calibration.card2 = sensor::parse_box(vm["card2"].as<std::string>(), "--card2");
-            job.calibration.target1 = parse_targets(vm["target1"].as<std::string>(), "--target1");
-            job.calibration.target2 = parse_targets(vm["target2"].as<std::string>(), "--target2");
-        }
+        const auto job = job_from(vm, ctx);
         const auto result = sensor::run_sensorize(job);
         report(result, job, ctx);
         if (job.calibrate) sensor::write_calibration_table(std::cout, result);

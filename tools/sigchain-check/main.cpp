@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
         const auto& format = vm["format"].as<std::string>();
         if (vm.count("rewrite")) {
             if (files.size() != 1) throw sigchain::UsageError("--rewrite takes exactly one FILE");
-            sigchain::AtomicOutput out(vm["output"].as<std::string>());
+            sigchain::AtomicOutput out(cli::output_path(vm));
             sigchain::io::check_file(files[0], format, &out.stream());
             out.commit();
             return 0;

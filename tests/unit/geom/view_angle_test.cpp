@@ -10,7 +10,7 @@
 #include "geom/view_angle_job.hpp"
 
 using namespace sigchain;
-using geom::Vec3;
+using geo::Vec3;
 
 namespace {
 

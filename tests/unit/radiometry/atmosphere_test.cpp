@@ -15,6 +15,8 @@
 namespace sigchain::radiometry {
 namespace {
 
+using geo::Vec3;
+
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
 const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/seed/";
@@ -209,7 +211,6 @@ TEST(Atmosphere, DirsigRadWithoutSkyHasNoSunUntilSetSun) {
     EXPECT_DOUBLE_EQ(a.sun_irradiance_at_ground()[0],
                      rad.samples[0].solar_irradiance * rad.samples[0].sun_transmission);
 }
-
 
 // The UPWELLED grid (rad(5) 1.1): L_us at a grid node is the node's value, bilinear
 // between nodes, periodic across north; tau2 still comes from the view-angle table;

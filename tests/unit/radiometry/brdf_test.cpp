@@ -14,6 +14,8 @@
 namespace sigchain::radiometry {
 namespace {
 
+using geo::Vec3;
+
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
 

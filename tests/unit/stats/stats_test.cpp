@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <vector>
 
 using namespace sigchain::stats;
@@ -66,22 +65,35 @@ TEST(RankCorrelation, IdenticalIsOneReversedIsMinusOne) {
 }
 
 TEST(RankCorrelation, FewerThanTwoPointsIsUndefined) {
-    EXPECT_THROW(rank_order_correlation(V{1}, V{2}), std::invalid_argument);
-    EXPECT_THROW(rank_order_correlation(V{}, V{}), std::invalid_argument);
+    EXPECT_THROW(rank_order_correlation(V{1}, V{2}), StatsError);
+    EXPECT_THROW(rank_order_correlation(V{}, V{}), StatsError);
 }
 
 TEST(RankCorrelation, NanIsAnError) {
     double nan = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THROW(rank_order_correlation(V{1, nan, 3}, V{1, 2, 3}), std::invalid_argument);
-    EXPECT_THROW(rank_order_correlation(V{1, 2, 3}, V{1, 2, nan}), std::invalid_argument);
+    EXPECT_THROW(rank_order_correlation(V{1, nan, 3}, V{1, 2, 3}), StatsError);
+    EXPECT_THROW(rank_order_correlation(V{1, 2, 3}, V{1, 2, nan}), StatsError);
 }
 
 TEST(RankCorrelation, AllTiedIsUndefined) {
-    EXPECT_THROW(rank_order_correlation(V{4, 4, 4}, V{1, 2, 3}), std::invalid_argument);
+    EXPECT_THROW(rank_order_correlation(V{4, 4, 4}, V{1, 2, 3}), StatsError);
 }
 
 TEST(RankCorrelation, DifferentLengthsAreAnError) {
-    EXPECT_THROW(rank_order_correlation(V{1, 2, 3}, V{1, 2}), std::invalid_argument);
+    EXPECT_THROW(rank_order_correlation(V{1, 2, 3}, V{1, 2}), StatsError);
+}
+
+// A StatsError is one of the project's typed errors, so a tool that does not catch it
+// reports it as bad data (exit 1), never as an internal error; its message is the bare
+// reason, which callers prefix with the file and band.
+TEST(StatsError, IsASigchainErrorWithTheBareReason) {
+    try {
+        median(V{});
+        FAIL() << "median of no values did not throw";
+    } catch (const sigchain::Error& e) {
+        EXPECT_NE(dynamic_cast<const StatsError*>(&e), nullptr);
+        EXPECT_STREQ(e.what(), "no values");
+    }
 }
 
 // Differences syn - ref = -2 -5 2 -5 9: squares 4 25 4 25 81 = 139, RMS = sqrt(27.8);
@@ -91,7 +103,7 @@ TEST(Differences, RmsAndBiasByHand) {
     EXPECT_NEAR(rms_difference(syn, ref), std::sqrt(27.8), kTol);
     EXPECT_NEAR(bias(syn, ref), -0.2, kTol);
     EXPECT_EQ(rms_difference(syn, syn), 0.0);
-    EXPECT_THROW(rms_difference(V{}, V{}), std::invalid_argument);
+    EXPECT_THROW(rms_difference(V{}, V{}), StatsError);
 }
 
 TEST(Moments, MeanStdMedian) {
@@ -103,7 +115,7 @@ TEST(Moments, MeanStdMedian) {
     EXPECT_DOUBLE_EQ(median(V{3, 1, 2}), 2.0);
     EXPECT_DOUBLE_EQ(median(V{4, 1, 3, 2}), 2.5);
     EXPECT_DOUBLE_EQ(population_std(V{7}), 0.0);
-    EXPECT_THROW(median(V{}), std::invalid_argument);
+    EXPECT_THROW(median(V{}), StatsError);
 }
 
 TEST(Histograms, SharedEdgesForBothImages) {
@@ -127,5 +139,5 @@ TEST(Histograms, ConstantValuesMakeOneBin) {
 }
 
 TEST(Histograms, ValueOutsideTheRangeIsAnError) {
-    EXPECT_THROW(histogram(V{9}, {0, 1}, 2), std::invalid_argument);
+    EXPECT_THROW(histogram(V{9}, {0, 1}, 2), StatsError);
 }
