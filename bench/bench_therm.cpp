@@ -12,7 +12,6 @@
 // facet is the steadier figure.
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +20,8 @@
 #include <thread>
 #include <vector>
 
+#include "bench_timing.hpp"
+#include "core/parallel.hpp"
 #include "io/snd.hpp"
 #include "io/wth.hpp"
 #include "radiometry/material.hpp"
@@ -29,7 +30,6 @@
 #include "thermal/slab.hpp"
 #include "thermal/therm_job.hpp"
 #include "trace/shadow_history.hpp"
-#include "bench_timing.hpp"
 #include "trace_bench_scene.hpp"
 
 namespace {
@@ -97,20 +97,15 @@ Answer solve(const thermal::FacetThermal& f, const io::Shd& shd, const io::ShdFa
     return a;
 }
 
-// Solves facets [0, count) on `threads` threads (dynamic, one facet at a time).
+// Solves facets [0, count) on `threads` threads (sigchain::parallel_for, as therm).
 std::vector<Answer> solve_all(const std::vector<thermal::FacetThermal>& facets, const io::Shd& shd,
                               const std::vector<thermal::EnvironmentStep>& env, std::size_t i24,
                               std::size_t count, unsigned threads) {
     std::vector<Answer> out(count);
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i; (i = next++) < count;)
-            out[i] = solve(facets[i], shd, shd.facets[i], env, i24);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
+    parallel_for(static_cast<long>(count), ParallelOptions{threads, {}}, [&](long i, unsigned) {
+        const auto k = static_cast<std::size_t>(i);
+        out[k] = solve(facets[k], shd, shd.facets[k], env, i24);
+    });
     return out;
 }
 

@@ -111,14 +111,15 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
         double scale = io::meters_per_odb_unit(obj.units) / options.scene_meters_per_unit;
         auto placed = io::placements(obj);
         for (std::size_t i = 0; i < placed.size(); ++i)
-            sink.place(it->second, to_scene(placed[i], scale),
-                       std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
+            sink.place_in_units(it->second, placed[i], scale,
+                                std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
     }
 }
 
 void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink& sink,
                   std::vector<std::string>* warnings) {
     const io::Gdb gdb = io::read_gdb_file(path);
+    // Line 0: a lone .gdb has no .odb object record; the location names the file.
     const std::size_t mesh =
         sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, {path, 0});
     sink.place(mesh, identity_affine(), "");
@@ -140,6 +141,11 @@ private:
 };
 
 }  // namespace
+
+void SceneSink::place_in_units(std::size_t mesh, const io::Matrix4& matrix, double scale,
+                               const std::string& key_prefix) {
+    place(mesh, to_scene(matrix, scale), key_prefix);
+}
 
 void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,
                     std::vector<std::string>* warnings) {

@@ -1,4 +1,5 @@
-// Loading a scene file (.gdb, or an .odb assembly of .gdb objects) into a Scene.
+// Loading a scene file (.gdb, or an .odb assembly of .gdb, OBJ and DEM objects) into a
+// Scene, or into any SceneSink (trace's shadow history, therm's facets).
 #pragma once
 
 #include <optional>
@@ -7,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "io/gdb.hpp"
+#include "io/odb.hpp"
 #include "scene/scene.hpp"
 
 namespace sigchain::scene {
@@ -38,7 +40,7 @@ struct LoadOptions {
 };
 
 struct LoadReport {
-    std::vector<std::string> warnings;  // "FILE:LINE: ..." each
+    std::vector<std::string> warnings;                                  // "FILE:LINE: ..." each
     std::size_t meshes = 0, placements = 0, facets = 0, triangles = 0;  // placed counts
 };
 
@@ -54,6 +56,11 @@ public:
                                  const SourceLocation& object) = 0;
     virtual void place(std::size_t mesh, const Affine& transform,
                        const std::string& key_prefix) = 0;
+    // An .odb placement: `matrix` (row-major 4x4) in the object's UNITS and `scale` from
+    // them to scene units. By default place(mesh, matrix x scale as an Affine, prefix);
+    // a sink that turns directions only (therm's normals) may take the matrix unscaled.
+    virtual void place_in_units(std::size_t mesh, const io::Matrix4& matrix, double scale,
+                                const std::string& key_prefix);
 };
 
 // Assembles `path` (.gdb or .odb, as load_scene) into `sink`; warnings (degenerate
@@ -64,7 +71,6 @@ void assemble_scene(const std::string& path, const LoadOptions& options, SceneSi
 // Loads a .gdb, an .odb (GDB, OBJ with MATERIAL_MAP, DEM with MATERIAL_ID or
 // LANDUSE_FILENAME/LANDUSE_MAP; see odb(5)) or a lone OBJ. Throws DataError/IoError
 // naming the file and line.
-Scene load_scene(const std::string& path, const LoadOptions& options,
-                 LoadReport* report = nullptr);
+Scene load_scene(const std::string& path, const LoadOptions& options, LoadReport* report = nullptr);
 
 }  // namespace sigchain::scene

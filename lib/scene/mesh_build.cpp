@@ -18,27 +18,28 @@ std::string facet_where(const FacetOrigin& origin) {
 MeshBuilder::MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings)
     : m_policy(policy), m_warnings(warnings) {}
 
-std::uint32_t MeshBuilder::add_vertex(const Vec3& p) {
+std::uint32_t MeshBuilder::add_vertex(const geo::Vec3& p) {
     for (double c : p) m_mesh.vertices.push_back(static_cast<float>(c));
     m_points.push_back(p);
     return static_cast<std::uint32_t>(m_points.size() - 1);
 }
 
 bool MeshBuilder::faces_up(const std::vector<std::uint32_t>& t) const {
-    const Vec3& a = m_points.at(t.at(0));
-    const Vec3& b = m_points.at(t.at(1));
-    const Vec3& c = m_points.at(t.at(2));
+    const geo::Vec3& a = m_points.at(t.at(0));
+    const geo::Vec3& b = m_points.at(t.at(1));
+    const geo::Vec3& c = m_points.at(t.at(2));
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) >= 0;
 }
 
 bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
-                            const FacetAttributes& attributes, FacetOrigin origin) {
+                            const FacetAttributes& attributes, FacetOrigin origin,
+                            const geo::Vec3& facing) {
     if (polygon.size() < 3)
         throw DataError({origin.file, origin.line},
                         origin.description + ": a facet needs at least 3 vertices");
+    m_polygon.clear();
+    for (std::uint32_t i : polygon) m_polygon.push_back(m_points.at(i));
     if (m_policy != DegeneratePolicy::Keep) {
-        m_polygon.clear();
-        for (std::uint32_t i : polygon) m_polygon.push_back(m_points.at(i));
         std::string why = io::polygon_degeneracy(m_polygon);
         if (!why.empty()) {
             if (m_policy == DegeneratePolicy::Error)
@@ -62,6 +63,7 @@ bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
     }
     m_mesh.facets.push_back(attributes);
     m_mesh.origins.push_back(std::move(origin));
+    m_mesh.normals.push_back(geo::norm(facing) > 0 ? facing : io::newell_normal(m_polygon));
     return true;
 }
 
@@ -78,12 +80,14 @@ MeshData mesh_from_gdb(const io::Gdb& gdb, DegeneratePolicy policy,
                 a.material_id = f.material_id;
                 a.thickness_cm = f.thickness_cm;
                 a.temperature_c = f.temperature_c;
+                a.power = f.power;
+                a.exposed_area = f.exposed_area;
                 FacetOrigin o{gdb.file, f.line,
                               "object " + quoted(obj.name) + " (" + obj.id + "), part " +
                                   quoted(part.name) + " (" + part.id + "), facet " +
                                   quoted(f.name) + " (" + f.id + ")",
                               f.id};
-                b.add_facet(polygon, a, std::move(o));
+                b.add_facet(polygon, a, std::move(o), f.normal);
             }
     return b.take();
 }

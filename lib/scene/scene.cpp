@@ -111,7 +111,8 @@ struct Scene::Impl {
         }
     }
     void grow_bounds(const std::vector<float>& v, const Affine& t);
-    std::optional<Hit> query(const Vec3& o, const Vec3& d, double tnear, double tfar) const;
+    std::optional<Hit> query(const geo::Vec3& o, const geo::Vec3& d, double tnear,
+                             double tfar) const;
 };
 
 Scene::Scene() : m_impl(std::make_unique<Impl>()) {}
@@ -166,7 +167,7 @@ std::size_t Scene::add_mesh(MeshData data, double scale) {
 // Exact bounds: transform every vertex (Embree's instance bounds are conservative).
 void Scene::Impl::grow_bounds(const std::vector<float>& v, const Affine& t) {
     for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
-        Vec3 p;
+        geo::Vec3 p;
         for (int r = 0; r < 3; ++r)
             p[r] =
                 t[4 * r] * v[i] + t[4 * r + 1] * v[i + 1] + t[4 * r + 2] * v[i + 2] + t[4 * r + 3];
@@ -183,10 +184,10 @@ void Scene::place(std::size_t mesh, const Affine& t, std::string key_prefix) {
     Placement p{mesh, std::move(key_prefix), normal_matrix(t)};
     auto id = static_cast<unsigned>(m_impl->placements.size());
     Mesh& target = m_impl->meshes[mesh];
-    RTCGeometry direct = t == identity_affine() && !target.attached_directly &&
-                                 !target.data.triangle_facet.empty()
-                             ? rtcGetGeometry(target.scene, 0)
-                             : nullptr;
+    RTCGeometry direct =
+        t == identity_affine() && !target.attached_directly && !target.data.triangle_facet.empty()
+            ? rtcGetGeometry(target.scene, 0)
+            : nullptr;
     if (direct) {
         target.attached_directly = true;
         // An untransformed copy (a lone .gdb, a terrain) is attached to the top scene
@@ -217,7 +218,8 @@ void Scene::commit() {
 
 namespace {
 
-void set_ray(RTCRay& ray, const Vec3& o, const Vec3& d, double len, double tnear, double tfar) {
+void set_ray(RTCRay& ray, const geo::Vec3& o, const geo::Vec3& d, double len, double tnear,
+             double tfar) {
     ray.org_x = static_cast<float>(o[0]);
     ray.org_y = static_cast<float>(o[1]);
     ray.org_z = static_cast<float>(o[2]);
@@ -236,7 +238,7 @@ void set_ray(RTCRay& ray, const Vec3& o, const Vec3& d, double len, double tnear
 
 }  // namespace
 
-std::optional<Hit> Scene::Impl::query(const Vec3& o, const Vec3& d, double tnear,
+std::optional<Hit> Scene::Impl::query(const geo::Vec3& o, const geo::Vec3& d, double tnear,
                                       double tfar) const {
     double len = std::hypot(d[0], d[1], d[2]);
     if (!(len > 0) || !(tfar >= tnear)) return std::nullopt;
@@ -266,15 +268,16 @@ std::optional<Hit> Scene::Impl::query(const Vec3& o, const Vec3& d, double tnear
     return h;
 }
 
-std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d) const {
+std::optional<Hit> Scene::intersect(const geo::Vec3& o, const geo::Vec3& d) const {
     return m_impl->query(o, d, 0.0, std::numeric_limits<double>::infinity());
 }
 
-std::optional<Hit> Scene::intersect(const Vec3& o, const Vec3& d, double tnear, double tfar) const {
+std::optional<Hit> Scene::intersect(const geo::Vec3& o, const geo::Vec3& d, double tnear,
+                                    double tfar) const {
     return m_impl->query(o, d, tnear, tfar);
 }
 
-bool Scene::occluded(const Vec3& o, const Vec3& d, double tnear, double tfar) const {
+bool Scene::occluded(const geo::Vec3& o, const geo::Vec3& d, double tnear, double tfar) const {
     double len = std::hypot(d[0], d[1], d[2]);
     if (!(len > 0) || !(tfar >= tnear)) return false;
     RTCIntersectContext ctx;
@@ -294,8 +297,12 @@ const FacetOrigin& Scene::origin(const Hit& hit) const {
     return origin(mesh_of_placement(hit.object), hit.facet);
 }
 
+std::string facet_key(const std::string& key_prefix, const FacetOrigin& origin) {
+    return key_prefix + origin.id;
+}
+
 std::string Scene::facet_key(const Hit& hit) const {
-    return m_impl->placements.at(hit.object).prefix + origin(hit).id;
+    return scene::facet_key(m_impl->placements.at(hit.object).prefix, origin(hit));
 }
 
 std::size_t Scene::placement_count() const { return m_impl->placements.size(); }

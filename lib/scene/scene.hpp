@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "geo/vec3.hpp"
 #include "io/gdb.hpp"
 
 namespace sigchain::scene {
 
-using Vec3 = std::array<double, 3>;
 // Row-major 3x4 affine transform (rotation/scale | translation), object -> scene.
 using Affine = std::array<double, 12>;
 
@@ -27,7 +27,7 @@ struct Hit {
     double distance = 0;       // along the unit ray direction, scene units
     std::uint32_t object = 0;  // index of the placed object (instance order)
     std::uint32_t facet = 0;   // facet index within its mesh (.gdb: file order over parts)
-    Vec3 normal{};             // unit geometric normal, scene frame, as the facet is
+    geo::Vec3 normal{};        // unit geometric normal, scene frame, as the facet is
                                // wound (not flipped toward the ray); a mirroring
                                // placement (det < 0) keeps it on the same side of the
                                // surface (M^-T n), not the mirrored winding
@@ -36,8 +36,10 @@ struct Hit {
 // What a facet is made of and how to name it in messages and in .tmp/.shd keys.
 struct FacetAttributes {
     long material_id = 0;
-    double thickness_cm = -1;   // -1: the material's THICKNESS
-    double temperature_c = -1;  // -1: from therm (a .tmp)
+    double thickness_cm = -1;         // -1: the material's THICKNESS
+    double temperature_c = -1;        // -1: from therm (a .tmp)
+    double power = -1;                // W m-2 generated in the facet; -1: the material's (gdb(5))
+    double exposed_area = -1;         // faces open to the air; -1: the material's (gdb(5))
     std::uint32_t texture_curve = 0;  // .ems curve (land use / texture map), 0 default
 };
 
@@ -55,19 +57,29 @@ struct FacetOrigin {
 // units, triangles as vertex indices, each triangle's facet, and per facet its
 // attributes and origin.
 struct MeshData {
-    std::vector<float> vertices;             // x y z ...
-    std::vector<std::uint32_t> triangles;    // i j k ...
+    std::vector<float> vertices;           // x y z ...
+    std::vector<std::uint32_t> triangles;  // i j k ...
     std::vector<std::uint32_t> triangle_facet;
     std::vector<FacetAttributes> facets;
-    std::vector<FacetOrigin> origins;        // parallel to facets
+    std::vector<FacetOrigin> origins;  // parallel to facets
+    // Parallel to facets (MeshBuilder fills it), mesh frame, any length: the side the
+    // facet faces. A .gdb FACE normal as given (gdb(5): the normal, not the winding,
+    // says which way a facet faces); the Newell normal of its polygon in double
+    // precision when that normal is zero, and for OBJ and DEM facets (their winding).
+    std::vector<geo::Vec3> normals;
 };
+
+// A placed facet's key in .shd and .tmp files (tmp(5)): the placement's prefix ("2.3/"
+// in an .odb, "" for a lone .gdb) and the facet's id. trace and therm both name
+// facets with it.
+std::string facet_key(const std::string& key_prefix, const FacetOrigin& origin);
 
 // Triangulates a .gdb (quads split along the 0-2 diagonal).
 MeshData mesh_from_gdb(const io::Gdb& gdb);
 
 struct Bounds {
-    Vec3 lower{};
-    Vec3 upper{};
+    geo::Vec3 lower{};
+    geo::Vec3 upper{};
     bool empty() const { return lower[0] > upper[0]; }
 };
 
@@ -91,12 +103,13 @@ public:
     void commit();
 
     // The nearest hit along origin + t*direction (direction need not be unit), or none.
-    std::optional<Hit> intersect(const Vec3& origin, const Vec3& direction) const;
+    std::optional<Hit> intersect(const geo::Vec3& origin, const geo::Vec3& direction) const;
     // The same between distances tnear and tfar (along the normalised direction).
-    std::optional<Hit> intersect(const Vec3& origin, const Vec3& direction, double tnear,
+    std::optional<Hit> intersect(const geo::Vec3& origin, const geo::Vec3& direction, double tnear,
                                  double tfar) const;
     // True if anything lies between tnear and tfar (Embree occlusion query; faster).
-    bool occluded(const Vec3& origin, const Vec3& direction, double tnear, double tfar) const;
+    bool occluded(const geo::Vec3& origin, const geo::Vec3& direction, double tnear,
+                  double tfar) const;
 
     const FacetAttributes& attributes(const Hit& hit) const;  // constant time
     const FacetOrigin& origin(const Hit& hit) const;

@@ -35,6 +35,7 @@ WeatherSample interpolate_weather(const io::Wth& wth, double time_h, const std::
     const auto& rows = wth.rows;
     const double tol = io::kWthTimeTolerance_h;
     if (rows.empty() || time_h < rows.front().time_h - tol || time_h > rows.back().time_h + tol)
+        // No line: the window as a whole falls short, no one row is wrong.
         throw DataError({file, 0}, "the weather window (" +
                                        (rows.empty() ? std::string("no rows")
                                                      : hours_str(rows.front().time_h) + " to " +
@@ -114,7 +115,7 @@ EnvironmentStep environment_at(const io::Wth& wth, const std::string& wth_file, 
         sky_emissivity(clear_sky_emissivity(w.air_k, w.vapour_pressure_hpa), 1 - w.sky_exposure);
     e.sky_longwave_w_m2 = eps_sky * kStefanBoltzmann * std::pow(w.air_k, 4);
     const double z = sp.zenith_deg * kDegToRad, az = sp.azimuth_deg * kDegToRad;
-    e.sun = {std::sin(z) * std::sin(az), std::sin(z) * std::cos(az), std::cos(z)};
+    e.sun = geo::direction_from_angles(z, az);
     e.sun_up = sp.zenith_deg < 90;
     const double cos_z = std::cos(z);
     // Measured direct insolation is read as falling on a horizontal surface (wth(5)).

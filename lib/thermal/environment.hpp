@@ -3,17 +3,15 @@
 // sun's direction, sampled on the thermal model's time grid.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
 #include "atmos/scene_clock.hpp"
+#include "geo/vec3.hpp"
 #include "io/snd.hpp"
 #include "io/wth.hpp"
 
 namespace sigchain::thermal {
-
-using Vec3 = std::array<double, 3>;
 
 inline constexpr double kStefanBoltzmann = 5.670374419e-8;  // W m-2 K-4 (CODATA 2018)
 inline constexpr double kWattsPerSquareMeterPerLangleyPerHour = 41840.0 / 3600.0;  // 11.62
@@ -67,7 +65,7 @@ struct EnvironmentStep {
     double sky_longwave_w_m2 = 0;   // eps_sky sigma T_air^4, the whole sky hemisphere
     double direct_normal_w_m2 = 0;  // beam irradiance on a surface facing the sun
     double diffuse_horizontal_w_m2 = 0;
-    Vec3 sun{0, 0, 1};  // unit vector toward the sun, scene frame (x E, y N, z up)
+    geo::Vec3 sun{0, 0, 1};  // unit vector toward the sun, scene frame (x E, y N, z up)
     bool sun_up = false;
 };
 

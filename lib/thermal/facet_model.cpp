@@ -7,7 +7,7 @@
 namespace sigchain::thermal {
 
 double absorbed_solar_w_m2(const FacetThermal& f, const EnvironmentStep& e, double sun_factor) {
-    double cos_i = f.normal[0] * e.sun[0] + f.normal[1] * e.sun[1] + f.normal[2] * e.sun[2];
+    double cos_i = geo::dot(f.normal, e.sun);
     double direct = e.sun_up ? sun_factor * e.direct_normal_w_m2 * std::max(cos_i, 0.0) : 0.0;
     // Isotropic sky: the diffuse irradiance scales with the sky the facet sees.
     double diffuse = f.sky_view_factor * e.diffuse_horizontal_w_m2;

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "geo/vec3.hpp"
 #include "thermal/environment.hpp"
 #include "thermal/slab.hpp"
 
@@ -16,7 +17,7 @@ struct FacetThermal {
     double solar_absorptivity = 0;  // the material's VISIBLE_EMISSIVITY
     double thermal_emissivity = 0;  // THERMAL_EMISSIVITY (front and back)
     double back_exposure = 0;       // 0: back face insulated .. 1: back fully exposed to air
-    Vec3 normal{0, 0, 1};           // unit, scene frame (x E, y N, z up)
+    geo::Vec3 normal{0, 0, 1};      // unit, scene frame (x E, y N, z up)
     double sky_view_factor = 1;     // fraction of the whole sky seen (shd(5)), 0..1
 };
 

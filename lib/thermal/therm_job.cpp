@@ -2,17 +2,14 @@
 #include "thermal/therm_job.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
-#include <mutex>
 #include <sstream>
-#include <thread>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "core/error.hpp"
 #include "core/output.hpp"
+#include "core/parallel.hpp"
 
 namespace sigchain::thermal {
 
@@ -120,13 +117,19 @@ struct Inputs {
     std::vector<SceneFacet> facets;
 };
 
-Inputs read_inputs(const ThermJob& job) {
+// The inputs; degenerate facets the scene keeps are told as info (trace
+// --shadow-history has warned about them).
+Inputs read_inputs(const ThermJob& job, const Reporter& reporter) {
     Inputs in;
     in.shd = io::read_shd_file(job.shd_path);
     in.wth = io::read_wth_file(job.wth_path);
     in.mat = io::read_mat_file(job.mat_path);
     in.snd = io::read_snd_file(job.snd_path);
-    in.facets = read_scene_facets(job.scene_path);
+    // DEM objects are placed about the .snd's point, as trace places them.
+    const scene::GeoOrigin origin{in.snd.latitude_deg, in.snd.longitude_east_deg, 0.0};
+    std::vector<std::string> degenerate;
+    in.facets = read_scene_facets(job.scene_path, origin, &degenerate);
+    for (const std::string& m : degenerate) reporter.info(m);
     return in;
 }
 
@@ -134,6 +137,8 @@ Inputs read_inputs(const ThermJob& job) {
 double check_times(const Inputs& in, const ThermJob& job) {
     const double scene = in.shd.scene_time_hours;
     const double snd_scene = scene_wth_hours(in.snd);
+    // No line in these three: the .shd header's time against the .snd's date and
+    // time, and the .wth's rows as a whole (its rows keep no line numbers).
     if (std::abs(scene - snd_scene) > 1e-3)
         throw DataError({job.shd_path, 0}, "scene time " + num(scene) + " h differs from " +
                                                job.snd_path + "'s " + num(snd_scene) +
@@ -201,59 +206,41 @@ std::vector<FacetAnswer> solve_all(const std::vector<FacetTask>& tasks, const io
                                    const std::vector<EnvironmentStep>& env, std::size_t i24,
                                    unsigned threads) {
     std::vector<FacetAnswer> answers(tasks.size());
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, tasks.size()));
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto work = [&] {
-        try {
-            for (std::size_t i; (i = next++) < tasks.size();)
-                answers[i] = solve_facet(tasks[i], shd, env, i24);
-        } catch (...) {
-            std::lock_guard lock(failure_mutex);
-            if (!failure) failure = std::current_exception();
-            next = tasks.size();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallel_for(static_cast<long>(tasks.size()), ParallelOptions{threads, {}},
+                 [&](long i, unsigned) {
+                     const auto k = static_cast<std::size_t>(i);
+                     answers[k] = solve_facet(tasks[k], shd, env, i24);
+                 });
     return answers;
 }
 
 void describe_model(const Inputs& in, double start, std::size_t steps, const ThermJob& job,
-                    const EnvironmentSummary& summary, const ThermHooks& hooks) {
-    if (!hooks.info) return;
-    hooks.info("run from " + num(start) + " h to the scene time " + num(in.shd.scene_time_hours) +
-               " h, " + std::to_string(steps) + " backward-Euler steps of " + num(job.time_step_s) +
-               " s; " + std::to_string(kSlabCells) + " cells through each facet");
+                    const EnvironmentSummary& summary, const Reporter& reporter) {
+    reporter.info("run from " + num(start) + " h to the scene time " +
+                  num(in.shd.scene_time_hours) + " h, " + std::to_string(steps) +
+                  " backward-Euler steps of " + num(job.time_step_s) + " s; " +
+                  std::to_string(kSlabCells) + " cells through each facet");
     if (summary.computed_insolation_steps > 0)
-        hooks.info(std::to_string(summary.computed_insolation_steps) +
-                   " steps with insolation computed (the .wth gives 0): clear-sky Meinel & "
-                   "Meinel x sky exposure");
-    hooks.info(
+        reporter.info(std::to_string(summary.computed_insolation_steps) +
+                      " steps with insolation computed (the .wth gives 0): clear-sky Meinel & "
+                      "Meinel x sky exposure");
+    reporter.info(
         "model: sky emissivity Brutsaert (1975) with Crawford & Duchon (1999) clouds "
         "(cloud fraction = 1 - sky exposure); convection h = 5.7 + 3.8 v (McAdams); the "
         "part of the view that is not sky is black at the air temperature");
-    hooks.info(
+    reporter.info(
         "units: mat(5) UNITS (SPECIFIC_HEAT cal/g/C, MASS_DENSITY g/cm3, THICKNESS cm, "
         "THERMAL_CONDUCTIVITY 0.04184 W/m/K per unit); SELF_GENERATED_POWER W/m2 of "
         "facet");
     const double first = in.shd.time_hours(0);
     if (in.shd.time_hours(in.shd.steps - 1) - first < 24 - 1e-6 && first > start)
-        hooks.info("before the .shd's first step (" + num(first) +
-                   " h) facets are taken as unshadowed (the history spans less than 24 h)");
+        reporter.info("before the .shd's first step (" + num(first) +
+                      " h) facets are taken as unshadowed (the history spans less than 24 h)");
 }
 
 // Fills the rows of fixed facets and returns the tasks of the others (in scene order).
-std::vector<FacetTask> plan_facets(const Inputs& in, const ThermJob& job, const ThermHooks& hooks,
+std::vector<FacetTask> plan_facets(const Inputs& in, const ThermJob& job, const Reporter& reporter,
                                    ThermResult& result) {
-    auto info = [&](const std::string& m) {
-        if (hooks.info) hooks.info(m);
-    };
     std::unordered_map<std::string, const io::ShdFacet*> history;
     for (const auto& f : in.shd.facets) history.emplace(f.id, &f);
     std::vector<FacetTask> tasks;
@@ -267,54 +254,54 @@ std::vector<FacetTask> plan_facets(const Inputs& in, const ThermJob& job, const 
                                               num(sf.temperature_c) + " C is below absolute zero");
             result.tmp.facets.back().temperature_k = sf.temperature_c + kKelvinOffset;
             ++result.facets_fixed;
-            info("facet " + sf.key + ": temperature fixed by the .gdb");
+            reporter.info("facet " + sf.key + ": temperature fixed by the .gdb");
             continue;
         }
         auto it = history.find(sf.key);
-        if (it == history.end())
+        if (it == history.end())  // no line: the .shd lacks the record
             throw DataError({job.shd_path, 0},
                             "no history for facet " + sf.key + " of " + job.scene_path);
         FacetTask task{row, resolve_facet(sf, in.mat), it->second};
         task.facet.sky_view_factor = it->second->sky_view_factor;
         if (reported.insert(sf.material_id).second)
-            info("material " + std::to_string(sf.material_id) + ": " +
-                 (task.facet.back_exposure > 0
-                      ? "back face exposed to the air x " + num(task.facet.back_exposure)
-                      : std::string("back face insulated")) +
-                 " (EXPOSED_AREA: 1 or less one face, 2 both)");
+            reporter.info("material " + std::to_string(sf.material_id) + ": " +
+                          (task.facet.back_exposure > 0
+                               ? "back face exposed to the air x " + num(task.facet.back_exposure)
+                               : std::string("back face insulated")) +
+                          " (EXPOSED_AREA: 1 or less one face, 2 both)");
         tasks.push_back(std::move(task));
     }
     std::unordered_set<std::string> keys;
     for (const SceneFacet& sf : in.facets) keys.insert(sf.key);
     const auto unused = std::count_if(in.shd.facets.begin(), in.shd.facets.end(),
                                       [&](const io::ShdFacet& f) { return !keys.count(f.id); });
-    if (unused > 0 && hooks.warn)
-        hooks.warn(job.shd_path + ": " + std::to_string(unused) +
-                   " facets with a history are not in " + job.scene_path + " (ignored)");
+    if (unused > 0)
+        reporter.warn(job.shd_path + ": " + std::to_string(unused) +
+                      " facets with a history are not in " + job.scene_path + " (ignored)");
     return tasks;
 }
 
 }  // namespace
 
-ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
+ThermResult compute_temperatures(const ThermJob& job, const Reporter& reporter) {
     if (!(job.time_step_s > 0) || job.time_step_s > 3600)
         throw UsageError("--time-step must be above 0 and at most 3600 s");
     const std::string inputs[] = {job.shd_path, job.wth_path, job.mat_path, job.scene_path,
                                   job.snd_path};
     if (std::count(std::begin(inputs), std::end(inputs), "-") > 1)
         throw UsageError("only one input can be standard input ('-')");
-    const Inputs in = read_inputs(job);
+    const Inputs in = read_inputs(job, reporter);
     const double start = check_times(in, job);
     EnvironmentSummary summary;
     const auto env = sample_environment(in.wth, job.wth_path, in.snd, start,
                                         in.shd.scene_time_hours, job.time_step_s, &summary);
     const std::size_t i24 =
         std::min(env.size() - 1, static_cast<std::size_t>(std::lround(86400 / job.time_step_s)));
-    describe_model(in, start, env.size() - 1, job, summary, hooks);
+    describe_model(in, start, env.size() - 1, job, summary, reporter);
 
     ThermResult result;
     result.tmp.time_hours = in.shd.scene_time_hours;
-    const std::vector<FacetTask> tasks = plan_facets(in, job, hooks, result);
+    const std::vector<FacetTask> tasks = plan_facets(in, job, reporter, result);
     const std::vector<FacetAnswer> answers = solve_all(tasks, in.shd, env, i24, job.threads);
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         result.tmp.facets[tasks[i].row].temperature_k = answers[i].temperature_k;
@@ -329,20 +316,18 @@ ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks) {
     return result;
 }
 
-void run_therm(const ThermJob& job, const ThermHooks& hooks) {
-    ThermResult r = compute_temperatures(job, hooks);
-    if (hooks.info) {
-        hooks.info(std::to_string(r.facets_solved) + " facets solved, " +
-                   std::to_string(r.facets_fixed) + " fixed by the .gdb");
-        if (!r.spinup_facet.empty())
-            hooks.info("spin-up: up to " + std::to_string(r.spinup_runs_max) +
-                       " runs per facet; residual " + num(r.spinup_residual_k) + " K (facet " +
-                       r.spinup_facet + "), the change at the scene time from the run before");
-    }
-    if (r.spinup_residual_k > kSpinUpToleranceK && hooks.warn)
-        hooks.warn("spin-up residual " + num(r.spinup_residual_k) + " K at facet " +
-                   r.spinup_facet + " after " + std::to_string(kSpinUpMaxRuns) +
-                   " runs (a longer weather window would help)");
+void run_therm(const ThermJob& job, const Reporter& reporter) {
+    ThermResult r = compute_temperatures(job, reporter);
+    reporter.info(std::to_string(r.facets_solved) + " facets solved, " +
+                  std::to_string(r.facets_fixed) + " fixed by the .gdb");
+    if (!r.spinup_facet.empty())
+        reporter.info("spin-up: up to " + std::to_string(r.spinup_runs_max) +
+                      " runs per facet; residual " + num(r.spinup_residual_k) + " K (facet " +
+                      r.spinup_facet + "), the change at the scene time from the run before");
+    if (r.spinup_residual_k > kSpinUpToleranceK)
+        reporter.warn("spin-up residual " + num(r.spinup_residual_k) + " K at facet " +
+                      r.spinup_facet + " after " + std::to_string(kSpinUpMaxRuns) +
+                      " runs (a longer weather window would help)");
     write_atomically(job.output_path, [&](std::ostream& out) { io::write_tmp(out, r.tmp); });
 }
 

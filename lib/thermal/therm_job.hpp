@@ -3,10 +3,10 @@
 // The library behind tools/therm (GDAL-apps style: options struct in, work done here).
 #pragma once
 
-#include <functional>
 #include <string>
 #include <vector>
 
+#include "core/report.hpp"
 #include "io/mat.hpp"
 #include "io/shd.hpp"
 #include "io/snd.hpp"
@@ -22,11 +22,6 @@ struct ThermJob {
     std::string output_path = "-";
     double time_step_s = 60;  // backward-Euler step, (0, 3600]
     unsigned threads = 0;     // facets solved in parallel; 0: all cores
-};
-
-struct ThermHooks {
-    std::function<void(const std::string&)> warn;  // "FILE:LINE: ..." or plain
-    std::function<void(const std::string&)> info;  // what was assumed (--verbose)
 };
 
 // One facet's thermal description resolved from the .gdb and the .mat. Throws
@@ -57,10 +52,11 @@ inline constexpr int kSpinUpMaxRuns = 8;
 // be at least 24 h before the scene time): the first with every node at the air
 // temperature, each next one from the previous run's profile 24 h after the start
 // (the same time of day), until two runs' answers at the scene time agree within
-// kSpinUpToleranceK (or kSpinUpMaxRuns runs). The last run is the answer.
-ThermResult compute_temperatures(const ThermJob& job, const ThermHooks& hooks);
+// kSpinUpToleranceK (or kSpinUpMaxRuns runs). The last run is the answer. Warnings
+// ("FILE:LINE: ..." or plain) and what was assumed (info) go to `reporter`.
+ThermResult compute_temperatures(const ThermJob& job, const Reporter& reporter);
 
 // compute_temperatures, then writes the .tmp atomically.
-void run_therm(const ThermJob& job, const ThermHooks& hooks);
+void run_therm(const ThermJob& job, const Reporter& reporter);
 
 }  // namespace sigchain::thermal

@@ -20,8 +20,8 @@ namespace sigchain::trace {
 // values; `eps` (scene units) steps past each facet crossed; `rays` counts the rays
 // cast after the first. `material_of(hit)` returns the hit facet's MaterialOptics.
 template <class MaterialOf>
-bool transmit_through(const scene::Scene& scene, MaterialOf&& material_of, const scene::Vec3& p,
-                      const scene::Vec3& dir, double eps, int max_transmissions, double* vis,
+bool transmit_through(const scene::Scene& scene, MaterialOf&& material_of, const geo::Vec3& p,
+                      const geo::Vec3& dir, double eps, int max_transmissions, double* vis,
                       double* scratch, std::size_t n, std::uint64_t& rays) {
     double tnear = 0;
     for (int crossing = 0;; ++crossing) {

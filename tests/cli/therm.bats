@@ -209,3 +209,27 @@ assert_tmp_near() {
         fail "stderr: $stderr"
     run -0 sigchain-check out.tmp
 }
+
+@test "therm reads an .odb's OBJ objects, named as trace names them" {
+    # quad_tri.odb's OBJ (a grass quad 1-1-1 and a triangle 1-2-2, both level) placed
+    # as it is (1.1) and doubled (1.2); the triangle's asphalt taken as wood here. Each
+    # facet gets the history of box_on_plane.shd's sunlit ground under trace's key.
+    local scene="$SIGCHAIN_SOURCE_DIR/tests/data/scene"
+    printf 'grass 1\nasphalt 37\n' > quad_tri.map
+    sed "s|^    OBJ_FILENAME = |&$scene/|; s|^    MATERIAL_MAP = .*|    MATERIAL_MAP = quad_tri.map|" \
+        "$scene/quad_tri.odb" > quad_tri.odb
+    {
+        printf '# sigchain-shd 1\nscene_time_hours = 38\nsteps = 5\nstep_hours = 1\nfacets = 4\n'
+        for key in 1.1/1-1-1 1.1/1-2-2 1.2/1-1-1 1.2/1-2-2; do
+            sed -n '/^FACET 1-1-1 /,/^$/p' "$SHD" | sed "s|^FACET 1-1-1 |FACET $key |"
+        done
+    } > quad_tri.shd
+    run -0 --separate-stderr therm quad_tri.shd "$WTH" "$MAT" quad_tri.odb "$SND" -o out.tmp
+    assert_equal "$stderr" ''
+    run -0 sigchain-check out.tmp
+    run -0 awk '$1 ~ /^[0-9]/ { printf "%s ", $1 }' out.tmp
+    assert_output "1.1/1-1-1 1.1/1-2-2 1.2/1-1-1 1.2/1-2-2 "
+    # The doubled copy faces the same way with the same history: the same answers.
+    run -0 awk '{ t[$1] = $2 } END { exit !(t["1.1/1-1-1"] == t["1.2/1-1-1"] &&
+        t["1.1/1-2-2"] == t["1.2/1-2-2"] && t["1.1/1-1-1"] != t["1.1/1-2-2"]) }' out.tmp
+}

@@ -6,6 +6,26 @@
 namespace cli = sigchain::cli;
 namespace thermal = sigchain::thermal;
 
+namespace {
+
+// The command line as a ThermJob.
+thermal::ThermJob job_of(const cli::po::variables_map& vm) {
+    auto inputs = cli::args(vm, "input");
+    if (inputs.size() != 5) throw sigchain::UsageError("expected SHD WTH MAT GDB|ODB SND");
+    thermal::ThermJob job;
+    job.shd_path = inputs[0];
+    job.wth_path = inputs[1];
+    job.mat_path = inputs[2];
+    job.scene_path = inputs[3];
+    job.snd_path = inputs[4];
+    job.output_path = cli::output_path(vm);
+    job.time_step_s = vm["time-step"].as<double>();
+    job.threads = cli::threads(vm);
+    return job;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     cli::Cli tool({"therm",
                    "Compute facet temperatures (.tmp) from weather and sun/shadow history.",
@@ -13,27 +33,12 @@ int main(int argc, char** argv) {
     tool.add_positional("input", -1,
                         "sun/shadow history (.shd), weather (.wth), materials (.mat),\n"
                         "                    scene (.gdb or .odb), scene node (.snd)");
-    tool.add_output_option();
+    tool.add_output_option();  // "-" (standard output) by default, therm(1)
     tool.add_options()("time-step", cli::po::value<double>()->default_value(60)->value_name("S"),
-                       "time step of the thermal model, seconds (0 < S <= 3600)")(
-        "threads", cli::po::value<unsigned>()->default_value(0)->value_name("N"),
-        "facets solved in parallel (0: all cores)");
+                       "time step of the thermal model, seconds (0 < S <= 3600)");
+    tool.add_threads_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
-        auto inputs = cli::args(vm, "input");
-        if (inputs.size() != 5) throw sigchain::UsageError("expected SHD WTH MAT GDB|ODB SND");
-        thermal::ThermJob job;
-        job.shd_path = inputs[0];
-        job.wth_path = inputs[1];
-        job.mat_path = inputs[2];
-        job.scene_path = inputs[3];
-        job.snd_path = inputs[4];
-        job.output_path = vm["output"].as<std::string>();
-        job.time_step_s = vm["time-step"].as<double>();
-        job.threads = vm["threads"].as<unsigned>();
-        thermal::ThermHooks hooks;
-        hooks.warn = [&ctx](const std::string& m) { ctx.warn(m); };
-        hooks.info = [&ctx](const std::string& m) { ctx.info(m); };
-        thermal::run_therm(job, hooks);
+        thermal::run_therm(job_of(vm), ctx);
         return 0;
     });
 }

@@ -18,7 +18,7 @@
 using namespace sigchain;
 using scene::Affine;
 using scene::MeshData;
-using scene::Vec3;
+using sigchain::geo::Vec3;
 
 namespace {
 

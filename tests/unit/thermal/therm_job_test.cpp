@@ -7,8 +7,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/error.hpp"
+#include "scene/load.hpp"
+#include "scene/scene.hpp"
 
 namespace th = sigchain::thermal;
 namespace io = sigchain::io;
@@ -174,4 +177,58 @@ TEST(ThermJob, SceneTimeMustMatchTheSnd) {
     job.snd_path = write_temp("late.snd", text);
     EXPECT_NE(data_error([&] { th::compute_temperatures(job, {}); }).find("scene time"),
               std::string::npos);
+}
+
+// An .odb of an OBJ object (quad_tri.obj: a grass quad, an asphalt triangle taken as
+// wood) and a DEM (flat.odb's grass terrain), every facet given the history of the
+// seed's sunlit ground 1-1-1 under the keys trace gives them (scene::load_scene).
+// The rows are those keys in scene order. The grass facets share history and
+// material; flat.asc lies about 9 km south-east of hawkeye.snd's point, about which it
+// is placed, so its ellipsoid surface is tilted by ~1.4e-3 rad in the scene frame:
+// the sun's cosine on it differs by ~1e-3 from the OBJ's level quad (~0.01 K), and
+// across its 100 m the tilt varies by ~1.6e-5 rad (~1e-4 K between its facets).
+TEST(ThermJob, OdbOfObjAndDemObjects) {
+    namespace sc = sigchain::scene;
+    const std::string data = SIGCHAIN_TEST_DATA "/scene/";
+    const std::string map = write_temp("obj_dem.map", "grass 1\nasphalt 37\n");
+    th::ThermJob job = seed_job();
+    job.scene_path =
+        write_temp("obj_dem.odb", "OBJECT {\n  OBJ_FILENAME = " + data +
+                                      "quad_tri.obj\n  MATERIAL_MAP = " + map +
+                                      "\n  UNITS = m\n}\nOBJECT {\n  DEM_FILENAME = " + data +
+                                      "flat.asc\n  MATERIAL_ID = 1\n"
+                                      "  UNITS = m\n}\n");
+    const io::Snd snd = io::read_snd_file(job.snd_path);
+    sc::LoadOptions options;
+    options.origin = sc::GeoOrigin{snd.latitude_deg, snd.longitude_east_deg, 0.0};
+    const sc::Scene scene = sc::load_scene(job.scene_path, options);
+    io::Shd shd = io::read_shd_file(job.shd_path);
+    const io::ShdFacet ground = shd.facets.front();
+    ASSERT_EQ(ground.id, "1-1-1");
+    shd.facets.clear();
+    for (std::size_t p = 0; p < scene.placement_count(); ++p)
+        for (std::uint32_t f = 0; f < scene.facet_count(scene.mesh_of_placement(p)); ++f) {
+            sc::Hit h;
+            h.object = static_cast<std::uint32_t>(p);
+            h.facet = f;
+            shd.facets.push_back(ground);
+            shd.facets.back().id = scene.facet_key(h);
+        }
+    std::ostringstream text;
+    io::write_shd(text, shd);
+    job.shd_path = write_temp("obj_dem.shd", text.str());
+
+    const th::ThermResult r = th::compute_temperatures(job, {});
+    ASSERT_EQ(r.tmp.facets.size(), shd.facets.size());
+    ASSERT_GT(r.tmp.facets.size(), 3u);  // the quad, the triangle and the terrain
+    for (std::size_t i = 0; i < shd.facets.size(); ++i)
+        EXPECT_EQ(r.tmp.facets[i].facet_id, shd.facets[i].id);
+    EXPECT_EQ(r.tmp.facets[0].facet_id, "1.1/1-1-1");  // the OBJ's grass quad
+    EXPECT_EQ(r.tmp.facets[1].facet_id, "1.1/1-2-2");  // its triangle, wood here
+    const double grass = r.tmp.facets[0].temperature_k;
+    EXPECT_GT(std::abs(r.tmp.facets[1].temperature_k - grass), 0.1);  // another material
+    const double terrain = r.tmp.facets[2].temperature_k;
+    EXPECT_NEAR(terrain, grass, 0.05);
+    for (std::size_t i = 2; i < r.tmp.facets.size(); ++i)
+        EXPECT_NEAR(r.tmp.facets[i].temperature_k, terrain, 1e-3) << r.tmp.facets[i].facet_id;
 }
