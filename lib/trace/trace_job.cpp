@@ -50,12 +50,12 @@ std::string written_name(const std::string& path) {
 // extremes of the view angle over a frame lie on its border unless nadir is inside,
 // which the border's signs then show): outside the table the path terms are clamped
 // (Atmosphere::path), which trace reports.
-void check_view_angles(const RayGenerator& camera, const radiometry::Atmosphere& atm,
+void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
                        const Reporter& reporter) {
     double lo = 1e9, hi = -1e9;
     const double r = static_cast<double>(camera.rows()), c = static_cast<double>(camera.columns());
     auto sample = [&](double row, double column) {
-        Vec3 origin{}, direction{};
+        geo::Vec3 origin{}, direction{};
         camera.ray(row, column, origin, direction);
         const double va = camera.view_angle_deg(direction);
         lo = std::min(lo, va);
@@ -325,7 +325,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     report.materials = materials.materials().size();
     const scene::Scene scene = read_scene(job, st, materials, report, reporter);
     const Temperatures temperatures = read_temperatures(job, grid, reporter);
-    const FrameRayGenerator camera(geom::frame_camera(st.adv, job.adv_path));
+    const FrameSensor camera(geom::frame_camera(st.adv, job.adv_path));
     check_view_angles(camera, atmosphere, reporter);
 
     const RenderOptions options = render_options(job, st);
@@ -333,7 +333,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     inputs.scene = &scene;
     inputs.atmosphere = &atmosphere;
     inputs.materials = &materials;
-    inputs.camera = &camera;
+    inputs.sensor = &camera;
     inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
