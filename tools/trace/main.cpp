@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
                         "                    --shadow-history: SND GDB|ODB MAT");
     tool.add_required_output_option(
         "CUBE",
-        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF), or the .shd\n"
+        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF), or the .shd "
         "of --shadow-history; required");
     tool.add_seed_option();
     tool.add_threads_option();
