@@ -366,13 +366,13 @@ int main(int argc, char** argv) {
         {radiometry::grey_material(1, 0.12, samples), radiometry::grey_material(2, 0.2, samples),
          radiometry::grey_material(3, 0.08, samples), radiometry::grey_material(4, 0.3, samples)});
     const geom::FrameCamera cam = bench_camera(side);
-    const trace::FrameRayGenerator generator(cam);
+    const trace::FrameSensor generator(cam);
 
     trace::RenderInputs inputs;
     inputs.scene = &sc;
     inputs.atmosphere = &atmosphere;
     inputs.materials = &materials;
-    inputs.camera = &generator;
+    inputs.sensor = &generator;
     trace::RenderOptions options;
     options.sampling = trace::Sampling::Golfball;
     options.samples_per_pixel = 1;

@@ -1,4 +1,4 @@
-// Rendering: primary rays from a ray generator, the radiance at each hit from the
+// Rendering: primary rays from a sensor (sensor.hpp), the radiance at each hit from the
 // hemisphere above it (by a sampling strategy), and the atmosphere's path terms;
 // one geometry pass serves all spectral samples (seed 3.4, 3.6.5, 5.2; DESIGN.md 4).
 #pragma once
@@ -9,62 +9,32 @@
 #include <string>
 #include <vector>
 
-#include "geom/camera.hpp"
 #include "image/image.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
+#include "trace/sensor.hpp"
 
 namespace sigchain::trace {
 
-using Vec3 = std::array<double, 3>;
-
 enum class Sampling { Dirsig, Golfball, MonteCarlo };
-
-// Primary-ray generation, behind an interface so that line scanners and pushbrooms
-// (a later issue) slot in beside the frame camera.
-class RayGenerator {
-public:
-    virtual ~RayGenerator() = default;
-    virtual long rows() const = 0;
-    virtual long columns() const = 0;
-    // Ray through image-plane position (row, column) in pixel units ((0, 0) = top-left
-    // corner of the top-left pixel): origin (scene units) and unit direction.
-    virtual void ray(double row, double column, Vec3& origin, Vec3& direction) const = 0;
-    // Signed view angle (deg, the .rad's convention: find_min_max_view_angle(1)) of a
-    // ray direction, for the path-term lookup.
-    virtual double view_angle_deg(const Vec3& direction) const = 0;
-};
-
-class FrameRayGenerator final : public RayGenerator {
-public:
-    explicit FrameRayGenerator(geom::FrameCamera camera);
-    long rows() const override;
-    long columns() const override;
-    void ray(double row, double column, Vec3& origin, Vec3& direction) const override;
-    double view_angle_deg(const Vec3& direction) const override;
-
-private:
-    geom::FrameCamera m_camera;
-    double m_reference_azimuth_deg = 0;
-};
 
 struct RenderOptions {
     Sampling sampling = Sampling::Golfball;
-    long samples_per_pixel = 1;   // primary rays per pixel, stratified (seed 5.1.4 rec. 7)
-    long hemisphere_samples = 64; // montecarlo: rays per hit; dirsig: diffuse pattern size
+    long samples_per_pixel = 1;    // primary rays per pixel, stratified (seed 5.1.4 rec. 7)
+    long hemisphere_samples = 64;  // montecarlo: rays per hit; dirsig: diffuse pattern size
     // golfball: draw each cell's ray at random inside its cell (cosine-weighted),
     // instead of at its centre: a stratified, unbiased estimator whose error falls
     // with samples_per_pixel; off = the seed's fixed pattern.
     bool golfball_jitter = false;
-    int max_transmissions = 8;    // transmissive facets followed per ray
-    int bounces = 1;              // secondary hits take the other facet's radiance one
-                                  // bounce deep (seed 5.2.3 step 4)
-    std::uint64_t seed = 1;       // results depend only on seed (not on threads)
-    unsigned threads = 0;         // 0: all cores
+    int max_transmissions = 8;         // transmissive facets followed per ray
+    int bounces = 1;                   // secondary hits take the other facet's radiance one
+                                       // bounce deep (seed 5.2.3 step 4)
+    std::uint64_t seed = 1;            // results depend only on seed (not on threads)
+    unsigned threads = 0;              // 0: all cores
     long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row
     bool truth = false;
-    double meters_per_unit = 1;   // scene units -> metres (transmission, range)
+    double meters_per_unit = 1;  // scene units -> metres (transmission, range)
 };
 
 // Facet temperatures (kelvin) by facet key ("1-1-1", "2.3/1-1-1"; tmp(5)).
@@ -74,7 +44,7 @@ struct RenderInputs {
     const scene::Scene* scene = nullptr;
     const radiometry::Atmosphere* atmosphere = nullptr;
     const radiometry::MaterialLibrary* materials = nullptr;
-    const RayGenerator* camera = nullptr;
+    const Sensor* sensor = nullptr;
     const Temperatures* temperatures = nullptr;  // nullptr: no emission
 };
 
@@ -95,9 +65,11 @@ struct RenderResult {
     RenderStats stats;
 };
 
-// Renders rows [row_begin, row_end). `progress(done, total)` is called from the
-// calling thread now and then (may be empty). Throws DataError for a hit facet whose
-// material is missing (validate_scene() catches those first).
+// Renders rows [row_begin, row_end), spread over options.threads by
+// sigchain::parallel_for: the image does not depend on the thread count.
+// `progress(done rows, total rows)` is called now and then, never by two threads at
+// once but from any of them, last with (total, total) (may be empty). Throws DataError for a hit
+// facet whose material is missing (validate_scene() catches those first).
 RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
                     const std::function<void(long, long)>& progress = {});
 

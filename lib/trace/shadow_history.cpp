@@ -11,24 +11,16 @@
 #include "trace/shadow_history.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <map>
-#include <mutex>
-#include <thread>
 
 #include "atmos/scene_clock.hpp"
 #include "atmos/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
-#include "io/check.hpp"
-#include "io/gdb.hpp"
+#include "core/parallel.hpp"
 #include "io/mat.hpp"
-#include "io/odb.hpp"
-#include "scene/mesh_build.hpp"
 #include "trace/render.hpp"
 #include "trace/sampling.hpp"
 #include "trace/transmission.hpp"
@@ -39,54 +31,15 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
-double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross3(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 axpy(const Vec3& p, double s, const Vec3& d) {
-    return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
-}
-
-// Affine (row-major 3x4) applied to a point.
-Vec3 apply(const scene::Affine& t, const Vec3& p) {
-    Vec3 r{};
-    for (int i = 0; i < 3; ++i)
-        r[i] = t[4 * i] * p[0] + t[4 * i + 1] * p[1] + t[4 * i + 2] * p[2] + t[4 * i + 3];
-    return r;
-}
-
-Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-
-// The cofactor matrix of the affine's 3x3 part times n: det(M) M^-T n, a normal of the
-// placed surface (therm's transform_normal up to the sign of det).
-Vec3 placed_normal(const scene::Affine& t, const Vec3& n) {
-    auto a = [&](int r, int c) { return t[4 * r + c]; };
-    Vec3 out{};
-    for (int r = 0; r < 3; ++r) {
-        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
-        for (int c = 0; c < 3; ++c) {
-            const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-            out[r] += (a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1)) * n[c];
-        }
-    }
-    return out;
-}
-
-double determinant(const scene::Affine& t) {
-    return t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
-           t[2] * (t[4] * t[9] - t[5] * t[8]);
-}
+using geo::Vec3;
 
 // An orthonormal basis (x, y, z = n) about a unit normal.
 struct Basis {
     Vec3 x, y, z;
     explicit Basis(const Vec3& n) : z(n) {
         Vec3 a = std::abs(n[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-        x = cross3(a, n);
-        const double len = std::sqrt(dot3(x, x));
-        for (double& v : x) v /= len;
-        y = cross3(z, x);
+        x = geo::unit(geo::cross(a, n));
+        y = geo::cross(z, x);
     }
     Vec3 world(double lx, double ly, double lz) const {
         return {lx * x[0] + ly * y[0] + lz * z[0], lx * x[1] + ly * y[1] + lz * z[1],
@@ -102,8 +55,8 @@ std::vector<Vec3> sample_points(const ShadowFacet& f, long n, std::uint64_t seed
     std::vector<double> area;
     double total = 0;
     for (const auto& t : f.triangles) {
-        const Vec3 c = cross3(minus(t[1], t[0]), minus(t[2], t[0]));
-        area.push_back(0.5 * std::sqrt(dot3(c, c)));
+        const Vec3 c = geo::cross(geo::sub(t[1], t[0]), geo::sub(t[2], t[0]));
+        area.push_back(0.5 * geo::norm(c));
         total += area.back();
     }
     std::vector<Vec3> points;
@@ -111,7 +64,7 @@ std::vector<Vec3> sample_points(const ShadowFacet& f, long n, std::uint64_t seed
         Vec3 c{0, 0, 0};
         for (std::size_t i = 0; i < f.triangles.size(); ++i) {
             const double w = total > 0 ? area[i] / total : 1.0 / f.triangles.size();
-            for (const Vec3& v : f.triangles[i]) c = axpy(c, w / 3, v);
+            for (const Vec3& v : f.triangles[i]) c = geo::add(c, geo::scale(v, w / 3));
         }
         points.assign(static_cast<std::size_t>(n), c);
         return points;
@@ -200,7 +153,7 @@ io::ShdFacet facet_history(const ShadowFacet& f, std::uint64_t index,
     std::vector<Vec3> lifted;
     double svf = 0;
     for (std::size_t j = 0; j < points.size(); ++j) {
-        lifted.push_back(axpy(points[j], ray.eps, f.normal));
+        lifted.push_back(geo::add(points[j], geo::scale(f.normal, ray.eps)));
         ray.rays += static_cast<std::uint64_t>(o.sky_rays);
         svf += sky_fraction(ray.scene, lifted.back(), basis, o.sky_rays, o.seed, index,
                             static_cast<long>(j));
@@ -209,7 +162,7 @@ io::ShdFacet facet_history(const ShadowFacet& f, std::uint64_t index,
     out.sunlit_fraction.reserve(sun.size() * points.size());
     out.transmittance.reserve(sun.size() * points.size());
     for (const SunStep& s : sun) {
-        const bool facing = s.up && dot3(f.normal, s.direction) > 0;
+        const bool facing = s.up && geo::dot(f.normal, s.direction) > 0;
         for (const Vec3& p : lifted) {
             double t = 1;
             const bool lit = facing && ray.reaches(p, s.direction, t);
@@ -265,128 +218,22 @@ std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hou
         const atmos::SolarPosition sp = atmos::sun_at_wth_hours(snd, s.time_hours);
         s.zenith_deg = sp.zenith_deg;
         s.azimuth_deg = sp.azimuth_deg;
-        const double z = sp.zenith_deg * kDeg, a = sp.azimuth_deg * kDeg;
-        s.direction = {std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)};
+        s.direction = geo::direction_from_angles(sp.zenith_deg * kDeg, sp.azimuth_deg * kDeg);
         s.up = sp.zenith_deg < 90;
         out.push_back(s);
     }
     return out;
 }
 
-std::size_t ShadowScene::add_mesh(scene::MeshData mesh, std::vector<Vec3> facing) {
-    facing.resize(mesh.facets.size(), Vec3{0, 0, 0});
-    m_facing.push_back(std::move(facing));
-    m_meshes.push_back(mesh);
-    return m_scene.add_mesh(std::move(mesh));
-}
-
-void ShadowScene::place(std::size_t mesh, const scene::Affine& transform, std::string prefix) {
-    m_scene.place(mesh, transform, std::move(prefix));
-    m_placements.emplace_back(mesh, transform);
-}
-
-void ShadowScene::commit() {
-    m_scene.commit();
-    for (std::size_t object = 0; object < m_placements.size(); ++object) {
-        const auto& [mesh_index, t] = m_placements[object];
-        const scene::MeshData& mesh = m_meshes[mesh_index];
-        const std::size_t first = m_facets.size();
-        for (std::uint32_t f = 0; f < mesh.facets.size(); ++f) {
-            ShadowFacet sf;
-            sf.object = static_cast<std::uint32_t>(object);
-            sf.facet = f;
-            scene::Hit h;
-            h.object = sf.object;
-            h.facet = f;
-            sf.key = m_scene.facet_key(h);
-            m_facets.push_back(std::move(sf));
-        }
-        // A mirroring placement reverses the winding but not the side faced (scene.hpp).
-        const double side = determinant(t) < 0 ? -1.0 : 1.0;
-        std::vector<Vec3> sum(mesh.facets.size(), Vec3{0, 0, 0});
-        for (std::size_t k = 0; k < mesh.triangle_facet.size(); ++k) {
-            std::array<Vec3, 3> tri;
-            for (int v = 0; v < 3; ++v) {
-                const std::uint32_t i = mesh.triangles[3 * k + v];
-                tri[v] = apply(
-                    t, {mesh.vertices[3 * i], mesh.vertices[3 * i + 1], mesh.vertices[3 * i + 2]});
-            }
-            const Vec3 c = cross3(minus(tri[1], tri[0]), minus(tri[2], tri[0]));
-            Vec3& s = sum[mesh.triangle_facet[k]];
-            s = axpy(s, side, c);
-            m_facets[first + mesh.triangle_facet[k]].triangles.push_back(tri);
-        }
-        for (std::size_t f = 0; f < sum.size(); ++f) {
-            const Vec3& given = m_facing[mesh_index][f];
-            const Vec3 n = given == Vec3{0, 0, 0} ? sum[f] : scaled(placed_normal(t, given), side);
-            const double len = std::sqrt(dot3(n, n));
-            m_facets[first + f].normal =
-                len > 0 ? Vec3{n[0] / len, n[1] / len, n[2] / len} : Vec3{0, 0, 1};
-        }
-    }
-}
-
-namespace {
-
-// load_shadow_scene's builder: every mesh from a .gdb, each facet facing the way its
-// FACE normal says (gdb(5): the normal, not the winding), matched by the FACE line.
-class ShadowSink final : public scene::SceneSink {
-public:
-    explicit ShadowSink(ShadowScene& scene) : m_scene(scene) {}
-    std::size_t add_mesh(scene::MeshData mesh, const io::Gdb* gdb,
-                         const SourceLocation& object) override {
-        if (!gdb)
-            throw DataError(object,
-                            "not implemented yet: OBJ and DEM objects in a shadow history "
-                            "(therm reads .gdb objects only)");
-        std::map<int, Vec3> normals;
-        for (const auto& o : gdb->objects)
-            for (const auto& part : o.parts)
-                for (const auto& face : part.facets)
-                    normals[face.line] = {face.normal[0], face.normal[1], face.normal[2]};
-        std::vector<Vec3> facing;
-        for (const auto& origin : mesh.origins) facing.push_back(normals[origin.line]);
-        return m_scene.add_mesh(std::move(mesh), std::move(facing));
-    }
-    void place(std::size_t mesh, const scene::Affine& t, const std::string& prefix) override {
-        m_scene.place(mesh, t, prefix);
-    }
-
-private:
-    ShadowScene& m_scene;
-};
-
-}  // namespace
-
-// As load_scene (scene::assemble_scene: the same meshes, placements, units and keys),
-// with degenerate facets kept (and reported) so that therm finds every facet.
-ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
-                              bool allow_degenerate, scene::LoadReport* report) {
-    scene::LoadOptions options;
-    options.scene_meters_per_unit = scene_meters_per_unit;
-    options.allow_degenerate = allow_degenerate;
-    options.keep_degenerate = true;
-    std::vector<std::string> warnings;
-    ShadowScene sc;
-    ShadowSink sink(sc);
-    scene::assemble_scene(path, options, sink, &warnings);
-    sc.commit();
-    if (report) {
-        report->warnings = std::move(warnings);
-        report->placements = sc.scene().placement_count();
-        report->facets = sc.facets().size();
-        report->triangles = sc.scene().triangle_count();
-    }
-    return sc;
-}
-
 io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary& materials,
                        const std::vector<SunStep>& sun, double step_hours, const ShadowOptions& o,
                        const std::function<void(long, long)>& progress, ShadowStats* stats) {
     const auto start = std::chrono::steady_clock::now();
-    if (sun.empty()) throw std::invalid_argument("shadow_history: no time steps");
+    if (sun.empty()) throw Error("shadow_history: no time steps");
     if (o.points_per_facet < 1 || o.sky_rays < 1 || o.max_transmissions < 0)
-        throw std::invalid_argument("shadow_history: bad options");
+        throw UsageError(
+            "shadow history: --points-per-facet and --sky-rays must be at least 1, "
+            "--max-transmissions at least 0");
     validate_scene(sc.scene(), materials);  // as trace: every facet's material exists
     io::Shd shd;
     shd.scene_time_hours = sun.back().time_hours;
@@ -400,42 +247,23 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
     const double eps = scene_epsilon(sc.scene());
     const long total = static_cast<long>(facets.size());
 
-    unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max(1L, total))));
-    std::atomic<long> next{0}, done{0};
-    std::atomic<std::uint64_t> rays{0};
-    std::atomic<bool> failed{false};
-    std::exception_ptr error;
-    std::mutex error_mutex;
-    auto work = [&](bool report) {
-        try {
-            SunRay ray{sc.scene(),
-                       materials,
-                       o.max_transmissions,
-                       eps,
-                       std::vector<double>(samples),
-                       std::vector<double>(samples)};
-            for (long i; !failed && (i = next.fetch_add(1)) < total;) {
-                const auto u = static_cast<std::size_t>(i);
-                shd.facets[u] = facet_history(facets[u], u, sun, o, ray);
-                const long d = done.fetch_add(1) + 1;
-                if (report && progress) progress(d, total);
-            }
-            rays += ray.rays;
-        } catch (...) {
-            std::lock_guard<std::mutex> lock(error_mutex);
-            if (!error) error = std::current_exception();
-            failed = true;
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, false);
-    work(true);
-    for (auto& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
-    if (progress) progress(total, total);
+    const ParallelOptions parallel{o.threads, progress};
+    WorkerStates<SunRay> rays(parallel_workers(total, parallel));
+    parallel_for(total, parallel, [&](long i, unsigned worker) {
+        SunRay& ray = rays.get(worker, [&] {
+            return SunRay{sc.scene(),
+                          materials,
+                          o.max_transmissions,
+                          eps,
+                          std::vector<double>(samples),
+                          std::vector<double>(samples)};
+        });
+        const auto u = static_cast<std::size_t>(i);
+        shd.facets[u] = facet_history(facets[u], u, sun, o, ray);
+    });
     if (stats) {
-        stats->rays = rays;
+        stats->rays = 0;
+        rays.each([&](const SunRay& ray) { stats->rays += ray.rays; });
         stats->seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
@@ -477,11 +305,8 @@ void check_options(const ShadowJob& job) {
 
 }  // namespace
 
-io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks) {
+io::Shd run_shadow_history(const ShadowJob& job, const Reporter& reporter) {
     check_options(job);
-    auto info = [&](const std::string& m) {
-        if (hooks.info) hooks.info(m);
-    };
     const long steps = history_steps(job.options.history_hours, job.options.step_minutes);
     const double step_hours = job.options.step_minutes / 60;
     const io::Snd snd = io::read_snd_file(job.snd_path);
@@ -489,23 +314,28 @@ io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks) {
         io::read_mat_file(job.mat_path), job.mat_path, snd_grid(snd));
     scene::LoadReport load;
     const ShadowScene sc = load_shadow_scene(job.scene_path, 1.0, job.allow_degenerate, &load);
-    for (const auto& w : load.warnings)
-        if (hooks.warn) hooks.warn(w);
+    for (const auto& w : load.warnings) reporter.warn(w);
+    // No line to name: an empty scene is a property of the whole file (or of every
+    // object its .odb lists), not of one record.
     if (sc.facets().empty()) throw DataError({job.scene_path, 0}, "the scene has no facets");
     const std::vector<SunStep> sun = sun_history(snd, steps, step_hours);
     const long up = std::count_if(sun.begin(), sun.end(), [](const SunStep& s) { return s.up; });
-    info("history: " + std::to_string(steps) + " steps of " + number(job.options.step_minutes) +
-         " min ending at " + number(sun.back().time_hours) + " h (.wth clock), sun up at " +
-         std::to_string(up) + "; " + std::to_string(sc.facets().size()) + " facets x " +
-         std::to_string(job.options.points_per_facet) + " point(s), " +
-         std::to_string(job.options.sky_rays) + " sky rays per point");
+    reporter.info("history: " + std::to_string(steps) + " steps of " +
+                  number(job.options.step_minutes) + " min ending at " +
+                  number(sun.back().time_hours) + " h (.wth clock), sun up at " +
+                  std::to_string(up) + "; " + std::to_string(sc.facets().size()) + " facets x " +
+                  std::to_string(job.options.points_per_facet) + " point(s), " +
+                  std::to_string(job.options.sky_rays) + " sky rays per point");
     ShadowStats stats;
-    const io::Shd shd =
-        shadow_history(sc, materials, sun, step_hours, job.options, hooks.progress, &stats);
+    io::Shd shd;
+    {
+        ProgressScope bar(reporter, "shadow history");
+        shd = shadow_history(sc, materials, sun, step_hours, job.options, bar.callback(), &stats);
+    }
     char buf[96];
     std::snprintf(buf, sizeof buf, "%.3f s, %.2f Mrays/s", stats.seconds,
                   stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
-    info(std::to_string(stats.rays) + " rays (sun and sky), " + buf);
+    reporter.info(std::to_string(stats.rays) + " rays (sun and sky), " + buf);
     write_atomically(job.output_path, [&](std::ostream& out) { io::write_shd(out, shd); });
     return shd;
 }

@@ -3,21 +3,19 @@
 // and the facet's sky-view factor; written as a .shd (shd(5)) for therm (issue 6).
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "core/report.hpp"
+#include "geo/vec3.hpp"
 #include "io/shd.hpp"
 #include "io/snd.hpp"
 #include "radiometry/material.hpp"
-#include "scene/load.hpp"
-#include "scene/scene.hpp"
+#include "trace/shadow_scene.hpp"
 
 namespace sigchain::trace {
-
-using Vec3 = std::array<double, 3>;
 
 // The sky-view factor's ray count per sample point (cosine-weighted, stratified).
 inline constexpr long kDefaultSkyRays = 256;
@@ -37,7 +35,7 @@ struct SunStep {
     double time_hours = 0;
     double zenith_deg = 0;   // topocentric, with refraction (NREL SPA)
     double azimuth_deg = 0;  // clockwise from north
-    Vec3 direction{};        // unit, toward the sun, scene frame (x east, y north, z up)
+    geo::Vec3 direction{};   // unit, toward the sun, scene frame (x east, y north, z up)
     bool up = false;         // zenith < 90 deg, as trace's Atmosphere::sun_up
 };
 
@@ -54,52 +52,14 @@ double scene_time_hours(const io::Snd& snd);
 // ut_of_wth_hours): the .snd's date - 1 day + (t + GMT offset) hours.
 std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hours);
 
-// A scene with its facets' geometry: the Scene traces the rays, and every placed
-// facet keeps its triangles (scene frame) and key (scene facet_key, tmp(5)).
-struct ShadowFacet {
-    std::uint32_t object = 0, facet = 0;
-    std::string key;
-    std::vector<std::array<Vec3, 3>> triangles;  // scene frame, scene units
-    Vec3 normal{};  // unit, the side it faces: the given facing normal, else the winding's
-};
-
-class ShadowScene {
-public:
-    // Adds a mesh (scene units) and returns its index for place(). `facing`: per
-    // facet, the normal of the side it faces in mesh coordinates (a .gdb FACE normal;
-    // any length); missing or zero: the normal of its winding.
-    std::size_t add_mesh(scene::MeshData mesh, std::vector<Vec3> facing = {});
-    void place(std::size_t mesh, const scene::Affine& transform, std::string key_prefix = "");
-    // Builds the ray-tracing structures and the facet list; call once.
-    void commit();
-
-    const scene::Scene& scene() const { return m_scene; }
-    const std::vector<ShadowFacet>& facets() const { return m_facets; }
-
-private:
-    scene::Scene m_scene;
-    std::vector<scene::MeshData> m_meshes;
-    std::vector<std::vector<Vec3>> m_facing;  // per mesh, per facet
-    std::vector<std::pair<std::size_t, scene::Affine>> m_placements;
-    std::vector<ShadowFacet> m_facets;
-};
-
-// Loads a .gdb or an .odb of .gdb objects as load_scene() does (the same meshes,
-// placements, unit scaling and keys; therm reads the same subset), each facet facing
-// the way its FACE normal says, as therm takes it. OBJ and DEM
-// objects are refused with a DataError at their .odb line. Degenerate facets are an
-// error, or with allow_degenerate reported into `report` and kept as they are (a
-// zero-area facet is never hit; its history is that of its vertices' centroid), so
-// that therm finds every facet.
-ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
-                              bool allow_degenerate, scene::LoadReport* report = nullptr);
-
 // The history of every facet (scene order: placements, then facets) over `sun`, whose
 // last step is the scene time. `materials` gives transmissive facets their slab
 // transmittance exp(-k d/|cos|) (ext(5)), averaged over its grid's samples as trace's
 // shadow truth layer; opaque facets block the sun. DataError (validate_scene) when a
 // facet's material is not in `materials`.
-// `progress(done, total)` is called from the calling thread (may be empty).
+// Facets are spread over options.threads (sigchain::parallel_for): `progress(done,
+// total)` is called now and then, never by two threads at once but from any of them
+// (may be empty). Error for an empty `sun`, UsageError for options out of range.
 struct ShadowStats {
     std::uint64_t rays = 0;  // sun rays (each facet crossing counts one) and sky rays
     double seconds = 0;      // wall-clock time of the computation
@@ -118,14 +78,9 @@ struct ShadowJob {
     bool allow_degenerate = false;
 };
 
-struct ShadowHooks {
-    std::function<void(const std::string&)> warn;
-    std::function<void(const std::string&)> info;
-    std::function<void(long, long)> progress;
-};
-
 // Checks the options (UsageError), reads the inputs, computes and writes the .shd
-// atomically. DataError/IoError name the file and line of a bad input.
-io::Shd run_shadow_history(const ShadowJob& job, const ShadowHooks& hooks = {});
+// atomically. DataError/IoError name the file and line of a bad input. Warnings and
+// the -v details go to `reporter`, the progress as "shadow history".
+io::Shd run_shadow_history(const ShadowJob& job, const Reporter& reporter);
 
 }  // namespace sigchain::trace

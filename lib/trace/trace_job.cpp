@@ -25,10 +25,6 @@ namespace {
 
 constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
 
-void say(const std::function<void(const std::string&)>& f, const std::string& message) {
-    if (f) f(message);
-}
-
 std::string format(const char* fmt, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, fmt, v);
@@ -54,12 +50,12 @@ std::string written_name(const std::string& path) {
 // extremes of the view angle over a frame lie on its border unless nadir is inside,
 // which the border's signs then show): outside the table the path terms are clamped
 // (Atmosphere::path), which trace reports.
-void check_view_angles(const RayGenerator& camera, const radiometry::Atmosphere& atm,
-                       const TraceHooks& hooks) {
+void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
+                       const Reporter& reporter) {
     double lo = 1e9, hi = -1e9;
     const double r = static_cast<double>(camera.rows()), c = static_cast<double>(camera.columns());
     auto sample = [&](double row, double column) {
-        Vec3 origin{}, direction{};
+        geo::Vec3 origin{}, direction{};
         camera.ray(row, column, origin, direction);
         const double va = camera.view_angle_deg(direction);
         lo = std::min(lo, va);
@@ -76,11 +72,10 @@ void check_view_angles(const RayGenerator& camera, const radiometry::Atmosphere&
     }
     // 0.01 deg: below the precision the .rad's view-angle grid is written with.
     if (lo < atm.min_view_angle_deg() - 0.01 || hi > atm.max_view_angle_deg() + 0.01)
-        say(hooks.warn, "the image spans view angles " + format("%.2f", lo) + " to " +
-                            format("%.2f", hi) + " deg but the .rad files cover " +
-                            format("%.2f", atm.min_view_angle_deg()) + " to " +
-                            format("%.2f", atm.max_view_angle_deg()) +
-                            " deg: path terms are clamped at the ends");
+        reporter.warn(
+            "the image spans view angles " + format("%.2f", lo) + " to " + format("%.2f", hi) +
+            " deg but the .rad files cover " + format("%.2f", atm.min_view_angle_deg()) + " to " +
+            format("%.2f", atm.max_view_angle_deg()) + " deg: path terms are clamped at the ends");
 }
 
 }  // namespace
@@ -180,7 +175,7 @@ Setup read_setup(const TraceJob& job) {
 
 // One sigchain .rad per band, merged on one spectral grid.
 radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
-                                       const TraceHooks& hooks) {
+                                       const Reporter& reporter) {
     std::vector<io::Rad> rads;
     rads.reserve(job.rad_paths.size());
     for (std::size_t b = 0; b < job.rad_paths.size(); ++b) {
@@ -188,9 +183,9 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
         rads.push_back(io::read_rad_file(path));
         const long want = snd.bands[b].sample_count();
         if (static_cast<long>(rads.back().samples.size()) != want)
-            say(hooks.warn, path + ": " + std::to_string(rads.back().samples.size()) +
-                                " spectral samples, but band " + std::to_string(b + 1) + " of " +
-                                job.snd_path + " has " + std::to_string(want));
+            reporter.warn(path + ": " + std::to_string(rads.back().samples.size()) +
+                          " spectral samples, but band " + std::to_string(b + 1) + " of " +
+                          job.snd_path + " has " + std::to_string(want));
     }
     radiometry::Atmosphere atmosphere = radiometry::Atmosphere::from_rads(rads, job.rad_paths);
     if (!atmosphere.has_sky()) {
@@ -199,18 +194,18 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
         // (NREL SPA, lib/atmos); the sky is left dark, which the user is told.
         atmos::SolarPosition sun = atmos::solar_position(snd);
         atmosphere.set_sun(sun.zenith_deg, sun.azimuth_deg);
-        say(hooks.warn, job.rad_paths.front() +
-                            ": a DIRSIG .rad (no SIGCHAIN_RAD block): the sun is placed from " +
-                            job.snd_path + " (zenith " + format("%.3f", sun.zenith_deg) +
-                            " deg, azimuth " + format("%.3f", sun.azimuth_deg) +
-                            " deg) and the downwelled sky is zero");
+        reporter.warn(job.rad_paths.front() +
+                      ": a DIRSIG .rad (no SIGCHAIN_RAD block): the sun is placed from " +
+                      job.snd_path + " (zenith " + format("%.3f", sun.zenith_deg) +
+                      " deg, azimuth " + format("%.3f", sun.azimuth_deg) +
+                      " deg) and the downwelled sky is zero");
     }
     const auto& grid = atmosphere.grid();
-    say(hooks.info, "spectral grid: " + std::to_string(grid.size()) + " samples in " +
-                        std::to_string(grid.band_count()) + " band(s)");
+    reporter.info("spectral grid: " + std::to_string(grid.size()) + " samples in " +
+                  std::to_string(grid.band_count()) + " band(s)");
     if (!atmosphere.sun_up())
-        say(hooks.info, "the sun is below the horizon (zenith " +
-                            format("%.2f", atmosphere.sun_zenith_deg()) + " deg)");
+        reporter.info("the sun is below the horizon (zenith " +
+                      format("%.2f", atmosphere.sun_zenith_deg()) + " deg)");
     return atmosphere;
 }
 
@@ -218,21 +213,23 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
 // against the materials.
 scene::Scene read_scene(const TraceJob& job, const Setup& st,
                         const radiometry::MaterialLibrary& materials, TraceReport& report,
-                        const TraceHooks& hooks) {
+                        const Reporter& reporter) {
     scene::LoadOptions load;
     load.scene_meters_per_unit = io::meters_per_unit(st.adv.units);
     load.origin = scene::GeoOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg, 0.0};
     load.allow_degenerate = job.allow_degenerate;
     scene::Scene scene = scene::load_scene(job.scene_path, load, &report.load);
-    for (const auto& w : report.load.warnings) say(hooks.warn, w);
+    for (const auto& w : report.load.warnings) reporter.warn(w);
+    // No line to name: an empty scene is a property of the whole file (or of every
+    // object its .odb lists), not of one record.
     if (scene.triangle_count() == 0)
         throw DataError({job.scene_path, 0}, "the scene has no facets");
     validate_scene(scene, materials);
-    say(hooks.info, "scene: " + std::to_string(report.load.meshes) + " mesh(es), " +
-                        std::to_string(report.load.placements) + " placement(s), " +
-                        std::to_string(report.load.facets) + " facets, " +
-                        std::to_string(report.load.triangles) + " triangles; " +
-                        std::to_string(report.materials) + " material(s)");
+    reporter.info("scene: " + std::to_string(report.load.meshes) + " mesh(es), " +
+                  std::to_string(report.load.placements) + " placement(s), " +
+                  std::to_string(report.load.facets) + " facets, " +
+                  std::to_string(report.load.triangles) + " triangles; " +
+                  std::to_string(report.materials) + " material(s)");
     return scene;
 }
 
@@ -243,22 +240,22 @@ constexpr double kEmissiveFromUm = 2.5;
 
 // Facet temperatures by key from the .tmp, when one is given.
 Temperatures read_temperatures(const TraceJob& job, const radiometry::SpectralGrid& grid,
-                               const TraceHooks& hooks) {
+                               const Reporter& reporter) {
     Temperatures temperatures;
     if (job.tmp_path.empty()) {
         const auto longest = std::max_element(grid.wavelength_um.begin(), grid.wavelength_um.end());
         if (longest != grid.wavelength_um.end() && *longest >= kEmissiveFromUm)
-            say(hooks.warn, "the spectral grid reaches " + format("%.4g", *longest) +
-                                " um but no facet temperatures (--tmp) were given: facet "
-                                "emission is left out");
+            reporter.warn("the spectral grid reaches " + format("%.4g", *longest) +
+                          " um but no facet temperatures (--tmp) were given: facet "
+                          "emission is left out");
         else
-            say(hooks.info, "no temperature file (--tmp): emission is left out");
+            reporter.info("no temperature file (--tmp): emission is left out");
         return temperatures;
     }
     const io::Tmp tmp = io::read_tmp_file(job.tmp_path);
     for (const auto& f : tmp.facets) temperatures[f.facet_id] = f.temperature_k;
-    say(hooks.info, "temperatures of " + std::to_string(temperatures.size()) + " facet(s) from " +
-                        job.tmp_path);
+    reporter.info("temperatures of " + std::to_string(temperatures.size()) + " facet(s) from " +
+                  job.tmp_path);
     return temperatures;
 }
 
@@ -279,16 +276,16 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     return options;
 }
 
-void report_stats(const RenderStats& s, const TraceHooks& hooks) {
+void report_stats(const RenderStats& s, const Reporter& reporter) {
     const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
     const double mrays = s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6 : 0.0;
-    say(hooks.info, std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) +
-                        " primary, " + std::to_string(s.secondary_rays) + " secondary, " +
-                        std::to_string(s.shadow_rays) + " shadow), " + std::to_string(s.hits) +
-                        " hits, " + format("%.3f", s.seconds) + " s, " + format("%.2f", mrays) +
-                        " Mrays/s");
-    for (const auto& skipped : s.skipped) say(hooks.info, "not modelled: " + skipped);
-    if (s.hits == 0) say(hooks.warn, "no primary ray hit the scene: check the look angles");
+    reporter.info(std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) + " primary, " +
+                  std::to_string(s.secondary_rays) + " secondary, " +
+                  std::to_string(s.shadow_rays) + " shadow), " + std::to_string(s.hits) +
+                  " hits, " + format("%.3f", s.seconds) + " s, " + format("%.2f", mrays) +
+                  " Mrays/s");
+    for (const auto& skipped : s.skipped) reporter.info("not modelled: " + skipped);
+    if (s.hits == 0) reporter.warn("no primary ray hit the scene: check the look angles");
 }
 
 // The radiance cube (one band per spectral sample, wavelengths, units, band names)
@@ -315,39 +312,43 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
 
 }  // namespace
 
-TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks) {
+TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     check_job(job);
     TraceReport report;
     const Setup st = read_setup(job);
-    const radiometry::Atmosphere atmosphere = read_atmosphere(job, st.snd, hooks);
+    const radiometry::Atmosphere atmosphere = read_atmosphere(job, st.snd, reporter);
     const radiometry::SpectralGrid& grid = atmosphere.grid();
     report.spectral_samples = grid.size();
     report.bands = grid.band_count();
     const radiometry::MaterialLibrary materials =
         radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path, grid);
     report.materials = materials.materials().size();
-    const scene::Scene scene = read_scene(job, st, materials, report, hooks);
-    const Temperatures temperatures = read_temperatures(job, grid, hooks);
-    const FrameRayGenerator camera(geom::frame_camera(st.adv, job.adv_path));
-    check_view_angles(camera, atmosphere, hooks);
+    const scene::Scene scene = read_scene(job, st, materials, report, reporter);
+    const Temperatures temperatures = read_temperatures(job, grid, reporter);
+    const FrameSensor camera(geom::frame_camera(st.adv, job.adv_path));
+    check_view_angles(camera, atmosphere, reporter);
 
     const RenderOptions options = render_options(job, st);
     RenderInputs inputs;
     inputs.scene = &scene;
     inputs.atmosphere = &atmosphere;
     inputs.materials = &materials;
-    inputs.camera = &camera;
+    inputs.sensor = &camera;
     inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
-    say(hooks.info, "rendering rows " + std::to_string(st.row_begin) + " to " +
-                        std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
-                        std::to_string(st.adv.columns) + " columns, " +
-                        std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
-                        sampling_name(job.sampling) + " sampling");
-    RenderResult result = render(inputs, options, hooks.progress);
+    reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
+                  std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
+                  std::to_string(st.adv.columns) + " columns, " +
+                  std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
+                  sampling_name(job.sampling) + " sampling");
+    RenderResult result;
+    {
+        ProgressScope bar(reporter, "rendering");
+        result = render(inputs, options, bar.callback());
+    }
     report.stats = result.stats;
     report.rows = result.radiance.rows;
     report.columns = result.radiance.columns;
-    report_stats(result.stats, hooks);
+    report_stats(result.stats, reporter);
     write_outputs(job, grid, result);
     return report;
 }

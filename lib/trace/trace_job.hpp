@@ -4,12 +4,12 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/report.hpp"
 #include "scene/load.hpp"
 #include "trace/render.hpp"
 
@@ -45,13 +45,6 @@ struct TraceReport {
     std::size_t materials = 0;
 };
 
-// Messages the job emits while it runs (any may be empty).
-struct TraceHooks {
-    std::function<void(const std::string&)> warn;  // a warning (load warnings, ...)
-    std::function<void(const std::string&)> info;  // what is done (for -v)
-    std::function<void(long, long)> progress;      // render progress (done, total)
-};
-
 // "dirsig", "golfball" or "montecarlo"; else UsageError.
 Sampling parse_sampling(const std::string& name);
 std::string sampling_name(Sampling sampling);
@@ -65,7 +58,8 @@ void check_job(const TraceJob& job);
 // Runs the job: reads every input, validates the scene against the materials,
 // renders and writes the cube (and the truth cube) atomically. Throws UsageError
 // (a --rows range outside the image, a .rad count that is not the .snd's band count),
-// DataError/IoError naming the file and line for bad inputs.
-TraceReport run_trace(const TraceJob& job, const TraceHooks& hooks = {});
+// DataError/IoError naming the file and line for bad inputs. Warnings and the -v
+// details go to `reporter`, the render's progress as "rendering".
+TraceReport run_trace(const TraceJob& job, const Reporter& reporter);
 
 }  // namespace sigchain::trace

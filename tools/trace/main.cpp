@@ -12,7 +12,7 @@ namespace trace = sigchain::trace;
 namespace {
 
 // trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
-int shadow_history(const cli::po::variables_map& vm, cli::Context& ctx) {
+trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "rows", "truth", "tmp"})
         if (vm.count(o))
@@ -36,16 +36,41 @@ int shadow_history(const cli::po::variables_map& vm, cli::Context& ctx) {
     if (vm.count("sky-rays")) job.options.sky_rays = vm["sky-rays"].as<long>();
     if (vm.count("max-transmissions"))
         job.options.max_transmissions = vm["max-transmissions"].as<int>();
-    job.options.seed = vm["seed"].as<std::uint64_t>();
-    job.options.threads = vm["threads"].as<unsigned>();
+    job.options.seed = cli::seed(vm);
+    job.options.threads = cli::threads(vm);
     job.allow_degenerate = vm.count("allow-degenerate") > 0;
-    sigchain::ProgressScope bar(ctx, "shadow history");
-    trace::ShadowHooks hooks;
-    hooks.warn = [&ctx](const std::string& m) { ctx.warn(m); };
-    hooks.info = [&ctx](const std::string& m) { ctx.info(m); };
-    hooks.progress = bar.callback();
-    trace::run_shadow_history(job, hooks);
-    return 0;
+    return job;
+}
+
+// trace [OPTIONS] ADV SND SCENE MAT RAD... -o CUBE (trace(1)).
+trace::TraceJob trace_job(const cli::po::variables_map& vm) {
+    for (const char* o : {"history-hours", "history-step-minutes", "points-per-facet", "sky-rays"})
+        if (vm.count(o))
+            throw sigchain::UsageError(std::string("--") + o + " needs --shadow-history");
+    auto inputs = cli::args(vm, "input");
+    if (inputs.size() < 5)
+        throw sigchain::UsageError("expected ADV SND GDB|ODB MAT and at least one RAD");
+    trace::TraceJob job;
+    job.adv_path = inputs[0];
+    job.snd_path = inputs[1];
+    job.scene_path = inputs[2];
+    job.mat_path = inputs[3];
+    job.rad_paths.assign(inputs.begin() + 4, inputs.end());
+    if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
+    job.sampling = trace::parse_sampling(vm["sampling"].as<std::string>());
+    if (vm.count("samples-per-pixel")) job.samples_per_pixel = vm["samples-per-pixel"].as<long>();
+    if (vm.count("hemisphere-samples"))
+        job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
+    if (vm.count("max-transmissions")) job.max_transmissions = vm["max-transmissions"].as<int>();
+    if (vm.count("bounces")) job.bounces = vm["bounces"].as<int>();
+    job.seed = cli::seed(vm);
+    job.threads = cli::threads(vm);
+    if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
+    if (vm.count("truth")) job.truth_path = vm["truth"].as<std::string>();
+    if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
+    job.allow_degenerate = vm.count("allow-degenerate") > 0;
+    job.golfball_jitter = vm.count("golfball-jitter") > 0;
+    return job;
 }
 
 }  // namespace
@@ -58,12 +83,15 @@ int main(int argc, char** argv) {
                         "look angles (.adv), scene node (.snd), scene (.gdb or .odb),\n"
                         "                    materials (.mat), one .rad per band in band order;\n"
                         "                    --shadow-history: SND GDB|ODB MAT");
-    tool.add_options()(
-        "output,o", cli::po::value<std::string>()->value_name("CUBE"),
-        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF), or the .shd\n"
-        "of --shadow-history; required")(
-        "sampling", cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
-        "hemisphere sampling: dirsig, golfball or montecarlo")(
+    tool.add_required_output_option(
+        "CUBE",
+        "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF), or the .shd "
+        "of --shadow-history; required");
+    tool.add_seed_option();
+    tool.add_threads_option();
+    tool.add_options()("sampling",
+                       cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
+                       "hemisphere sampling: dirsig, golfball or montecarlo")(
         "samples-per-pixel", cli::po::value<long>()->value_name("N"),
         "primary rays per pixel (default: the .adv's samples_per_pixel)")(
         "hemisphere-samples", cli::po::value<long>()->value_name("N"),
@@ -73,10 +101,7 @@ int main(int argc, char** argv) {
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<int>()->value_name("N"),
         "1: hemisphere rays see other facets lit one bounce deep (default); 0: black")(
-        "seed", cli::po::value<std::uint64_t>()->default_value(1)->value_name("N"), "random seed")(
-        "threads", cli::po::value<unsigned>()->default_value(0)->value_name("N"),
-        "threads (0: all cores)")("rows", cli::po::value<std::string>()->value_name("A:B"),
-                                  "render rows A to B-1 only")(
+        "rows", cli::po::value<std::string>()->value_name("A:B"), "render rows A to B-1 only")(
         "truth", cli::po::value<std::string>()->value_name("FILE"),
         "also write the truth layers to FILE")("tmp",
                                                cli::po::value<std::string>()->value_name("FILE"),
@@ -91,44 +116,13 @@ int main(int argc, char** argv) {
         "--shadow-history: sample points per facet (default 1: its centroid)")(
         "sky-rays", cli::po::value<long>()->value_name("N"),
         "--shadow-history: sky-view rays per point (default 256)");
+    // -o is read as given (not cli::output_path) so that the jobs name what is missing:
+    // a radiance cube, or the .shd of --shadow-history.
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
-        if (vm.count("shadow-history")) return shadow_history(vm, ctx);
-        for (const char* o :
-             {"history-hours", "history-step-minutes", "points-per-facet", "sky-rays"})
-            if (vm.count(o))
-                throw sigchain::UsageError(std::string("--") + o + " needs --shadow-history");
-        auto inputs = cli::args(vm, "input");
-        if (inputs.size() < 5)
-            throw sigchain::UsageError("expected ADV SND GDB|ODB MAT and at least one RAD");
-        trace::TraceJob job;
-        job.adv_path = inputs[0];
-        job.snd_path = inputs[1];
-        job.scene_path = inputs[2];
-        job.mat_path = inputs[3];
-        job.rad_paths.assign(inputs.begin() + 4, inputs.end());
-        if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
-        job.sampling = trace::parse_sampling(vm["sampling"].as<std::string>());
-        if (vm.count("samples-per-pixel"))
-            job.samples_per_pixel = vm["samples-per-pixel"].as<long>();
-        if (vm.count("hemisphere-samples"))
-            job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
-        if (vm.count("max-transmissions"))
-            job.max_transmissions = vm["max-transmissions"].as<int>();
-        if (vm.count("bounces")) job.bounces = vm["bounces"].as<int>();
-        job.seed = vm["seed"].as<std::uint64_t>();
-        job.threads = vm["threads"].as<unsigned>();
-        if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
-        if (vm.count("truth")) job.truth_path = vm["truth"].as<std::string>();
-        if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
-        job.allow_degenerate = vm.count("allow-degenerate") > 0;
-        job.golfball_jitter = vm.count("golfball-jitter") > 0;
-
-        sigchain::ProgressScope bar(ctx, "rendering");
-        trace::TraceHooks hooks;
-        hooks.warn = [&ctx](const std::string& m) { ctx.warn(m); };
-        hooks.info = [&ctx](const std::string& m) { ctx.info(m); };
-        hooks.progress = bar.callback();
-        trace::run_trace(job, hooks);
+        if (vm.count("shadow-history"))
+            trace::run_shadow_history(shadow_job(vm), ctx);
+        else
+            trace::run_trace(trace_job(vm), ctx);
         return 0;
     });
 }

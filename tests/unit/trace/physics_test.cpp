@@ -18,8 +18,8 @@
 #include "radiometry/brdf.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
-#include "trace/render.hpp"
 #include "test_scene.hpp"
+#include "trace/render.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -40,21 +40,21 @@ struct Case {
     radiometry::MaterialLibrary materials;
 };
 
-radiometry::Atmosphere atmosphere(double sun_zenith, double sun_azimuth, double sun_e,
-                                  double sky_l, double tau2 = 1, double path_l = 0) {
-    io::Rad r = radiometry::uniform_rad(kWavelengths, sun_zenith, sun_azimuth, sun_e, sky_l,
-                                        tau2, path_l);
+radiometry::Atmosphere atmosphere(double sun_zenith, double sun_azimuth, double sun_e, double sky_l,
+                                  double tau2 = 1, double path_l = 0) {
+    io::Rad r =
+        radiometry::uniform_rad(kWavelengths, sun_zenith, sun_azimuth, sun_e, sky_l, tau2, path_l);
     return radiometry::Atmosphere::from_rads({r}, {"uniform.rad"});
 }
 
-RenderResult run(const Case& c, const RayGenerator& camera, Sampling sampling,
+RenderResult run(const Case& c, const Sensor& camera, Sampling sampling,
                  long hemisphere_samples = 64, bool truth = false, long spp = 1,
                  bool jitter = false) {
     RenderInputs in;
     in.scene = &c.scene;
     in.atmosphere = &c.atmosphere;
     in.materials = &c.materials;
-    in.camera = &camera;
+    in.sensor = &camera;
     RenderOptions o;
     o.sampling = sampling;
     o.hemisphere_samples = hemisphere_samples;
@@ -64,7 +64,6 @@ RenderResult run(const Case& c, const RayGenerator& camera, Sampling sampling,
     o.threads = 2;
     return render(in, o);
 }
-
 
 // A 2 km square ground plate at z = 0 (so hemisphere rays from the imaged middle
 // escape over it, never under its edge), material 1.
@@ -221,8 +220,8 @@ TEST(Physics, CanyonSkyViewFactorMonteCarloConverges) {
     RecordProperty("montecarlo_mean", std::to_string(mean));
     EXPECT_NEAR(mean, exact_mean, 4 * 0.0024 + 0.0005);
     for (long x = 0; x < columns; ++x) {
-        double exact = strip_view_factor(k.cam.columns() > 1 ? -w / 2 + (x + 0.5) * w / columns : 0,
-                                         w, h);
+        double exact =
+            strip_view_factor(k.cam.columns() > 1 ? -w / 2 + (x + 0.5) * w / columns : 0, w, h);
         EXPECT_NEAR(svf[x], exact, 5 * 0.5 / std::sqrt(1024.0)) << x;
     }
 }
@@ -266,7 +265,7 @@ TEST(Physics, SunInSpecularDirectionIsFiniteForEveryStrategy) {
     const double r = 0.4, s = 0.5, es = 0.15, sky = 0.004, zenith = 30, n = 100;
     // Sun due north at zenith 30; the view ray goes north-down at 30 deg, so the
     // mirror direction of the viewer is the sun.
-    Vec3 dir{0, std::sin(rad(zenith)), -std::cos(rad(zenith))};
+    geo::Vec3 dir{0, std::sin(rad(zenith)), -std::cos(rad(zenith))};
     Camera cam(4, 4, 1.0, -2, 2, dir);
     for (bool delta : {false, true}) {
         Brdf brdf = delta ? Brdf::delta() : Brdf::phong(n);

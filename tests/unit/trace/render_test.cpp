@@ -1,11 +1,12 @@
 // render(): determinism across threads and row slices, instancing, Monte Carlo
 // convergence rate, truth layers and the missing-material error.
+#include "trace/render.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <thread>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,6 @@
 #include "radiometry/material.hpp"
 #include "radiometry/planck.hpp"
 #include "scene/scene.hpp"
-#include "trace/render.hpp"
 #include "test_scene.hpp"
 
 namespace sigchain::trace {
@@ -48,19 +48,18 @@ radiometry::Atmosphere atmosphere(double sun_zenith, double sun_e, double sky) {
 }
 
 RenderResult run(const scene::Scene& s, const radiometry::MaterialLibrary& mats,
-                 const radiometry::Atmosphere& atm, const RayGenerator& cam, RenderOptions o) {
+                 const radiometry::Atmosphere& atm, const Sensor& cam, RenderOptions o) {
     RenderInputs in;
     in.scene = &s;
     in.materials = &mats;
     in.atmosphere = &atm;
-    in.camera = &cam;
+    in.sensor = &cam;
     return render(in, o);
 }
 
 void expect_bit_identical(const image::Image& a, const image::Image& b) {
     ASSERT_EQ(a.data.size(), b.data.size());
-    for (std::size_t i = 0; i < a.data.size(); ++i)
-        ASSERT_EQ(a.data[i], b.data[i]) << "at " << i;
+    for (std::size_t i = 0; i < a.data.size(); ++i) ASSERT_EQ(a.data[i], b.data[i]) << "at " << i;
 }
 
 TEST(Render, ThreadCountDoesNotChangeTheResult) {
@@ -220,7 +219,8 @@ TEST(Render, MissingMaterialNamesTheFacet) {
     m.quad({{{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}}, 1);
     m.quad({{{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}}, 7);  // material 7 is absent
     scene::Scene s = single(m.data);
-    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
     auto atm = atmosphere(30, 0.2, 0.004);
     Ortho cam(4, 4, 0.5, -1, 1, {0, 0, -1});
     try {
@@ -247,13 +247,15 @@ TEST(Render, MissingTextureCurveNamesTheFacet) {
     m.quad({{{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}}, 1);
     m.data.facets[0].texture_curve = 3;  // the grey material has one curve
     scene::Scene s = single(m.data);
-    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
     try {
         validate_scene(s, mats);
         FAIL() << "no error";
     } catch (const DataError& e) {
         EXPECT_NE(std::string(e.what()).find("(1-1-1): texture curve 3 of material 1"),
-                  std::string::npos) << e.what();
+                  std::string::npos)
+            << e.what();
     }
     auto atm = atmosphere(30, 0.2, 0.004);
     Ortho cam(2, 2, 0.5, -1, 1, {0, 0, -1});
@@ -270,7 +272,8 @@ TEST(Render, TruthLayersOfASunlitPlate) {
     m.quad({{{-500, -500, 0}, {500, -500, 0}, {500, 500, 0}, {-500, 500, 0}}}, 1);
     scene::Scene s = single(m.data);
     const double r = 0.3, es = 0.2, sky = 0.004, zen = 40;
-    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, kWl.size())});
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, kWl.size())});
     auto atm = atmosphere(zen, es, sky);
     Ortho cam(3, 3, 1, -1.5, 1.5, {0, 0, -1});
     RenderOptions o;
@@ -313,7 +316,9 @@ TEST(Render, TruthLayersOfASunlitPlate) {
     EXPECT_EQ(res.stats.hits, 9u);
 }
 
-TEST(Render, ProgressOnlyFromTheCallingThread) {
+// Progress comes from any worker but never from two at once: the row count never
+// decreases, ends at the total, and the image is the same for one and three threads.
+TEST(Render, ProgressIsMonotonicAndEndsAtTheTotal) {
     scene::Scene s = busy_scene();
     auto mats = busy_materials();
     auto atm = atmosphere(40, 0.2, 0.004);
@@ -322,23 +327,28 @@ TEST(Render, ProgressOnlyFromTheCallingThread) {
     in.scene = &s;
     in.materials = &mats;
     in.atmosphere = &atm;
-    in.camera = &cam;
+    in.sensor = &cam;
     RenderOptions o;
-    o.threads = 3;
-    const auto caller = std::this_thread::get_id();
-    long calls = 0, last_done = -1, last_total = -1;
-    bool other_thread = false, decreasing = false;
-    render(in, o, [&](long done, long total) {
-        other_thread |= std::this_thread::get_id() != caller;
-        decreasing |= done < last_done;
-        last_done = done, last_total = total;
-        ++calls;
-    });
-    EXPECT_FALSE(other_thread);
-    EXPECT_FALSE(decreasing);
-    EXPECT_GE(calls, 1);
-    EXPECT_EQ(last_done, 24);
-    EXPECT_EQ(last_total, 24);
+    std::vector<RenderResult> results;
+    for (unsigned threads : {1u, 3u}) {
+        o.threads = threads;
+        long calls = 0, last_done = -1, last_total = -1;
+        bool decreasing = false, wrong_total = false;
+        results.push_back(render(in, o, [&](long done, long total) {
+            decreasing |= done < last_done;
+            wrong_total |= total != 24;
+            last_done = done, last_total = total;
+            ++calls;
+        }));
+        EXPECT_FALSE(decreasing) << threads << " thread(s)";
+        EXPECT_FALSE(wrong_total) << threads << " thread(s)";
+        EXPECT_GE(calls, 1);
+        EXPECT_EQ(last_done, 24);
+        EXPECT_EQ(last_total, 24);
+    }
+    expect_bit_identical(results[0].radiance, results[1].radiance);
+    EXPECT_EQ(results[0].stats.primary_rays, results[1].stats.primary_rays);
+    EXPECT_EQ(results[0].stats.secondary_rays, results[1].stats.secondary_rays);
 }
 
 TEST(Render, TransmissiveSlabAttenuatesTwice) {
@@ -384,7 +394,8 @@ TEST(Render, EmissionFromFacetTemperatures) {
     Mesh m;
     m.quad({{{-900, -900, 0}, {900, -900, 0}, {900, 900, 0}, {-900, 900, 0}}}, 1);
     scene::Scene s = single(m.data);
-    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, kWl.size())});
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, kWl.size())});
     auto atm = atmosphere(120, 0.2, 0.0);
     Ortho cam(1, 1, 1, 0, 0, {0, 0, -1});
     Temperatures temps{{"1-1-1", 300.0}};
@@ -392,7 +403,7 @@ TEST(Render, EmissionFromFacetTemperatures) {
     in.scene = &s;
     in.materials = &mats;
     in.atmosphere = &atm;
-    in.camera = &cam;
+    in.sensor = &cam;
     in.temperatures = &temps;
     RenderOptions o;
     o.truth = true;
@@ -434,7 +445,8 @@ TEST(Render, DirsigSchemeWeightsTheSunAsDirsig3) {
             RenderResult res = run(sc, mats, atm, cam, o);
             double spec_sun = view_zenith == zen ? s * es * cos_sun / kPi : 0;
             double expected = r * ((1 - s) * (es * cos_sun / kPi + sky) + s * sky + spec_sun);
-            for (float x : res.radiance.data) EXPECT_NEAR(x, expected, 1e-6 * expected) << view_zenith;
+            for (float x : res.radiance.data)
+                EXPECT_NEAR(x, expected, 1e-6 * expected) << view_zenith;
         }
     }
 }
@@ -496,7 +508,8 @@ TEST(Render, MissesAreZero) {
     Mesh m;
     m.quad({{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}}, 1);
     scene::Scene s = single(m.data);
-    auto mats = radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
     auto atm = atmosphere(30, 0.2, 0.004);
     Ortho cam(2, 2, 10, 20, 20, {0, 0, -1});  // looks at (25..45, 15..-5): off the plate
     RenderOptions o;
@@ -520,8 +533,8 @@ TEST(Render, PathRadianceFollowsTheLineOfSightAzimuth) {
     Mesh m;
     m.quad({{{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}}}, 1);
     scene::Scene s = single(m.data);
-    auto mats = radiometry::MaterialLibrary::from_optics(
-        {radiometry::grey_material(1, 0.0, kWl.size())});
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.0, kWl.size())});
     io::Rad rad = radiometry::uniform_rad(kWl, 40, 120, 0.2, 0.004, 0.9, 0.001);
     rad.sky->version_minor = 1;
     io::RadUpwelled up;

@@ -346,7 +346,7 @@ TEST(RenderEmission, BlackbodyPlateThroughUnitTransmissionGivesPlanck) {
     in.scene = &s;
     in.materials = &mats;
     in.atmosphere = &atm;
-    in.camera = &cam;
+    in.sensor = &cam;
     in.temperatures = &temps;
     const RenderResult res = render(in, RenderOptions{});
     for (std::size_t k = 0; k < wl.size(); ++k)
@@ -380,7 +380,7 @@ TEST(RenderEmission, EmittedSkyAndPathAreAddedOnlyWithTemperatures) {
     in.scene = &s;
     in.materials = &mats;
     in.atmosphere = &atm;
-    in.camera = &cam;
+    in.sensor = &cam;
     in.temperatures = &temps;
     RenderResult res = render(in, RenderOptions{});
     for (std::size_t k = 0; k < wl.size(); ++k) {

@@ -13,13 +13,19 @@
 
 namespace sigchain::trace::test {
 
+using geo::Vec3;
+
 // Parallel rays along `dir`, pixel (r, c) aimed at ground point
 // (x0 + c pitch, y0 - r pitch, 0) from `distance` back along the ray.
-class Ortho final : public RayGenerator {
+class Ortho final : public Sensor {
 public:
-    Ortho(long rows, long cols, double pitch, double x0, double y0, Vec3 dir,
-          double distance = 100)
-        : m_rows(rows), m_cols(cols), m_pitch(pitch), m_x0(x0), m_y0(y0), m_dir(dir),
+    Ortho(long rows, long cols, double pitch, double x0, double y0, Vec3 dir, double distance = 100)
+        : m_rows(rows),
+          m_cols(cols),
+          m_pitch(pitch),
+          m_x0(x0),
+          m_y0(y0),
+          m_dir(dir),
           m_distance(distance) {
         double n = std::hypot(dir[0], dir[1], dir[2]);
         for (double& v : m_dir) v /= n;
@@ -47,9 +53,11 @@ struct Mesh {
     void quad(const std::array<Vec3, 4>& v, long material, const Vec3& shift = {0, 0, 0}) {
         auto base = static_cast<std::uint32_t>(data.vertices.size() / 3);
         for (const auto& p : v)
-            for (int i = 0; i < 3; ++i) data.vertices.push_back(static_cast<float>(p[i] + shift[i]));
+            for (int i = 0; i < 3; ++i)
+                data.vertices.push_back(static_cast<float>(p[i] + shift[i]));
         auto facet = static_cast<std::uint32_t>(data.facets.size());
-        data.triangles.insert(data.triangles.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        data.triangles.insert(data.triangles.end(),
+                              {base, base + 1, base + 2, base, base + 2, base + 3});
         data.triangle_facet.insert(data.triangle_facet.end(), {facet, facet});
         scene::FacetAttributes a;
         a.material_id = material;
@@ -58,8 +66,8 @@ struct Mesh {
         o.file = "test_scene.gdb";
         o.line = static_cast<int>(10 + facet);
         o.id = "1-1-" + std::to_string(facet + 1);
-        o.description = "object 'o' (1-0-0), part 'p' (1-1-0), facet 'f" + std::to_string(facet + 1) +
-                        "' (" + o.id + ")";
+        o.description = "object 'o' (1-0-0), part 'p' (1-1-0), facet 'f" +
+                        std::to_string(facet + 1) + "' (" + o.id + ")";
         data.origins.push_back(o);
     }
     void box(const Vec3& lo, const Vec3& hi, long material, const Vec3& shift = {0, 0, 0}) {

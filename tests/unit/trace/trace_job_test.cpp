@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -16,6 +17,18 @@
 
 namespace sigchain::trace {
 namespace {
+
+// A Reporter that keeps what the job tells it.
+struct Recorder final : Reporter {
+    mutable std::vector<std::string> warnings, infos, finished;
+    mutable std::vector<std::pair<long, long>> progress;  // "rendering" (done, total)
+    void warn(const std::string& m) const override { warnings.push_back(m); }
+    void info(const std::string& m) const override { infos.push_back(m); }
+    void progress_update(const std::string& label, long done, long total) const override {
+        if (label == "rendering") progress.emplace_back(done, total);
+    }
+    void progress_finish(const std::string& label) const override { finished.push_back(label); }
+};
 
 const std::string kData = SIGCHAIN_TEST_DATA "/trace/";
 const std::string kGdb = SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb";
@@ -82,10 +95,10 @@ TEST(TraceJob, RefusesRowsPastTheImageAndARadCountOffTheSnd) {
     Scratch s;
     auto job = box_job(s.file("out.img"));
     job.rows = std::pair<long, long>{0, 17};
-    EXPECT_THROW(run_trace(job), UsageError);
+    EXPECT_THROW(run_trace(job, Reporter{}), UsageError);
     job = box_job(s.file("out.img"));
     job.rad_paths.pop_back();
-    EXPECT_THROW(run_trace(job), UsageError);
+    EXPECT_THROW(run_trace(job, Reporter{}), UsageError);
     EXPECT_FALSE(std::filesystem::exists(s.file("out.img")));
 }
 
@@ -110,10 +123,13 @@ TEST(TraceJob, CubeIsTheLeavingRadianceThroughTheRadPathTerms) {
     auto job = box_job(s.file("out.img"));
     job.truth_path = s.file("truth.tif");
     job.samples_per_pixel = 1;  // truth layers describe the one sample of each pixel
-    std::vector<std::string> infos;
-    TraceHooks hooks;
-    hooks.info = [&](const std::string& m) { infos.push_back(m); };
-    const TraceReport report = run_trace(job, hooks);
+    Recorder recorder;
+    const TraceReport report = run_trace(job, recorder);
+    const std::vector<std::string>& infos = recorder.infos;
+    // The render's progress reaches its 16 rows, and its line is ended.
+    ASSERT_FALSE(recorder.progress.empty());
+    EXPECT_EQ(recorder.progress.back(), std::make_pair(16L, 16L));
+    EXPECT_EQ(recorder.finished, std::vector<std::string>{"rendering"});
     EXPECT_EQ(report.rows, 16);
     EXPECT_EQ(report.columns, 16);
     EXPECT_EQ(report.spectral_samples, 6u);
@@ -166,16 +182,15 @@ TEST(TraceJob, CubeIsTheLeavingRadianceThroughTheRadPathTerms) {
     EXPECT_GT(hits, 200);  // the ground fills all but the top row
 }
 
-TEST(TraceJob, AllowDegenerateWarnsThroughTheHook) {
+TEST(TraceJob, AllowDegenerateWarnsThroughTheReporter) {
     Scratch s;
     auto job = box_job(s.file("out.tif"));
     job.scene_path = kData + "degenerate.gdb";
-    EXPECT_THROW(run_trace(job), DataError);
+    EXPECT_THROW(run_trace(job, Reporter{}), DataError);
     job.allow_degenerate = true;
-    std::vector<std::string> warnings;
-    TraceHooks hooks;
-    hooks.warn = [&](const std::string& m) { warnings.push_back(m); };
-    run_trace(job, hooks);
+    Recorder recorder;
+    run_trace(job, recorder);
+    const std::vector<std::string>& warnings = recorder.warnings;
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("(2-1-1)"), std::string::npos) << warnings[0];
     EXPECT_TRUE(std::filesystem::exists(s.file("out.tif")));

@@ -1,0 +1,126 @@
+// The render's shared state (make_context), the facet frame, and the material
+// lookups every part of the tracer uses (tracer.hpp).
+#include <algorithm>
+#include <string>
+
+#include "core/error.hpp"
+#include "trace/tracer.hpp"
+
+namespace sigchain::trace {
+namespace {
+
+using radiometry::LobeShape;
+using radiometry::MaterialOptics;
+
+// Embree works in float (relative precision 6e-8): an offset of 1e-6 of the scene's
+// largest coordinate or extent (17 float ulps there) clears self-intersection.
+// Larger offsets bias results: raising a canyon floor point by 1e-5 of a 4 km scene
+// (4 cm in a 10 m canyon) raised its sky-view factor by 0.2%.
+double ray_epsilon(const scene::Scene& sc) {
+    scene::Bounds b = sc.bounds();
+    double scale = 1;
+    if (!b.empty())
+        for (int i = 0; i < 3; ++i)
+            scale = std::max(
+                {scale, std::abs(b.lower[i]), std::abs(b.upper[i]), b.upper[i] - b.lower[i]});
+    return 1e-6 * scale;
+}
+
+// Facet temperatures (K) by placement and facet: the .tmp's, else the facet's own
+// TEMPERATURE (Celsius), else -1 (and c.missing_temperature).
+void facet_temperatures(const RenderInputs& in, TraceContext& c) {
+    const scene::Scene& sc = *in.scene;
+    c.temperatures_k.resize(sc.placement_count());
+    for (std::size_t object = 0; object < sc.placement_count(); ++object) {
+        std::size_t mesh = sc.mesh_of_placement(object);
+        auto& t = c.temperatures_k[object];
+        t.assign(sc.facet_count(mesh), -1.0);
+        for (std::uint32_t f = 0; f < t.size(); ++f) {
+            scene::Hit h;
+            h.object = static_cast<std::uint32_t>(object);
+            h.facet = f;
+            auto it = in.temperatures->find(sc.facet_key(h));
+            double celsius = sc.attributes(mesh, f).temperature_c;
+            if (it != in.temperatures->end())
+                t[f] = it->second;
+            else if (celsius != -1)
+                t[f] = celsius + 273.15;
+            else
+                c.missing_temperature = true;
+        }
+    }
+}
+
+}  // namespace
+
+TraceContext make_context(const RenderInputs& in, const RenderOptions& opt) {
+    TraceContext c(in, opt);
+    const auto& atm = *in.atmosphere;
+    c.n = atm.grid().size();
+    c.emission = in.temperatures != nullptr;
+    for (const auto& m : in.materials->materials()) c.any_transmissive |= m.transmissive;
+    c.eps = ray_epsilon(*in.scene);
+    c.sun = atm.sun_direction();
+    c.sun_up = atm.sun_up();
+    auto se = atm.sun_irradiance_at_ground();
+    c.sun_e.assign(se.begin(), se.end());
+    auto sk = atm.sky_irradiance_horizontal();
+    c.sky_e.assign(sk.begin(), sk.end());
+    if (c.emission) {
+        auto ske = atm.sky_emitted_irradiance_horizontal();
+        for (std::size_t k = 0; k < c.n && k < ske.size(); ++k) c.sky_e[k] += ske[k];
+        facet_temperatures(in, c);
+    }
+    return c;
+}
+
+FacetFrame::FacetFrame(const geo::Vec3& n) : z(n) {
+    geo::Vec3 h = geo::cross({0, 0, 1}, n);
+    double len = geo::norm(h);
+    x = len > 1e-9 ? geo::scale(h, 1 / len) : geo::Vec3{1, 0, 0};
+    if (len <= 1e-9) {
+        geo::Vec3 v = geo::add(x, geo::scale(n, -geo::dot(x, n)));
+        x = geo::scale(v, 1.0 / geo::norm(v));
+    }
+    y = geo::cross(z, x);
+}
+
+double specularity_of(const MaterialOptics& m) {
+    return m.brdf.shape() == LobeShape::None ? 0.0 : m.specularity;
+}
+bool has_lobe(const MaterialOptics& m) {
+    return m.specularity > 0 && m.brdf.shape() != LobeShape::None &&
+           m.brdf.shape() != LobeShape::Delta;
+}
+bool has_delta(const MaterialOptics& m) {
+    return m.specularity > 0 && m.brdf.shape() == LobeShape::Delta;
+}
+
+const MaterialOptics& facet_material(const radiometry::MaterialLibrary& materials,
+                                     const scene::FacetAttributes& a, const scene::FacetOrigin& o) {
+    const MaterialOptics* m = materials.find(a.material_id);
+    if (!m)
+        throw DataError({o.file, o.line}, o.description + ": material " +
+                                              std::to_string(a.material_id) +
+                                              " is not in the material file");
+    if (a.texture_curve >= m->emissivity.size())
+        throw DataError({o.file, o.line}, o.description + ": texture curve " +
+                                              std::to_string(a.texture_curve) + " of material " +
+                                              std::to_string(a.material_id) + " does not exist (" +
+                                              std::to_string(m->emissivity.size()) + " curve(s))");
+    return *m;
+}
+
+void validate_scene(const scene::Scene& scene, const radiometry::MaterialLibrary& materials) {
+    std::vector<bool> checked;
+    for (std::size_t object = 0; object < scene.placement_count(); ++object) {
+        std::size_t mesh = scene.mesh_of_placement(object);
+        if (mesh < checked.size() && checked[mesh]) continue;
+        if (mesh >= checked.size()) checked.resize(mesh + 1, false);
+        checked[mesh] = true;
+        for (std::uint32_t f = 0; f < scene.facet_count(mesh); ++f)
+            facet_material(materials, scene.attributes(mesh, f), scene.origin(mesh, f));
+    }
+}
+
+}  // namespace sigchain::trace

@@ -1,0 +1,152 @@
+// The tracer core shared by every sampling strategy: the read-only render state
+// (TraceContext), the facet frame, material lookup, and the per-thread Tracer that
+// follows rays (intersection and its refinement, sun visibility, radiance arriving
+// along a ray, one-bounce shading, emission) and counts them. The hemisphere part of
+// a primary hit is left to a HemisphereStrategy (hemisphere.hpp).
+//
+// Conventions (documented in trace(1)):
+// - Facet frame: z = the geometric normal flipped toward the incoming ray; x = the
+//   horizontal unit vector up x z (the facet's strike direction), or east for a
+//   horizontal facet; y = z x x.
+// - A primary ray that misses the scene: radiance 0 in every sample.
+// - A secondary ray that escapes above the ENU horizon sees the sky cell it points
+//   into (L_ds, plus L_de with emission); one that escapes below it sees nothing (0):
+//   the world beyond the scene is not modelled.
+// - Radiance in W cm-2 sr-1 um-1, irradiance W cm-2 um-1, distances in scene units.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geo/vec3.hpp"
+#include "radiometry/material.hpp"
+#include "scene/scene.hpp"
+#include "trace/arena.hpp"
+#include "trace/render.hpp"
+
+namespace sigchain::trace {
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kDeg = 180.0 / kPi;  // degrees per radian
+
+// Shared, read-only render state, made once per render (make_context).
+struct TraceContext {
+    TraceContext(const RenderInputs& i, const RenderOptions& o) : in(i), opt(o) {}
+    const RenderInputs& in;
+    const RenderOptions& opt;
+    std::size_t n = 0;  // spectral samples
+    bool emission = false;
+    bool any_transmissive = false;
+    double eps = 1e-6;  // ray offset, scene units
+    geo::Vec3 sun{};
+    bool sun_up = false;
+    std::vector<double> sun_e;  // Es tau1 per sample
+    std::vector<double> sky_e;  // horizontal sky irradiance (+ emitted with emission)
+    // Facet temperatures (K, -1 unknown) by placement and facet, with emission only:
+    // looked up once here so that no key string is built per hit.
+    std::vector<std::vector<double>> temperatures_k;
+    bool missing_temperature = false;
+};
+
+TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
+
+// Local facet frame (header comment): z normal, x strike, y = z x x.
+struct FacetFrame {
+    geo::Vec3 x, y, z;
+    explicit FacetFrame(const geo::Vec3& n);
+    geo::Vec3 to_local(const geo::Vec3& v) const {
+        return {geo::dot(v, x), geo::dot(v, y), geo::dot(v, z)};
+    }
+    geo::Vec3 to_world(const geo::Vec3& v) const {
+        return {x[0] * v[0] + y[0] * v[1] + z[0] * v[2], x[1] * v[0] + y[1] * v[1] + z[1] * v[2],
+                x[2] * v[0] + y[2] * v[1] + z[2] * v[2]};
+    }
+};
+
+// A lambertian material has no specular part whatever its SPECULARITY (brdf.hpp:
+// w = cos/pi for LobeShape::None).
+double specularity_of(const radiometry::MaterialOptics& m);
+bool has_lobe(const radiometry::MaterialOptics& m);   // a finite specular lobe
+bool has_delta(const radiometry::MaterialOptics& m);  // a mirror (delta) specular part
+
+// The facet's material, or DataError naming the facet: a material missing from the
+// .mat, or a texture curve the material's .ems does not have.
+const radiometry::MaterialOptics& facet_material(const radiometry::MaterialLibrary& materials,
+                                                 const scene::FacetAttributes& a,
+                                                 const scene::FacetOrigin& o);
+
+struct RayCounters {
+    std::uint64_t primary = 0, secondary = 0, shadow = 0, hits = 0;
+};
+
+// What the truth layers need of one primary sample's hit. The spectral pointers
+// point into the Tracer and hold until its next primary().
+struct HitTruth {
+    double sun_visibility = 0;  // 0..1 (spectral mean with transmissive blockers)
+    double sky_view = 0;        // projected-solid-angle-weighted escaping fraction / pi
+    double temperature_k = -1;
+    const double* rho = nullptr;         // reflectance rho(theta_o) per sample
+    const double* solar = nullptr;       // reflected solar radiance per sample
+    const double* downwelled = nullptr;  // reflected sky + neighbours per sample
+};
+
+class HemisphereStrategy;
+
+// One thread's ray follower: not thread-safe, one per worker; the context must
+// outlive it.
+class Tracer {
+public:
+    explicit Tracer(const TraceContext& c);
+    ~Tracer();
+    Tracer(Tracer&&) noexcept;
+
+    // Radiance leaving the primary ray's first hit toward the sensor into `leave`;
+    // `truth` filled on a hit (may be null). Returns the first hit, if any. The
+    // random numbers of the sample are those of (seed, row, col, sample).
+    std::optional<scene::Hit> primary(const geo::Vec3& origin, const geo::Vec3& dir, long row,
+                                      long col, long sample, double* leave, HitTruth* truth);
+
+    // For the strategies. Radiance along a secondary ray from p (just above the
+    // facet) in world direction d into `li` (zeroed here); true if it escapes to the sky.
+    bool incoming(const geo::Vec3& p, const geo::Vec3& d, double* li);
+    // Exact mirror term s L_i(mirror) of a delta lobe, added to `acc`.
+    void add_mirror(double s, const FacetFrame& f, const geo::Vec3& p, const geo::Vec3& wo_l,
+                    double* acc);
+    // The sample's next uniform number in [0, 1).
+    double uniform();
+
+    Arena& arena() { return m_arena; }
+    const TraceContext& context() const { return m_c; }
+    const RayCounters& counters() const { return m_counters; }
+
+private:
+    const TraceContext& m_c;
+    Arena m_arena;
+    std::unique_ptr<HemisphereStrategy> m_strategy;
+    RayCounters m_counters;
+    long m_row = 0, m_col = 0, m_sample = 0;
+    std::uint64_t m_index = 0;  // counter of random numbers within a sample
+    std::vector<double> m_truth_rho, m_truth_solar, m_truth_down;
+
+    const radiometry::MaterialOptics& material_of(const scene::Hit& hit) const;
+    double temperature_k(const scene::Hit& hit) const;
+    void add_emission(const radiometry::MaterialOptics& m, int curve, double theta_deg, double t_k,
+                      double* out);
+    double sun_visibility(const geo::Vec3& p, double* vis);
+    std::optional<scene::Hit> along(const geo::Vec3& origin, const geo::Vec3& dir, double tnear,
+                                    int depth, int transmissions, double* out, HitTruth* truth);
+    void refine(const geo::Vec3& origin, const geo::Vec3& dir, scene::Hit& hit) const;
+    void shade_one_bounce(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                          const scene::FacetAttributes& a, const geo::Vec3& point,
+                          const geo::Vec3& n, const geo::Vec3& wo, double* out);
+    void shade_full(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                    const scene::FacetAttributes& a, const geo::Vec3& point, const geo::Vec3& n,
+                    const geo::Vec3& wo, double* out, HitTruth* truth);
+    void keep_truth(double visibility, double sky_view, double t_k, const double* rho,
+                    const double* solar, const double* down, HitTruth& truth);
+};
+
+}  // namespace sigchain::trace
