@@ -52,7 +52,7 @@ geom::FrameCamera bench_camera(long side) {
     cam.position = {0, 0, 1500};
     cam.forward = {0, 0, -1};
     cam.right = {1, 0, 0};
-    cam.down = geom::cross(cam.forward, cam.right);
+    cam.down = geo::cross(cam.forward, cam.right);
     cam.focal_length_mm = 9 * 512.0 / static_cast<double>(side);
     cam.pixel_pitch_mm = 0.009;
     cam.rows = cam.columns = side;
@@ -134,7 +134,7 @@ void build_bare(BareScene& b, int n, int trees, bool terrain_instance) {
     rtcCommitScene(b.top);
 }
 
-RTCRayHit make_ray(const geom::Vec3& o, const geom::Vec3& d, float tnear) {
+RTCRayHit make_ray(const geo::Vec3& o, const geo::Vec3& d, float tnear) {
     RTCRayHit rh{};
     rh.ray.org_x = static_cast<float>(o[0]);
     rh.ray.org_y = static_cast<float>(o[1]);
@@ -150,9 +150,12 @@ RTCRayHit make_ray(const geom::Vec3& o, const geom::Vec3& d, float tnear) {
     return rh;
 }
 
-// Runs body(i) for i in [0, count) on `threads` threads (dynamic chunks).
+// Runs body(i) for i in [0, count) on `threads` threads (dynamic chunks of 1024 rays).
+// The bare Embree reference loop keeps this inlined template on purpose: the renderer's
+// sigchain::parallel_for schedules rows (one std::function call each), which would
+// cost per ray here and make the reference slower than a bare loop is.
 template <class F>
-void parallel_for(std::size_t count, unsigned threads, F body) {
+void bare_parallel_for(std::size_t count, unsigned threads, F body) {
     std::atomic<std::size_t> next{0};
     auto worker = [&] {
         for (;;) {
@@ -185,14 +188,14 @@ BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint
     std::vector<char> hit(primary, 0);
     const auto t0 = Clock::now();
     const double c0 = cpu_seconds();
-    parallel_for(primary, threads, [&](std::size_t k) {
+    bare_parallel_for(primary, threads, [&](std::size_t k) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         std::size_t p = (k / spp) % pixels;
         std::uint64_t state = splitmix64(k);
         double row = static_cast<double>(p / cam.columns) + unit_random(state);
         double col = static_cast<double>(p % cam.columns) + unit_random(state);
-        const geom::Vec3 d = cam.direction(row, col);
+        const geo::Vec3 d = cam.direction(row, col);
         RTCRayHit rh = make_ray(cam.position, d, 0.0f);
         rtcIntersect1(b.top, &ctx, &rh);
         if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
@@ -205,13 +208,13 @@ BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint
     for (std::size_t k = 0; k < primary; ++k)
         if (hit[k]) hits.push_back(k);
     const std::uint64_t h = hits.size();
-    const geom::Vec3 sun = radiometry::direction_from_angles(kSunZenithDeg, kSunAzimuthDeg);
+    const geo::Vec3 sun = geo::direction_from_degrees(kSunZenithDeg, kSunAzimuthDeg);
     if (h > 0)
-        parallel_for(h, threads, [&](std::size_t i) {
+        bare_parallel_for(h, threads, [&](std::size_t i) {
             RTCIntersectContext ctx;
             rtcInitIntersectContext(&ctx);
             const float* q = &hit_point[3 * hits[i]];
-            geom::Vec3 o{q[0], q[1], q[2] + 1e-2};
+            geo::Vec3 o{q[0], q[1], q[2] + 1e-2};
             std::uint64_t n_hemi = (i + 1) * hemisphere / h - i * hemisphere / h;
             std::uint64_t n_shadow = (i + 1) * shadow / h - i * shadow / h;
             std::uint64_t state = splitmix64(0xABCDEFULL + i);
@@ -236,16 +239,16 @@ BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint
 
 // World-space unit normal of a hit, turned toward the ray direction `d` (trees are
 // instances: rotation about z and uniform scale, so the normal turns with the matrix).
-geom::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& trees,
-                      const geom::Vec3& d) {
-    geom::Vec3 n{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+geo::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& trees,
+                      const geo::Vec3& d) {
+    geo::Vec3 n{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
     if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID && rh.hit.instID[0] > 0) {
         const scene::Affine& a = trees[rh.hit.instID[0] - 1];  // geometry 0 is the terrain
         n = {a[0] * n[0] + a[1] * n[1] + a[2] * n[2], a[4] * n[0] + a[5] * n[1] + a[6] * n[2],
              a[8] * n[0] + a[9] * n[1] + a[10] * n[2]};
     }
-    n = geom::normalized(n);
-    if (geom::dot(n, d) > 0) n = {-n[0], -n[1], -n[2]};
+    n = geo::unit(n);
+    if (geo::dot(n, d) > 0) n = {-n[0], -n[1], -n[2]};
     return n;
 }
 
@@ -258,13 +261,13 @@ geom::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& tre
 BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t spp,
                          const std::vector<scene::Affine>& trees, double extent, unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
-    const geom::Vec3 sun = radiometry::direction_from_angles(kSunZenithDeg, kSunAzimuthDeg);
+    const geo::Vec3 sun = geo::direction_from_degrees(kSunZenithDeg, kSunAzimuthDeg);
     const auto& golf = trace::golfball_rays(0);
     const double eps = 1e-6 * extent;
     std::atomic<std::uint64_t> total{0};
     const auto t0 = Clock::now();
     const double c0 = cpu_seconds();
-    parallel_for(pixels * spp, threads, [&](std::size_t k) {
+    bare_parallel_for(pixels * spp, threads, [&](std::size_t k) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         std::uint64_t rays = 1;
@@ -272,41 +275,41 @@ BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::
         std::uint64_t state = splitmix64(k);
         double row = static_cast<double>(p / cam.columns) + unit_random(state);
         double col = static_cast<double>(p % cam.columns) + unit_random(state);
-        const geom::Vec3 d = cam.direction(row, col);
+        const geo::Vec3 d = cam.direction(row, col);
         RTCRayHit rh = make_ray(cam.position, d, 0.0f);
         rtcIntersect1(b.top, &ctx, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
             total += rays;
             return;
         }
-        const geom::Vec3 n = hit_normal(rh, trees, d);
-        geom::Vec3 o;
+        const geo::Vec3 n = hit_normal(rh, trees, d);
+        geo::Vec3 o;
         for (int a = 0; a < 3; ++a) o[a] = cam.position[a] + rh.ray.tfar * d[a] + eps * n[a];
-        if (geom::dot(n, sun) > 0) {
+        if (geo::dot(n, sun) > 0) {
             RTCRayHit sr = make_ray(o, sun, 0.0f);
             rtcOccluded1(b.top, &ctx, &sr.ray);
             ++rays;
         }
-        geom::Vec3 x = geom::cross({0, 0, 1}, n);
-        x = geom::dot(x, x) < 1e-12 ? geom::Vec3{1, 0, 0} : geom::normalized(x);
-        const geom::Vec3 y = geom::cross(n, x);
-        const double dn = geom::dot(d, n);
-        const geom::Vec3 m{d[0] - 2 * dn * n[0], d[1] - 2 * dn * n[1], d[2] - 2 * dn * n[2]};
-        const double phi0 = std::atan2(geom::dot(m, y), geom::dot(m, x));
+        geo::Vec3 x = geo::cross({0, 0, 1}, n);
+        x = geo::dot(x, x) < 1e-12 ? geo::Vec3{1, 0, 0} : geo::unit(x);
+        const geo::Vec3 y = geo::cross(n, x);
+        const double dn = geo::dot(d, n);
+        const geo::Vec3 m{d[0] - 2 * dn * n[0], d[1] - 2 * dn * n[1], d[2] - 2 * dn * n[2]};
+        const double phi0 = std::atan2(geo::dot(m, y), geo::dot(m, x));
         const double cr = std::cos(phi0), sr0 = std::sin(phi0);
         for (const trace::GolfRay& g : golf) {
             const double cp = g.cos_phi * cr - g.sin_phi * sr0;
             const double sp = g.sin_phi * cr + g.cos_phi * sr0;
-            geom::Vec3 w;
+            geo::Vec3 w;
             for (int a = 0; a < 3; ++a)
                 w[a] = g.sin_theta * (cp * x[a] + sp * y[a]) + g.cos_theta * n[a];
             RTCRayHit hr = make_ray(o, w, 0.0f);
             rtcIntersect1(b.top, &ctx, &hr);
             ++rays;
             if (hr.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
-            const geom::Vec3 nb = hit_normal(hr, trees, w);
-            if (geom::dot(nb, sun) <= 0) continue;
-            geom::Vec3 q;
+            const geo::Vec3 nb = hit_normal(hr, trees, w);
+            if (geo::dot(nb, sun) <= 0) continue;
+            geo::Vec3 q;
             for (int a = 0; a < 3; ++a) q[a] = o[a] + hr.ray.tfar * w[a] + eps * nb[a];
             RTCRayHit sr = make_ray(q, sun, 0.0f);
             rtcOccluded1(b.top, &ctx, &sr.ray);

@@ -38,4 +38,10 @@ inline Vec3 direction_from_angles(double zenith_rad, double azimuth_rad) {
             std::sin(zenith_rad) * std::cos(azimuth_rad), std::cos(zenith_rad)};
 }
 
+// The same from angles in degrees (multiplied by pi/180 first).
+inline Vec3 direction_from_degrees(double zenith_deg, double azimuth_deg) {
+    constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+    return direction_from_angles(zenith_deg * kDegToRad, azimuth_deg * kDegToRad);
+}
+
 }  // namespace sigchain::geo

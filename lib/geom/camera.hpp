@@ -10,7 +10,6 @@
 
 namespace sigchain::geom {
 
-// The shared 3-vector; the name geom::Vec3 stays for callers outside geom.
 using geo::Vec3;
 
 struct FrameCamera {
@@ -35,11 +34,5 @@ struct FrameCamera {
 // sin t up, up = -down); down = forward x right. Throws DataError (at the .adv's
 // angles line) if the azimuth's vector is parallel to the line of sight.
 FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file = "");
-
-// Forwarders to lib/geo/vec3.hpp, kept only for bench/bench_trace.cpp until it calls
-// geo::cross, geo::dot and geo::unit itself.
-using geo::cross;
-using geo::dot;
-inline Vec3 normalized(const Vec3& v) { return geo::unit(v); }
 
 }  // namespace sigchain::geom

@@ -13,7 +13,6 @@
 
 namespace sigchain::io {
 
-// The shared 3-vector; the name io::Vec3 stays for the geometry writers (lib/scenegen).
 using geo::Vec3;
 
 // One facet (FACE). Coordinates in scene units (from the .odb or the .adv `units`),

@@ -56,7 +56,7 @@ struct Atmosphere::Data {
         sun_known = true;
         sun_zenith_deg = zenith_deg;
         sun_azimuth_deg = azimuth_deg;
-        sun_direction = geo::direction_from_angles(zenith_deg * kDegToRad, azimuth_deg * kDegToRad);
+        sun_direction = geo::direction_from_degrees(zenith_deg, azimuth_deg);
         sun_at_ground = sun_up() ? es_tau1 : std::vector<double>(es_tau1.size(), 0.0);
     }
     void merge_spectra(const std::vector<io::Rad>& rads, const std::vector<std::string>& files);
@@ -268,7 +268,7 @@ SkyCell Atmosphere::Data::merge_sky_cell(const std::vector<io::Rad>& rads, std::
     double c_hi = std::cos(cell.zenith_hi_deg * kDegToRad);
     cell.solid_angle_sr = (c_lo - c_hi) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
     cell.direction =
-        geo::direction_from_angles(cell.zenith_deg * kDegToRad, cell.azimuth_deg * kDegToRad);
+        geo::direction_from_degrees(cell.zenith_deg, cell.azimuth_deg);
     for (const auto& rad : rads) {
         const auto& src = rad.sky->cells[c];
         cell.scattered.insert(cell.scattered.end(), src.scattered_radiance.begin(),
@@ -477,8 +477,5 @@ void Atmosphere::set_sun(double zenith_deg, double azimuth_deg) {
     m_data = d;
 }
 
-geo::Vec3 direction_from_angles(double zenith_deg, double azimuth_deg) {
-    return geo::direction_from_angles(zenith_deg * kDegToRad, azimuth_deg * kDegToRad);
-}
 
 }  // namespace sigchain::radiometry

@@ -101,9 +101,4 @@ io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith
                     const std::vector<double>& view_angles_deg = {-60, 0, 60},
                     int zenith_rings = 18, int azimuth_cells = 36);
 
-// Unit ENU vector for a zenith (from up) and an azimuth (clockwise from north), deg:
-// geo::direction_from_angles of the angles in radians (kept for the tests and
-// bench/bench_trace.cpp, which give degrees).
-geo::Vec3 direction_from_angles(double zenith_deg, double azimuth_deg);
-
 }  // namespace sigchain::radiometry

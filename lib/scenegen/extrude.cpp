@@ -47,7 +47,7 @@ bool is_ear(const Ring& ring, const std::vector<int>& v, std::size_t i, double e
     return true;
 }
 
-io::GdbFacet make_facet(std::vector<io::Vec3> vertices, const io::Vec3& normal,
+io::GdbFacet make_facet(std::vector<geo::Vec3> vertices, const geo::Vec3& normal,
                         const std::string& name, const std::string& id, long material_id,
                         const std::string& material_name, const std::string& part_name) {
     io::GdbFacet f;
@@ -151,7 +151,7 @@ io::GdbObject extrude(const Ring& ring, double height_m, long object_number,
     io::GdbObject object{name, n + "-0-0", {}, 0};
     io::GdbPart roof{"roof", n + "-1-0", {}, 0};
     for (const auto& t : triangulate(ring)) {
-        std::vector<io::Vec3> verts;
+        std::vector<geo::Vec3> verts;
         for (int k : t) verts.push_back({ring[k][0], ring[k][1], height_m});
         const std::string id = n + "-1-" + std::to_string(roof.facets.size() + 1);
         roof.facets.push_back(
@@ -163,8 +163,8 @@ io::GdbObject extrude(const Ring& ring, double height_m, long object_number,
         const Vec2& q = ring[(i + 1) % count];
         const double dx = q[0] - p[0], dy = q[1] - p[1], len = std::hypot(dx, dy);
         // Counter-clockwise ring: the outward normal of edge (dx, dy) is (dy, -dx).
-        const io::Vec3 normal{dy / len, -dx / len, 0};
-        std::vector<io::Vec3> verts{
+        const geo::Vec3 normal{dy / len, -dx / len, 0};
+        std::vector<geo::Vec3> verts{
             {p[0], p[1], 0}, {q[0], q[1], 0}, {q[0], q[1], height_m}, {p[0], p[1], height_m}};
         const std::string id = n + "-2-" + std::to_string(walls.facets.size() + 1);
         walls.facets.push_back(
@@ -189,7 +189,7 @@ io::GdbObject ground_plane(double x0, double y0, double x1, double y1, long obje
 
 double facet_area(const io::GdbFacet& facet) {
     // Newell's method: the area vector is half the sum of v_i x v_{i+1}.
-    io::Vec3 a{0, 0, 0};
+    geo::Vec3 a{0, 0, 0};
     const auto& v = facet.vertices;
     for (std::size_t i = 0; i < v.size(); ++i) {
         const auto& p = v[i];

@@ -8,7 +8,7 @@
 namespace sigchain::trace {
 
 FrameSensor::FrameSensor(geom::FrameCamera camera) : m_camera(std::move(camera)) {
-    geom::Vec3 ref = geom::reference_direction(m_camera);
+    geo::Vec3 ref = geom::reference_direction(m_camera);
     m_reference_azimuth_deg = std::atan2(ref[0], ref[1]) * 180.0 / M_PI;
 }
 

@@ -65,7 +65,7 @@ TEST(Atmosphere, SkyCellContainsEveryDirectionAboveTheHorizon) {
         for (int i = 0; i < 20000; ++i) {
             double z = std::acos(u(rng)) / kDeg, az = 360 * u(rng);
             if (z >= 90) continue;
-            Vec3 d = direction_from_angles(z, az);
+            Vec3 d = geo::direction_from_degrees(z, az);
             int c = a.sky_cell(d);
             ASSERT_GE(c, 0);
             ASSERT_LT(c, static_cast<int>(a.sky_cells().size()));
@@ -103,10 +103,10 @@ TEST(Atmosphere, ExampleSkyCellsEdgesAndIrradiance) {
                 1e-15);
     // A direction at zenith 60, azimuth 300 (north-west) is in ring 2, cell 270: L = 0.0058.
     std::vector<double> out(3, 1.0);
-    a.add_sky_radiance(direction_from_angles(60, 300), 2.0, out, false);
+    a.add_sky_radiance(geo::direction_from_degrees(60, 300), 2.0, out, false);
     EXPECT_DOUBLE_EQ(out[0], 1 + 2 * 0.0058);
-    EXPECT_EQ(a.sky_cell(direction_from_angles(10, 100)), 0);
-    EXPECT_EQ(a.sky_cell(direction_from_angles(10, 200)), 1);
+    EXPECT_EQ(a.sky_cell(geo::direction_from_degrees(10, 100)), 0);
+    EXPECT_EQ(a.sky_cell(geo::direction_from_degrees(10, 200)), 1);
     a.add_sky_radiance({0, 0, -1}, 2.0, out, true);  // below the horizon: nothing
     EXPECT_DOUBLE_EQ(out[0], 1 + 2 * 0.0058);
 }
@@ -230,7 +230,7 @@ TEST(Atmosphere, UpwelledGridIsInterpolatedInZenithAndAzimuth) {
     ASSERT_TRUE(atm.has_upwelled());
     double tau2 = 0, lus = 0, lue = 0;
     auto at = [&](double zenith, double azimuth) {
-        const Vec3 los = direction_from_angles(180 - zenith, azimuth);  // looking down
+        const Vec3 los = geo::direction_from_degrees(180 - zenith, azimuth);  // looking down
         atm.path(los, zenith, {&tau2, 1}, {&lus, 1}, {&lue, 1});
         return lus;
     };
@@ -247,7 +247,7 @@ TEST(Atmosphere, UpwelledGridIsInterpolatedInZenithAndAzimuth) {
     rad.sky->upwelled.reset();
     const Atmosphere plain = Atmosphere::from_rads({rad}, {"u.rad"});
     EXPECT_FALSE(plain.has_upwelled());
-    plain.path(direction_from_angles(160, 90), 20, {&tau2, 1}, {&lus, 1}, {&lue, 1});
+    plain.path(geo::direction_from_degrees(160, 90), 20, {&tau2, 1}, {&lus, 1}, {&lue, 1});
     EXPECT_NEAR(lus, 0.001, 1e-15);
 }
 

@@ -9,7 +9,7 @@
 #include "io/gdb.hpp"
 
 namespace sg = sigchain::scenegen;
-using sigchain::io::Vec3;
+using sigchain::geo::Vec3;
 
 namespace {
 
