@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/output.hpp"
+#include "geo/scene_clock.hpp"
 
 namespace sigchain::thermal {
 
@@ -133,7 +134,7 @@ Inputs read_inputs(const ThermJob& job) {
 // The run's start: the .wth's first row, at least 24 h before the scene time.
 double check_times(const Inputs& in, const ThermJob& job) {
     const double scene = in.shd.scene_time_hours;
-    const double snd_scene = scene_wth_hours(in.snd);
+    const double snd_scene = geo::scene_wth_hours(io::scene_site(in.snd));
     if (std::abs(scene - snd_scene) > 1e-3)
         throw DataError({job.shd_path, 0}, "scene time " + num(scene) + " h differs from " +
                                                job.snd_path + "'s " + num(snd_scene) +

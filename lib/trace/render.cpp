@@ -24,7 +24,7 @@
 #include <thread>
 
 #include "core/error.hpp"
-#include "radiometry/planck.hpp"
+#include "rt/planck.hpp"
 #include "trace/golfball.hpp"
 #include "trace/sampling.hpp"
 #include "trace/transmission.hpp"
@@ -292,7 +292,7 @@ private:
         m.directional_emissivity(curve, theta_deg, {e, m_c.n});
         const auto& wl = m_c.in.atmosphere->grid().wavelength_um;
         for (std::size_t k = 0; k < m_c.n; ++k)
-            out[k] += e[k] * radiometry::planck_radiance(wl[k], t_k);
+            out[k] += e[k] * rt::planck_radiance(wl[k], t_k);
     }
 
     // Spectral visibility of the sun from p (scene frame) into `vis`; returns its mean.
