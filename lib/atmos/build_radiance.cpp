@@ -9,12 +9,12 @@
 #include <numbers>
 
 #include "atmos/rayleigh.hpp"
-#include "atmos/solar_position.hpp"
 #include "atmos/solar_spectrum.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
-#include "radiometry/planck.hpp"
+#include "geo/solar_position.hpp"
 #include "rt/discrete_ordinates.hpp"
+#include "rt/planck.hpp"
 
 namespace sigchain::atmos {
 
@@ -389,7 +389,8 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             " km): path terms are those of the whole column");
 
     // Sun (NREL SPA at the target, at ground altitude) and the Earth-Sun distance.
-    const SolarPosition sun = solar_position(snd, rep.ground_km * 1000);
+    const geo::SolarPosition sun =
+        geo::solar_position(io::scene_site(snd), rep.ground_km * 1000);
     rep.sun_zenith_deg = sun.zenith_deg;
     rep.sun_azimuth_deg = sun.azimuth_deg;
     rep.earth_sun_distance_au = sun.earth_sun_distance_au;
@@ -483,7 +484,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                 th.planck_levels.clear();
                 for (std::size_t i = k.size(); i-- > 0;)
                     th.planck_levels.push_back(
-                        radiometry::planck_radiance(wavelength, prof.t_k[k[i]]));
+                        rt::planck_radiance(wavelength, prof.t_k[k[i]]));
                 th.planck_surface = 0;
                 th.top_emission = 0;
                 return rt::solve(th);

@@ -257,4 +257,16 @@ FormatHandler snd_format() {
             [](const TextInput& in, std::ostream& out) { write_snd(out, parse_snd(in)); }};
 }
 
+geo::SceneSite scene_site(const Snd& snd) {
+    geo::SceneSite site;
+    site.year = snd.year;
+    site.month = snd.month;
+    site.day = snd.day;
+    site.time_gmt_hours = snd.time_gmt_hours;
+    site.gmt_offset_hours = snd.gmt_offset_hours;
+    site.latitude_deg = snd.latitude_deg;
+    site.longitude_east_deg = snd.longitude_east_deg;
+    return site;
+}
+
 }  // namespace sigchain::io

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "atmos/solar_position.hpp"
+#include "geo/scene_clock.hpp"
 #include "core/error.hpp"
 
 namespace sigchain::thermal {
@@ -105,7 +105,7 @@ namespace {
 EnvironmentStep environment_at(const io::Wth& wth, const std::string& wth_file, const io::Snd& snd,
                                double time_h, EnvironmentSummary* summary) {
     const WeatherSample w = interpolate_weather(wth, time_h, wth_file);
-    const atmos::SolarPosition sp = atmos::sun_at_wth_hours(snd, time_h);
+    const geo::SolarPosition sp = geo::sun_at_wth_hours(io::scene_site(snd), time_h);
 
     EnvironmentStep e;
     e.time_h = time_h;

@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "atmos/scene_clock.hpp"
 #include "geo/vec3.hpp"
 #include "io/snd.hpp"
 #include "io/wth.hpp"
@@ -68,12 +67,6 @@ struct EnvironmentStep {
     geo::Vec3 sun{0, 0, 1};  // unit vector toward the sun, scene frame (x E, y N, z up)
     bool sun_up = false;
 };
-
-// The .wth clock and its UT (lib/atmos/scene_clock.hpp, shared with trace
-// --shadow-history).
-using atmos::scene_wth_hours;
-using atmos::ut_of_wth_hours;
-using atmos::UtTime;
 
 struct EnvironmentSummary {
     long computed_insolation_steps = 0;  // steps whose insolation was computed (file gave 0)

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/parallel.hpp"
+#include "geo/scene_clock.hpp"
 
 namespace sigchain::thermal {
 
@@ -136,7 +137,7 @@ Inputs read_inputs(const ThermJob& job, const Reporter& reporter) {
 // The run's start: the .wth's first row, at least 24 h before the scene time.
 double check_times(const Inputs& in, const ThermJob& job) {
     const double scene = in.shd.scene_time_hours;
-    const double snd_scene = scene_wth_hours(in.snd);
+    const double snd_scene = geo::scene_wth_hours(io::scene_site(in.snd));
     // No line in these three: the .shd header's time against the .snd's date and
     // time, and the .wth's rows as a whole (its rows keep no line numbers).
     if (std::abs(scene - snd_scene) > 1e-3)

@@ -15,8 +15,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "atmos/scene_clock.hpp"
-#include "atmos/solar_position.hpp"
+#include "geo/scene_clock.hpp"
+#include "geo/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/parallel.hpp"
@@ -206,7 +206,7 @@ long history_steps(double history_hours, double step_minutes) {
     return static_cast<long>(whole) + 1;
 }
 
-double scene_time_hours(const io::Snd& snd) { return atmos::scene_wth_hours(snd); }
+double scene_time_hours(const io::Snd& snd) { return geo::scene_wth_hours(io::scene_site(snd)); }
 
 std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hours) {
     const double scene = scene_time_hours(snd);
@@ -215,7 +215,7 @@ std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hou
     for (long k = 0; k < steps; ++k) {
         SunStep s;
         s.time_hours = scene - static_cast<double>(steps - 1 - k) * step_hours;
-        const atmos::SolarPosition sp = atmos::sun_at_wth_hours(snd, s.time_hours);
+        const geo::SolarPosition sp = geo::sun_at_wth_hours(io::scene_site(snd), s.time_hours);
         s.zenith_deg = sp.zenith_deg;
         s.azimuth_deg = sp.azimuth_deg;
         s.direction = geo::direction_from_angles(sp.zenith_deg * kDeg, sp.azimuth_deg * kDeg);

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "atmos/solar_position.hpp"
+#include "geo/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geom/camera.hpp"
@@ -192,7 +192,7 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
         // A DIRSIG .rad (seed fig. 4.33) has no SIGCHAIN_RAD block: no sun position and
         // no downwelled sky. The sun is placed from the .snd's date, GMT time and place
         // (NREL SPA, lib/atmos); the sky is left dark, which the user is told.
-        atmos::SolarPosition sun = atmos::solar_position(snd);
+        geo::SolarPosition sun = geo::solar_position(io::scene_site(snd));
         atmosphere.set_sun(sun.zenith_deg, sun.azimuth_deg);
         reporter.warn(job.rad_paths.front() +
                       ": a DIRSIG .rad (no SIGCHAIN_RAD block): the sun is placed from " +

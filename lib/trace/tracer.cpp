@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "radiometry/planck.hpp"
+#include "rt/planck.hpp"
 #include "trace/hemisphere.hpp"
 #include "trace/sampling.hpp"
 #include "trace/transmission.hpp"
@@ -68,7 +68,7 @@ void Tracer::add_emission(const MaterialOptics& m, int curve, double theta_deg, 
     m.directional_emissivity(curve, theta_deg, {e, m_c.n});
     const auto& wl = m_c.in.atmosphere->grid().wavelength_um;
     for (std::size_t k = 0; k < m_c.n; ++k)
-        out[k] += e[k] * radiometry::planck_radiance(wl[k], t_k);
+        out[k] += e[k] * rt::planck_radiance(wl[k], t_k);
 }
 
 // Spectral visibility of the sun from p (scene frame) into `vis`; returns its mean.

@@ -273,7 +273,7 @@ TEST(BuildRadiance, MergingThinLayersChangesTheTablesBelowATenthOfAPercent) {
 }  // namespace
 }  // namespace sigchain::atmos
 
-#include "radiometry/planck.hpp"
+#include "rt/planck.hpp"
 
 namespace sigchain::atmos {
 namespace {
@@ -305,7 +305,7 @@ TEST(BuildRadiance, ThermalEmissionMatchesTheAbsorptionOnlyFormalSolution) {
         const double nu = rads[b].samples[0].wavenumber_cm1;
         const auto col = column.layers(nu);
         auto planck = [&](std::size_t level) {
-            return radiometry::planck_radiance(1e4 / nu, p.t_k[level]);
+            return rt::planck_radiance(1e4 / nu, p.t_k[level]);
         };
         double up = 0;
         for (std::size_t k = 0; k < sensor; ++k)

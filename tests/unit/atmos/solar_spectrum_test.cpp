@@ -1,5 +1,5 @@
 // Tests for the LOWTRAN 7 solar source (lib/atmos/solar_spectrum) and the Earth-Sun
-// distance it is scaled with (lib/atmos/solar_position).
+// distance it is scaled with (lib/geo/solar_position).
 #include "atmos/solar_spectrum.hpp"
 
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "atmos/solar_position.hpp"
+#include "geo/solar_position.hpp"
 
 using namespace sigchain::atmos;
 
@@ -100,14 +100,14 @@ TEST(AtmosSolarSpectrum, EarthSunDistanceMatchesLowtranFactor) {
     const double factor[] = {1.034, 1.001, 0.967, 0.998, 1.029};
     const int month_start[] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334, 365};
     for (int i = 0; i < 5; ++i) {
-        SolarPositionInput in;
+        sigchain::geo::SolarPositionInput in;
         in.year = 2001;
         int m = 0;
         while (month_start[m + 1] < days[i]) ++m;
         in.month = m + 1;
         in.day = days[i] - month_start[m];
         in.ut_hours = 12;
-        const double r = solar_position(in).earth_sun_distance_au;
+        const double r = sigchain::geo::solar_position(in).earth_sun_distance_au;
         EXPECT_NEAR(1 / (r * r), factor[i], 0.002) << "day " << days[i];
     }
 }

@@ -1,5 +1,5 @@
 // Tests of the thermal model's surroundings: humidity, sky emissivity, air mass,
-// clear-sky sun, the .wth clock, weather interpolation and the sun's path.
+// clear-sky sun, weather interpolation and the sun's path.
 #include "thermal/environment.hpp"
 
 #include <gtest/gtest.h>
@@ -72,31 +72,6 @@ TEST(Environment, ClearSkySun) {
     EXPECT_NEAR(th::clear_sky_diffuse_horizontal_w_m2(0, 1.0), 0.1 * dni, 1e-9);
     EXPECT_EQ(th::clear_sky_direct_normal_w_m2(95, 1.0), 0);
     EXPECT_EQ(th::clear_sky_diffuse_horizontal_w_m2(95, 1.0), 0);
-}
-
-// The .wth clock: hours from local midnight of the day before the .snd's date;
-// UT = local + GMT offset (seed snd: 30 Sep 1995, offset 5, 19:00 GMT = 38 h).
-TEST(Environment, WthClockToUniversalTime) {
-    io::Snd snd = seed_snd();
-    EXPECT_NEAR(th::scene_wth_hours(snd), 38, 1e-12);
-    th::UtTime t = th::ut_of_wth_hours(snd, 38);
-    EXPECT_EQ(t.year, 1995);
-    EXPECT_EQ(t.month, 9);
-    EXPECT_EQ(t.day, 30);
-    EXPECT_NEAR(t.ut_hours, 19, 1e-9);
-    t = th::ut_of_wth_hours(snd, 0);
-    EXPECT_EQ(t.day, 29);
-    EXPECT_NEAR(t.ut_hours, 5, 1e-9);
-    t = th::ut_of_wth_hours(snd, 20);  // 20:00 local on the 29th is 01:00 UT on the 30th
-    EXPECT_EQ(t.day, 30);
-    EXPECT_NEAR(t.ut_hours, 1, 1e-9);
-    snd.year = 1996;
-    snd.month = 1;
-    snd.day = 1;
-    t = th::ut_of_wth_hours(snd, 0);  // the day before 1 Jan is 31 Dec of the year before
-    EXPECT_EQ(t.year, 1995);
-    EXPECT_EQ(t.month, 12);
-    EXPECT_EQ(t.day, 31);
 }
 
 TEST(Environment, WeatherInterpolatesAndRefusesTimesOutside) {

@@ -14,7 +14,7 @@
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/brdf.hpp"
 #include "radiometry/material.hpp"
-#include "radiometry/planck.hpp"
+#include "rt/planck.hpp"
 #include "scene/scene.hpp"
 #include "test_scene.hpp"
 
@@ -409,7 +409,7 @@ TEST(Render, EmissionFromFacetTemperatures) {
     o.truth = true;
     RenderResult res = render(in, o);
     for (std::size_t k = 0; k < kWl.size(); ++k) {
-        double expected = 0.9 * (1 - r) * radiometry::planck_radiance(kWl[k], 300) + 0.001;
+        double expected = 0.9 * (1 - r) * rt::planck_radiance(kWl[k], 300) + 0.001;
         EXPECT_NEAR(res.radiance.at(static_cast<int>(k), 0, 0), expected, 1e-6 * expected);
     }
     EXPECT_EQ(res.truth.at(8, 0, 0), 300.0f);  // temperature_k

@@ -1,5 +1,5 @@
 // trace --shadow-history (shadow_history.hpp): the time grid and SPA sun against therm's
-// clock and lib/atmos; sunlit fractions, transmittances and sky-view factors against
+// clock and lib/geo; sunlit fractions, transmittances and sky-view factors against
 // geometry worked by hand; key agreement with therm's scene reader; and (issue 6,
 // trace's emissive part) a blackbody plate rendered through tau2 = 1.
 #include "trace/shadow_history.hpp"
@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "atmos/solar_position.hpp"
 #include "core/error.hpp"
+#include "geo/scene_clock.hpp"
 #include "io/snd.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
-#include "radiometry/planck.hpp"
+#include "rt/planck.hpp"
 #include "scene/load.hpp"
 #include "test_scene.hpp"
 #include "thermal/environment.hpp"
@@ -84,21 +84,21 @@ TEST(ShadowHistory, TimeGridEndsAtTheSceneTimeOnThermsClock) {
     const io::Snd snd = io::read_snd_file(kSnd);
     const auto sun = sun_history(snd, history_steps(24, 15), 0.25);
     ASSERT_EQ(sun.size(), 97u);
-    EXPECT_DOUBLE_EQ(sun.back().time_hours, thermal::scene_wth_hours(snd));
+    EXPECT_DOUBLE_EQ(sun.back().time_hours, geo::scene_wth_hours(io::scene_site(snd)));
     EXPECT_DOUBLE_EQ(sun.back().time_hours, 38.0);
     EXPECT_DOUBLE_EQ(sun.front().time_hours, 14.0);
-    const atmos::SolarPosition now = atmos::solar_position(snd);
+    const geo::SolarPosition now = geo::solar_position(io::scene_site(snd));
     // The same moment through two date paths: equal to rounding (1e-9 deg).
     EXPECT_NEAR(sun.back().zenith_deg, now.zenith_deg, 1e-9);
     EXPECT_NEAR(sun.back().azimuth_deg, now.azimuth_deg, 1e-9);
     for (std::size_t k = 0; k < sun.size(); k += 8) {
-        const thermal::UtTime ut = thermal::ut_of_wth_hours(snd, sun[k].time_hours);
-        atmos::SolarPositionInput in;
+        const geo::UtTime ut = geo::ut_of_wth_hours(io::scene_site(snd), sun[k].time_hours);
+        geo::SolarPositionInput in;
         in.year = ut.year, in.month = ut.month, in.day = ut.day, in.ut_hours = ut.ut_hours;
-        in.delta_t_s = atmos::default_delta_t_s(ut.year);
+        in.delta_t_s = geo::default_delta_t_s(ut.year);
         in.latitude_deg = snd.latitude_deg;
         in.longitude_east_deg = snd.longitude_east_deg;
-        EXPECT_NEAR(sun[k].zenith_deg, atmos::solar_position(in).zenith_deg, 1e-9) << k;
+        EXPECT_NEAR(sun[k].zenith_deg, geo::solar_position(in).zenith_deg, 1e-9) << k;
         EXPECT_NEAR(sun[k].time_hours, 14.0 + 0.25 * static_cast<double>(k), 1e-12);
     }
 }
@@ -384,7 +384,7 @@ TEST(RenderEmission, EmittedSkyAndPathAreAddedOnlyWithTemperatures) {
     in.temperatures = &temps;
     RenderResult res = render(in, RenderOptions{});
     for (std::size_t k = 0; k < wl.size(); ++k) {
-        const double b = radiometry::planck_radiance(wl[k], 300);
+        const double b = rt::planck_radiance(wl[k], 300);
         const double expected = tau2 * ((1 - r) * b + r * ld) + lu;
         EXPECT_NEAR(res.radiance.at(static_cast<int>(k), 0, 0), expected, 1e-6 * expected)
             << wl[k] << " um";

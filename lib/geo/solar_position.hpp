@@ -2,14 +2,12 @@
 // position algorithm for solar radiation applications", NREL/TP-560-34302 (2003, rev.
 // 2008); Solar Energy 76(5), 577-589 (2004). Valid for years -2000 to 6000 with an
 // uncertainty of +/-0.0003 deg. Used by build_radiance (sun geometry, Earth-Sun distance
-// for Es) and trace.
+// for Es), trace and therm.
 #pragma once
 
-#include "io/snd.hpp"
+namespace sigchain::geo {
 
-namespace sigchain::atmos {
-
-// A moment and a place. Time is Universal Time (UT, the seed's "GMT").
+// A moment and a place. Time is Universal Time (UT, White (1996)'s "GMT").
 struct SolarPositionInput {
     int year = 2000;          // full year; the Gregorian calendar from 1582-10-15 on, Julian before
     int month = 1;            // 1-12
@@ -49,9 +47,21 @@ double default_delta_t_s(int year);
 // input is out of range.
 SolarPosition solar_position(const SolarPositionInput& in);
 
-// Convenience for the scene-node file: its date, GMT time, latitude and longitude (east
-// positive) at elevation_m above sea level, standard pressure and temperature, Delta T
-// from default_delta_t_s.
-SolarPosition solar_position(const io::Snd& snd, double elevation_m = 0);
+// The scene's date, time and place as the scene node (.snd) gives them; io::scene_site
+// makes one from an io::Snd.
+struct SceneSite {
+    int year = 2000;                // the scene's date (its local date)
+    int month = 1;                  // 1-12
+    int day = 1;                    // 1-31
+    double time_gmt_hours = 0;      // decimal hours GMT (UT), [0, 24)
+    double gmt_offset_hours = 0;    // GMT = local time + offset (5 for US Eastern standard)
+    double latitude_deg = 0;        // of the target, north positive
+    double longitude_east_deg = 0;  // of the target, east positive, (-180, 360)
+};
 
-}  // namespace sigchain::atmos
+// The sun at the scene's date, GMT time, latitude and longitude (east positive) at
+// elevation_m above sea level, standard pressure and temperature, Delta T from
+// default_delta_t_s.
+SolarPosition solar_position(const SceneSite& site, double elevation_m = 0);
+
+}  // namespace sigchain::geo

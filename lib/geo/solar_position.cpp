@@ -1,7 +1,7 @@
 // NREL Solar Position Algorithm (Reda and Andreas, NREL/TP-560-34302, 2003 rev. 2008);
 // equation numbers below are the report's. The periodic-term tables are the report's
 // tables A4.2 (Earth heliocentric longitude, latitude, radius) and A4.3 (nutation).
-#include "atmos/solar_position.hpp"
+#include "geo/solar_position.hpp"
 
 #include <array>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 
-namespace sigchain::atmos {
+namespace sigchain::geo {
 
 namespace {
 
@@ -415,19 +415,19 @@ SolarPosition solar_position(const SolarPositionInput& in) {
     return out;
 }
 
-SolarPosition solar_position(const io::Snd& snd, double elevation_m) {
+SolarPosition solar_position(const SceneSite& site, double elevation_m) {
     SolarPositionInput in;
-    in.year = snd.year;
-    in.month = snd.month;
-    in.day = snd.day;
-    in.ut_hours = snd.time_gmt_hours;
-    in.delta_t_s = default_delta_t_s(snd.year);
-    in.latitude_deg = snd.latitude_deg;
+    in.year = site.year;
+    in.month = site.month;
+    in.day = site.day;
+    in.ut_hours = site.time_gmt_hours;
+    in.delta_t_s = default_delta_t_s(site.year);
+    in.latitude_deg = site.latitude_deg;
     // The .snd's east-positive longitude may be given in [0, 360).
     in.longitude_east_deg =
-        snd.longitude_east_deg > 180 ? snd.longitude_east_deg - 360 : snd.longitude_east_deg;
+        site.longitude_east_deg > 180 ? site.longitude_east_deg - 360 : site.longitude_east_deg;
     in.elevation_m = elevation_m;
     return solar_position(in);
 }
 
-}  // namespace sigchain::atmos
+}  // namespace sigchain::geo

@@ -1,9 +1,10 @@
-#include "atmos/scene_clock.hpp"
+// The scene's clock: .wth hours, UT dates and the sun at a .wth hour.
+#include "geo/scene_clock.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace sigchain::atmos {
+namespace sigchain::geo {
 
 // The era-based civil calendar arithmetic of H. Hinnant, "chrono-compatible low-level
 // date algorithms".
@@ -28,16 +29,16 @@ void civil_from_days(long z, int& y, int& m, int& d) {
     y = static_cast<int>(yoe + era * 400 + (m <= 2));
 }
 
-double scene_wth_hours(const io::Snd& snd) {
-    double local = std::fmod(snd.time_gmt_hours - snd.gmt_offset_hours, 24.0);
+double scene_wth_hours(const SceneSite& site) {
+    double local = std::fmod(site.time_gmt_hours - site.gmt_offset_hours, 24.0);
     if (local < 0) local += 24;
     return 24 + local;
 }
 
-UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours) {
+UtTime ut_of_wth_hours(const SceneSite& site, double wth_hours) {
     // Days (and fraction) since 1970-01-01, local, then shifted to UT.
-    const double days = static_cast<double>(days_from_civil(snd.year, snd.month, snd.day) - 1) +
-                        (wth_hours + snd.gmt_offset_hours) / 24.0;
+    const double days = static_cast<double>(days_from_civil(site.year, site.month, site.day) - 1) +
+                        (wth_hours + site.gmt_offset_hours) / 24.0;
     const double whole = std::floor(days);
     UtTime t;
     civil_from_days(static_cast<long>(whole), t.year, t.month, t.day);
@@ -45,17 +46,17 @@ UtTime ut_of_wth_hours(const io::Snd& snd, double wth_hours) {
     return t;
 }
 
-SolarPosition sun_at_wth_hours(const io::Snd& snd, double wth_hours) {
-    const UtTime ut = ut_of_wth_hours(snd, wth_hours);
+SolarPosition sun_at_wth_hours(const SceneSite& site, double wth_hours) {
+    const UtTime ut = ut_of_wth_hours(site, wth_hours);
     SolarPositionInput in;
     in.year = ut.year;
     in.month = ut.month;
     in.day = ut.day;
     in.ut_hours = ut.ut_hours;
     in.delta_t_s = default_delta_t_s(ut.year);
-    in.latitude_deg = snd.latitude_deg;
-    in.longitude_east_deg = snd.longitude_east_deg;
+    in.latitude_deg = site.latitude_deg;
+    in.longitude_east_deg = site.longitude_east_deg;
     return solar_position(in);
 }
 
-}  // namespace sigchain::atmos
+}  // namespace sigchain::geo

@@ -1,12 +1,12 @@
 // Planck's law against published values, Wien's displacement law and Stefan-Boltzmann.
-#include "radiometry/planck.hpp"
+#include "rt/planck.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-namespace sigchain::radiometry {
+namespace sigchain::rt {
 namespace {
 
 TEST(Planck, PublishedValueAt10umAnd300K) {
@@ -84,4 +84,4 @@ TEST(Planck, IntegralIsStefanBoltzmannOverPi) {
 }
 
 }  // namespace
-}  // namespace sigchain::radiometry
+}  // namespace sigchain::rt

@@ -1,13 +1,15 @@
-// Tests for the NREL Solar Position Algorithm (lib/atmos/solar_position).
-#include "atmos/solar_position.hpp"
+// Tests for the NREL Solar Position Algorithm (lib/geo/solar_position).
+#include "geo/solar_position.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "core/error.hpp"
+
 using namespace sigchain;
-using namespace sigchain::atmos;
+using namespace sigchain::geo;
 
 namespace {
 
@@ -202,22 +204,23 @@ TEST(SolarPosition, EarthSunDistanceAtPerihelionAndAphelion) {
     EXPECT_NEAR(r_max, 1.0167, 1e-4);
 }
 
-TEST(SolarPosition, SceneNodeConvenienceUsesGmtAndEastLongitude) {
-    io::Snd snd;
-    snd.year = 2003;
-    snd.month = 10;
-    snd.day = 17;
-    snd.time_gmt_hours = 19 + 30 / 60.0 + 30 / 3600.0;
-    snd.latitude_deg = 39.742476;
-    snd.longitude_east_deg = -105.1786;
-    SolarPosition p = solar_position(snd, 1830.14);
+TEST(SolarPosition, SceneSiteConvenienceUsesGmtAndEastLongitude) {
+    SceneSite site;
+    site.year = 2003;
+    site.month = 10;
+    site.day = 17;
+    site.time_gmt_hours = 19 + 30 / 60.0 + 30 / 3600.0;
+    site.gmt_offset_hours = 7;  // not used by the sun: the time is GMT already
+    site.latitude_deg = 39.742476;
+    site.longitude_east_deg = -105.1786;
+    SolarPosition p = solar_position(site, 1830.14);
     // Standard pressure and temperature instead of 820 mb, 11 C change only the
     // refraction (0.016 deg here) by ~25%; Delta T 64 s instead of 67 s moves the sun
     // by 3.4e-5 deg.
     EXPECT_NEAR(p.zenith_no_refraction_deg, 90 - 39.872046, 1e-4);
     EXPECT_NEAR(p.azimuth_deg, 194.340241, 1e-4);
-    snd.longitude_east_deg = 360 - 105.1786;  // same place written 0..360
-    EXPECT_NEAR(solar_position(snd, 1830.14).azimuth_deg, 194.340241, 1e-4);
+    site.longitude_east_deg = 360 - 105.1786;  // same place written 0..360
+    EXPECT_NEAR(solar_position(site, 1830.14).azimuth_deg, 194.340241, 1e-4);
 }
 
 TEST(SolarPosition, RejectsOutOfRangeInput) {
