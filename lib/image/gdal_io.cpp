@@ -14,25 +14,14 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
-#include "image/gdal.hpp"
+#include "geo/crs.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 
 namespace sigchain::image {
 
-void gdal_init() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        CPLSetErrorHandler(CPLQuietErrorHandler);
-        CPLSetConfigOption("GDAL_PAM_ENABLED", "NO");
-        GDALAllRegister();
-    });
-}
-
-std::string gdal_message() {
-    const char* m = CPLGetLastErrorMsg();
-    return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
-}
+using geo::gdal_init;
+using geo::gdal_message;
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "image/gdal.hpp"
+#include "geo/crs.hpp"
 #include "radiometry/material.hpp"
 
 namespace sigchain::radiometry {
@@ -36,10 +36,10 @@ int TextureMap::curve_at(double x, double y) const {
 
 std::shared_ptr<const TextureMap> read_texture_map(const std::string& path,
                                                    const MaterialOptics& m) {
-    image::gdal_init();
+    geo::gdal_init();
     std::unique_ptr<GDALDataset> ds(
         static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_ReadOnly)));
-    if (!ds) texture_error(m, "cannot read TEXTURE_FILE " + path + ": " + image::gdal_message());
+    if (!ds) texture_error(m, "cannot read TEXTURE_FILE " + path + ": " + geo::gdal_message());
     auto t = std::make_shared<TextureMap>();
     t->file = path;
     t->rows = ds->GetRasterYSize();
