@@ -72,6 +72,7 @@ public:
             try {
                 return parse(ov->second);
             } catch (const BadAnswer& e) {
+                // An --answer comes from the command line: no file, no line.
                 throw DataError({"--answer " + key, 0}, e.what());
             }
         }
@@ -169,6 +170,7 @@ void ask_profile(Asker& a, io::CdkRun& run) {
         if (path.empty()) throw BadAnswer("expected the radiosonde file name, found ''");
         try {
             io::Rsd raw = io::read_rsd_file(path);
+            // The parsed sounding keeps no line numbers: messages name the level.
             return fill_missing_dew_points(raw, {path, 0});
         } catch (const Error& e) {
             throw BadAnswer("radiosonde: " + std::string(e.what()));
@@ -178,6 +180,7 @@ void ask_profile(Asker& a, io::CdkRun& run) {
         std::string msg = "expected number of atmospheric levels in " +
                           range_text(1, static_cast<double>(rsd.levels.size())) +
                           " (the levels of the radiosonde file), found " + std::to_string(levels);
+        // An --answer comes from the command line: no file, no line.
         if (a.used().count("levels")) throw DataError({"--answer levels", 0}, msg);
         throw DataError(levels_at, msg);
     }
@@ -187,6 +190,41 @@ void ask_profile(Asker& a, io::CdkRun& run) {
         line << "ENTERING DATA FOR LAYER " << (i + 1) << ": ALTITUDE "
              << format_number(run.profile->layers[i].altitude_km);
         a.inform(line.str());
+    }
+}
+
+// CARD 3A1 and 3A2 (solar/lunar scattered radiance, IEMSCT 2): the geometry of the
+// source.
+void ask_solar_scattering(Asker& a, io::CdkGeometry& g) {
+    g.iparm = a.integer("iparm", "geometry type IPARM", 0, 2);
+    g.iph = a.integer("iph", "phase function type IPH", 0, 2, {1},
+                      " except 1 (user supplied, not supported)");
+    if (g.iph == 0) g.asymmetry_g = a.real("g", "asymmetry parameter g", -1, 1);
+    g.iday = a.integer("iday", "day of the year", 1, 366);
+    g.isourc = 0;
+    if (g.iparm <= 1) {
+        g.parm[0] = a.real("obs_lat", "observer latitude (deg north)", -90, 90);
+        g.parm[1] = a.real("obs_lon", "observer longitude (deg west)", 0, 360);
+        if (g.iparm == 0) {
+            g.parm[2] = a.real("src_lat", "source latitude (deg north)", -90, 90);
+            g.parm[3] = a.real("src_lon", "source longitude (deg west)", 0, 360);
+        } else {
+            g.time_h = a.ask<double>("time", [](const std::string& t) {
+                double v = Asker::number(t, "time of day (hours)");
+                try {
+                    return time_answer_hours(v);
+                } catch (const std::invalid_argument&) {
+                    throw BadAnswer(
+                        "expected time of day in [0, 24] (decimal hours) or "
+                        "[100, 2400] (HHMM), found " +
+                        quoted(t));
+                }
+            });
+        }
+        g.path_azimuth_deg = a.real("psipo", "path azimuth (deg east of north)", 0, 360);
+    } else {
+        g.parm[0] = a.real("rel_azimuth", "relative azimuth (deg)", -180, 180);
+        g.parm[1] = a.real("sun_zenith", "solar zenith angle (deg)", 0, 180);
     }
 }
 
@@ -231,38 +269,7 @@ void ask_geometry(Asker& a, io::CdkRun& run) {
         ask_radius();
         if (itype == 2) g.len = a.yes_no("short_path", "use the short path") ? 0 : 1;
     }
-    if (iemsct == 2) {  // CARD 3A1, 3A2
-        g.iparm = a.integer("iparm", "geometry type IPARM", 0, 2);
-        g.iph = a.integer("iph", "phase function type IPH", 0, 2, {1},
-                          " except 1 (user supplied, not supported)");
-        if (g.iph == 0) g.asymmetry_g = a.real("g", "asymmetry parameter g", -1, 1);
-        g.iday = a.integer("iday", "day of the year", 1, 366);
-        g.isourc = 0;
-        if (g.iparm <= 1) {
-            g.parm[0] = a.real("obs_lat", "observer latitude (deg north)", -90, 90);
-            g.parm[1] = a.real("obs_lon", "observer longitude (deg west)", 0, 360);
-            if (g.iparm == 0) {
-                g.parm[2] = a.real("src_lat", "source latitude (deg north)", -90, 90);
-                g.parm[3] = a.real("src_lon", "source longitude (deg west)", 0, 360);
-            } else {
-                g.time_h = a.ask<double>("time", [](const std::string& t) {
-                    double v = Asker::number(t, "time of day (hours)");
-                    try {
-                        return time_answer_hours(v);
-                    } catch (const std::invalid_argument&) {
-                        throw BadAnswer(
-                            "expected time of day in [0, 24] (decimal hours) or "
-                            "[100, 2400] (HHMM), found " +
-                            quoted(t));
-                    }
-                });
-            }
-            g.path_azimuth_deg = a.real("psipo", "path azimuth (deg east of north)", 0, 360);
-        } else {
-            g.parm[0] = a.real("rel_azimuth", "relative azimuth (deg)", -180, 180);
-            g.parm[1] = a.real("sun_zenith", "solar zenith angle (deg)", 0, 180);
-        }
-    }
+    if (iemsct == 2) ask_solar_scattering(a, g);  // CARD 3A1, 3A2
     run.geometry = g;
 }
 
@@ -335,7 +342,7 @@ void ask_card1(Asker& a, io::CdkCard1& c1) {
                                        {"modify_co", "CO"}};
     for (int i = 0; i < 6; ++i) {
         if (a.yes_no(kGases[i][0], std::string("modify ") + kGases[i][1]))
-            c1.m[i] = a.integer("m" + std::to_string(i + 1),
+            c1.m[i] = a.integer(std::string("m").append(std::to_string(i + 1)),
                                 std::string("model for ") + kGases[i][1], 1, 6);
     }
     c1.mdef = 1;  // default profiles for the other gases (fig. 4.31)
@@ -440,57 +447,6 @@ io::CdkSpectral wavelength_to_card4(double start_um, double end_um, int interval
     double dv = (s.v2_cm1 - s.v1_cm1) / intervals;
     s.dv_cm1 = std::max(5.0, 5.0 * std::round(dv / 5.0));
     return s;
-}
-
-io::Rsd fill_missing_dew_points(const io::Rsd& rsd, const SourceLocation& where) {
-    io::Rsd out = rsd;
-    std::vector<std::size_t> valid;
-    for (std::size_t i = 0; i < out.levels.size(); ++i) {
-        const auto& l = out.levels[i];
-        if (!l.temperature_c)
-            throw DataError(where, "level " + std::to_string(i + 1) + " (" +
-                                       format_number(l.altitude_km) +
-                                       " km) has no temperature (-999)");
-        if (l.dew_point_c) valid.push_back(i);
-    }
-    if (valid.empty()) throw DataError(where, "no level has a dew point (all -999)");
-    auto depression = [&](std::size_t i) {
-        return *out.levels[i].temperature_c - *out.levels[i].dew_point_c;
-    };
-    for (std::size_t i = 0; i < out.levels.size(); ++i) {
-        auto& l = out.levels[i];
-        if (l.dew_point_c) continue;
-        double d;
-        if (i > valid.back()) {
-            d = depression(valid.back());  // seed 4.2.3.4: keep the last depression
-        } else if (i < valid.front()) {
-            d = depression(valid.front());
-        } else {
-            auto hi = *std::upper_bound(valid.begin(), valid.end(), i);
-            auto lo = *(std::upper_bound(valid.begin(), valid.end(), i) - 1);
-            double t = (l.altitude_km - out.levels[lo].altitude_km) /
-                       (out.levels[hi].altitude_km - out.levels[lo].altitude_km);
-            d = depression(lo) + t * (depression(hi) - depression(lo));
-        }
-        l.dew_point_c = *l.temperature_c - d;
-    }
-    return out;
-}
-
-io::CdkProfile radiosonde_profile(const io::Rsd& rsd, int levels, const std::string& title) {
-    io::CdkProfile p;
-    p.title = title;
-    for (int i = 0; i < levels; ++i) {
-        const io::RsdLevel& l = rsd.levels.at(static_cast<std::size_t>(i));
-        io::CdkLayer layer;
-        layer.altitude_km = l.altitude_km;
-        layer.pressure = l.pressure_mb;
-        layer.temperature = l.temperature_c.value();
-        layer.wmol = {l.dew_point_c.value(), 0, 0};
-        layer.jchar = "ABG";  // mb, deg C, dew point in deg C (fig. 4.31)
-        p.layers.push_back(layer);
-    }
-    return p;
 }
 
 Control7Result run_control7(AnswerSource& answers,

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "atmos/radiosonde.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "io/cdk.hpp"
@@ -92,18 +93,6 @@ struct Control7Result {
 // Relative radiosonde paths are opened from the current directory.
 Control7Result run_control7(AnswerSource& answers,
                             const std::map<std::string, std::string>& overrides = {});
-
-// Seed section 4.2.3.4: a missing (-999) dew point above the last valid one gets the
-// last valid dew-point depression (T - Td) applied to its level's temperature; below the
-// first valid one, the first valid depression; between valid ones, the depression
-// interpolated linearly in altitude. Throws DataError (naming `where`) if a level has no
-// temperature or no level has a dew point.
-io::Rsd fill_missing_dew_points(const io::Rsd& rsd, const SourceLocation& where);
-
-// The lowest `levels` levels as LOWTRAN 7 CARD 2C1 layers: altitude (km), pressure (mb,
-// JCHAR A), temperature (C, B), H2O as dew point (C, G); CO2 and O3 0 (model default).
-// `rsd` must have its dew points filled.
-io::CdkProfile radiosonde_profile(const io::Rsd& rsd, int levels, const std::string& title);
 
 // Wavelength range to LOWTRAN wavenumbers: V1 = 1e4/end_um, V2 = 1e4/start_um (cm-1),
 // DV = (V2 - V1)/intervals rounded to a multiple of 5 cm-1, at least 5 (LOWTRAN 7 steps

@@ -91,9 +91,11 @@ std::vector<Row> read_rows(const std::string& path, std::size_t columns,
 // Checks that rows[i].v[0] == start + step * i (a regular grid).
 void require_grid(const std::vector<Row>& rows, double start, double step, std::size_t count,
                   const std::string& path) {
+    // An extra row is named by its line; a missing one has none, so the file is named.
     if (rows.size() != count)
-        throw DataError({path, 0}, "expected " + std::to_string(count) + " rows, found " +
-                                       std::to_string(rows.size()));
+        throw DataError(
+            rows.size() > count ? rows[count].where : SourceLocation{path, 0},
+            "expected " + std::to_string(count) + " rows, found " + std::to_string(rows.size()));
     for (std::size_t i = 0; i < rows.size(); ++i) {
         double want = start + step * static_cast<double>(i);
         if (std::abs(rows[i].v[0] - want) > 1e-6)
@@ -132,6 +134,7 @@ void read_band_constants(GasTables::Data& d, const std::string& dir) {
     }
     for (std::size_t b = 0; b < d.band_gas.size(); ++b)
         if (d.band_gas[b] < 0)
+            // A missing band has no line: the message names the file and the band.
             throw DataError({path, 0}, "band " + std::to_string(b + kFirstBandId) + " missing");
 }
 
@@ -196,7 +199,10 @@ void read_continua(GasTables::Data& d, const std::string& dir) {
 void read_ozone(GasTables::Data& d, const std::string& dir) {
     std::string path = dir + "o3_visible_uv_band_coefficients.txt";
     auto rows = read_rows(path, 4, {1, 3});
-    if (rows.size() != 102) throw DataError({path, 0}, "expected 102 rows");
+    // An extra row is named by its line; a missing one has none, so the file is named.
+    if (rows.size() != 102)
+        throw DataError(rows.size() > 102 ? rows[102].where : SourceLocation{path, 0},
+                        "expected 102 rows");
     std::vector<Row> visible(rows.begin(), rows.begin() + 56);
     require_grid(visible, 13000, 200, 56, path);
     for (int k = 0; k < 57; ++k) d.chappuis.push_back(rows[k].v[1]);  // C8(57) is at 27500

@@ -34,7 +34,7 @@ line_of() { sed -n "${2}p" "$1"; }
 
 @test "missing -o, a missing input and two standard inputs are usage errors" {
     run -2 --separate-stderr build_radiance "$HAWKEYE" "$DATA/small.snd"
-    [[ "$stderr" == *"-o PATTERN is required"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"-o FILE is required"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance "$HAWKEYE" -o 'x-%d.rad'
     [[ "$stderr" == *"expected two inputs"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance - - -o 'x-%d.rad'

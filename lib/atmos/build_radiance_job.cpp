@@ -1,0 +1,78 @@
+// The library behind tools/build_radiance (see build_radiance_job.hpp).
+#include "atmos/build_radiance_job.hpp"
+
+#include <chrono>
+
+#include "core/data_dir.hpp"
+#include "core/error.hpp"
+#include "core/output.hpp"
+#include "core/text.hpp"
+#include "io/cdk.hpp"
+#include "io/rad.hpp"
+#include "io/snd.hpp"
+
+namespace sigchain::atmos {
+
+namespace {
+
+// The sun, the column and what was assumed (--verbose).
+void report_tables(const RadianceReport& report, const Reporter& reporter) {
+    reporter.info("sun zenith " + format_number(report.sun_zenith_deg) + " deg, azimuth " +
+                  format_number(report.sun_azimuth_deg) + " deg; Earth-Sun " +
+                  format_number(report.earth_sun_distance_au) + " AU");
+    reporter.info("ground " + format_number(report.ground_km) + " km, sensor " +
+                  format_number(report.sensor_km) + " km, " + std::to_string(report.layers) +
+                  " layers, visibility " + format_number(report.visibility_km) +
+                  " km, view azimuth " + format_number(report.view_azimuth_deg) + " deg");
+    for (const auto& note : report.notes) reporter.info(note);
+}
+
+}  // namespace
+
+void check_job(const BuildRadianceJob& job) {
+    if (job.cdk_path == "-" && job.snd_path == "-")
+        throw UsageError("only one input can be standard input");
+    if (!(job.options.top_km > 0)) throw UsageError("--top must be > 0 km");
+    if (!(job.options.merge_tau >= 0 && job.options.merge_tau <= 1))
+        throw UsageError("--merge-tau must be in [0, 1]");
+    check_radiance_options(job.options);
+}
+
+std::vector<std::string> band_output_paths(const std::string& pattern, const io::Snd& snd) {
+    const int bands = static_cast<int>(snd.bands.size());
+    std::vector<std::string> paths;
+    for (int b = 1; b <= bands; ++b) paths.push_back(band_output_path(pattern, b, bands));
+    if (bands > 1)
+        for (const auto& p : paths)
+            if (p == "-") throw UsageError("'-' names one band only");
+    return paths;
+}
+
+void run(const BuildRadianceJob& job, const Reporter& reporter) {
+    check_job(job);
+    const auto deck = io::read_cdk_file(job.cdk_path);
+    const auto snd = io::read_snd_file(job.snd_path);
+    const std::vector<std::string> paths = band_output_paths(job.output_pattern, snd);
+    RadianceOptions o = job.options;
+    o.data_dir = data_dir(job.data_dir);
+    o.snd_path = job.snd_path;
+    o.cdk_path = job.cdk_path;
+
+    long total = 0;
+    for (const auto& b : snd.bands) total += b.sample_count();
+    const auto start = std::chrono::steady_clock::now();
+    RadianceReport report;
+    const auto rads = build_radiance(deck, snd, o, &report, reporter);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report_tables(report, reporter);
+    for (std::size_t b = 0; b < paths.size(); ++b) {
+        AtomicOutput out(paths[b]);
+        io::write_rad(out.stream(), rads[b]);
+        out.commit();
+        reporter.info("wrote " + paths[b]);
+    }
+    reporter.info(std::to_string(total) + " spectral samples in " + format_number(seconds) + " s");
+}
+
+}  // namespace sigchain::atmos

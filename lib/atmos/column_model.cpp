@@ -1,0 +1,86 @@
+// The atmospheric column of build_radiance (see column_model.hpp).
+#include "atmos/column_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "atmos/rayleigh.hpp"
+#include "core/error.hpp"
+#include "core/text.hpp"
+
+namespace sigchain::atmos {
+
+namespace {
+
+std::size_t index_of(const std::vector<double>& v, double x) {
+    return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
+}
+
+}  // namespace
+
+ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const RadianceOptions& o) {
+    const Profile full = profile_from_deck(run, o.data_dir);
+    const double ground = run.card2.ground_altitude_km > full.bottom_km()
+                              ? run.card2.ground_altitude_km
+                              : full.bottom_km();
+    const double top = std::min(o.top_km, full.top_km());
+    // The parsed .snd keeps no line numbers: the message names the file and the field.
+    if (sensor_km <= ground)
+        throw DataError({o.snd_path, 0}, "the sensor altitude (" + format_number(sensor_km) +
+                                             " km) must lie above the ground (GNDALT, CARD 2: " +
+                                             format_number(ground) + " km)");
+    const double sensor = std::min(sensor_km, top);
+    m_profile = resample(full, ground, top, {sensor});
+    m_sensor_level = index_of(m_profile.z_km, sensor);
+    if (m_sensor_level >= m_profile.size() ||
+        std::abs(m_profile.z_km[m_sensor_level] - sensor) > 1e-9)
+        throw Error("internal: the sensor altitude is not a level of the resampled profile");
+    m_aerosol.emplace(AerosolModel::from_deck(run.card2, m_profile, o.data_dir));
+    m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
+    m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
+}
+
+std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
+    const double wavelength_um = 1e4 / nu_cm1;
+    const std::vector<double> gas = m_gas->layer_absorption_depth(nu_cm1);
+    std::vector<LayerOptics> out(m_profile.size() - 1);
+    for (std::size_t k = 0; k + 1 < m_profile.size(); ++k) {
+        LayerOptics& l = out[k];
+        l.tau_rayleigh =
+            rayleigh_optical_depth(wavelength_um, m_profile.p_mb[k + 1], m_profile.p_mb[k]);
+        const AerosolLayerOptics a =
+            m_aerosol->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um);
+        l.tau_aerosol = a.tau_ext;
+        l.ssa_aerosol = a.ssa;
+        l.g_aerosol = a.g;
+        l.tau_gas = std::max(0.0, gas[k]);
+    }
+    return out;
+}
+
+std::vector<double> ColumnModel::gas_depths_from(double nu_cm1, std::size_t pivot) const {
+    const std::size_t n = m_profile.size() - 1;
+    std::vector<double> out(n, 0.0);
+    auto depth = [&](std::size_t i, std::size_t j) {  // -ln T vertical, levels i <= j
+        return i == j ? 0.0 : -std::log(m_gas->transmittance(nu_cm1, i, j, 1.0));
+    };
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = std::max(0.0, k >= pivot ? depth(pivot, k + 1) - depth(pivot, k)
+                                          : depth(k, pivot) - depth(k + 1, pivot));
+    return out;
+}
+
+std::vector<LayerOptics> ColumnModel::with_gas_depths(std::vector<LayerOptics> layers,
+                                                      const std::vector<double>& gas) {
+    for (std::size_t k = 0; k < layers.size(); ++k) layers[k].tau_gas = gas[k];
+    return layers;
+}
+
+double ColumnModel::direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
+                                         std::size_t i, std::size_t j, double mu) const {
+    double tau = 0;  // Rayleigh and aerosol follow Beer's law
+    for (std::size_t k = i; k < j; ++k) tau += layers[k].tau_rayleigh + layers[k].tau_aerosol;
+    return m_gas->transmittance(nu_cm1, i, j, mu) * std::exp(-tau / mu);
+}
+
+}  // namespace sigchain::atmos

@@ -1,0 +1,68 @@
+// The atmospheric column of build_radiance: profile levels between the ground and the
+// top (the sensor always a level), with the Rayleigh, aerosol and gas optical depths of
+// every layer at a wavenumber. Units: wavenumber cm-1, altitude km.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "atmos/aerosol.hpp"
+#include "atmos/gas_absorption.hpp"
+#include "atmos/profile.hpp"
+#include "atmos/radiance_options.hpp"
+#include "io/cdk.hpp"
+
+namespace sigchain::atmos {
+
+// The optical properties of one layer at one wavenumber.
+struct LayerOptics {
+    double tau_rayleigh = 0;
+    double tau_aerosol = 0;  // extinction
+    double ssa_aerosol = 0;
+    double g_aerosol = 0;
+    double tau_gas = 0;  // equivalent Beer's-law absorption (GasColumn)
+};
+
+// The column between the ground and the top: levels, aerosols and gases. Const
+// methods may be called from several threads at once.
+class ColumnModel {
+public:
+    // Throws DataError when the sensor does not lie above the ground.
+    ColumnModel(const io::CdkRun& run, double sensor_km, const RadianceOptions& options);
+    ColumnModel(const ColumnModel&) = delete;
+    ColumnModel& operator=(const ColumnModel&) = delete;
+
+    const Profile& profile() const { return m_profile; }
+    std::size_t sensor_level() const { return m_sensor_level; }  // index into profile levels
+    double visibility_km() const { return m_aerosol->visibility_km(); }
+
+    // Every layer (bottom first, profile().size() - 1 of them) at wavenumber nu.
+    std::vector<LayerOptics> layers(double nu_cm1) const;
+
+    // Equivalent Beer's-law gas absorption depth of every layer (bottom first) such that
+    // the vertical band-model transmittance from level `pivot` to every other level is
+    // reproduced exactly. The band model is not multiplicative (a layer absorbs less
+    // behind a path that has saturated its lines), so no one set of layer depths is
+    // exact for every path: pivot = top suits the solar beam (layers() uses it),
+    // pivot = 0 the emission reaching the ground (L_de), pivot = the sensor level the
+    // emission reaching the sensor (L_ue).
+    std::vector<double> gas_depths_from(double nu_cm1, std::size_t pivot) const;
+    static std::vector<LayerOptics> with_gas_depths(std::vector<LayerOptics> layers,
+                                                    const std::vector<double>& gas);
+
+    // Direct (unscattered) transmittance between levels i < j at cosine of zenith mu:
+    // band-model gas transmittance times exp(-(Rayleigh + aerosol extinction) / mu).
+    double direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
+                                std::size_t level_i, std::size_t level_j, double mu) const;
+
+private:
+    Profile m_profile;
+    std::size_t m_sensor_level = 0;
+    std::optional<AerosolModel> m_aerosol;
+    std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
+    std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
+};
+
+}  // namespace sigchain::atmos

@@ -1,0 +1,33 @@
+// build_radiance's options: the solver, the sky and upwelled grids, the modelled column
+// (man build_radiance(1)). Shared by the column model, the spectral samples and the job.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace sigchain::atmos {
+
+struct RadianceOptions {
+    std::string data_dir;                    // reference data (core/data_dir.hpp)
+    std::string snd_path = "<snd>";          // named in messages about the scene node
+    std::string cdk_path = "<cdk>";          // and about the card deck
+    int streams = 16;                        // discrete ordinates (even, >= 4)
+    double sky_zenith_step_deg = 5;          // downwelled hemisphere rings (90 / step rings)
+    double sky_azimuth_step_deg = 10;        // cells per ring: 360 / step
+    int sky_subsamples = 2;                  // per cell and axis: the cell's radiance is the
+                                             // solid-angle mean of subsamples^2 directions
+    double upwelled_azimuth_step_deg = 10;   // azimuth nodes of the UPWELLED grid (rad(5))
+    std::optional<double> view_azimuth_deg;  // azimuth of positive view angles (clockwise
+                                             // from north); default: the deck's PSIPO
+    double top_km = 100;                     // top of the modelled atmosphere
+    double thermal_min_wavelength_um = 2.5;  // layer emission solved at and above this
+    double merge_tau = 0.01;                 // the solver merges consecutive layers while
+                                             // their optical depth stays within this (0: never)
+    unsigned threads = 0;                    // worker threads (0: every core); results do
+                                             // not depend on it
+};
+
+// Throws UsageError for an option out of range (streams, sky grid).
+void check_radiance_options(const RadianceOptions& options);
+
+}  // namespace sigchain::atmos

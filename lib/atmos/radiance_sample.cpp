@@ -1,0 +1,228 @@
+// One spectral sample of build_radiance (see radiance_sample.hpp).
+#include "atmos/radiance_sample.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "atmos/rayleigh.hpp"
+#include "rt/discrete_ordinates.hpp"
+#include "rt/planck.hpp"
+
+namespace sigchain::atmos {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// The solver's layers (top first) at one wavenumber.
+std::vector<rt::Layer> solver_layers(const std::vector<LayerOptics>& column, int moments) {
+    const auto rayleigh = rayleigh_phase_moments();
+    std::vector<rt::Layer> layers;
+    layers.reserve(column.size());
+    for (auto it = column.rbegin(); it != column.rend(); ++it) {
+        const LayerOptics& c = *it;
+        const double tau_scat_aer = c.tau_aerosol * c.ssa_aerosol;
+        const double tau_scat = c.tau_rayleigh + tau_scat_aer;
+        const double tau = tau_scat + c.tau_aerosol * (1 - c.ssa_aerosol) + c.tau_gas;
+        rt::Layer l;
+        l.tau = tau;
+        l.ssa = tau > 0 ? std::clamp(tau_scat / tau, 0.0, 1.0) : 0.0;
+        l.pmom.assign(static_cast<std::size_t>(moments) + 1, 0.0);
+        // Mixture of Rayleigh and Henyey-Greenstein (moment k = g^k), weighted by each
+        // one's scattering optical depth.
+        double gk = 1;
+        for (int k = 0; k <= moments; ++k) {
+            const double r = k < 3 ? rayleigh[k] : 0.0;
+            l.pmom[k] = tau_scat > 0 ? (c.tau_rayleigh * r + tau_scat_aer * gk) / tau_scat
+                                     : (k == 0 ? 1.0 : 0.0);
+            gk *= c.g_aerosol;
+        }
+        layers.push_back(std::move(l));
+    }
+    return layers;
+}
+
+// The profile levels the solver keeps (ascending, from 0 to the top): the ground, the
+// sensor and the top always; elsewhere consecutive layers are merged, from the top
+// down, while their summed extinction optical depth stays within `max_tau` (0: keep
+// every level). Mixing thin layers by optical depth keeps their single scattering
+// exactly; only the order of attenuation inside a merged slab is lost, an error of
+// order max_tau^2.
+std::vector<std::size_t> kept_levels(const std::vector<LayerOptics>& col, std::size_t sensor_level,
+                                     double max_tau) {
+    auto tau = [&](std::size_t k) {
+        return col[k].tau_rayleigh + col[k].tau_aerosol + col[k].tau_gas;
+    };
+    const std::size_t n = col.size();  // layers; levels 0..n
+    std::vector<std::size_t> kept{n};
+    double acc = 0;
+    for (std::size_t k = n; k-- > 0;) {  // layer k spans levels k..k+1
+        acc += tau(k);
+        if (k == 0 || k == sensor_level || max_tau <= 0 || acc + tau(k - 1) > max_tau) {
+            kept.push_back(k);
+            acc = 0;
+        }
+    }
+    std::reverse(kept.begin(), kept.end());
+    return kept;
+}
+
+// The solver's layers (top first, one per profile layer) merged between the kept
+// levels: optical depths add, single-scattering albedo and phase moments are
+// weighted by extinction and by scattering optical depth.
+std::vector<rt::Layer> merged_layers(const std::vector<rt::Layer>& layers,
+                                     const std::vector<std::size_t>& kept) {
+    const std::size_t n = layers.size();
+    std::vector<rt::Layer> out;
+    for (std::size_t i = kept.size() - 1; i-- > 0;) {
+        const std::size_t lo = kept[i], hi = kept[i + 1];  // profile levels, lo < hi
+        if (hi - lo == 1) {
+            out.push_back(layers[n - 1 - lo]);
+            continue;
+        }
+        rt::Layer m;
+        m.pmom.assign(layers[0].pmom.size(), 0.0);
+        double scat = 0;
+        for (std::size_t k = lo; k < hi; ++k) {
+            const rt::Layer& l = layers[n - 1 - k];
+            m.tau += l.tau;
+            const double s = l.tau * l.ssa;
+            scat += s;
+            for (std::size_t j = 0; j < m.pmom.size(); ++j) m.pmom[j] += s * l.pmom[j];
+        }
+        m.ssa = m.tau > 0 ? std::clamp(scat / m.tau, 0.0, 1.0) : 0.0;
+        for (double& v : m.pmom) v = scat > 0 ? v / scat : 0.0;
+        if (!(scat > 0)) m.pmom[0] = 1;
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+// The optical depths (from the top) of the sensor level and of the ground: sums of the
+// solver's own layers (top first), so they land exactly on its boundaries.
+std::vector<double> solver_depths(const std::vector<rt::Layer>& layers,
+                                  const std::vector<std::size_t>& kept, std::size_t sensor_level) {
+    double sum = 0, above = 0;
+    for (std::size_t m = 0; m < layers.size(); ++m) {
+        sum += layers[m].tau;
+        if (kept[kept.size() - 2 - m] >= sensor_level) above = sum;
+    }
+    return {above, sum};
+}
+
+// The solver's problem for the column `col` (bottom first) with the levels `kept`:
+// delta-M, black surface (the scene supplies the ground; White (1996), section 3.4),
+// output at the sensor and at the ground in every direction of the tables.
+rt::Problem base_problem(const SampleSetup& s, const std::vector<LayerOptics>& col,
+                         const std::vector<std::size_t>& kept) {
+    rt::Problem prob;
+    prob.layers = merged_layers(solver_layers(col, s.moments), kept);
+    prob.streams = s.options.streams;
+    prob.delta_m = true;
+    prob.albedo = 0;
+    prob.utau = solver_depths(prob.layers, kept, s.column.sensor_level());
+    prob.umu = s.dirs.umu;
+    prob.phi_deg = s.dirs.phi;
+    return prob;
+}
+
+// Layer emission: Planck at each level, no beam, no surface (the scene's) and no
+// emission from space, with the gas depths that make the absorption-only transmittance
+// exact toward level `pivot` (ColumnModel::gas_depths_from says why).
+rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& col,
+                          const rt::Problem& prob, double nu, std::size_t pivot) {
+    const double wavelength = 1e4 / nu;
+    const std::size_t sensor_level = s.column.sensor_level();
+    const auto c = ColumnModel::with_gas_depths(col, s.column.gas_depths_from(nu, pivot));
+    const std::vector<std::size_t> k = kept_levels(c, sensor_level, s.options.merge_tau);
+    rt::Problem th = prob;
+    th.beam_flux = 0;
+    th.layers = merged_layers(solver_layers(c, s.moments), k);
+    th.utau = solver_depths(th.layers, k, sensor_level);
+    th.planck_levels.clear();
+    for (std::size_t i = k.size(); i-- > 0;)
+        th.planck_levels.push_back(rt::planck_radiance(wavelength, s.column.profile().t_k[k[i]]));
+    th.planck_surface = 0;
+    th.top_emission = 0;
+    return rt::solve(th);
+}
+
+// The three solutions of a sample: solar scattering (level 0 the sensor, 1 the ground),
+// emission exact toward the ground (L_de) and toward the sensor (L_ue). A solution not
+// solved has no levels.
+struct Solutions {
+    rt::Result solar, thermal, thermal_up;
+};
+
+// The diffuse intensity of `r` at `level` in direction (mu, phi), 0 where not solved.
+double intensity(const SampleSetup& s, const rt::Result& r, std::size_t level, std::size_t mu,
+                 std::size_t phi) {
+    if (r.levels.empty()) return 0.0;
+    return std::max(0.0, r.levels[level].intensity[mu * s.dirs.phi.size() + phi]);
+}
+
+// Path transmission and radiances per view, sky cells (subsample means) and the
+// upwelled grid, read from the solutions.
+void read_tables(const SampleSetup& s, const Solutions& sol, const std::vector<LayerOptics>& col,
+                 double nu, SampleResult& res) {
+    const Directions& dirs = s.dirs;
+    for (std::size_t v = 0; v < s.views_deg.size(); ++v) {
+        io::RadPathSample p;
+        const double mu_v = std::cos(s.views_deg[v] * kDeg);
+        p.transmission = s.column.direct_transmittance(nu, col, 0, s.column.sensor_level(), mu_v);
+        p.scattered_radiance = intensity(s, sol.solar, 0, dirs.view_mu[v], dirs.view_phi[v]);
+        p.emitted_radiance = intensity(s, sol.thermal_up, 0, dirs.view_mu[v], dirs.view_phi[v]);
+        res.path.push_back(p);
+    }
+    for (const auto& subs : dirs.sky) {
+        double ls = 0, le = 0;
+        for (const auto& sub : subs) {
+            ls += sub.weight * intensity(s, sol.solar, 1, sub.mu, sub.phi);
+            le += sub.weight * intensity(s, sol.thermal, 1, sub.mu, sub.phi);
+        }
+        res.ls.push_back(ls);
+        res.le.push_back(le);
+    }
+    for (std::size_t r = 0; r < dirs.up_mu.size(); ++r)
+        for (std::size_t a = 0; a < dirs.up_phi.size(); ++a) {
+            res.us.push_back(intensity(s, sol.solar, 0, dirs.up_mu[r], dirs.up_phi[a]));
+            res.ue.push_back(intensity(s, sol.thermal_up, 0, dirs.up_mu[r], dirs.up_phi[a]));
+        }
+    if (!sol.solar.levels.empty()) res.ground_irradiance += sol.solar.levels[1].diffuse_down;
+    if (!sol.thermal.levels.empty()) res.ground_irradiance += sol.thermal.levels[1].diffuse_down;
+}
+
+}  // namespace
+
+SampleResult solve_sample(const SampleSetup& s, double nu) {
+    const double wavelength = 1e4 / nu;
+    const std::vector<LayerOptics> col = s.column.layers(nu);
+    const std::size_t top_level = s.column.profile().size() - 1;
+    SampleResult res;
+    io::RadSample& sample = res.sample;
+    sample.wavelength_um = wavelength;
+    sample.wavenumber_cm1 = nu;
+    sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
+    sample.sun_transmission =
+        s.sun_up ? s.column.direct_transmittance(nu, col, 0, top_level, s.mu0) : 0.0;
+
+    const std::vector<std::size_t> kept =
+        kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
+    rt::Problem prob = base_problem(s, col, kept);
+    Solutions sol;
+    if (s.sun_up) {  // solar scattering: the beam only (no emission)
+        prob.beam_flux = sample.solar_irradiance;
+        prob.beam_mu0 = s.mu0;
+        sol.solar = rt::solve(prob);
+    }
+    res.thermal = wavelength >= s.options.thermal_min_wavelength_um;
+    if (res.thermal) {
+        sol.thermal = solve_emission(s, col, prob, nu, 0);
+        sol.thermal_up = solve_emission(s, col, prob, nu, s.column.sensor_level());
+    }
+    read_tables(s, sol, col, nu, res);
+    return res;
+}
+
+}  // namespace sigchain::atmos

@@ -1,0 +1,43 @@
+// One spectral sample of build_radiance: the column at one wavenumber handed to the
+// discrete-ordinate solver (solar scattering, and layer emission in the thermal
+// infrared) and the table entries read from its intensities. Internal to lib/atmos.
+#pragma once
+
+#include <vector>
+
+#include "atmos/column_model.hpp"
+#include "atmos/radiance_directions.hpp"
+#include "atmos/radiance_options.hpp"
+#include "atmos/solar_spectrum.hpp"
+#include "io/rad.hpp"
+
+namespace sigchain::atmos {
+
+// What every sample shares: the column, the directions, the sun. Read-only while the
+// samples are solved, so one setup serves every thread.
+struct SampleSetup {
+    const ColumnModel& column;
+    const Directions& dirs;
+    const SolarSpectrum& solar;
+    const RadianceOptions& options;
+    const std::vector<double>& views_deg;  // view angles, deg from nadir
+    double mu0 = 1;                        // cosine of the sun's zenith
+    bool sun_up = false;
+    double distance_factor = 1;  // (1 AU / Earth-Sun distance)^2
+    int moments = 0;             // phase-function moments handed to the solver
+};
+
+// The table entries of one spectral sample (radiances W cm-2 sr-1 um-1).
+struct SampleResult {
+    io::RadSample sample;
+    std::vector<io::RadPathSample> path;  // per view
+    std::vector<double> ls, le;           // per sky cell: scattered, emitted
+    std::vector<double> us, ue;           // per upwelled cell: scattered, emitted
+    double ground_irradiance = 0;         // diffuse downward at the ground, W cm-2 um-1
+    bool thermal = false;                 // layer emission solved
+};
+
+// Solves the sample at wavenumber nu_cm1. Thread-safe for one setup.
+SampleResult solve_sample(const SampleSetup& setup, double nu_cm1);
+
+}  // namespace sigchain::atmos
