@@ -187,6 +187,78 @@ double profile_rh(const Profile& p, double z) {
     return p.rh_percent[hi - 1] + f * (p.rh_percent[hi] - p.rh_percent[hi - 1]);
 }
 
+// The deck's visibility (km), its model's default for VIS 0; for the desert model
+// (IHAZE 10) also its wind-dependent boundary-layer optics, whose 0.55-um extinction
+// sets the visibility when VIS is 0.
+double deck_visibility(const io::CdkCard2& card2, const std::string& data_dir,
+                       std::array<std::vector<double>, 3>& desert_bl) {
+    double vis = card2.visibility_km;
+    if (card2.ihaze == 10) {
+        const Table desert = read_table(table_path(data_dir, "aerosol_desert.txt"), 13, 47);
+        double e055 = 0;
+        std::tie(desert_bl, e055) = desert_optics(desert, card2.wind_speed_m_s);
+        if (vis == 0) vis = kKoschmieder / (e055 + kRayleighKoschmieder_km1);
+    }
+    if (vis == 0) vis = default_visibility(card2.ihaze);
+    return vis;
+}
+
+// The regions' 0.55-um extinction (km-1) on the profile table's levels, the levels
+// moved up for elevated ground (AERPRF).
+struct RegionProfiles {
+    std::vector<double> z_km;
+    std::array<std::vector<double>, AerosolModel::kRegions> beta055_km1;
+};
+
+RegionProfiles region_profiles(const io::CdkCard2& card2, bool fall_winter, double vis_km,
+                               const std::string& data_dir) {
+    RegionProfiles out;
+    const Table prof = read_table(table_path(data_dir, "aerosol_vertical_profiles.txt"), 22, 34);
+    const double g_km = card2.ground_altitude_km;
+    for (const auto& row : prof) {
+        const double zt = row[0];
+        if (zt > 1000) continue;  // the 99999 sentinel
+        out.z_km.push_back(
+            zt < kGroundScale_km ? g_km + zt * (kGroundScale_km - g_km) / kGroundScale_km : zt);
+        const double bl = zt <= 2 ? boundary_layer_beta(row, vis_km) : 0;
+        const double trop = zt > 2 && zt <= 10 ? troposphere_beta(row, fall_winter, vis_km) : 0;
+        const double strat =
+            zt > 10 && zt <= 30 ? row[strat_profile_column(card2.ivulcn, fall_winter)] : 0;
+        const double upper = zt > 30 ? row[card2.ivulcn <= 1 ? 18 : 19] : 0;
+        out.beta055_km1[0].push_back(bl);
+        out.beta055_km1[1].push_back(trop);
+        out.beta055_km1[2].push_back(strat);
+        out.beta055_km1[3].push_back(upper);
+    }
+    return out;
+}
+
+// The boundary layer's optics for the deck's IHAZE at effective humidity rh_eff.
+std::array<std::vector<double>, 3> boundary_layer_optics(
+    const io::CdkCard2& card2, const Table& rural, const Table& trop_table,
+    const std::array<std::vector<double>, 3>& desert_bl, double rh_eff,
+    const std::string& data_dir) {
+    switch (card2.ihaze) {
+        case 1:
+        case 2:
+            return humid_optics(rural, rh_eff);
+        case 4:
+            return humid_optics(read_table(table_path(data_dir, "aerosol_maritime.txt"), 13, 47),
+                                rh_eff);
+        case 5:
+            return humid_optics(read_table(table_path(data_dir, "aerosol_urban.txt"), 13, 47),
+                                rh_eff);
+        case 6:
+            return humid_optics(trop_table, rh_eff);
+        case 8:
+        case 9:
+            return fixed_optics(read_table(table_path(data_dir, "aerosol_fog.txt"), 7, 47),
+                                card2.ihaze == 8 ? 1 : 4);
+        default:  // 10, desert; check_card2 admits no other value here
+            return desert_bl;
+    }
+}
+
 }  // namespace
 
 AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& profile,
@@ -205,88 +277,43 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
         }
         return m;
     }
-    const Table desert = card2.ihaze == 10
-                             ? read_table(table_path(data_dir, "aerosol_desert.txt"), 13, 47)
-                             : Table{};
     std::array<std::vector<double>, 3> desert_bl;
-    double vis = card2.visibility_km;
-    if (card2.ihaze == 10) {
-        double e055 = 0;
-        std::tie(desert_bl, e055) = desert_optics(desert, card2.wind_speed_m_s);
-        if (vis == 0) vis = kKoschmieder / (e055 + kRayleighKoschmieder_km1);
-    }
-    if (vis == 0) vis = default_visibility(card2.ihaze);
-    m.m_vis_km = vis;
+    m.m_vis_km = deck_visibility(card2, data_dir, desert_bl);
 
     const bool fall_winter =
         card2.iseasn == 2 || (card2.iseasn == 0 && (profile.model == 3 || profile.model == 5));
-    const Table prof = read_table(table_path(data_dir, "aerosol_vertical_profiles.txt"), 22, 34);
-    const double g_km = card2.ground_altitude_km;
-    for (const auto& row : prof) {
-        const double zt = row[0];
-        if (zt > 1000) continue;  // the 99999 sentinel
-        m.m_z_km.push_back(
-            zt < kGroundScale_km ? g_km + zt * (kGroundScale_km - g_km) / kGroundScale_km : zt);
-        const double bl = zt <= 2 ? boundary_layer_beta(row, vis) : 0;
-        const double trop = zt > 2 && zt <= 10 ? troposphere_beta(row, fall_winter, vis) : 0;
-        const double strat =
-            zt > 10 && zt <= 30 ? row[strat_profile_column(card2.ivulcn, fall_winter)] : 0;
-        const double upper = zt > 30 ? row[card2.ivulcn <= 1 ? 18 : 19] : 0;
-        m.m_beta055_km1[0].push_back(bl);
-        m.m_beta055_km1[1].push_back(trop);
-        m.m_beta055_km1[2].push_back(strat);
-        m.m_beta055_km1[3].push_back(upper);
-    }
-
-    // Effective boundary-layer RH: exp of the aerosol-weighted mean of ln(100 - RH)
-    // (RH capped at 99 %), trapezoid with 400 steps over the boundary layer's extent.
-    const double z0 = m.m_z_km.front();
-    const double z1 = m.m_z_km[3];  // table level 3 km, where the boundary layer reaches 0
-    double sw = 0, swx = 0;
-    constexpr int kSteps = 400;
-    for (int i = 0; i <= kSteps; ++i) {
-        const double z = z0 + (z1 - z0) * i / kSteps;
-        const double w = m.region_extinction055(0, z) * (i == 0 || i == kSteps ? 0.5 : 1.0);
-        sw += w;
-        swx += w * std::log(100.0 - std::min(profile_rh(profile, z), 99.0));
-    }
-    m.m_rh_eff = sw > 0 ? 100.0 - std::exp(swx / sw) : profile_rh(profile, z0);
+    RegionProfiles regions = region_profiles(card2, fall_winter, m.m_vis_km, data_dir);
+    m.m_z_km = std::move(regions.z_km);
+    m.m_beta055_km1 = std::move(regions.beta055_km1);
+    m.m_rh_eff = m.effective_rh(profile);
 
     auto optics = [](const std::array<std::vector<double>, 3>& o) {
         return Optics{o[0], o[1], o[2]};
     };
     const Table trop_table = read_table(table_path(data_dir, "aerosol_tropospheric.txt"), 13, 47);
-    switch (card2.ihaze) {
-        case 1:
-        case 2:
-            m.m_optics[0] = optics(humid_optics(rural, m.m_rh_eff));
-            break;
-        case 4:
-            m.m_optics[0] = optics(humid_optics(
-                read_table(table_path(data_dir, "aerosol_maritime.txt"), 13, 47), m.m_rh_eff));
-            break;
-        case 5:
-            m.m_optics[0] = optics(humid_optics(
-                read_table(table_path(data_dir, "aerosol_urban.txt"), 13, 47), m.m_rh_eff));
-            break;
-        case 6:
-            m.m_optics[0] = optics(humid_optics(trop_table, m.m_rh_eff));
-            break;
-        case 8:
-        case 9:
-            m.m_optics[0] =
-                optics(fixed_optics(read_table(table_path(data_dir, "aerosol_fog.txt"), 7, 47),
-                                    card2.ihaze == 8 ? 1 : 4));
-            break;
-        case 10:
-            m.m_optics[0] = optics(desert_bl);
-            break;
-    }
+    m.m_optics[0] =
+        optics(boundary_layer_optics(card2, rural, trop_table, desert_bl, m.m_rh_eff, data_dir));
     m.m_optics[1] = optics(humid_optics(trop_table, 70.0));
     const Table strat = read_table(table_path(data_dir, "aerosol_stratospheric.txt"), 13, 47);
     m.m_optics[2] = optics(fixed_optics(strat, strat_optics_column(card2.ivulcn)));
     m.m_optics[3] = optics(fixed_optics(strat, 10));  // meteoric dust
     return m;
+}
+
+// Effective boundary-layer RH: exp of the aerosol-weighted mean of ln(100 - RH)
+// (RH capped at 99 %), trapezoid with 400 steps over the boundary layer's extent.
+double AerosolModel::effective_rh(const Profile& profile) const {
+    const double z0 = m_z_km.front();
+    const double z1 = m_z_km[3];  // table level 3 km, where the boundary layer reaches 0
+    double sw = 0, swx = 0;
+    constexpr int kSteps = 400;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double z = z0 + (z1 - z0) * i / kSteps;
+        const double w = region_extinction055(0, z) * (i == 0 || i == kSteps ? 0.5 : 1.0);
+        sw += w;
+        swx += w * std::log(100.0 - std::min(profile_rh(profile, z), 99.0));
+    }
+    return sw > 0 ? 100.0 - std::exp(swx / sw) : profile_rh(profile, z0);
 }
 
 double AerosolModel::region_extinction055(int region, double z_km) const {

@@ -62,6 +62,7 @@ private:
     double m_rh_eff = 0;
 
     double region_extinction055(int region, double z_km) const;
+    double effective_rh(const Profile& profile) const;
     double region_column055(int region, double z_lo_km, double z_hi_km) const;
     std::array<double, 3> region_optics(int region, double wavelength_um) const;
 };

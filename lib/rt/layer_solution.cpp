@@ -15,16 +15,12 @@ constexpr double kPi = std::numbers::pi;
 
 double sign_lm(int l, int m) { return (l + m) % 2 == 0 ? 1.0 : -1.0; }
 
-// Homogeneous solution: with alpha = M^-1 (D+ W - 1), beta = M^-1 D- W, the eigenproblem
-// reduces to (alpha - beta)(alpha + beta) S = k^2 S, S = G+ + G- (Stamnes & Swanson 1981,
-// J. Atmos. Sci. 38, 387; Stamnes et al. 1988 eq. 8). Symmetrised with W^1/2: with
-// A~ = W^1/2 (D+ + D-) W^1/2 - 1 and B~ likewise with D+ - D-, X = -M^-1 B~ M^-1 is
-// positive definite and Y = -A~ positive semi-definite; X = L L^T and the symmetric
-// C = L^T Y L has eigenvalues k^2 and eigenvectors v with S = W^-1/2 L v.
-void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
-                 LayerSolution& out, Scratch& sc) {
-    const int nn = q.nn, n2 = 2 * nn, nl = out.nl;
-    auto& dsum = sc.a;  // (D+ + D-), unsymmetrised
+// D+ + D- (sc.a) and D+ - D- (sc.b) of the homogeneous problem, unsymmetrised:
+// sum over l of (omega/2)(2l+1) g_l * 2 Lambda_l(mu_i) Lambda_l(mu_j), split by parity.
+void phase_sums(const Quadrature& q, int m, const LayerOptics& o, const double* lam, int nl,
+                Scratch& sc) {
+    const int nn = q.nn, n2 = 2 * nn;
+    auto& dsum = sc.a;
     auto& ddif = sc.b;
     dsum.assign(nn * nn, 0.0);
     ddif.assign(nn * nn, 0.0);
@@ -36,12 +32,18 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
         for (int i = 0; i < nn; ++i)
             for (int j = 0; j < nn; ++j) d[i * nn + j] += c * lm[i] * lm[j];
     }
+}
+
+// X = -M^-1 B~ M^-1 factored X = L L^T (lower triangle of sc.c) and the symmetric
+// C = L^T Y L (sc.v) with Y = -A~, from the phase sums in sc.a and sc.b.
+void reduced_matrix(const Quadrature& q, int m, const double* sqrt_w, Scratch& sc) {
+    const int nn = q.nn;
+    const auto& dsum = sc.a;
+    const auto& ddif = sc.b;
     auto& x = sc.c;
     auto& y = sc.mat;
     x.assign(nn * nn, 0.0);
     y.assign(nn * nn, 0.0);
-    double sqrt_w[64];
-    for (int i = 0; i < nn; ++i) sqrt_w[i] = std::sqrt(q.weight[i]);
     for (int i = 0; i < nn; ++i)
         for (int j = 0; j < nn; ++j) {
             const double sw = sqrt_w[i] * sqrt_w[j];
@@ -52,8 +54,7 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
     if (!linalg::cholesky(x.data(), nn))
         throw Error("discrete-ordinate solver: homogeneous problem not positive definite (mode " +
                     std::to_string(m) + ")");
-    // C = L^T Y L (lower triangle of x holds L).
-    auto& yl = sc.work;
+    auto& yl = sc.work;  // Y L
     yl.assign(nn * nn, 0.0);
     for (int i = 0; i < nn; ++i)
         for (int j = 0; j < nn; ++j) {
@@ -69,9 +70,15 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
             for (int k = i; k < nn; ++k) s += x[k * nn + i] * yl[k * nn + j];
             cm[i * nn + j] = cm[j * nn + i] = s;
         }
-    sc.ev.assign(nn * nn, 0.0);
-    sc.lam.assign(nn, 0.0);
-    linalg::symmetric_eigen(cm.data(), nn, sc.lam.data(), sc.ev.data());
+}
+
+// From C's eigenvalues k^2 (sc.lam) and eigenvectors v (sc.ev): k, exp(-k dtau) and
+// G+-, with S = W^-1/2 L v and D = G+ - G- = M^-1 (Dsum W - 1) S / k.
+void eigenvectors(const Quadrature& q, const LayerOptics& o, const double* sqrt_w, Scratch& sc,
+                  LayerSolution& out) {
+    const int nn = q.nn;
+    const auto& x = sc.c;
+    const auto& dsum = sc.a;
     sc.s.assign(nn, 0.0);
     for (int j = 0; j < nn; ++j) {
         const double k = std::sqrt(std::max(sc.lam[j], 1e-300));
@@ -82,7 +89,6 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
             for (int r = 0; r <= i; ++r) s += x[i * nn + r] * sc.ev[r * nn + j];
             sc.s[i] = s / sqrt_w[i];
         }
-        // D = G+ - G- = M^-1 (Dsum W - 1) S / k.
         for (int i = 0; i < nn; ++i) {
             double as = -sc.s[i];
             for (int r = 0; r < nn; ++r) as += dsum[i * nn + r] * q.weight[r] * sc.s[r];
@@ -91,6 +97,25 @@ void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double*
             out.gm[j * nn + i] = 0.5 * (sc.s[i] - d);
         }
     }
+}
+
+// Homogeneous solution: with alpha = M^-1 (D+ W - 1), beta = M^-1 D- W, the eigenproblem
+// reduces to (alpha - beta)(alpha + beta) S = k^2 S, S = G+ + G- (Stamnes & Swanson 1981,
+// J. Atmos. Sci. 38, 387; Stamnes et al. 1988 eq. 8). Symmetrised with W^1/2: with
+// A~ = W^1/2 (D+ + D-) W^1/2 - 1 and B~ likewise with D+ - D-, X = -M^-1 B~ M^-1 is
+// positive definite and Y = -A~ positive semi-definite; X = L L^T and the symmetric
+// C = L^T Y L has eigenvalues k^2 and eigenvectors v with S = W^-1/2 L v.
+void homogeneous(const Quadrature& q, int m, const LayerOptics& o, const double* lam,
+                 LayerSolution& out, Scratch& sc) {
+    const int nn = q.nn;
+    phase_sums(q, m, o, lam, out.nl, sc);
+    double sqrt_w[64];
+    for (int i = 0; i < nn; ++i) sqrt_w[i] = std::sqrt(q.weight[i]);
+    reduced_matrix(q, m, sqrt_w, sc);
+    sc.ev.assign(nn * nn, 0.0);
+    sc.lam.assign(nn, 0.0);
+    linalg::symmetric_eigen(sc.v.data(), nn, sc.lam.data(), sc.ev.data());
+    eigenvectors(q, o, sqrt_w, sc, out);
 }
 
 // (omega/2)(2l+1) g_l sum_a w_a Lambda_l(mu_a) v_a for l = m .. nl-1: the moments of the

@@ -80,7 +80,18 @@ private:
     void full_layer_pair(int n, int m, const double* lam_mu, double amu, double et, double& up,
                          double& down) const;
     double quad_intensity(int n, int a, double t) const;
+    double bottom_intensity(int m) const;
+    std::vector<std::size_t> prepare_user_cosines(int m);
+    void sweep_up(std::size_t u, std::size_t k, double bottom, std::vector<double>& im);
+    void sweep_down(std::size_t d, std::size_t k, double top, std::vector<double>& im);
     void intensity_correction();
+    struct CorrectionScratch {  // per-azimuth Legendre recursion and its sums
+        std::vector<double> cs, p0, p1, corr, rec_a, rec_b;
+    };
+    std::vector<double> moment_differences(std::size_t nmom) const;
+    void beam_path_integrals(std::size_t u, const Position& ps, std::vector<double>& tn) const;
+    void add_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
+                        CorrectionScratch& w);
 
     const Problem& m_p;
     int m_N = 0, m_L = 0;

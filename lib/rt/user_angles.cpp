@@ -206,27 +206,24 @@ bool Solver::interior(const Position& ps) const {
     return ps.t > 0 && ps.t < m_s.optics[ps.layer].dtau;
 }
 
-// Intensities of mode m at every output depth and user direction: im[level * nu + u].
-void Solver::user_intensities(int m, std::vector<double>& im) {
-    const std::size_t nu = m_p.umu.size();
-    im.assign(m_pos.size() * nu, 0.0);
-    m_level_int.assign(m_L + 1, 0.0);
+// Lambertian surface: upward intensity of mode m at the bottom (zero for m > 0).
+double Solver::bottom_intensity(int m) const {
+    if (m != 0) return 0;
     const int nn = m_q.nn;
-    // Lambertian surface: upward intensity of mode 0 at the bottom.
-    double bottom = 0;
-    if (m == 0) {
-        double down = 0;
-        for (int k = 0; k < nn; ++k)
-            down += m_q.weight[k] * m_q.mu[k] *
-                    quad_intensity(m_L - 1, nn + k, m_s.optics[m_L - 1].dtau);
-        const double beam_bottom = m_p.beam_flux * std::exp(-m_s.tau_s_level[m_L] / m_p.beam_mu0);
-        bottom = m_p.albedo * (2 * down + m_p.beam_mu0 * beam_bottom / kPi) +
-                 (1 - m_p.albedo) * m_p.planck_surface;
-    }
-    const double top = m == 0 ? m_p.top_isotropic + m_p.top_emission : 0.0;
-    // The cosines computed (a downward cosine whose upward mirror is also wanted is done
-    // with the mirror), their Legendre functions, and the full-layer integrals of every
-    // layer for each, layer by layer so that a layer's solution stays in cache.
+    double down = 0;
+    for (int k = 0; k < nn; ++k)
+        down += m_q.weight[k] * m_q.mu[k] *
+                quad_intensity(m_L - 1, nn + k, m_s.optics[m_L - 1].dtau);
+    const double beam_bottom = m_p.beam_flux * std::exp(-m_s.tau_s_level[m_L] / m_p.beam_mu0);
+    return m_p.albedo * (2 * down + m_p.beam_mu0 * beam_bottom / kPi) +
+           (1 - m_p.albedo) * m_p.planck_surface;
+}
+
+// The cosines computed (a downward cosine whose upward mirror is also wanted is done
+// with the mirror), their Legendre functions, and the full-layer integrals of every
+// layer for each, layer by layer so that a layer's solution stays in cache.
+std::vector<std::size_t> Solver::prepare_user_cosines(int m) {
+    const std::size_t nu = m_p.umu.size();
     std::vector<std::size_t> primary;
     for (std::size_t u = 0; u < nu; ++u)
         if (!(m_p.umu[u] < 0 && m_mirror[u] >= 0)) primary.push_back(u);
@@ -242,50 +239,71 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
             full_layer_pair(n, m, &m_lam_user[k * m_N], std::abs(m_p.umu[u]), m_trans[n * nu + u],
                             m_full_up[k * m_L + n], m_full_down[k * m_L + n]);
         }
-    for (std::size_t k = 0; k < np; ++k) {
+    return primary;
+}
+
+// Upward cosine u (k-th computed): sweep from the bottom up, then read every depth.
+void Solver::sweep_up(std::size_t u, std::size_t k, double bottom, std::vector<double>& im) {
+    const std::size_t nu = m_p.umu.size();
+    const double mu = m_p.umu[u];
+    const double* full_up = &m_full_up[k * m_L];
+    m_level_int[m_L] = bottom;
+    for (int n = m_L - 1; n >= 0; --n)
+        m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + full_up[n];
+    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        const Position& ps = m_pos[i];
+        const double dt = m_s.optics[ps.layer].dtau;
+        if (ps.t == 0)
+            im[i * nu + u] = m_level_int[ps.layer];
+        else if (ps.t == dt)
+            im[i * nu + u] = m_level_int[ps.layer + 1];
+        else
+            im[i * nu + u] = m_level_int[ps.layer + 1] * std::exp(-(dt - ps.t) / mu) +
+                             segment(ps.layer, mu, m_us[ps.layer], ps.t, dt);
+    }
+}
+
+// Downward cosine d (its mirror the k-th computed): sweep from the top down.
+void Solver::sweep_down(std::size_t d, std::size_t k, double top, std::vector<double>& im) {
+    const std::size_t nu = m_p.umu.size();
+    const double mud = m_p.umu[d];
+    const double* full_down = &m_full_down[k * m_L];
+    m_level_int[0] = top;
+    for (int n = 0; n < m_L; ++n)
+        m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + full_down[n];
+    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        const Position& ps = m_pos[i];
+        const double dt = m_s.optics[ps.layer].dtau;
+        if (ps.t == 0)
+            im[i * nu + d] = m_level_int[ps.layer];
+        else if (ps.t == dt)
+            im[i * nu + d] = m_level_int[ps.layer + 1];
+        else
+            im[i * nu + d] = m_level_int[ps.layer] * std::exp(ps.t / mud) +
+                             segment(ps.layer, mud, m_us_down[ps.layer], 0, ps.t);
+    }
+}
+
+// Intensities of mode m at every output depth and user direction: im[level * nu + u].
+void Solver::user_intensities(int m, std::vector<double>& im) {
+    const std::size_t nu = m_p.umu.size();
+    im.assign(m_pos.size() * nu, 0.0);
+    m_level_int.assign(m_L + 1, 0.0);
+    const double bottom = bottom_intensity(m);
+    const double top = m == 0 ? m_p.top_isotropic + m_p.top_emission : 0.0;
+    const std::vector<std::size_t> primary = prepare_user_cosines(m);
+    for (std::size_t k = 0; k < primary.size(); ++k) {
         const std::size_t u = primary[k];
         const double mu = m_p.umu[u];
-        const double* lam_mu = &m_lam_user[k * m_N];
-        const double* full_up = &m_full_up[k * m_L];
-        const double* full_down = &m_full_down[k * m_L];
         // Partial-layer sources only for depths inside a layer; at a level the swept
         // level intensity is the answer.
         for (const Position& ps : m_pos)
             if (interior(ps))
-                user_source(ps.layer, m, lam_mu, m_us[ps.layer], m_us_down[ps.layer]);
-        if (mu > 0) {
-            m_level_int[m_L] = bottom;
-            for (int n = m_L - 1; n >= 0; --n)
-                m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + full_up[n];
-            for (std::size_t i = 0; i < m_pos.size(); ++i) {
-                const Position& ps = m_pos[i];
-                const double dt = m_s.optics[ps.layer].dtau;
-                if (ps.t == 0)
-                    im[i * nu + u] = m_level_int[ps.layer];
-                else if (ps.t == dt)
-                    im[i * nu + u] = m_level_int[ps.layer + 1];
-                else
-                    im[i * nu + u] = m_level_int[ps.layer + 1] * std::exp(-(dt - ps.t) / mu) +
-                                     segment(ps.layer, mu, m_us[ps.layer], ps.t, dt);
-            }
-        }
+                user_source(ps.layer, m, &m_lam_user[k * m_N], m_us[ps.layer],
+                            m_us_down[ps.layer]);
+        if (mu > 0) sweep_up(u, k, bottom, im);
         const std::ptrdiff_t d = mu < 0 ? static_cast<std::ptrdiff_t>(u) : m_mirror[u];
-        if (d < 0) continue;
-        const double mud = m_p.umu[d];
-        m_level_int[0] = top;
-        for (int n = 0; n < m_L; ++n)
-            m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + full_down[n];
-        for (std::size_t i = 0; i < m_pos.size(); ++i) {
-            const Position& ps = m_pos[i];
-            const double dt = m_s.optics[ps.layer].dtau;
-            if (ps.t == 0)
-                im[i * nu + d] = m_level_int[ps.layer];
-            else if (ps.t == dt)
-                im[i * nu + d] = m_level_int[ps.layer + 1];
-            else
-                im[i * nu + d] = m_level_int[ps.layer] * std::exp(ps.t / mud) +
-                                 segment(ps.layer, mud, m_us_down[ps.layer], 0, ps.t);
-        }
+        if (d >= 0) sweep_down(static_cast<std::size_t>(d), k, top, im);
     }
 }
 
@@ -295,11 +313,9 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
 // The correction is sum_l P_l(cos scattering angle) e_l(level, mu), with
 // e_l = sum_n d_nl T_n: d_nl the layer's moment difference, T_n the beam's path integral
 // through layer n seen from the output level.
-void Solver::intensity_correction() {
-    const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size(), npos = m_pos.size();
-    const double mu0 = m_p.beam_mu0;
-    std::size_t nmom = m_N;
-    for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
+// d_nl of every layer: the beam's single-scattering source with the exact moments
+// less the one with the truncated (delta-M) moments, [layer * nmom + l].
+std::vector<double> Solver::moment_differences(std::size_t nmom) const {
     std::vector<double> d(m_L * nmom, 0.0);
     for (int n = 0; n < m_L; ++n) {
         const Layer& layer = m_p.layers[n];
@@ -311,73 +327,96 @@ void Solver::intensity_correction() {
                               (layer.ssa * exact / (1 - layer.ssa * m_s.f[n]) - o.ssa * trunc);
         }
     }
+    return d;
+}
+
+// T_n for user cosine u seen from output depth ps: the beam path integral of layer n,
+// attenuated to the output level (zero for layers on the far side).
+void Solver::beam_path_integrals(std::size_t u, const Position& ps, std::vector<double>& tn) const {
+    const std::size_t nu = m_p.umu.size();
+    const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
+    const int np = ps.layer;
+    std::fill(tn.begin(), tn.end(), 0.0);
+    double atten = 1;
+    const double dtp = m_s.optics[np].dtau;
+    const double e0 = std::exp(-m_s.tau_s_level[np] / mu0);
+    if (mu > 0) {
+        tn[np] = e0 * exp_integral(-ps.t / mu0, -(1 / mu0 + 1 / mu), dtp - ps.t) / mu;
+        atten = std::exp(-(dtp - ps.t) / mu);
+        for (int n = np + 1; n < m_L; ++n) {
+            const double dt = m_s.optics[n].dtau;
+            tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
+                    exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu;
+            atten *= m_trans[n * nu + u];
+        }
+    } else {
+        tn[np] = e0 * exp_integral(ps.t / mu, -1 / mu - 1 / mu0, ps.t) / -mu;
+        atten = std::exp(ps.t / mu);
+        for (int n = np - 1; n >= 0; --n) {
+            const double dt = m_s.optics[n].dtau;
+            tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
+                    exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) / -mu;
+            atten *= m_trans[n * nu + u];
+        }
+    }
+}
+
+// Adds sum_l P_l(cos scattering angle) e_l to user cosine u's intensities at every
+// depth and azimuth. The Legendre recursion runs for all azimuths at once (the inner
+// loops run over azimuth and vectorise); the sums accumulate in the same order as a
+// per-azimuth loop would.
+void Solver::add_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
+                            CorrectionScratch& w) {
+    const std::size_t nphi = m_p.phi_deg.size(), npos = m_pos.size();
+    const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
+    for (std::size_t f = 0; f < nphi; ++f) {
+        const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
+        w.cs[f] = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
+        w.p0[f] = 1;
+        w.p1[f] = w.cs[f];
+    }
+    for (std::size_t i = 0; i < npos; ++i)
+        for (std::size_t f = 0; f < nphi; ++f)
+            w.corr[i * nphi + f] = e[i * nmom] + w.cs[f] * e[i * nmom + 1];
+    for (std::size_t l = 2; l < nmom; ++l) {
+        const double ra = w.rec_a[l], rb = w.rec_b[l];
+        for (std::size_t f = 0; f < nphi; ++f) {
+            const double p2 = ra * w.cs[f] * w.p1[f] - rb * w.p0[f];
+            w.p0[f] = w.p1[f];
+            w.p1[f] = p2;
+        }
+        for (std::size_t i = 0; i < npos; ++i) {
+            const double el = e[i * nmom + l];
+            double* ci = &w.corr[i * nphi];
+            for (std::size_t f = 0; f < nphi; ++f) ci[f] += w.p1[f] * el;
+        }
+    }
+    for (std::size_t i = 0; i < npos; ++i)
+        for (std::size_t f = 0; f < nphi; ++f)
+            m_result.levels[i].intensity[u * nphi + f] += w.corr[i * nphi + f];
+}
+
+void Solver::intensity_correction() {
+    const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size(), npos = m_pos.size();
+    std::size_t nmom = m_N;
+    for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
+    const std::vector<double> d = moment_differences(nmom);
     std::vector<double> tn(m_L), e(npos * nmom);
-    std::vector<double> cs(nphi), p0(nphi), p1(nphi), corr(npos * nphi);
-    std::vector<double> rec_a(nmom), rec_b(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
-    for (std::size_t l = 2; l < nmom; ++l) rec_a[l] = (2.0 * l - 1) / l, rec_b[l] = (l - 1.0) / l;
+    CorrectionScratch w;
+    w.cs.resize(nphi), w.p0.resize(nphi), w.p1.resize(nphi), w.corr.resize(npos * nphi);
+    w.rec_a.resize(nmom), w.rec_b.resize(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
+    for (std::size_t l = 2; l < nmom; ++l)
+        w.rec_a[l] = (2.0 * l - 1) / l, w.rec_b[l] = (l - 1.0) / l;
     for (std::size_t u = 0; u < nu; ++u) {
-        const double mu = m_p.umu[u];
         std::fill(e.begin(), e.end(), 0.0);
         for (std::size_t i = 0; i < npos; ++i) {
-            const Position& ps = m_pos[i];
-            const int np = ps.layer;
-            std::fill(tn.begin(), tn.end(), 0.0);
-            // T_n: beam path integral of layer n, attenuated to the output level.
-            double atten = 1;
-            const double dtp = m_s.optics[np].dtau;
-            const double e0 = std::exp(-m_s.tau_s_level[np] / mu0);
-            if (mu > 0) {
-                tn[np] = e0 * exp_integral(-ps.t / mu0, -(1 / mu0 + 1 / mu), dtp - ps.t) / mu;
-                atten = std::exp(-(dtp - ps.t) / mu);
-                for (int n = np + 1; n < m_L; ++n) {
-                    const double dt = m_s.optics[n].dtau;
-                    tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
-                            exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu;
-                    atten *= m_trans[n * nu + u];
-                }
-            } else {
-                tn[np] = e0 * exp_integral(ps.t / mu, -1 / mu - 1 / mu0, ps.t) / -mu;
-                atten = std::exp(ps.t / mu);
-                for (int n = np - 1; n >= 0; --n) {
-                    const double dt = m_s.optics[n].dtau;
-                    tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
-                            exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) / -mu;
-                    atten *= m_trans[n * nu + u];
-                }
-            }
+            beam_path_integrals(u, m_pos[i], tn);
             for (int n = 0; n < m_L; ++n) {
                 if (tn[n] == 0) continue;
                 for (std::size_t l = 0; l < nmom; ++l) e[i * nmom + l] += d[n * nmom + l] * tn[n];
             }
         }
-        // Legendre recursion in cos(scattering angle) for all azimuths at once (the
-        // inner loops run over azimuth and vectorise); corr[i * nphi + f] accumulates
-        // sum_l P_l e_l in the same order as a per-azimuth loop would.
-        for (std::size_t f = 0; f < nphi; ++f) {
-            const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
-            cs[f] = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
-            p0[f] = 1;
-            p1[f] = cs[f];
-        }
-        for (std::size_t i = 0; i < npos; ++i)
-            for (std::size_t f = 0; f < nphi; ++f)
-                corr[i * nphi + f] = e[i * nmom] + cs[f] * e[i * nmom + 1];
-        for (std::size_t l = 2; l < nmom; ++l) {
-            const double ra = rec_a[l], rb = rec_b[l];
-            for (std::size_t f = 0; f < nphi; ++f) {
-                const double p2 = ra * cs[f] * p1[f] - rb * p0[f];
-                p0[f] = p1[f];
-                p1[f] = p2;
-            }
-            for (std::size_t i = 0; i < npos; ++i) {
-                const double el = e[i * nmom + l];
-                double* ci = &corr[i * nphi];
-                for (std::size_t f = 0; f < nphi; ++f) ci[f] += p1[f] * el;
-            }
-        }
-        for (std::size_t i = 0; i < npos; ++i)
-            for (std::size_t f = 0; f < nphi; ++f)
-                m_result.levels[i].intensity[u * nphi + f] += corr[i * nphi + f];
+        add_correction(u, e, nmom, w);
     }
 }
 
