@@ -218,7 +218,7 @@ endif
 
 ifneq ($(CARDS_GDB),)
 ## The calibration scene: trace the cards with the same tables, then
-## sensorize --calibrate derives each band's gain and bias (seed 4.2.4) into
+## sensorize --calibrate derives each band's gain and bias (White (1996), section 4.2.4) into
 ## out/calibrated/ (its table of radiances and counts into out/calibration.txt).
 $(CARDS_CUBE) $(basename $(CARDS_CUBE)).hdr &: $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(MAT_FILES) $(RADS)
 	$(TRACE) $(TRACE_FLAGS) $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(RADS) -o $(CARDS_CUBE)

@@ -1,4 +1,4 @@
-// build_radiance: the atmosphere tables of one scene (seed 3.4, 4.2.3.7; man
+// build_radiance: the atmosphere tables of one scene (White (1996), section 3.4, 4.2.3.7; man
 // build_radiance(1), rad(5)). From a LOWTRAN 7 card deck (atmosphere, aerosols, ground
 // altitude, path azimuth) and a scene node (sensor altitude, bands, view angles, date,
 // time, place) it builds a layered plane-parallel atmosphere, solves the radiative

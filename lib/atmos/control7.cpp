@@ -1,4 +1,4 @@
-// control7's questions and the deck they build (seed 4.2.3.4-4.2.3.5, figs. 4.29-4.31).
+// control7's questions and the deck they build (White (1996), section 4.2.3.4-4.2.3.5, figs. 4.29-4.31).
 #include "atmos/control7.hpp"
 
 #include <algorithm>

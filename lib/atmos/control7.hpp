@@ -1,6 +1,6 @@
-// control7: the questions of DIRSIG's CONTROL7 (seed section 4.2.3.5, fig. 4.30) and
+// control7: the questions of DIRSIG's CONTROL7 (White (1996), section 4.2.3.5, fig. 4.30) and
 // the LOWTRAN 7 card deck (.cdk, fig. 4.31) built from their answers, with the
-// radiosonde handling of seed section 4.2.3.4. man control7(1) lists every question.
+// radiosonde handling of White (1996), section 4.2.3.4. man control7(1) lists every question.
 #pragma once
 
 #include <istream>

@@ -1,4 +1,4 @@
-// The text of control7's questions and of the menus before them (seed fig. 4.30).
+// The text of control7's questions and of the menus before them (White (1996), fig. 4.30).
 #include <map>
 #include <string>
 #include <vector>

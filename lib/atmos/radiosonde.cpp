@@ -29,7 +29,7 @@ io::Rsd fill_missing_dew_points(const io::Rsd& rsd, const SourceLocation& where)
         if (l.dew_point_c) continue;
         double d;
         if (i > valid.back()) {
-            d = depression(valid.back());  // seed 4.2.3.4: keep the last depression
+            d = depression(valid.back());  // White (1996), section 4.2.3.4: keep the last depression
         } else if (i < valid.front()) {
             d = depression(valid.front());
         } else {

@@ -1,5 +1,5 @@
 // The comparison behind compare(1): control-point values, ranks, RMS and rank-order
-// correlation per band and for the bands combined (seed 3.5, tables 4.5-4.7), whole-
+// correlation per band and for the bands combined (White (1996), section 3.5, tables 4.5-4.7), whole-
 // image statistics and histograms, and the pixel-by-pixel comparison of co-registered
 // images. Everything here works on images already in memory (no file I/O); the job in
 // compare_job.hpp reads the files and writes the outputs.
@@ -52,7 +52,7 @@ struct Side {
     stats::Histogram histogram;            // over the edges shared with the other image
 };
 
-// One band (or the combined bands): seed tables 4.5/4.6 for one column pair.
+// One band (or the combined bands): White (1996), tables 4.5/4.6 for one column pair.
 struct BandComparison {
     std::string name;        // "1", "2", ... or "combined"
     int synthetic_band = 0;  // 1-based; 0 for combined

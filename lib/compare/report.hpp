@@ -1,4 +1,4 @@
-// Writing compare(1) reports: the text tables (seed tables 4.5-4.7 layout) and JSON.
+// Writing compare(1) reports: the text tables (White (1996), tables 4.5-4.7 layout) and JSON.
 #pragma once
 
 #include <ostream>
@@ -9,7 +9,7 @@
 namespace sigchain::compare {
 
 // Text report: per band the control-point values and ranks in both images with RMS,
-// bias and ROC below them (seed tables 4.5/4.6), then the whole-image statistics
+// bias and ROC below them (White (1996), tables 4.5/4.6), then the whole-image statistics
 // (table 4.7) and the histograms. Numbers are printed with 6 significant digits.
 void write_text_report(std::ostream& out, const PointComparison& cmp);
 // JSON: keys in a fixed order, numbers with enough digits to read back exactly.

@@ -1,4 +1,4 @@
-// View-angle range by the scene-bounding-box and field-of-view methods (seed 4.2.3.3).
+// View-angle range by the scene-bounding-box and field-of-view methods (White (1996), section 4.2.3.3).
 #include "geom/view_angle.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// View-angle range of a sensor over a scene (seed 4.2.3.3, DIRSIG's
+// View-angle range of a sensor over a scene (White (1996), section 4.2.3.3, DIRSIG's
 // find_min_max_view_angle): the range of angles the .snd and .rad tables must cover.
 //
 // A view angle is the angle between a ray from the sensor and nadir (-z), in

@@ -1,4 +1,4 @@
-// Reading and writing the .adv look-angle file (seed fig. 4.27; man adv(5)).
+// Reading and writing the .adv look-angle file (White (1996), fig. 4.27; man adv(5)).
 #include "io/adv.hpp"
 
 #include <map>
@@ -168,7 +168,7 @@ void write_adv(std::ostream& out, const Adv& adv) {
 double meters_per_unit(LengthUnit unit) { return unit == LengthUnit::Feet ? 0.3048 : 1.0; }
 
 FormatHandler adv_format() {
-    return {"adv", "look angle (seed fig. 4.27)",
+    return {"adv", "look angle (White (1996), fig. 4.27)",
             [](const TextInput& in) {
                 Adv a = parse_adv(in);
                 std::ostringstream s;

@@ -1,4 +1,4 @@
-// .adv look-angle file (seed fig. 4.27; man adv(5)): where the frame camera is and
+// .adv look-angle file (White (1996), fig. 4.27; man adv(5)): where the frame camera is and
 // where it looks.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Reading the .cdk LOWTRAN 7 card deck (seed fig. 4.31; man cdk(5)). Writing is in
+// Reading the .cdk LOWTRAN 7 card deck (White (1996), fig. 4.31; man cdk(5)). Writing is in
 // cdk_write.cpp.
 #include "io/cdk.hpp"
 
@@ -446,7 +446,7 @@ Cdk parse_cdk(const TextInput& in) {
 }
 
 FormatHandler cdk_format() {
-    return {"cdk", "LOWTRAN 7 card deck (seed fig. 4.31)",
+    return {"cdk", "LOWTRAN 7 card deck (White (1996), fig. 4.31)",
             [](const TextInput& in) { return summary(parse_cdk(in)); },
             [](const TextInput& in, std::ostream& out) { write_cdk(out, parse_cdk(in)); }};
 }

@@ -1,4 +1,4 @@
-// .cdk LOWTRAN 7 card deck (seed fig. 4.30-4.31, section 4.2.3.5; man cdk(5)): the
+// .cdk LOWTRAN 7 card deck (White (1996), fig. 4.30-4.31, section 4.2.3.5; man cdk(5)): the
 // atmosphere, path, sun geometry and spectral range of one or more LOWTRAN runs.
 //
 // The deck is LOWTRAN 7's own fixed-column input (the card formats of the LOWTRAN 7

@@ -177,7 +177,7 @@ void write_ems(std::ostream& out, const Ems& ems) {
 }
 
 FormatHandler ems_format() {
-    return {"ems", "emissivity: fall-off, specular lobe, spectral curves (seed fig. 4.35, 5.22)",
+    return {"ems", "emissivity: fall-off, specular lobe, spectral curves (White (1996), fig. 4.35, 5.22)",
             [](const TextInput& in) { return ems_summary(parse_ems(in)); },
             [](const TextInput& in, std::ostream& out) { write_ems(out, parse_ems(in)); }};
 }

@@ -1,4 +1,4 @@
-// .ems emissivity files (seed fig. 4.35 and proposed fig. 5.22; man ems(5)): angular
+// .ems emissivity files (White (1996), fig. 4.35 and proposed fig. 5.22; man ems(5)): angular
 // fall-off, optional specular lobe, and spectral emissivity curves.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace sigchain::io {
 
 // How the curves are written in the file; kept so a rewrite keeps the file's layout.
 enum class EmsLayout {
-    Wavenumber,  // DIRSIG 3 (seed fig. 4.35): curve index line, then "wavenumber emissivity"
+    Wavenumber,  // DIRSIG 3 (White (1996), fig. 4.35): curve index line, then "wavenumber emissivity"
     Wavelength,  // DIRSIG "CURVE_BEGIN" block: "wavelength emissivity", increasing wavelength
 };
 
@@ -28,7 +28,7 @@ struct EmsCurve {
     bool operator==(const EmsCurve&) const = default;
 };
 
-// One row of the proposed specular-lobe table (seed fig. 5.22), for one specular angle.
+// One row of the proposed specular-lobe table (White (1996), fig. 5.22), for one specular angle.
 struct EmsLobeRow {
     double depth = 0;            // lobe depth below the diffuse value, emissivity units [0, 1]
     double base_radius_deg = 0;  // cone base radius, >= 0

@@ -1,4 +1,4 @@
-// .mat material database (seed fig. 4.34; man mat(5)): reader and writer.
+// .mat material database (White (1996), fig. 4.34; man mat(5)): reader and writer.
 #include "io/mat.hpp"
 
 #include <algorithm>
@@ -355,7 +355,7 @@ void write_mat(std::ostream& out, const Mat& mat) {
 }
 
 FormatHandler mat_format() {
-    return {"mat", "material database (seed fig. 4.34)",
+    return {"mat", "material database (White (1996), fig. 4.34)",
             [](const TextInput& in) {
                 Mat m = parse_mat(in);
                 std::ostringstream s;

@@ -1,4 +1,4 @@
-// .mat material database (seed fig. 4.34, DIRSIG 3; man mat(5)): tagged material entries.
+// .mat material database (White (1996), fig. 4.34, DIRSIG 3; man mat(5)): tagged material entries.
 #pragma once
 
 #include <optional>

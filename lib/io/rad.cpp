@@ -20,7 +20,7 @@ constexpr double kSolidAngleRelTol = 1e-3;
 constexpr const char* kUnitsIrradiance = "irradiance=W/cm2/um";
 constexpr const char* kUnitsRadiance = "radiance=W/cm2/sr/um";
 
-// Header lines of the legacy part, in file order (seed fig. 4.33).
+// Header lines of the legacy part, in file order (White (1996), fig. 4.33).
 enum HeaderField {
     kAltitude,
     kMinWavelength,
@@ -448,7 +448,7 @@ void write_rad(std::ostream& out, const Rad& rad) {
 }
 
 FormatHandler rad_format() {
-    return {"rad", "radiance tables per band (seed fig. 4.33) + sky hemisphere",
+    return {"rad", "radiance tables per band (White (1996), fig. 4.33) + sky hemisphere",
             [](const TextInput& in) { return rad_summary(parse_rad(in)); },
             [](const TextInput& in, std::ostream& out) { write_rad(out, parse_rad(in)); }};
 }

@@ -1,4 +1,4 @@
-// .rad radiance tables, one per sensor band (seed fig. 4.33; man rad(5)): solar and
+// .rad radiance tables, one per sensor band (White (1996), fig. 4.33; man rad(5)): solar and
 // path terms per spectral sample and view angle, plus sigchain's sky hemisphere.
 //
 // Units throughout: irradiance W cm-2 um-1, radiance W cm-2 sr-1 um-1 (per

@@ -17,7 +17,7 @@ namespace sigchain::io {
 
 struct FormatHandler {
     std::string extension;    // without the dot: "adv"
-    std::string description;  // "look angle (seed fig. 4.27)"
+    std::string description;  // "look angle (White (1996), fig. 4.27)"
     // Parses the input (throws DataError on bad input); returns a one-line summary.
     std::function<std::string(const TextInput&)> check;
     // Parses the input and writes it back in canonical form.

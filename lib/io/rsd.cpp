@@ -1,4 +1,4 @@
-// Reading and writing the .rsd radiosonde file (seed fig. 4.29; man rsd(5)).
+// Reading and writing the .rsd radiosonde file (White (1996), fig. 4.29; man rsd(5)).
 #include "io/rsd.hpp"
 
 namespace sigchain::io {
@@ -68,7 +68,7 @@ void write_rsd(std::ostream& out, const Rsd& rsd) {
 }
 
 FormatHandler rsd_format() {
-    return {"rsd", "radiosonde (seed fig. 4.29)",
+    return {"rsd", "radiosonde (White (1996), fig. 4.29)",
             [](const TextInput& in) {
                 Rsd r = parse_rsd(in);
                 return std::to_string(r.levels.size()) + " levels, " +

@@ -1,4 +1,4 @@
-// .rsd radiosonde file (seed fig. 4.29; man rsd(5)): the atmosphere's profile of
+// .rsd radiosonde file (White (1996), fig. 4.29; man rsd(5)): the atmosphere's profile of
 // pressure, temperature and dew point with altitude.
 #pragma once
 

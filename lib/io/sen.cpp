@@ -1,4 +1,4 @@
-// Reading and writing the .sen sensor band file (seed fig. 4.42; man sen(5)).
+// Reading and writing the .sen sensor band file (White (1996), fig. 4.42; man sen(5)).
 #include "io/sen.hpp"
 
 #include <limits>
@@ -52,7 +52,7 @@ void write_sen(std::ostream& out, const Sen& sen) {
 }
 
 FormatHandler sen_format() {
-    return {"sen", "sensor band response (seed fig. 4.42)",
+    return {"sen", "sensor band response (White (1996), fig. 4.42)",
             [](const TextInput& in) {
                 Sen s = parse_sen(in);
                 return std::to_string(s.response.size()) + " spectral samples, gain " +

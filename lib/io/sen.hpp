@@ -1,4 +1,4 @@
-// .sen sensor band file (seed fig. 4.42; man sen(5)): the relative spectral response,
+// .sen sensor band file (White (1996), fig. 4.42; man sen(5)): the relative spectral response,
 // gain and bias of one sensor band.
 #pragma once
 

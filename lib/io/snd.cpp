@@ -1,4 +1,4 @@
-// Reading and writing the .snd scene-node file (seed fig. 4.28; man snd(5)).
+// Reading and writing the .snd scene-node file (White (1996), fig. 4.28; man snd(5)).
 #include "io/snd.hpp"
 
 #include <cmath>
@@ -156,7 +156,7 @@ void parse_place(LineCursor& cur, Snd& snd) {
             at, "expected the end of the line after the longitude, found " + quoted(tokens[i]));
     snd.latitude_deg = coordinate_value(lat, at, "latitude (deg)", "NS", 90);
     snd.latitude_style = lat.hemisphere ? CoordinateStyle::Hemisphere : CoordinateStyle::Plain;
-    // Legacy plain longitudes are west positive (seed fig. 4.28: 77.66667 is 77.67 W).
+    // Legacy plain longitudes are west positive (White (1996), fig. 4.28: 77.66667 is 77.67 W).
     double lon_value = coordinate_value(lon, at, "longitude (deg)", "EW", 180);
     snd.longitude_east_deg = lon.hemisphere ? lon_value : -lon_value;
     snd.longitude_style = lon.hemisphere ? CoordinateStyle::Hemisphere : CoordinateStyle::Plain;
@@ -240,7 +240,7 @@ void write_snd(std::ostream& out, const Snd& snd) {
 }
 
 FormatHandler snd_format() {
-    return {"snd", "scene node (seed fig. 4.28)",
+    return {"snd", "scene node (White (1996), fig. 4.28)",
             [](const TextInput& in) {
                 Snd s = parse_snd(in);
                 double lo = s.bands[0].min_wavenumber_cm1, hi = s.bands[0].max_wavenumber_cm1;

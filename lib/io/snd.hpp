@@ -1,4 +1,4 @@
-// .snd scene-node file (seed fig. 4.28; man snd(5)): sensor altitude, spectral bands,
+// .snd scene-node file (White (1996), fig. 4.28; man snd(5)): sensor altitude, spectral bands,
 // view-angle grid, date, time and place of the simulation.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Reading and writing the .wth weather history (seed fig. 4.32; man wth(5)).
+// Reading and writing the .wth weather history (White (1996), fig. 4.32; man wth(5)).
 #include "io/wth.hpp"
 
 #include <cmath>
@@ -269,7 +269,7 @@ void write_wth(std::ostream& out, const Wth& w) {
 }
 
 FormatHandler wth_format() {
-    return {"wth", "weather history (seed fig. 4.32)",
+    return {"wth", "weather history (White (1996), fig. 4.32)",
             [](const TextInput& in) { return summary(parse_wth(in)); },
             [](const TextInput& in, std::ostream& out) { write_wth(out, parse_wth(in)); }};
 }

@@ -1,4 +1,4 @@
-// .wth weather history (seed fig. 4.32, section 4.2.3.6; man wth(5)): the weather at
+// .wth weather history (White (1996), fig. 4.32, section 4.2.3.6; man wth(5)): the weather at
 // the scene, at equal time steps, that drives the thermal model.
 //
 // Two layouts: the seed's whitespace (tab) separated one, and a fixed-width one read

@@ -1,5 +1,5 @@
 // Land-cover classification of multispectral reference imagery into material classes
-// (seed 5.2.5.2: material maps from classification of reference imagery), and the
+// (White (1996), section 5.2.5.2: material maps from classification of reference imagery), and the
 // resampling of a class map onto another grid (a DEM's) by majority.
 // Thread-safety: free functions on value types.
 #pragma once

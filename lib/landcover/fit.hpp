@@ -1,5 +1,5 @@
 // Control points on a class map and the least-squares fit of each class's reflectance
-// scale to a reference image (seed 3.5/4.5 validation with a held-out half).
+// scale to a reference image (White (1996), section 3.5/4.5 validation with a held-out half).
 // Thread-safety: free functions on value types.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The atmosphere of a render: the .rad tables of every band merged on one spectral
-// grid; sun, path terms by view angle and the downwelled sky hemisphere (seed 3.4;
+// grid; sun, path terms by view angle and the downwelled sky hemisphere (White (1996), section 3.4;
 // rad(5); atmosphere.hpp).
 #include "radiometry/atmosphere.hpp"
 

@@ -1,5 +1,5 @@
 // The atmosphere as trace sees it: the .rad tables of every band merged on one
-// spectral grid (seed 3.4 radiometry submodel; rad(5)). Sun direction and ground
+// spectral grid (White (1996), section 3.4 radiometry submodel; rad(5)). Sun direction and ground
 // irradiance, path terms interpolated in view angle, and the downwelled sky.
 //
 // Frames: scene ENU (x east, y north, z up). Units: irradiance W cm-2 um-1, radiance

@@ -1,6 +1,6 @@
 // The angular shape of reflection (scalar; the spectral factor is the material's
 // directional reflectance rho(lambda, theta_o)). DESIGN.md section 4, mat(5)
-// REFLECTANCE MODELS, seed 3.6.5 and 5.2.1-5.2.3.
+// REFLECTANCE MODELS, White (1996), section 3.6.5 and 5.2.1-5.2.3.
 //
 // Reflected radiance at a facet, for a viewer in direction wo:
 //     L_o(lambda) = rho(lambda, theta_o) * Int w(wi, wo) L_i(lambda, wi) d(omega_i)
@@ -45,7 +45,7 @@ public:
     static Brdf lambertian();
     static Brdf delta();                      // dirsig
     static Brdf cone(double half_angle_deg);  // uniform within the half angle
-    // White's cone (seed 5.2.3): radius interpolated in the specular angle from the
+    // White's cone (White (1996), section 5.2.3): radius interpolated in the specular angle from the
     // .ems table rows at 0, 15, ..., 90 deg (base_radius_deg of each row).
     static Brdf linear_cone(const std::array<double, 7>& base_radius_deg);
     static Brdf phong(double exponent);

@@ -17,7 +17,7 @@
 
 namespace sigchain::radiometry {
 
-// A DIRSIG texture map (TEXTURE_FILE; seed 5.2.5.3): a raster whose cell values are
+// A DIRSIG texture map (TEXTURE_FILE; White (1996), section 5.2.5.3): a raster whose cell values are
 // .ems curve numbers, laid over the scene by the raster's geotransform, which maps
 // (column, row) to scene x (east) and y (north) in scene units (mat(5)).
 struct TextureMap {

@@ -1,4 +1,4 @@
-// DIRSIG texture maps (seed 5.2.5.3): a raster of .ems curve numbers over the scene.
+// DIRSIG texture maps (White (1996), section 5.2.5.3): a raster of .ems curve numbers over the scene.
 #include <gdal_priv.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The hawkeye scene generator (issue 7, scene 2): a Rochester-like 1.1 km x 1.1 km
-// scene after seed sections 4.1-4.2 (the area around Kodak's Hawkeye plant): a 60 m
+// scene after White (1996), sections 4.1-4.2 (the area around Kodak's Hawkeye plant): a 60 m
 // gorge running south to north, rolling hills of 15-25 m, a street grid with
 // sidewalks and parking lots raised on the terrain, instanced houses (three types and
 // a garage in ten colours), larger buildings, a long industrial plant, a bridge over
@@ -34,7 +34,7 @@ private:
     std::uint64_t state_;
 };
 
-// The scene's fixed dimensions (seed 4.1.1: "1.1 km by 1.1 km with the Genesee River
+// The scene's fixed dimensions (White (1996), section 4.1.1: "1.1 km by 1.1 km with the Genesee River
 // running south to north through the middle", a "200 foot gorge" (61 m; the issue
 // says 60 m), "rolling hills, 50 to 75 feet high" (15-23 m; the issue says 15-25 m)).
 inline constexpr double kHawkeyeSizeM = 1100;
@@ -45,7 +45,7 @@ inline constexpr double kGorgeRimHalfWidthM = 110;   // rim to rim: 220 m
 inline constexpr double kMinHillM = 15;
 inline constexpr double kMaxHillM = 25;
 inline constexpr double kStreetRaiseM = 0.1;     // streets and parking (the issue)
-inline constexpr double kSidewalkRaiseM = 0.15;  // "typically a six inch elevation" (seed 4.2.3.1)
+inline constexpr double kSidewalkRaiseM = 0.15;  // "typically a six inch elevation" (White (1996), section 4.2.3.1)
 
 // The terrain: heights at the nodes of a square grid covering the scene.
 struct HawkeyeTerrain {

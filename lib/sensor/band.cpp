@@ -1,4 +1,4 @@
-// Band-effective radiance and digital counts (seed 3.2; sen(5)).
+// Band-effective radiance and digital counts (White (1996), section 3.2; sen(5)).
 #include "sensor/band.hpp"
 
 #include <cmath>

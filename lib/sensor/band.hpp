@@ -1,4 +1,4 @@
-// The sensor band model (seed 3.2): band-effective radiance from a radiance cube and a
+// The sensor band model (White (1996), section 3.2): band-effective radiance from a radiance cube and a
 // relative spectral response, then digital counts (gain, bias, clipping, quantisation).
 #pragma once
 
@@ -32,7 +32,7 @@ std::vector<BandSamples> group_bands(const std::vector<io::Sen>& sens,
 // every width is 1.
 std::vector<double> sample_widths_um(const std::vector<double>& wavelength_um, int count);
 
-// Band-effective radiance per pixel, L̄ = Σ R·L·Δλ / Σ R·Δλ (seed 3.2: L̄ = ∫ L R̄ dλ with
+// Band-effective radiance per pixel, L̄ = Σ R·L·Δλ / Σ R·Δλ (White (1996), section 3.2: L̄ = ∫ L R̄ dλ with
 // R̄ = R / ∫ R dλ, integrated by the midpoint rule), in the cube's radiance units.
 // Throws DataError (at `sen_path`) when Σ R·Δλ is not positive.
 std::vector<float> band_radiance(const image::Image& cube, BandSamples samples,

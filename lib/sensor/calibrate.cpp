@@ -1,4 +1,4 @@
-// Two-point gain and bias from two gray cards (seed 4.2.4).
+// Two-point gain and bias from two gray cards (White (1996), section 4.2.4).
 #include "sensor/calibrate.hpp"
 
 #include <cmath>
@@ -41,7 +41,7 @@ double box_mean(const std::vector<float>& plane, long rows, long columns, const 
 
 GainBias solve_gain_bias(double radiance1, double count1, double radiance2, double count2,
                          const std::string& where_file) {
-    // Two equations count_i = gain * L_i + bias (seed 4.2.4, two gray cards).
+    // Two equations count_i = gain * L_i + bias (White (1996), section 4.2.4, two gray cards).
     // The errors name `where_file` only: they concern both cards, not one of its lines.
     if (radiance1 == radiance2)
         throw DataError({where_file, 0},

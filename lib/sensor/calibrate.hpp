@@ -1,4 +1,4 @@
-// Two-gray-card calibration (seed 4.2.4): the gain and bias that map two rendered cards'
+// Two-gray-card calibration (White (1996), section 4.2.4): the gain and bias that map two rendered cards'
 // band radiances to their target digital counts.
 #pragma once
 

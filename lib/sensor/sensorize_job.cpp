@@ -1,4 +1,4 @@
-// The sensorize job (seed 4.2.3.10, 4.2.4): cube + .sen files -> counts, radiance or gains.
+// The sensorize job (White (1996), section 4.2.3.10, 4.2.4): cube + .sen files -> counts, radiance or gains.
 #include "sensor/sensorize_job.hpp"
 
 #include <cctype>

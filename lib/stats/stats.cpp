@@ -80,7 +80,7 @@ RankCorrelation rank_order_correlation(std::span<const double> a, std::span<cons
     double sum_d2 = 0;
     for (std::size_t i = 0; i < ra.size(); ++i) sum_d2 += (ra[i] - rb[i]) * (ra[i] - rb[i]);
     double n = static_cast<double>(a.size());
-    // rho = 1 - 6 sum d^2 / (n^3 - n) (seed 3.5, Servoss 1993).
+    // rho = 1 - 6 sum d^2 / (n^3 - n) (White (1996), section 3.5, Servoss 1993).
     return {1.0 - 6.0 * sum_d2 / (n * n * n - n), RankMethod::Spearman};
 }
 
@@ -89,7 +89,7 @@ double rms_difference(std::span<const double> a, std::span<const double> b) {
     require_some(a);
     double sum = 0;
     for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
-    // RMS = sqrt(sum (a - b)^2 / n) (seed 3.5).
+    // RMS = sqrt(sum (a - b)^2 / n) (White (1996), section 3.5).
     return std::sqrt(sum / static_cast<double>(a.size()));
 }
 

@@ -1,5 +1,5 @@
 // Descriptive statistics and rank-order correlation for compare(1): ranks, Spearman's
-// rho (seed section 3.5), RMS difference, bias, mean, standard deviation, median and
+// rho (White (1996), section 3.5), RMS difference, bias, mean, standard deviation, median and
 // histograms with shared bin edges.
 //
 // All functions take plain value sequences and are pure (thread-safe). Bad arguments
@@ -26,7 +26,7 @@ public:
     using Error::Error;
 };
 
-// Ranks 1..n in ascending order of value (rank 1 = lowest, as in seed tables 4.5 and
+// Ranks 1..n in ascending order of value (rank 1 = lowest, as in White (1996), tables 4.5 and
 // 4.6); tied values all get the mean of the ranks they span ("average ranks").
 std::vector<double> average_ranks(std::span<const double> values);
 
@@ -45,7 +45,7 @@ struct RankCorrelation {
 };
 
 // Rank-order correlation of two paired samples (n >= 2, no NaN). Without ties in
-// either sample, Spearman's formula of seed 3.5; with ties, the Pearson correlation of
+// either sample, Spearman's formula of White (1996), section 3.5; with ties, the Pearson correlation of
 // the average ranks (the tie-corrected coefficient). Throws StatsError for
 // n < 2 (undefined), NaN, different lengths, or a sample whose values all tie (its
 // ranks have no spread, so the correlation is undefined).
@@ -61,7 +61,7 @@ double bias(std::span<const double> a, std::span<const double> b);
 
 double mean(std::span<const double> values);  // n >= 1
 // Population standard deviation (divides by n): the whole image is the population
-// described (seed table 4.7), not a sample from a larger one. n >= 1.
+// described (White (1996), table 4.7), not a sample from a larger one. n >= 1.
 double population_std(std::span<const double> values);
 // The middle value; for an even count the mean of the two middle values. n >= 1.
 double median(std::span<const double> values);

@@ -1,4 +1,4 @@
-// The surroundings that drive a facet's temperature (seed 3.4; wth(5)): weather
+// The surroundings that drive a facet's temperature (White (1996), section 3.4; wth(5)): weather
 // interpolated in time, sky long-wave emission, convection, solar irradiance and the
 // sun's direction, sampled on the thermal model's time grid.
 #pragma once

@@ -1,4 +1,4 @@
-// One facet's surface energy balance driving its slab (seed 3.4, DCS THERM's terms):
+// One facet's surface energy balance driving its slab (White (1996), section 3.4, DCS THERM's terms):
 // absorbed sun and sky, long-wave exchange with the sky and the ground, convection,
 // self-generated power, and the back face when it is exposed.
 #pragma once

@@ -1,4 +1,4 @@
-// One-dimensional heat conduction through a facet's thickness (seed 3.4, "Thermal
+// One-dimensional heat conduction through a facet's thickness (White (1996), section 3.4, "Thermal
 // Submodel": each facet in isolation, no inter-facet conduction), stepped implicitly.
 //
 // The slab runs from the front face (x = 0) to the back face (x = thickness). Nodes sit

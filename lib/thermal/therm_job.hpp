@@ -1,5 +1,5 @@
 // therm: facet temperatures (.tmp) at the scene time from the sun/shadow history (.shd),
-// weather (.wth), materials (.mat), scene (.gdb/.odb) and scene node (.snd); seed 3.4.
+// weather (.wth), materials (.mat), scene (.gdb/.odb) and scene node (.snd); White (1996), section 3.4.
 // The library behind tools/therm (GDAL-apps style: options struct in, work done here).
 #pragma once
 

@@ -1,4 +1,4 @@
-// The golf-ball secondary-ray pattern (seed 5.2.3); geometry in golfball.hpp.
+// The golf-ball secondary-ray pattern (White (1996), section 5.2.3); geometry in golfball.hpp.
 #include "trace/golfball.hpp"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The "golf ball" secondary-ray pattern of seed 5.2.3 (figs 5.24-5.27): 61 cells
+// The "golf ball" secondary-ray pattern of White (1996), section 5.2.3 (figs 5.24-5.27): 61 cells
 // over the hemisphere above a facet, 37 of solid angle 2 pi / 49 and 24 horizon cells
 // of half that, plus three specular-lobe matrices that split the cells about the
 // mirror direction into smaller ones of exact solid angle.
@@ -25,7 +25,7 @@
 // A rectangular cell (cos range x azimuth range) is split into three zenith bands of
 // 2/7, 3/7, 2/7 of its cos range cut into 2, 3, 2 equal azimuth pieces (a hexagon
 // with its centre); the cap into an inner cap of 1/7 and six 60-degree sectors.
-// Choice by the specular angle (seed 5.2.3): > 33.75 deg matrix 3, > 11.25 matrix 2,
+// Choice by the specular angle (White (1996), section 5.2.3): > 33.75 deg matrix 3, > 11.25 matrix 2,
 // else matrix 1.
 #pragma once
 

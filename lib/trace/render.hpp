@@ -1,6 +1,6 @@
 // Rendering: primary rays from a sensor (sensor.hpp), the radiance at each hit from the
 // hemisphere above it (by a sampling strategy), and the atmosphere's path terms;
-// one geometry pass serves all spectral samples (seed 3.4, 3.6.5, 5.2; DESIGN.md 4).
+// one geometry pass serves all spectral samples (White (1996), section 3.4, 3.6.5, 5.2; DESIGN.md 4).
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ enum class Sampling { Dirsig, Golfball, MonteCarlo };
 
 struct RenderOptions {
     Sampling sampling = Sampling::Golfball;
-    long samples_per_pixel = 1;    // primary rays per pixel, stratified (seed 5.1.4 rec. 7)
+    long samples_per_pixel = 1;    // primary rays per pixel, stratified (White (1996), section 5.1.4 rec. 7)
     long hemisphere_samples = 64;  // montecarlo: rays per hit; dirsig: diffuse pattern size
     // golfball: draw each cell's ray at random inside its cell (cosine-weighted),
     // instead of at its centre: a stratified, unbiased estimator whose error falls
@@ -29,7 +29,7 @@ struct RenderOptions {
     bool golfball_jitter = false;
     int max_transmissions = 8;         // transmissive facets followed per ray
     int bounces = 1;                   // secondary hits take the other facet's radiance one
-                                       // bounce deep (seed 5.2.3 step 4)
+                                       // bounce deep (White (1996), section 5.2.3 step 4)
     std::uint64_t seed = 1;            // results depend only on seed (not on threads)
     unsigned threads = 0;              // 0: all cores
     long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row

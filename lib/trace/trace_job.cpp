@@ -189,7 +189,7 @@ radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
     }
     radiometry::Atmosphere atmosphere = radiometry::Atmosphere::from_rads(rads, job.rad_paths);
     if (!atmosphere.has_sky()) {
-        // A DIRSIG .rad (seed fig. 4.33) has no SIGCHAIN_RAD block: no sun position and
+        // A DIRSIG .rad (White (1996), fig. 4.33) has no SIGCHAIN_RAD block: no sun position and
         // no downwelled sky. The sun is placed from the .snd's date, GMT time and place
         // (NREL SPA, lib/atmos); the sky is left dark, which the user is told.
         geo::SolarPosition sun = geo::solar_position(io::scene_site(snd));

@@ -1,5 +1,5 @@
 // compare: compare a synthetic image with a reference image (RMS, rank-order correlation,
-// seed 3.5 and 4.5). Exit status as OpenImageIO's idiff: 0 within the thresholds,
+// White (1996), section 3.5 and 4.5). Exit status as OpenImageIO's idiff: 0 within the thresholds,
 // 1 outside, 2 trouble (bad usage, unreadable or unusable input).
 #include <iostream>
 

@@ -1,4 +1,4 @@
-// find_min_max_view_angle: the view-angle range a sensor sees of a scene (seed 4.2.3.3).
+// find_min_max_view_angle: the view-angle range a sensor sees of a scene (White (1996), section 4.2.3.3).
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"

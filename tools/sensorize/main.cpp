@@ -1,4 +1,4 @@
-// sensorize: turn a radiance cube into the digital counts of a sensor (seed 4.2.3.10, 4.2.4).
+// sensorize: turn a radiance cube into the digital counts of a sensor (White (1996), section 4.2.3.10, 4.2.4).
 #include <iostream>
 
 #include "cli/cli.hpp"

@@ -1,4 +1,4 @@
-// therm: compute facet temperatures (.tmp) from weather and sun/shadow history (seed 3.4).
+// therm: compute facet temperatures (.tmp) from weather and sun/shadow history (White (1996), section 3.4).
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "thermal/therm_job.hpp"

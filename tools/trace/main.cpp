@@ -1,4 +1,4 @@
-// trace: ray-trace a scene into a spectral radiance cube (seed 3.4, 3.6.5, 5.2).
+// trace: ray-trace a scene into a spectral radiance cube (White (1996), section 3.4, 3.6.5, 5.2).
 #include <optional>
 
 #include "cli/cli.hpp"

@@ -1,11 +1,11 @@
-# training.gdb: the training scene of sigchain's pipeline tests (seed section 4.2.1:
+# training.gdb: the training scene of sigchain's pipeline tests (White (1996), section 4.2.1:
 # "a box ... sitting on a flat surface"), here with a pyramid beside the box.
 # Hand-written for sigchain (issue 7); metres (the .adv's units key).
 # Ground: a 20 x 20 m quad at z = 0 (grass, material 1).
 # Box: 4 x 4 x 3 m, x 4..8, y 8..12, a top and four walls (wood, material 37).
 # Pyramid: 4 x 4 m base, x 12..16, y 8..12, apex (14, 10, 4), four triangles (wood).
 # Neither has a bottom face (it would lie on the ground, unseen).
-# Facet fields as the seed's table 4.2 defaults: temperature -1 (from therm),
+# Facet fields as White (1996), table 4.2 defaults: temperature -1 (from therm),
 # thickness 5 cm, power -1, exposed area -1. Vertices run counter-clockwise seen from
 # the side the normal points to; slope zenith is the normal's angle from +z (a
 # pyramid face's normal (0, -2, 1) has atan(2) = 63.4349488 deg), slope azimuth its

@@ -2,7 +2,7 @@
 # flat surface". Hand-built for sigchain; the seed shows no .gdb sample.
 # Units are not in the file (the .odb or the .adv `units` key gives them): metres here.
 # Ground: a 20 x 20 quad at z = 0 (grass, material 1). Box: 4 x 4 x 3, x and y from
-# 8 to 12, a top and four walls (wood, material 37, the seed's table 4.2 defaults:
+# 8 to 12, a top and four walls (wood, material 37, White (1996), table 4.2 defaults:
 # temperature -1 (from therm), thickness 5 cm, power -1, exposed area -1).
 # Vertices run counter-clockwise seen from the side the normal points to; slope
 # zenith is the normal's angle from +z, slope azimuth its compass direction (deg

@@ -117,7 +117,7 @@ TEST(BuildRadiance, GridsRangesAndTransmissionsFollowTheGeometry) {
 // Views in the plane perpendicular to the sun's azimuth see the same scattering angle
 // on both sides of nadir, so L_us must agree exactly (up to rounding). In the sun's
 // vertical plane they do not (DIRSIG's circularly symmetric tables could not show
-// this, seed 5.2): with the sun at 53 deg zenith, a view 60 deg off nadir toward the
+// this, White (1996), section 5.2): with the sun at 53 deg zenith, a view 60 deg off nadir toward the
 // sun's azimuth receives light scattered at 67 deg (aerosol forward lobe), the view
 // 60 deg away from it light scattered at 173 deg (backward). Single scattering with
 // the Henyey-Greenstein lobe (g about 0.7) makes the first about 5 times the second

@@ -23,7 +23,7 @@ std::vector<std::string> ems_lines(const std::string& count, std::vector<std::st
     return v;
 }
 
-// Wavenumber layout (seed fig. 4.35): line 93 "0", rows from line 94.
+// Wavenumber layout (White (1996), fig. 4.35): line 93 "0", rows from line 94.
 const std::vector<std::string> kByWavenumber =
     ems_lines("1", {"0", "20000 0.9", "10000 0.5", "5000 0.7"});
 
@@ -31,7 +31,7 @@ const std::vector<std::string> kByWavenumber =
 const std::vector<std::string> kByWavelength =
     ems_lines("2", {"CURVE_BEGIN", "0.4 0.2", "0.8 0.6", "CURVE_END", "CURVE_BEGIN", "1 0.95"});
 
-// The proposed lobe table (seed fig. 5.22): lines 93-99, then curve 0 from line 100.
+// The proposed lobe table (White (1996), fig. 5.22): lines 93-99, then curve 0 from line 100.
 std::vector<std::string> with_lobe() {
     std::vector<std::string> lobe = {"0.4 36.5 -999 -999", "0.5 21.0 -999 -999", "0.3 10 -999 -999",
                                      "0.2 5 -999 -999",    "0.1 5 -999 -999",    "0 0 -999 -999",

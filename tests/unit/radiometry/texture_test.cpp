@@ -1,4 +1,4 @@
-// Texture maps (seed 5.2.5.3): a raster of .ems curve numbers placed over the scene
+// Texture maps (White (1996), section 5.2.5.3): a raster of .ems curve numbers placed over the scene
 // by its geotransform.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Golf-ball geometry (seed 5.2.3) and the sampling helpers, against exact values:
+// Golf-ball geometry (White (1996), section 5.2.3) and the sampling helpers, against exact values:
 // solid angles by the closed forms 2 pi (hemisphere) and pi (projected hemisphere).
 #include <gtest/gtest.h>
 
@@ -64,7 +64,7 @@ TEST(Golfball, ProjectedSolidAngleMatchesQuadrature) {
 TEST(Golfball, EveryMatrixKeepsTheHemisphereAndAddsFortyTwoRays) {
     for (int m = 1; m <= 3; ++m) {
         const auto& rays = golfball_rays(m);
-        EXPECT_EQ(rays.size(), 103u) << m;  // seed fig. 5.28: secondary_ray_103
+        EXPECT_EQ(rays.size(), 103u) << m;  // White (1996), fig. 5.28: secondary_ray_103
         double total = 0, projected = 0;
         std::map<int, double> per_cell;
         std::map<int, int> count;

@@ -1,7 +1,7 @@
 // Analytic cases for render(), each against an independent reference (issue 4,
 // "Tests"): white furnace, Lambertian plate under sun and sky, the sky-view factor of
 // an infinite street canyon, the shadow of a box, and the sun in the specular
-// direction of a glossy plate (seed section 5, case 2b).
+// direction of a glossy plate (White (1996), section 5, case 2b).
 //
 // The scenes are built in memory (scene::MeshData) and seen by an orthographic
 // camera defined here, so the expected values follow from geometry alone.

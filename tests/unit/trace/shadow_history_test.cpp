@@ -358,7 +358,7 @@ TEST(RenderEmission, BlackbodyPlateThroughUnitTransmissionGivesPlanck) {
 TEST(RenderEmission, EmittedSkyAndPathAreAddedOnlyWithTemperatures) {
     // A grey Lambertian plate (r = 0.3) at 300 K under a sky that only emits (uniform
     // L_de = 2e-4), seen through tau2 = 0.8 with an emitting path (L_ue = 1e-4), no sun
-    // (zenith 120): L = tau2 [(1 - r) B(300 K) + r L_de] + L_ue (seed 3.4; the golf
+    // (zenith 120): L = tau2 [(1 - r) B(300 K) + r L_de] + L_ue (White (1996), section 3.4; the golf
     // ball's diffuse weights sum to 1 and every ray escapes the 1800 m plate upward).
     // Without temperatures all three emitted terms are left out: L = 0. Tolerance:
     // float output, 1e-6 relative.
