@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "trace/sampling.hpp"
 #include "trace/tracer.hpp"
+#include "trace/world.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -27,6 +28,8 @@ enum TruthLayer {
     kViewAngle,
     kRange,
     kTemperature,
+    kSky,
+    kBackground,
     kFixedLayers
 };
 constexpr int kPerBand = 5;  // reflectance, solar, downwelled, upwelled, transmission
@@ -38,6 +41,7 @@ struct RowWorker {
     Tracer tracer;
     std::vector<double> pixel;
     std::vector<double> truth_acc;
+    std::uint64_t sky = 0, background = 0;  // primary samples that left the scene
 };
 
 // The spectral buffers of one primary sample: radiance leaving the hit and the path
@@ -48,6 +52,28 @@ struct SampleBuffers {
     double* lus;
     double* lue;
 };
+
+// A primary sample that left the scene (world.hpp): the effective sky above the
+// horizon, the background plane through the path terms below it, else 0. Adds to the
+// pixel and the truth's sky and background fractions.
+void add_miss(const TraceContext& c, RowWorker& w, const SampleBuffers& b, const Vec3& o,
+              const Vec3& d) {
+    const std::size_t n = c.n;
+    if (d[2] > 0) {
+        effective_sky(c, *c.in.sensor, d, b.leave, b.tau2, b.lus, b.lue);
+        for (std::size_t k = 0; k < n; ++k) w.pixel[k] += b.leave[k];
+        ++w.sky;
+        if (c.opt.truth) w.truth_acc[kSky] += 1;
+        return;
+    }
+    if (background_distance(c.background, o, d) < 0) return;
+    c.in.atmosphere->path(d, c.in.sensor->view_angle_deg(d), {b.tau2, n}, {b.lus, n}, {b.lue, n});
+    const auto& l = c.background.radiance;
+    for (std::size_t k = 0; k < n; ++k)
+        w.pixel[k] += b.tau2[k] * l[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0);
+    ++w.background;
+    if (c.opt.truth) w.truth_acc[kBackground] += 1;
+}
 
 // Adds primary sample i of pixel (row, col) to the worker's accumulators; true on a
 // hit.
@@ -62,7 +88,10 @@ bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
     cam.ray(static_cast<double>(row) + off[0], static_cast<double>(col) + off[1], o, d);
     HitTruth ht;
     auto hit = w.tracer.primary(o, d, row, col, i, b.leave, c.opt.truth ? &ht : nullptr);
-    if (!hit) return false;
+    if (!hit) {
+        add_miss(c, w, b, o, d);
+        return false;
+    }
     double va = cam.view_angle_deg(d);
     c.in.atmosphere->path(d, va, {b.tau2, n}, {b.lus, n}, {b.lue, n});
     for (std::size_t k = 0; k < n; ++k) {
@@ -103,8 +132,12 @@ void put_truth(const TraceContext& c, const std::vector<double>& truth_acc, long
     put(kObject, centre_hit ? static_cast<double>(centre_hit->object) : -1);
     put(kFacet, centre_hit ? static_cast<double>(centre_hit->facet) : -1);
     double h = static_cast<double>(hits);
+    put(kSky, truth_acc[kSky] / static_cast<double>(spp));
+    put(kBackground, truth_acc[kBackground] / static_cast<double>(spp));
     for (int layer = kShadow; layer < static_cast<int>(truth_acc.size()); ++layer) {
-        if (layer == kMaterial || layer == kObject || layer == kFacet) continue;
+        if (layer == kMaterial || layer == kObject || layer == kFacet || layer == kSky ||
+            layer == kBackground)
+            continue;
         double v = hits ? truth_acc[static_cast<std::size_t>(layer)] / h : 0.0;
         if (layer == kTemperature && (!hits || v < 0)) v = -1;
         put(layer, v);
@@ -176,7 +209,9 @@ std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid)
                                       "sky_view_factor",
                                       "view_angle_deg",
                                       "range_m",
-                                      "temperature_k"};
+                                      "temperature_k",
+                                      "sky_fraction",
+                                      "background_fraction"};
     for (const auto& band : grid.band_names)
         for (const char* q :
              {"reflectance_", "solar_", "downwelled_", "upwelled_", "transmission_"})
@@ -208,8 +243,13 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
         res.stats.secondary_rays += k.secondary;
         res.stats.shadow_rays += k.shadow;
         res.stats.hits += k.hits;
+        res.stats.sky_samples += w.sky;
+        res.stats.background_samples += w.background;
     });
     res.stats.skipped = skipped(c);
+    res.stats.background = c.background.description;
+    if (res.stats.sky_samples + res.stats.background_samples == 0)
+        res.stats.skipped.push_back("the world beyond the scene for primary rays (none left it)");
     res.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return res;

@@ -19,6 +19,10 @@ namespace sigchain::trace {
 
 enum class Sampling { Dirsig, Golfball, MonteCarlo };
 
+// What rays that leave the scene below the horizon see (world.hpp): the mean of the
+// scene seen from above, one material of the .mat, or nothing.
+enum class BackgroundChoice { Mean, Material, None };
+
 struct RenderOptions {
     Sampling sampling = Sampling::Golfball;
     long samples_per_pixel = 1;    // primary rays per pixel, stratified (White (1996), section 5.1.4 rec. 7)
@@ -34,6 +38,8 @@ struct RenderOptions {
     unsigned threads = 0;              // 0: all cores
     long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row
     bool truth = false;
+    BackgroundChoice background = BackgroundChoice::Mean;
+    long background_material = 0;  // MATERIAL_ID, with BackgroundChoice::Material
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)
 };
 
@@ -55,8 +61,10 @@ std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid)
 struct RenderStats {
     std::uint64_t primary_rays = 0, secondary_rays = 0, shadow_rays = 0;
     std::uint64_t hits = 0;
+    std::uint64_t sky_samples = 0, background_samples = 0;  // primary samples that left the scene
     double seconds = 0;
     std::vector<std::string> skipped;  // what was not modelled, for --verbose
+    std::string background;            // how the background world was made (world.hpp)
 };
 
 struct RenderResult {

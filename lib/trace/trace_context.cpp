@@ -71,6 +71,8 @@ TraceContext make_context(const RenderInputs& in, const RenderOptions& opt) {
         for (std::size_t k = 0; k < c.n && k < ske.size(); ++k) c.sky_e[k] += ske[k];
         facet_temperatures(in, c);
     }
+    c.sky.emplace(atm);
+    c.background = make_background(c);
     return c;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 
@@ -88,6 +89,23 @@ Sampling parse_sampling(const std::string& name) {
                      "' (dirsig, golfball or montecarlo)");
 }
 
+void parse_background(const std::string& text, RenderOptions& options) {
+    if (text == "mean") {
+        options.background = BackgroundChoice::Mean;
+        return;
+    }
+    if (text == "none") {
+        options.background = BackgroundChoice::None;
+        return;
+    }
+    char* end = nullptr;
+    const long id = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0')
+        throw UsageError("--background: expected mean, none or a MATERIAL_ID, not '" + text + "'");
+    options.background = BackgroundChoice::Material;
+    options.background_material = id;
+}
+
 std::string sampling_name(Sampling sampling) {
     switch (sampling) {
         case Sampling::Dirsig:
@@ -118,6 +136,8 @@ void check_job(const TraceJob& job) {
     if (job.output_path == "-")
         throw UsageError("a radiance cube cannot be written to standard output: give -o CUBE");
     image::cube_format_of(job.output_path);  // UsageError for an unknown extension
+    RenderOptions background;
+    parse_background(job.background, background);  // UsageError for a bad --background
     if (!job.truth_path.empty()) {
         if (job.truth_path == "-")
             throw UsageError("--truth: a truth cube cannot be written to standard output");
@@ -266,6 +286,7 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     if (job.hemisphere_samples) options.hemisphere_samples = *job.hemisphere_samples;
     if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
     if (job.bounces) options.bounces = *job.bounces;
+    parse_background(job.background, options);
     options.golfball_jitter = job.golfball_jitter;
     options.seed = job.seed;
     options.threads = job.threads;
@@ -284,6 +305,9 @@ void report_stats(const RenderStats& s, const Reporter& reporter) {
                   std::to_string(s.shadow_rays) + " shadow), " + std::to_string(s.hits) +
                   " hits, " + format("%.3f", s.seconds) + " s, " + format("%.2f", mrays) +
                   " Mrays/s");
+    if (!s.background.empty()) reporter.info(s.background);
+    reporter.info(std::to_string(s.sky_samples) + " primary sample(s) saw the sky, " +
+                  std::to_string(s.background_samples) + " the background world");
     for (const auto& skipped : s.skipped) reporter.info("not modelled: " + skipped);
     if (s.hits == 0) reporter.warn("no primary ray hit the scene: check the look angles");
 }

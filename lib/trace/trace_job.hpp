@@ -30,6 +30,7 @@ struct TraceJob {
     std::optional<int> max_transmissions;    // default: RenderOptions's
     bool golfball_jitter = false;            // golfball: each cell's ray at random inside the cell
     std::optional<int> bounces;              // 0 or 1; default: RenderOptions's (1)
+    std::string background = "mean";        // "mean", "none" or a MATERIAL_ID (world.hpp)
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores
     std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
@@ -48,6 +49,8 @@ struct TraceReport {
 // "dirsig", "golfball" or "montecarlo"; else UsageError.
 Sampling parse_sampling(const std::string& name);
 std::string sampling_name(Sampling sampling);
+// "mean", "none" or a MATERIAL_ID (an integer) into options; else UsageError.
+void parse_background(const std::string& text, RenderOptions& options);
 // "A:B" with 0 <= A < B (integers) as [A, B); else UsageError naming `option`.
 std::pair<long, long> parse_rows(const std::string& text, const std::string& option = "--rows");
 

@@ -106,8 +106,7 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
                                         HitTruth* truth) {
     auto hit = m_c.in.scene->intersect(origin, dir, tnear, INFINITY);
     if (!hit) {
-        if (depth > 0 && dir[2] > 0)
-            m_c.in.atmosphere->add_sky_radiance(dir, 1.0, {out, m_c.n}, m_c.emission);
+        if (depth > 0) add_world(origin, dir, out);
         return hit;
     }
     refine(origin, dir, *hit);
@@ -135,6 +134,17 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
         for (std::size_t k = 0; k < m_c.n; ++k) out[k] += t[k] * behind[k];
     }
     return hit;
+}
+
+// A secondary ray that left the scene: the sky above the horizon, the background
+// plane below it (world.hpp), added to `out`.
+void Tracer::add_world(const Vec3& origin, const Vec3& dir, double* out) const {
+    if (dir[2] > 0) {
+        m_c.sky->add(dir, 1.0, {out, m_c.n}, m_c.emission);
+    } else if (background_distance(m_c.background, origin, dir) >= 0) {
+        const auto& l = m_c.background.radiance;
+        for (std::size_t k = 0; k < m_c.n; ++k) out[k] += l[k];
+    }
 }
 
 // Embree intersects in single precision: a hit distance d is known to about 2^-23 d.
@@ -183,8 +193,15 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
     double s = specularity_of(m);
+    // The sky fills the part (1 + cos(tilt))/2 of the facet's view, the background
+    // plane the rest (irradiance pi L_bg (1 - cos(tilt))/2).
     double sky_factor = (1 - s) / kPi * (1 + n[2]) / 2;
     for (std::size_t k = 0; k < m_c.n; ++k) in[k] = sky_factor * m_c.sky_e[k];
+    if (m_c.background.enabled && n[2] < 1) {
+        const double ground_factor = (1 - s) * (1 - n[2]) / 2;
+        for (std::size_t k = 0; k < m_c.n; ++k)
+            in[k] += ground_factor * m_c.background.radiance[k];
+    }
     double cos_sun = geo::dot(n, m_c.sun);
     if (m_c.sun_up && cos_sun > 0) {
         double* vis = m_arena.take();

@@ -8,10 +8,9 @@
 // - Facet frame: z = the geometric normal flipped toward the incoming ray; x = the
 //   horizontal unit vector up x z (the facet's strike direction), or east for a
 //   horizontal facet; y = z x x.
-// - A primary ray that misses the scene: radiance 0 in every sample.
-// - A secondary ray that escapes above the ENU horizon sees the sky cell it points
-//   into (L_ds, plus L_de with emission); one that escapes below it sees nothing (0):
-//   the world beyond the scene is not modelled.
+// - A ray that leaves the scene sees the world beyond it (world.hpp): above the ENU
+//   horizon the sky (L_ds, plus L_de with emission) interpolated between the .rad's
+//   cells, below it the background plane. A primary ray's miss is the renderer's.
 // - Radiance in W cm-2 sr-1 um-1, irradiance W cm-2 um-1, distances in scene units.
 #pragma once
 
@@ -25,7 +24,9 @@
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
 #include "trace/arena.hpp"
+#include "radiometry/sky_interpolation.hpp"
 #include "trace/render.hpp"
+#include "trace/world.hpp"
 
 namespace sigchain::trace {
 
@@ -49,6 +50,8 @@ struct TraceContext {
     // looked up once here so that no key string is built per hit.
     std::vector<std::vector<double>> temperatures_k;
     bool missing_temperature = false;
+    std::optional<radiometry::SkyInterpolator> sky;  // the sky between the .rad's cells
+    Background background;                           // below the horizon (world.hpp)
 };
 
 TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
@@ -139,6 +142,7 @@ private:
     std::optional<scene::Hit> along(const geo::Vec3& origin, const geo::Vec3& dir, double tnear,
                                     int depth, int transmissions, double* out, HitTruth* truth);
     void refine(const geo::Vec3& origin, const geo::Vec3& dir, scene::Hit& hit) const;
+    void add_world(const geo::Vec3& origin, const geo::Vec3& dir, double* out) const;
     void shade_one_bounce(const scene::Hit& hit, const radiometry::MaterialOptics& m,
                           const scene::FacetAttributes& a, const geo::Vec3& point,
                           const geo::Vec3& n, const geo::Vec3& wo, double* out);

@@ -342,6 +342,22 @@ band_bytes() {
     assert_equal "${stderr##*$'\n'}" "Try 'trace --help'."
 }
 
+@test "trace --background: mean by default, none, a material, and usage errors" {
+    run -0 --separate-stderr trace -v $(inputs) -o mean.img
+    [[ "$stderr" == *"background world: mean of the scene seen from above"* ]] ||
+        fail "stderr: $stderr"
+    [[ "$stderr" == *"primary sample(s) saw the sky"* ]] || fail "stderr: $stderr"
+    run -0 --separate-stderr trace -v --background none $(inputs) -o none.img
+    [[ "$stderr" == *"background world: none (--background none)"* ]] || fail "stderr: $stderr"
+    trace_bad 2 "--background: expected mean, none or a MATERIAL_ID, not 'grass'" $(inputs) \
+        -o out.img --background grass
+    trace_bad 1 "--background: material 999 is not in the material file" $(inputs) \
+        -o out.img --background 999
+    run -2 --separate-stderr trace --shadow-history --background none "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" -o out.shd
+    [[ "$stderr" == *"--background does not apply to --shadow-history"* ]] || fail "$stderr"
+}
+
 @test "trace leaves no temporary file when the output cannot be written" {
     trace_bad 1 "no_such_dir/out.img: cannot create" $(inputs) -o no_such_dir/out.img
     [ ! -e no_such_dir ]

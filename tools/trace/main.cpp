@@ -14,7 +14,7 @@ namespace {
 // trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
-                          "rows", "truth", "tmp"})
+                          "background", "rows", "truth", "tmp"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -63,6 +63,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
         job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
     if (vm.count("max-transmissions")) job.max_transmissions = vm["max-transmissions"].as<int>();
     if (vm.count("bounces")) job.bounces = vm["bounces"].as<int>();
+    if (vm.count("background")) job.background = vm["background"].as<std::string>();
     job.seed = cli::seed(vm);
     job.threads = cli::threads(vm);
     if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
@@ -101,6 +102,9 @@ int main(int argc, char** argv) {
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<int>()->value_name("N"),
         "1: hemisphere rays see other facets lit one bounce deep (default); 0: black")(
+        "background", cli::po::value<std::string>()->value_name("WHAT"),
+        "what rays below the horizon see beyond the scene: mean (of the scene seen\n"
+        "                    from above; default), none, or a MATERIAL_ID of the .mat")(
         "rows", cli::po::value<std::string>()->value_name("A:B"), "render rows A to B-1 only")(
         "truth", cli::po::value<std::string>()->value_name("FILE"),
         "also write the truth layers to FILE")("tmp",

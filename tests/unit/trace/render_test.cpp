@@ -504,7 +504,11 @@ TEST(Render, GolfballFurnaceIsExactForEveryLobe) {
     }
 }
 
-TEST(Render, MissesAreZero) {
+// A primary ray that misses the scene below the horizon meets the background plane
+// (world.hpp): the mean of the scene seen from above (here the plate, rho 0.3), lit
+// unshadowed, L_bg = rho (E_sun cos(30 deg) + pi L_sky) / pi, seen through the path
+// terms: tau2 L_bg + L_us. Float output: 1e-6 relative.
+TEST(Render, MissesBelowTheHorizonSeeTheBackground) {
     Mesh m;
     m.quad({{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}}, 1);
     scene::Scene s = single(m.data);
@@ -515,9 +519,87 @@ TEST(Render, MissesAreZero) {
     RenderOptions o;
     o.truth = true;
     RenderResult res = run(s, mats, atm, cam, o);
-    for (float v : res.radiance.data) EXPECT_EQ(v, 0.0f);
-    EXPECT_EQ(res.truth.at(0, 0, 0), 0.0f);
-    EXPECT_EQ(res.truth.at(3, 0, 0), -1.0f);
+    const double l_bg = 0.3 * (0.2 * std::cos(30 * kPi / 180) + kPi * 0.004) / kPi;
+    for (float v : res.radiance.data) EXPECT_NEAR(v, 0.9 * l_bg + 0.001, 1e-6 * v);
+    EXPECT_EQ(res.truth.at(0, 0, 0), 0.0f);   // hit
+    EXPECT_EQ(res.truth.at(3, 0, 0), -1.0f);  // facet
+    const auto names = truth_layer_names(atm.grid());
+    const int bg = static_cast<int>(std::find(names.begin(), names.end(), "background_fraction") -
+                                    names.begin());
+    EXPECT_EQ(res.truth.at(bg, 0, 0), 1.0f);
+    EXPECT_EQ(res.truth.at(bg - 1, 0, 0), 0.0f);  // sky_fraction
+    EXPECT_EQ(res.stats.background_samples, 4u);
+
+    o.background = BackgroundChoice::Material;  // the same material, named
+    o.background_material = 1;
+    RenderResult named = run(s, mats, atm, cam, o);
+    EXPECT_EQ(named.radiance.data, res.radiance.data);
+    o.background_material = 7;
+    EXPECT_THROW(run(s, mats, atm, cam, o), DataError);
+    o.background = BackgroundChoice::None;  // as before the background existed
+    RenderResult none = run(s, mats, atm, cam, o);
+    for (float v : none.radiance.data) EXPECT_EQ(v, 0.0f);
+}
+
+// A primary ray that leaves upward sees the effective sky (world.hpp): the ground's
+// sky (uniform 0.004) less the path radiance of the air below the sensor over its
+// transmittance, (0.004 - 0.001) / 0.9, never more than the ground's sky.
+TEST(Render, MissesAboveTheHorizonSeeTheEffectiveSky) {
+    Mesh m;
+    m.quad({{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto atm = atmosphere(30, 0.2, 0.004);
+    Ortho cam(2, 2, 10, 20, 20, {0, 0, 1});
+    RenderOptions o;
+    o.truth = true;
+    RenderResult res = run(s, mats, atm, cam, o);
+    for (float v : res.radiance.data) EXPECT_NEAR(v, (0.004 - 0.001) / 0.9, 1e-6 * v);
+    const auto names = truth_layer_names(atm.grid());
+    const int sky = static_cast<int>(std::find(names.begin(), names.end(), "sky_fraction") -
+                                     names.begin());
+    EXPECT_EQ(res.truth.at(sky, 0, 0), 1.0f);
+    EXPECT_EQ(res.stats.sky_samples, 4u);
+}
+
+// A camera 2 m above a plate looking north, from 30 deg below to 30 deg above the
+// horizon: no pixel is black (before the world beyond the scene, every ray above the
+// horizon and past the plate's edge saw 0).
+class Horizon final : public Sensor {
+    using Vec3 = geo::Vec3;
+
+public:
+    long rows() const override { return 12; }
+    long columns() const override { return 1; }
+    void ray(double row, double, Vec3& o, Vec3& d) const override {
+        const double elevation = (30 - 60 * row / 12) * kPi / 180;
+        o = {0, 0, 2};
+        d = {0, std::cos(elevation), std::sin(elevation)};
+    }
+    double view_angle_deg(const Vec3& d) const override {
+        return std::acos(std::clamp(-d[2], -1.0, 1.0)) * 180 / kPi;
+    }
+};
+
+TEST(Render, ALowCameraLookingAtTheHorizonSeesNoBlack) {
+    Mesh m;  // 20 m north: rays less than 5.7 deg below the horizon pass its edge
+    m.quad({{{-20, -20, 0}, {20, -20, 0}, {20, 20, 0}, {-20, 20, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    auto atm = atmosphere(30, 0.2, 0.004);
+    Horizon cam;
+    RenderOptions o;
+    o.truth = true;
+    RenderResult res = run(s, mats, atm, cam, o);
+    for (float v : res.radiance.data) {
+        EXPECT_GT(v, 0.0f);
+        EXPECT_TRUE(std::isfinite(v));
+    }
+    EXPECT_GT(res.stats.sky_samples, 0u);
+    EXPECT_GT(res.stats.background_samples, 0u);
+    EXPECT_GT(res.stats.hits, 0u);
 }
 
 }  // namespace

@@ -1,0 +1,96 @@
+// Four-neighbour interpolation of the downwelled sky (sky_interpolation.hpp).
+#include "radiometry/sky_interpolation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sigchain::radiometry {
+namespace {
+
+constexpr double kRadToDeg = 57.29577951308232;
+
+}  // namespace
+
+SkyInterpolator::SkyInterpolator(const Atmosphere& atmosphere) : m_atm(atmosphere) {
+    if (!m_atm.has_sky()) return;
+    const auto& cells = m_atm.sky_cells();
+    m_columns = 1;
+    while (m_columns < static_cast<int>(cells.size()) &&
+           cells[m_columns].zenith_deg == cells[0].zenith_deg)
+        ++m_columns;
+    m_rings = static_cast<int>(cells.size()) / m_columns;
+    for (int r = 0; r < m_rings; ++r) m_zenith_deg.push_back(cells[r * m_columns].zenith_deg);
+    for (int c = 0; c < m_columns; ++c) {
+        double a = std::fmod(cells[c].azimuth_deg, 360.0);
+        m_azimuth_deg.push_back(a < 0 ? a + 360 : a);
+    }
+    const std::size_t n = cells[0].scattered.size();
+    m_zenith_mean_scattered.assign(n, 0.0);
+    m_zenith_mean_emitted.assign(n, 0.0);
+    for (int c = 0; c < m_columns; ++c)
+        for (std::size_t k = 0; k < n; ++k) {
+            m_zenith_mean_scattered[k] += cells[c].scattered[k] / m_columns;
+            if (k < cells[c].emitted.size())
+                m_zenith_mean_emitted[k] += cells[c].emitted[k] / m_columns;
+        }
+}
+
+void SkyInterpolator::add_cell(int ring, int column, double w, std::span<double> out,
+                               bool emitted) const {
+    if (w == 0) return;
+    const SkyCell& cell = m_atm.sky_cells()[static_cast<std::size_t>(ring * m_columns + column)];
+    const std::size_t n = std::min(out.size(), cell.scattered.size());
+    if (emitted)
+        for (std::size_t k = 0; k < n; ++k) out[k] += w * (cell.scattered[k] + cell.emitted[k]);
+    else
+        for (std::size_t k = 0; k < n; ++k) out[k] += w * cell.scattered[k];
+}
+
+void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double> out,
+                          bool emitted) const {
+    if (m_rings == 0 || !(dir[2] > 0)) return;
+    const double zenith = std::acos(std::min(1.0, dir[2])) * kRadToDeg;
+    double azimuth = std::atan2(dir[0], dir[1]) * kRadToDeg;  // clockwise from north
+    if (azimuth < 0) azimuth += 360;
+
+    // Rings: r0 below, r1 above, f the fraction toward r1; above the first centre the
+    // zenith mean takes the place of a ring at zenith 0.
+    int r0 = 0, r1 = 0;
+    double f = 0, top = 0;  // top: weight of the zenith mean
+    if (zenith < m_zenith_deg[0]) {
+        top = m_zenith_deg[0] > 0 ? 1 - zenith / m_zenith_deg[0] : 0;
+    } else if (zenith >= m_zenith_deg.back()) {
+        r0 = r1 = m_rings - 1;
+    } else {
+        auto it = std::upper_bound(m_zenith_deg.begin(), m_zenith_deg.end(), zenith);
+        r1 = static_cast<int>(it - m_zenith_deg.begin());
+        r0 = r1 - 1;
+        f = (zenith - m_zenith_deg[r0]) / (m_zenith_deg[r1] - m_zenith_deg[r0]);
+    }
+    // Columns: c0 at or before the azimuth, c1 after it, periodic.
+    int c0 = 0, c1 = 0;
+    double g = 0;
+    if (m_columns > 1) {
+        auto it = std::upper_bound(m_azimuth_deg.begin(), m_azimuth_deg.end(), azimuth);
+        c1 = static_cast<int>(it - m_azimuth_deg.begin()) % m_columns;
+        c0 = (c1 + m_columns - 1) % m_columns;
+        double a0 = m_azimuth_deg[c0], a1 = m_azimuth_deg[c1];
+        double span = a1 - a0, off = azimuth - a0;
+        if (span <= 0) span += 360;
+        if (off < 0) off += 360;
+        g = off / span;
+    }
+    const double w = weight * (1 - top);
+    add_cell(r0, c0, w * (1 - f) * (1 - g), out, emitted);
+    add_cell(r0, c1, w * (1 - f) * g, out, emitted);
+    add_cell(r1, c0, w * f * (1 - g), out, emitted);
+    add_cell(r1, c1, w * f * g, out, emitted);
+    if (top > 0) {
+        const double t = weight * top;
+        const std::size_t n = std::min(out.size(), m_zenith_mean_scattered.size());
+        for (std::size_t k = 0; k < n; ++k)
+            out[k] += t * (m_zenith_mean_scattered[k] + (emitted ? m_zenith_mean_emitted[k] : 0));
+    }
+}
+
+}  // namespace sigchain::radiometry

@@ -1,0 +1,128 @@
+// The world beyond the scene: background plane and effective sky (world.hpp).
+#include "trace/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "rt/planck.hpp"
+#include "trace/tracer.hpp"
+
+namespace sigchain::trace {
+namespace {
+
+using geo::Vec3;
+
+constexpr int kGrid = 64;  // vertical rays per side over the scene's bounding box
+
+// Mean nadir reflectance (and temperature) of what the scene shows from above: the
+// first hit of kGrid x kGrid vertical rays at the centres of a regular grid over the
+// bounding box. Returns the number of rays that hit.
+int mean_from_above(const TraceContext& c, std::vector<double>& rho, double& temperature_k) {
+    const scene::Scene& sc = *c.in.scene;
+    const scene::Bounds b = sc.bounds();
+    rho.assign(c.n, 0.0);
+    temperature_k = -1;
+    if (b.empty()) return 0;
+    std::vector<double> r(c.n);
+    int hits = 0, warm = 0;
+    double t_sum = 0;
+    const double top = b.upper[2] + 1 + std::abs(b.upper[2] - b.lower[2]);
+    for (int i = 0; i < kGrid; ++i)
+        for (int j = 0; j < kGrid; ++j) {
+            const double x = b.lower[0] + (i + 0.5) / kGrid * (b.upper[0] - b.lower[0]);
+            const double y = b.lower[1] + (j + 0.5) / kGrid * (b.upper[1] - b.lower[1]);
+            auto hit = sc.intersect({x, y, top}, {0, 0, -1});
+            if (!hit) continue;
+            const auto& a = sc.attributes(*hit);
+            const auto& m = facet_material(*c.in.materials, a, sc.origin(*hit));
+            const double thickness = a.thickness_cm >= 0 ? a.thickness_cm : m.thickness_cm;
+            m.reflectance(m.curve_at(x, y, static_cast<int>(a.texture_curve)), 0.0, thickness, r);
+            for (std::size_t k = 0; k < c.n; ++k) rho[k] += r[k];
+            ++hits;
+            if (c.emission) {
+                const double t = c.temperatures_k[hit->object][hit->facet];
+                if (t > 0) t_sum += t, ++warm;
+            }
+        }
+    if (hits > 0)
+        for (double& v : rho) v /= hits;
+    if (warm > 0) temperature_k = t_sum / warm;
+    return hits;
+}
+
+// The material --background ID names, at nadir, curve 0 (its own).
+void from_material(const TraceContext& c, std::vector<double>& rho) {
+    const long id = c.opt.background_material;
+    const radiometry::MaterialOptics* m = c.in.materials->find(id);
+    if (!m)
+        throw DataError({"--background", 0},
+                        "material " + std::to_string(id) + " is not in the material file");
+    rho.assign(c.n, 0.0);
+    m->reflectance(0, 0.0, m->thickness_cm, rho);
+}
+
+}  // namespace
+
+Background make_background(const TraceContext& c) {
+    Background bg;
+    if (c.opt.background == BackgroundChoice::None) {
+        bg.description = "background world: none (--background none): rays below the horizon see 0";
+        return bg;
+    }
+    const scene::Bounds b = c.in.scene->bounds();
+    bg.height = b.empty() ? 0.0 : b.lower[2];
+    if (c.opt.background == BackgroundChoice::Material) {
+        from_material(c, bg.reflectance);
+        bg.description = "background world: material " + std::to_string(c.opt.background_material);
+        if (c.emission) {  // the scene's own mean temperature: the .mat has none
+            std::vector<double> unused;
+            mean_from_above(c, unused, bg.temperature_k);
+        }
+    } else {
+        const int hits = mean_from_above(c, bg.reflectance, bg.temperature_k);
+        if (hits == 0) {
+            bg.description = "background world: none (nothing seen from above the scene)";
+            return bg;
+        }
+        bg.description = "background world: mean of the scene seen from above (" +
+                         std::to_string(hits) + " of " + std::to_string(kGrid * kGrid) +
+                         " vertical rays)";
+    }
+    bg.enabled = true;
+    char z[64];
+    std::snprintf(z, sizeof z, " at height %g", bg.height);
+    bg.description += z;
+    // Lambertian, unshadowed: rho (E_sun cos(sun zenith) + E_sky) / pi + (1 - rho) B(T).
+    const double cos_sun = c.sun_up ? std::max(0.0, c.sun[2]) : 0.0;
+    const auto& wl = c.in.atmosphere->grid().wavelength_um;
+    bg.radiance.assign(c.n, 0.0);
+    for (std::size_t k = 0; k < c.n; ++k) {
+        bg.radiance[k] = bg.reflectance[k] * (c.sun_e[k] * cos_sun + c.sky_e[k]) / kPi;
+        if (c.emission && bg.temperature_k > 0)
+            bg.radiance[k] += (1 - bg.reflectance[k]) * rt::planck_radiance(wl[k], bg.temperature_k);
+    }
+    return bg;
+}
+
+double background_distance(const Background& b, const Vec3& origin, const Vec3& dir) {
+    if (!b.enabled || !(dir[2] < 0)) return -1;
+    return (origin[2] - b.height) / -dir[2];
+}
+
+void effective_sky(const TraceContext& c, const Sensor& sensor, const Vec3& dir, double* out,
+                   double* tau2, double* lus, double* lue) {
+    const std::size_t n = c.n;
+    std::fill(out, out + n, 0.0);
+    c.sky->add(dir, 1.0, {out, n}, c.emission);  // the sky at the ground
+    const Vec3 down{dir[0], dir[1], -dir[2]};
+    c.in.atmosphere->path(down, sensor.view_angle_deg(down), {tau2, n}, {lus, n}, {lue, n});
+    for (std::size_t k = 0; k < n; ++k) {
+        const double path = lus[k] + (c.emission ? lue[k] : 0.0);
+        const double above = tau2[k] > 0 ? std::max(0.0, out[k] - path) / tau2[k] : out[k];
+        out[k] = std::min(out[k], above);
+    }
+}
+
+}  // namespace sigchain::trace
