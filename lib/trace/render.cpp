@@ -177,7 +177,9 @@ std::vector<std::string> skipped(const TraceContext& c) {
     for (const auto& m : c.in.materials->materials()) lobes |= specularity_of(m) > 0;
     if (!lobes) out.push_back("specular lobes (every specularity is 0)");
     if (!c.in.atmosphere->has_sky()) out.push_back("downwelled sky (no sky in the .rad)");
-    if (c.opt.bounces > 1) out.push_back("bounces beyond 1 (secondary hits are one bounce deep)");
+    if (c.opt.bounces >= 1)
+        out.push_back("bounces beyond " + std::to_string(c.opt.bounces) +
+                      " (the last is closed with the sun and an unobstructed sky)");
     if (c.opt.bounces == 0) out.push_back("light from neighbouring facets (bounces 0)");
     return out;
 }

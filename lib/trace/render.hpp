@@ -19,6 +19,8 @@ namespace sigchain::trace {
 
 enum class Sampling { Dirsig, Golfball, MonteCarlo };
 
+inline constexpr int kMaxBounces = 64;  // --bounces
+
 // What rays that leave the scene below the horizon see (world.hpp): the mean of the
 // scene seen from above, one material of the .mat, or nothing.
 enum class BackgroundChoice { Mean, Material, None };
@@ -32,8 +34,10 @@ struct RenderOptions {
     // with samples_per_pixel; off = the seed's fixed pattern.
     bool golfball_jitter = false;
     int max_transmissions = 8;         // transmissive facets followed per ray
-    int bounces = 1;                   // secondary hits take the other facet's radiance one
-                                       // bounce deep (White (1996), section 5.2.3 step 4)
+    // Secondary hits followed: at depth d < bounces a hit is shaded with its own
+    // one-ray hemisphere estimate (a path), at depth = bounces it is closed with the
+    // sun and an unobstructed sky (White (1996), section 5.2.3 step 4); 0: black.
+    int bounces = 1;
     std::uint64_t seed = 1;            // results depend only on seed (not on threads)
     unsigned threads = 0;              // 0: all cores
     long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row

@@ -154,8 +154,8 @@ void check_job(const TraceJob& job) {
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)
         throw UsageError("--max-transmissions: expected 0 or more");
-    if (job.bounces && (*job.bounces < 0 || *job.bounces > 1))
-        throw UsageError("--bounces: expected 0 or 1");
+    if (job.bounces && (*job.bounces < 0 || *job.bounces > kMaxBounces))
+        throw UsageError("--bounces: expected 0 to " + std::to_string(kMaxBounces));
     if (job.rows && (job.rows->first < 0 || job.rows->second <= job.rows->first))
         throw UsageError("--rows: expected 0 <= A < B");
 }

@@ -29,7 +29,7 @@ struct TraceJob {
     std::optional<long> hemisphere_samples;  // default: RenderOptions's
     std::optional<int> max_transmissions;    // default: RenderOptions's
     bool golfball_jitter = false;            // golfball: each cell's ray at random inside the cell
-    std::optional<int> bounces;              // 0 or 1; default: RenderOptions's (1)
+    std::optional<int> bounces;              // 0 to kMaxBounces; default: RenderOptions's
     std::string background = "mean";        // "mean", "none" or a MATERIAL_ID (world.hpp)
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores

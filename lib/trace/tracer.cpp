@@ -119,7 +119,9 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
     Vec3 wo = geo::scale(dir, -1);
     if (depth == 0)
         shade_full(*hit, m, a, point, n, wo, out, truth);
-    else if (m_c.opt.bounces >= 1)
+    else if (depth < m_c.opt.bounces)
+        shade_path(*hit, m, a, point, n, wo, depth, out);
+    else if (depth == m_c.opt.bounces)
         shade_one_bounce(*hit, m, a, point, n, wo, out);
     if (m.transmissive && transmissions < m_c.opt.max_transmissions) {
         ArenaScope scope(m_arena);
@@ -212,6 +214,63 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
                 w += s * m.brdf.lobe_weight(f.to_local(m_c.sun), f.to_local(wo));
             }
             for (std::size_t k = 0; k < m_c.n; ++k) in[k] += w * m_c.sun_e[k] * vis[k];
+        }
+    }
+    for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * in[k];
+    if (m_c.emission) add_emission(m, curve, theta_o, temperature_k(hit), out);
+}
+
+// Secondary hit B at depth d < bounces, shaded with its own hemisphere estimate: the
+// sun by a shadow ray, as in shade_one_bounce, and the rest of the hemisphere by one
+// ray drawn from B's w (Brdf::sample; delta lobes: a cosine ray for the diffuse part
+// and the mirror ray), followed to depth d + 1 (Kajiya 1986, JSIGGRAPH 20(4) 143: one
+// path per hit, f/pdf weights). From depth 2 on the path continues with probability
+// q = max rho_B (Russian roulette, its weight divided by q: unbiased).
+void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
+                        const scene::FacetAttributes& a, const Vec3& point, const Vec3& n,
+                        const Vec3& wo, int depth, double* out) {
+    ArenaScope scope(m_arena);
+    double* rho = m_arena.take();
+    double* in = m_arena.take();
+    double* li = m_arena.take();
+    std::fill(in, in + m_c.n, 0.0);
+    FacetFrame f(n);
+    const Vec3 wo_l = f.to_local(wo);
+    const double theta_o = std::acos(std::clamp(wo_l[2], 0.0, 1.0)) * kDeg;
+    const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
+    m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    const Vec3 p = geo::add(point, geo::scale(n, m_c.eps));
+    const double s = specularity_of(m);
+    const double cos_sun = geo::dot(n, m_c.sun);
+    if (m_c.sun_up && cos_sun > 0) {
+        double* vis = m_arena.take();
+        if (sun_visibility(p, vis) > 0) {
+            double w = (1 - s) * cos_sun / kPi;
+            if (has_lobe(m)) w += s * m.brdf.lobe_weight(f.to_local(m_c.sun), wo_l);
+            for (std::size_t k = 0; k < m_c.n; ++k) in[k] += w * m_c.sun_e[k] * vis[k];
+        }
+    }
+    double q = 1;
+    if (depth >= 2) q = std::min(1.0, *std::max_element(rho, rho + m_c.n));
+    if (q > 0 && (q >= 1 || uniform() < q)) {
+        const bool delta = !has_lobe(m);  // lambertian or a mirror lobe: cosine samples
+        const double u1 = uniform(), u2 = uniform(), u3 = uniform();
+        const Vec3 d_l = m.brdf.sample(wo_l, delta ? 0.0 : s, u1, u2, u3).wi;
+        if (d_l[2] > 0) {
+            const double pdf = m.brdf.pdf(d_l, wo_l, delta ? 0.0 : s);
+            const double fw = delta ? (1 - s) * d_l[2] / kPi : m.brdf.weight(d_l, wo_l, s);
+            if (pdf > 0) {
+                std::fill(li, li + m_c.n, 0.0);
+                ++m_counters.secondary;
+                along(p, f.to_world(d_l), 0.0, depth + 1, 0, li, nullptr);
+                for (std::size_t k = 0; k < m_c.n; ++k) in[k] += fw / pdf / q * li[k];
+            }
+        }
+        if (has_delta(m)) {
+            std::fill(li, li + m_c.n, 0.0);
+            ++m_counters.secondary;
+            along(p, f.to_world(radiometry::mirror(wo_l)), 0.0, depth + 1, 0, li, nullptr);
+            for (std::size_t k = 0; k < m_c.n; ++k) in[k] += s / q * li[k];
         }
     }
     for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * in[k];

@@ -146,6 +146,9 @@ private:
     void shade_one_bounce(const scene::Hit& hit, const radiometry::MaterialOptics& m,
                           const scene::FacetAttributes& a, const geo::Vec3& point,
                           const geo::Vec3& n, const geo::Vec3& wo, double* out);
+    void shade_path(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                    const scene::FacetAttributes& a, const geo::Vec3& point, const geo::Vec3& n,
+                    const geo::Vec3& wo, int depth, double* out);
     void shade_full(const scene::Hit& hit, const radiometry::MaterialOptics& m,
                     const scene::FacetAttributes& a, const geo::Vec3& point, const geo::Vec3& n,
                     const geo::Vec3& wo, double* out, HitTruth* truth);

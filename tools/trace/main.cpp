@@ -101,7 +101,8 @@ int main(int argc, char** argv) {
         "transmissive facets followed per ray (default 8)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<int>()->value_name("N"),
-        "1: hemisphere rays see other facets lit one bounce deep (default); 0: black")(
+        "secondary hits followed (default 1: lit by the sun and an open sky;\n"
+        "                    N > 1: paths N hits deep; 0: other facets are black)")(
         "background", cli::po::value<std::string>()->value_name("WHAT"),
         "what rays below the horizon see beyond the scene: mean (of the scene seen\n"
         "                    from above; default), none, or a MATERIAL_ID of the .mat")(
