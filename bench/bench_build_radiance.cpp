@@ -37,7 +37,7 @@ double seconds_for(const sigchain::io::Cdk& deck, const sigchain::io::Snd& snd, 
 
 int main() {
     const auto deck = sigchain::io::read_cdk_file(kSource + "/tests/golden/control7/hawkeye.cdk");
-    auto snd = sigchain::io::read_snd_file(kSource + "/tests/data/seed/hawkeye.snd");
+    auto snd = sigchain::io::read_snd_file(kSource + "/tests/data/white1996/hawkeye.snd");
     long samples = 0;
     for (const auto& b : snd.bands) samples += b.sample_count();
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());

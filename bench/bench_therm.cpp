@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const std::string seed = SIGCHAIN_SOURCE_DIR "/tests/data/seed/";
+    const std::string seed = SIGCHAIN_SOURCE_DIR "/tests/data/white1996/";
     const io::Snd snd = io::read_snd_file(seed + "hawkeye.snd");
     const io::Wth wth = io::read_wth_file(seed + "weather_30_Sep_95.wth");
 

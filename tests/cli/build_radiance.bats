@@ -1,7 +1,7 @@
 #!/usr/bin/env bats
 # Tests: build_radiance
 # Also requires: tests/data/build_radiance/{small.snd,rural23.cdk},
-# tests/golden/control7/hawkeye.cdk (the seed's Hawkeye deck), tests/data/seed/hawkeye.snd,
+# tests/golden/control7/hawkeye.cdk (the seed's Hawkeye deck), tests/data/white1996/hawkeye.snd,
 # data/atmosphere/ (reference data)
 load test_helper
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bats
 # Tests: control7
-# Also requires: tests/data/control7/*.answers, tests/data/seed/30Sep95800L.rsd,
-# tests/data/seed/flyover.cdk, tests/golden/control7/*.cdk
+# Also requires: tests/data/control7/*.answers, tests/data/white1996/30Sep95800L.rsd,
+# tests/data/white1996/flyover.cdk, tests/golden/control7/*.cdk
 load test_helper
 
 ANSWERS="$SIGCHAIN_SOURCE_DIR/tests/data/control7"

@@ -1,5 +1,5 @@
 # Tests: sigchain-check (formats .cdk .wth)
-# Also requires: tests/data/seed/flyover.cdk, tests/data/seed/weather_30_Sep_95.wth,
+# Also requires: tests/data/white1996/flyover.cdk, tests/data/white1996/weather_30_Sep_95.wth,
 #   tests/data/bad/cdk/, tests/data/bad/wth/, tests/golden/sigchain-check/ (lowtran_messy.*,
 #   weather_fixed.*, weather_spaced.*)
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # Tests: sigchain-check (formats .adv .snd .rsd .sen .cpt .tmp)
-# Also requires: tests/data/seed, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp},
+# Also requires: tests/data/white1996, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp},
 # tests/golden/sigchain-check (the canonical rewrites of the seed samples)
 
 load test_helper

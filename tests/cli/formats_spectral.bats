@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # Tests: sigchain-check (formats .rad .ems .ext)
-# Also requires: tests/data/seed, tests/data/bad/{rad,ems,ext},
+# Also requires: tests/data/white1996, tests/data/bad/{rad,ems,ext},
 # tests/golden/sigchain-check (the canonical rewrites of the samples)
 
 load test_helper

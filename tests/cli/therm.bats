@@ -1,7 +1,7 @@
 # Tests: therm
 # Also requires: sigchain-check
 #
-# therm on the seed's training scene: tests/data/seed/box_on_plane.gdb with its
+# therm on the seed's training scene: tests/data/white1996/box_on_plane.gdb with its
 # hand-built box_on_plane.shd, the seed's Rochester weather (weather_30_Sep_95.wth) and
 # scene node (hawkeye.snd), and tests/data/therm/box_on_plane.mat (the seed's .mat has
 # grass only; the box is wood, material 37).

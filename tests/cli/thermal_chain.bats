@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # Tests: trace therm build_radiance (the thermal chain of issue 6, end to end)
-# Also requires: tests/data/seed/{box_on_plane.gdb,weather_30_Sep_95.wth,fall_grass.ems},
+# Also requires: tests/data/white1996/{box_on_plane.gdb,weather_30_Sep_95.wth,fall_grass.ems},
 # tests/data/therm/box_on_plane.mat, tests/golden/control7/hawkeye.cdk,
 # data/demo/{box256.adv,lwir.snd}
 #

@@ -176,7 +176,7 @@ TEST(AtmosAerosol, SeedFlyoverDeck) {
     // level (1.1416) and that column with the elevated ground's 3.6 % compression of the
     // lower 6 km (GNDALT 0.218: factor 5.782/6).
     const auto run =
-        io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/data/seed/flyover.cdk").runs.at(0);
+        io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/data/white1996/flyover.cdk").runs.at(0);
     const Profile p = profile_from_deck(run, kData);
     const auto m = AerosolModel::from_deck(run.card2, p, kData);
     EXPECT_DOUBLE_EQ(m.visibility_km(), 5);

@@ -11,7 +11,7 @@ using namespace sigchain::atmos;
 
 namespace {
 
-const std::string kRsd = SIGCHAIN_TEST_DATA "/seed/30Sep95800L.rsd";
+const std::string kRsd = SIGCHAIN_TEST_DATA "/white1996/30Sep95800L.rsd";
 
 std::string file_text(const std::string& path) {
     std::ifstream in(path);
@@ -67,7 +67,7 @@ TEST(Control7, SeedAnswersReproduceTheSeedDeck) {
     EXPECT_EQ(r.deck_path, "flyover.cdk");
     EXPECT_TRUE(r.unused_overrides.empty());
     const auto got = lines_of(deck_of(r.cdk));
-    const auto seed = lines_of(file_text(SIGCHAIN_TEST_DATA "/seed/flyover.cdk"));
+    const auto seed = lines_of(file_text(SIGCHAIN_TEST_DATA "/white1996/flyover.cdk"));
     ASSERT_EQ(got.size(), seed.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
         SCOPED_TRACE("line " + std::to_string(i + 1));

@@ -13,7 +13,7 @@ using namespace sigchain::io;
 
 namespace {
 
-const std::string kSeedPath = SIGCHAIN_TEST_DATA "/seed/flyover.cdk";
+const std::string kSeedPath = SIGCHAIN_TEST_DATA "/white1996/flyover.cdk";
 
 std::string seed_text() {
     std::ifstream in(kSeedPath);

@@ -52,7 +52,7 @@ std::string written(const Ext& ext) {
 }  // namespace
 
 TEST(Ext, ExampleCanopyParses) {
-    Ext e = read_ext_file(SIGCHAIN_TEST_DATA "/seed/tree_canopy.ext");
+    Ext e = read_ext_file(SIGCHAIN_TEST_DATA "/white1996/tree_canopy.ext");
     ASSERT_EQ(e.curves.size(), 2u);
     EXPECT_EQ(e.curves[0].wavelength_um.size(), 8u);
     EXPECT_EQ(e.curves[0].wavelength_um.front(), 0.40);

@@ -15,7 +15,7 @@
 namespace sigchain::radiometry {
 namespace {
 
-const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/seed/";
+const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/white1996/";
 
 SpectralGrid grid_of(std::vector<double> wavelengths_um) {
     SpectralGrid g;

@@ -36,9 +36,9 @@ th::FacetThermal aluminium_plate() {
 
 // The seed's Rochester day (weather_30_Sep_95.wth, hawkeye.snd), sampled every minute.
 std::vector<th::EnvironmentStep> seed_day(double start_h, double end_h) {
-    const std::string wth_path = SIGCHAIN_TEST_DATA "/seed/weather_30_Sep_95.wth";
+    const std::string wth_path = SIGCHAIN_TEST_DATA "/white1996/weather_30_Sep_95.wth";
     io::Wth wth = io::read_wth_file(wth_path);
-    io::Snd snd = io::read_snd_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.snd");
+    io::Snd snd = io::read_snd_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd");
     return th::sample_environment(wth, wth_path, snd, start_h, end_h, 60, nullptr);
 }
 

@@ -18,7 +18,7 @@ namespace io = sigchain::io;
 
 namespace {
 
-const std::string kSeed = SIGCHAIN_TEST_DATA "/seed/";
+const std::string kSeed = SIGCHAIN_TEST_DATA "/white1996/";
 const std::string kTherm = SIGCHAIN_TEST_DATA "/therm/";
 
 th::ThermJob seed_job() {

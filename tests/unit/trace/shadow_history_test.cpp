@@ -29,7 +29,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 using test::Mesh;
 
-const std::string kSnd = SIGCHAIN_TEST_DATA "/seed/hawkeye.snd";
+const std::string kSnd = SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd";
 
 radiometry::MaterialLibrary grey(std::size_t samples = 3) {
     return radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, samples)});
@@ -262,7 +262,7 @@ TEST(ShadowHistory, KeysAndNormalsAgreeWithThermsSceneReader) {
     // and facing sides must be the ones therm reads, including the turned and the
     // stretched instance.
     for (const std::string path :
-         {SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb", SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb",
+         {SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb", SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb",
           SIGCHAIN_TEST_DATA "/shadow/facing.gdb"}) {
         const ShadowScene sc = load_shadow_scene(path, 1.0, false);
         const auto therm = thermal::read_scene_facets(path);
@@ -297,7 +297,7 @@ TEST(ShadowHistory, SceneIsTheOneLoadSceneBuilds) {
     // load_shadow_scene re-assembles the .odb to keep each facet's triangles; the traced
     // scene must be load_scene's: the same placements, facets (in order, by key),
     // triangles and bounds (the .odb's stretched instance is twice as tall).
-    const std::string path = SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb";
+    const std::string path = SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb";
     scene::LoadOptions lo;
     const scene::Scene ref = scene::load_scene(path, lo);
     const ShadowScene sc = load_shadow_scene(path, 1.0, false);
