@@ -19,7 +19,7 @@ check_golden() {
 }
 
 # --- .mat: good input ---------------------------------------------------------
-@test "mat: the seed sample (fig. 4.34) is valid" {
+@test "mat: the sample of White (1996), fig. 4.34, is valid" {
     run -0 --separate-stderr sigchain-check "$SEED/hawkeye.mat"
     assert_output "$SEED/hawkeye.mat: ok: 1 material"
     assert_equal "$stderr" ''

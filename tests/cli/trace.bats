@@ -372,7 +372,7 @@ band_bytes() {
     trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces -1 -o out.img
 }
 
-# --- trace --shadow-history (issue 6): the sun/shadow history therm reads ---------------
+# --- trace --shadow-history: the sun/shadow history therm reads --------------------------
 
 SHADOW="$SIGCHAIN_SOURCE_DIR/tests/data/shadow"
 

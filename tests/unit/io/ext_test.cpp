@@ -71,7 +71,7 @@ TEST(Ext, ExtinctionIsLinearInWavelengthAndClamped) {
 }
 
 TEST(Ext, TransmittanceFollowsBeerLambertOverTheSlantPath) {
-    // DESIGN.md section 3: t = exp(-k d / |cos theta|).
+    // ext(5): t = exp(-k d / |cos theta|).
     EXPECT_DOUBLE_EQ(transmittance(500, 0.002, 1), std::exp(-1.0));
     EXPECT_DOUBLE_EQ(transmittance(500, 0.002, 0.5), std::exp(-2.0));
     EXPECT_DOUBLE_EQ(transmittance(500, 0.002, -0.5), std::exp(-2.0));  // from the back side

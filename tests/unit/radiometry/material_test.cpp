@@ -1,4 +1,4 @@
-// MaterialLibrary and MaterialOptics: loading the seed's .mat/.ems, models, transmission,
+// MaterialLibrary and MaterialOptics: loading the .mat/.ems of White (1996), models, transmission,
 // errors naming the .mat line, and the reflectance/fall-off/transmittance formulas.
 #include "radiometry/material.hpp"
 

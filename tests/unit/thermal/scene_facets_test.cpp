@@ -64,10 +64,11 @@ TEST(SceneFacets, GdbKeysNormalsAndOverrides) {
     EXPECT_EQ(top.where.line, 44);
 }
 
-// The seed's neighbourhood.odb places box_on_plane.gdb three times: as built, turned a
-// quarter turn counter-clockwise about z (the south wall then faces east: Rz(90)
-// maps (0,-1,0) to (1,0,0)), and stretched x2 in z (normals of the walls and the top
-// keep their directions: the inverse transpose of diag(1,1,2) is diag(1,1,0.5)).
+// tests/data/white1996/neighbourhood.odb places box_on_plane.gdb three times: as built,
+// turned a quarter turn counter-clockwise about z (the south wall then faces east:
+// Rz(90) maps (0,-1,0) to (1,0,0)), and stretched x2 in z (normals of the walls and
+// the top keep their directions: the inverse transpose of diag(1,1,2) is
+// diag(1,1,0.5)).
 TEST(SceneFacets, OdbPlacementsPrefixKeysAndTurnNormals) {
     auto facets = th::read_scene_facets(SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb");
     ASSERT_EQ(facets.size(), 18u);

@@ -1,7 +1,7 @@
 // trace --shadow-history (shadow_history.hpp): the time grid and SPA sun against therm's
 // clock and lib/geo; sunlit fractions, transmittances and sky-view factors against
-// geometry worked by hand; key agreement with therm's scene reader; and (issue 6,
-// trace's emissive part) a blackbody plate rendered through tau2 = 1.
+// geometry worked by hand; key agreement with therm's scene reader; and (the thermal
+// chain, trace's emissive part) a blackbody plate rendered through tau2 = 1.
 #include "trace/shadow_history.hpp"
 
 #include <gtest/gtest.h>
@@ -322,7 +322,7 @@ TEST(ShadowHistory, SceneIsTheOneLoadSceneBuilds) {
 }
 
 TEST(RenderEmission, BlackbodyPlateThroughUnitTransmissionGivesPlanck) {
-    // Issue 6: a blackbody plate (emissivity 1) at 300 K, no sun, no sky, tau2 = 1 and
+    // Thermal chain: a blackbody plate (emissivity 1) at 300 K, no sun, no sky, tau2 = 1 and
     // no path radiance: every thermal sample is B(lambda, 300 K). Reference: Planck's
     // law with CODATA 2018 h, c, k written out here (1 W m-2 sr-1 m-1 = 1e-10 W cm-2
     // sr-1 um-1); and B(10 um, 300 K) = 9.924 W m-2 sr-1 um-1 (tabulated). Tolerance:
