@@ -29,8 +29,8 @@ man: deps configure
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
-# The main job: the Olinda scene against the real Landsat-7 image, then the seed's
-# sample files and the training scene (scripts/demo).
+# The main job: the Olinda scene against the real Landsat-7 image, then the sample
+# files of White (1996) and the training scene (scripts/demo).
 demo: build
 	@scripts/demo $(BUILD)
 

@@ -1,8 +1,8 @@
-// bench_build_radiance: wall time of the seed's Hawkeye tables (the seed's deck, as
+// bench_build_radiance: wall time of the Hawkeye tables of White (1996) (its deck, as
 // control7 writes it, and scene node: three DCS 420 bands of 41 samples over
 // 14400-25000 cm-1, 156 view angles, a 18 x 36 sky), on one thread and on every core;
 // then tau1, L_us (nadir) and L_ds (zenith cell and the diffuse irradiance) at 0.45,
-// 0.55 and 0.65 um for the same deck. Issue 3's target: under 2 s on one core.
+// 0.55 and 0.65 um for the same deck. The target: under 2 s on one core.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -37,7 +37,7 @@ double seconds_for(const sigchain::io::Cdk& deck, const sigchain::io::Snd& snd, 
 
 int main() {
     const auto deck = sigchain::io::read_cdk_file(kSource + "/tests/golden/control7/hawkeye.cdk");
-    auto snd = sigchain::io::read_snd_file(kSource + "/tests/data/seed/hawkeye.snd");
+    auto snd = sigchain::io::read_snd_file(kSource + "/tests/data/white1996/hawkeye.snd");
     long samples = 0;
     for (const auto& b : snd.bands) samples += b.sample_count();
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -47,7 +47,7 @@ int main() {
     std::printf("  1 thread : %.3f s (best of 3; target < 2 s)\n", seconds_for(deck, snd, 1, 3));
     std::printf("  %u threads: %.3f s (best of 3)\n", cores, seconds_for(deck, snd, cores, 3));
 
-    // The three wavelengths of the closing note, one sample each, nadir only.
+    // The three wavelengths of README.md's Hawkeye table, one sample each, nadir only.
     snd.bands.clear();
     for (double um : {0.45, 0.55, 0.65}) {
         const double nu = 1e4 / um;

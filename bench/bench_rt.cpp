@@ -1,8 +1,8 @@
 // bench_rt: the discrete-ordinate solver on build_radiance's typical call: 35 layers,
 // 16 streams, Rayleigh + Henyey-Greenstein moments (64), 110 user cosines, 2 depths,
-// 40 azimuths, beam on. Issue 3 asks for a few ms per call (about 125 calls per scene).
+// 40 azimuths, beam on. The target is a few ms per call (about 125 calls per scene).
 // CPU time on the development machine (AMD EPYC, x86-64 baseline, no -march): 3.1 / 10.8 /
-// 68 ms for 8 / 16 / 32 streams before the speed work of issue 3, 2.1 / 8.0 / 52 ms after.
+// 68 ms for 8 / 16 / 32 streams before the solver's speed work, 2.1 / 8.0 / 52 ms after.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

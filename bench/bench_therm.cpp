@@ -1,9 +1,9 @@
-// Benchmark of the thermal chain (issue 6 "run time for the benchmark scene of the
-// trace issue"): the scene of bench_trace (trace_bench_scene.hpp: a 1001 x 1001-vertex
-// terrain in 100 block facets and 3000 instanced trees of 2 facets, 6100 facets) gets
-// a 24 h shadow history at 15 min (trace --shadow-history's library call) under the
-// seed's Hawkeye scene node, then therm's facet model on every facet with the seed's
-// 30 Sep 1995 weather. Each stage is timed on 1 thread and on all cores.
+// Benchmark of the thermal chain (its run time on trace's benchmark scene): the scene
+// of bench_trace (trace_bench_scene.hpp: a 1001 x 1001-vertex terrain in 100 block
+// facets and 3000 instanced trees of 2 facets, 6100 facets) gets a 24 h shadow history
+// at 15 min (trace --shadow-history's library call) under the Hawkeye scene node of
+// White (1996), then therm's facet model on every facet with the 30 Sep 1995 weather
+// of White (1996). Each stage is timed on 1 thread and on all cores.
 //
 // A plain program (not Google Benchmark): one long run, not repeated timings.
 // Usage: bench_therm [VERTICES_PER_SIDE [TREES [THERM_FACETS_ON_1_THREAD [POINTS]]]]
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const std::string seed = SIGCHAIN_SOURCE_DIR "/tests/data/seed/";
+    const std::string seed = SIGCHAIN_SOURCE_DIR "/tests/data/white1996/";
     const io::Snd snd = io::read_snd_file(seed + "hawkeye.snd");
     const io::Wth wth = io::read_wth_file(seed + "weather_30_Sep_95.wth");
 

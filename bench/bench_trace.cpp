@@ -1,4 +1,4 @@
-// Benchmark of trace's render() (issue 4 "Benchmark"): a generated scene of a
+// Benchmark of trace's render(): a generated scene of a
 // 1001 x 1001-vertex terrain (2 million triangles) and 3000 instanced trees, a 512 x
 // 512 frame camera, golfball sampling, 3 bands x 7 spectral samples. Prints the total
 // time, the rays cast, Mrays/s, the Mrays/s of a bare Embree loop casting the same

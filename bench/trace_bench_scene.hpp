@@ -1,7 +1,7 @@
-// The benchmark scene of the trace issue (issue 4 "Benchmark"), built in code: a
+// The benchmark scene of trace, built in code: a
 // 1001 x 1001-vertex rolling terrain (2 million triangles in 100 block facets,
 // materials 1 and 2) and instanced trees (crown, material 3, and trunk, material 4).
-// Shared by bench_trace (render) and bench_therm (shadow history and therm, issue 6).
+// Shared by bench_trace (render) and bench_therm (shadow history and therm).
 #pragma once
 
 #include <cmath>

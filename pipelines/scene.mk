@@ -1,4 +1,4 @@
-# pipelines/scene.mk: the rules that chain sigchain's tools for one scene (issue 7).
+# pipelines/scene.mk: the rules that chain sigchain's tools for one scene.
 #
 # A scene folder holds its inputs and a short Makefile that sets the variables below
 # and includes this file; `make -C data/scenes/NAME` then rebuilds only what changed,

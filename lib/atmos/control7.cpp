@@ -258,7 +258,7 @@ void ask_geometry(Asker& a, io::CdkRun& run) {
             g.range_km = a.real("range", "path length (km, 0 from the angles)", 0, 100000);
             g.earth_center_angle_deg = a.ask<double>("beta", [](const std::string& t) {
                 std::string l = ascii_lower(t);
-                if (l == "n" || l == "no") return 0.0;  // not given (the seed's answer "n")
+                if (l == "n" || l == "no") return 0.0;  // not given (White's (1996) answer "n")
                 double v = Asker::number(t, "earth center angle (deg)");
                 if (v < 0 || v > 180)
                     throw BadAnswer("expected earth center angle (deg) in [0, 180], found " +

@@ -100,7 +100,7 @@ Control7Result run_control7(AnswerSource& answers,
 io::CdkSpectral wavelength_to_card4(double start_um, double end_um, int intervals);
 
 // A time answer: decimal hours in [0, 24], or HHMM (100 to 2400, minutes below 60) as
-// the seed's "1400.0" (written 14.000 in its deck). Throws std::invalid_argument.
+// White's (1996) "1400.0" (written 14.000 in its deck). Throws std::invalid_argument.
 double time_answer_hours(double value);
 
 }  // namespace sigchain::atmos

@@ -1,4 +1,5 @@
-// Shared command-line behaviour of every sigchain tool (STYLE.md "One tool, one thin main").
+// Shared command-line behaviour of every sigchain tool (one tool, one thin
+// main: docs/ARCHITECTURE.md).
 //
 // A tool builds a Cli with its name and one-line purpose, adds its own options and
 // positional arguments, and calls run() with the function that does the work. run()

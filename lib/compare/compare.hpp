@@ -71,10 +71,10 @@ struct PointComparison {
 };
 
 // Compares two images at the control points. "combined" is the per-pixel mean of the
-// compared bands of each image (the seed's C column, defined here: the seed does not
-// say how it combined R, G and B). Throws DataError for fewer than 2 control points,
-// points outside either image, NaN pixels, or a band whose control-point values all
-// tie (the correlation is then undefined).
+// compared bands of each image (the C column of White (1996), defined here: White
+// (1996) does not say how it combined R, G and B). Throws DataError for fewer than 2
+// control points, points outside either image, NaN pixels, or a band whose
+// control-point values all tie (the correlation is then undefined).
 PointComparison compare_points(const NamedImage& synthetic, const NamedImage& reference,
                                const io::Cpt& cpt, const std::string& cpt_path, const BandMap& map,
                                int histogram_bins);

@@ -46,7 +46,7 @@ public:
     using Error::Error;
 };
 
-// A requested feature whose issue has not landed yet (exit status 1).
+// A requested feature that sigchain does not implement yet (exit status 1).
 class NotImplemented : public Error {
 public:
     using Error::Error;

@@ -1,6 +1,6 @@
 // Reading sigchain's text formats: lines with locations, comments, strict numbers.
 //
-// Every text format (DESIGN.md section 3): `#` starts a comment, blank lines are
+// Every text format (sigchain(7), CONVENTIONS): `#` starts a comment, blank lines are
 // ignored, numbers are C-locale floats. Parsers reject bad input with
 // "FILE:LINE: expected X, found Y" (a DataError) and never guess.
 #pragma once

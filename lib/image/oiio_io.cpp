@@ -71,7 +71,8 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
     if (ext == "tif" || ext == "tiff") {
         spec.attribute("compression", "none");
         // OpenImageIO stamps a TIFF with the wall-clock time unless the spec has a
-        // DateTime: an empty one keeps reruns byte-identical (STYLE: no time stamps).
+        // DateTime: an empty one keeps reruns byte-identical (sigchain(7): outputs hold no
+        // wall-clock time).
         spec.attribute("DateTime", "");
     }
     const std::string temp = detail::temp_name(path);

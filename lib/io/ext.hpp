@@ -37,7 +37,7 @@ double extinction_per_km(const Ext& ext, int curve, double wavelength_um);
 
 // Transmittance through a slab of thickness `thickness_km` with extinction
 // coefficient `k_per_km`, entered at incidence angle theta (cos_incidence = cos theta,
-// either sign: facets are crossed from either side). DESIGN.md section 3 (.ext):
+// either sign: facets are crossed from either side). ext(5):
 //     t = exp(-k d / |cos theta|)
 // Guard: |cos theta| is clamped to [kMinCosIncidence, 1], so a grazing ray sees a
 // long but finite path (t is then ~0 for any k d > 0) instead of a division by zero;

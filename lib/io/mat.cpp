@@ -94,7 +94,7 @@ Text opt_text(const std::string& s) { return s.empty() ? Text() : Text(s); }
 Text opt_bool(const std::optional<bool>& b) { return b ? Text(*b ? "TRUE" : "FALSE") : Text(); }
 
 // Every tag: its name, whether it is required, how to read it, how to write it (nullopt:
-// not written). The order is the order of the seed's header and of the rewrite.
+// not written). The order is that of the header in White (1996) and of the rewrite.
 struct TagSpec {
     std::string_view name;
     bool required;

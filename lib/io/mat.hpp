@@ -13,16 +13,17 @@ namespace sigchain::io {
 
 enum class OpticalDescription { Opaque, UniformTransmission, NonuniformTransmission };
 
-// How trace samples the reflectance of a surface (DESIGN.md section 4, "Radiometry").
+// How trace samples the reflectance of a surface (mat(5), REFLECTANCE MODELS;
+// trace(1), RADIOMETRY).
 // Files without REFLECTANCE_MODEL (every legacy file) mean Dirsig.
 enum class ReflectanceModel { Lambertian, Dirsig, Cone, Phong, Exponential, Table };
 
 // How the entry was delimited, kept so that a rewrite keeps the file's style:
-// MATERIAL_ENTRY_BEGIN .. MATERIAL_ENTRY_END (DIRSIG 3, the seed) or
+// MATERIAL_ENTRY_BEGIN .. MATERIAL_ENTRY_END (DIRSIG 3, White (1996)) or
 // MATERIAL_ENTRY { .. } (DIRSIG 3.x).
 enum class MaterialEntryStyle { BeginEnd, Braces };
 
-// One material. Thermal units follow DCS THERM as the seed's values imply (see mat(5),
+// One material. Thermal units follow DCS THERM as White's (1996) values imply (see mat(5),
 // UNITS, for what is certain and what is not).
 struct Material {
     std::string name;                     // MATERIAL_NAME (may contain spaces)
@@ -33,7 +34,7 @@ struct Material {
     double specularity = 0;               // 0 = all diffuse .. 1 = all specular
     double visible_emissivity = 0;        // solar absorptivity, 0..1
     double thermal_emissivity = 0;        // 0..1
-    double exposed_area = 0;              // DCS THERM exposed-area term (seed: -0.25)
+    double exposed_area = 0;              // DCS THERM exposed-area term (White (1996): -0.25)
     OpticalDescription optical = OpticalDescription::Opaque;
     std::string emissivity_file;  // .ems file name, as written
     // Optional tags (absent: nullopt or empty).

@@ -44,7 +44,7 @@ struct Header {
     long view_count = 0;
 };
 
-// One header value alone on its line; line 11 may carry the seed's "N/A" after it.
+// One header value alone on its line; line 11 may carry the "N/A" of White (1996) after it.
 std::string_view header_token(LineCursor& c, std::string_view what, bool allow_na) {
     const Line& line = c.next(what);
     auto f = split_fields(line.text);

@@ -2,7 +2,7 @@
 // path terms per spectral sample and view angle, plus sigchain's sky hemisphere.
 //
 // Units throughout: irradiance W cm-2 um-1, radiance W cm-2 sr-1 um-1 (per
-// micrometre; rad(5) explains why the seed's "per cm-1" labels are not followed),
+// micrometre; rad(5) explains why the "per cm-1" labels of White (1996) are not followed),
 // wavelength um, wavenumber cm-1, angles degrees, distances km.
 #pragma once
 
@@ -96,7 +96,7 @@ struct Rad {
     double min_view_angle_deg = 0;
     double max_view_angle_deg = 0;
     double view_angle_increment_deg = 0;
-    double placeholder = 999;  // header line 11, unused ("N/A" in the seed)
+    double placeholder = 999;  // header line 11, unused ("N/A" in White (1996))
     // max_wavenumber_cm1 down to min_wavenumber_cm1 by the increment (wavelength increasing).
     std::vector<RadSample> samples;
     // min_view_angle_deg up to max_view_angle_deg by the increment.

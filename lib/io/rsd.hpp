@@ -35,8 +35,8 @@ inline constexpr double kRsdMissing = -999;
 inline constexpr double kRsdDewPointSlack_c = 0.05;
 
 Rsd parse_rsd(const TextInput& in);
-// One tab-separated row per level, -999 for a missing value, no comments (as the seed's
-// spreadsheet export).
+// One tab-separated row per level, -999 for a missing value, no comments (as White's
+// (1996) spreadsheet export).
 void write_rsd(std::ostream& out, const Rsd& rsd);
 inline Rsd read_rsd_file(const std::string& path) { return parse_rsd(TextInput::from_file(path)); }
 FormatHandler rsd_format();

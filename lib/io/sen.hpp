@@ -12,7 +12,7 @@
 namespace sigchain::io {
 
 // digital count = gain * band radiance + bias (sensorize(1)); one relative response
-// (unitless, >= 0; the seed's are fractions) per spectral sample of the matching .rad
+// (unitless, >= 0; White's (1996) are fractions) per spectral sample of the matching .rad
 // band, in that band's order.
 struct Sen {
     double gain = 1;               // > 0, counts per unit band radiance

@@ -232,7 +232,7 @@ void write_snd(std::ostream& out, const Snd& snd) {
         << format_number(snd.view_increment_deg) << '\n';
     out << snd.month << ' ' << snd.day << ' ' << year_text(snd) << '\n';
     out << format_number(snd.time_gmt_hours) << '\n' << format_number(snd.gmt_offset_hours) << '\n';
-    // A plain longitude is written west positive, as the seed does.
+    // A plain longitude is written west positive, as White (1996) does.
     double lon = snd.longitude_style == CoordinateStyle::Plain ? -snd.longitude_east_deg
                                                                : snd.longitude_east_deg;
     out << coordinate_text(snd.latitude_deg, snd.latitude_style, "NS") << ' '

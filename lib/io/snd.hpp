@@ -25,8 +25,8 @@ struct SndBand {
 };
 
 // How the latitude or longitude was written, so a rewrite keeps a legacy file legacy.
-// Plain: a signed number (latitude north positive; longitude WEST positive, the seed's
-// legacy convention). Hemisphere: a non-negative number with an N/S or E/W suffix.
+// Plain: a signed number (latitude north positive; longitude WEST positive, the legacy
+// convention of White (1996)). Hemisphere: a non-negative number with an N/S or E/W suffix.
 enum class CoordinateStyle { Plain, Hemisphere };
 
 struct Snd {

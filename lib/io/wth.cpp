@@ -8,7 +8,7 @@
 
 namespace sigchain::io {
 
-// Widths sum to kWthFixedRecordWidth (76). The seed's own file is the whitespace form;
+// Widths sum to kWthFixedRecordWidth (76). The file of White (1996) is in the whitespace form;
 // this fixed-width layout is sigchain's reading of DIRSIG's later files (man wth(5)).
 const WthColumn kWthColumns[kWthFields] = {
     {"time (h)", 6, 2},

@@ -1,7 +1,7 @@
 // .wth weather history (White (1996), fig. 4.32, section 4.2.3.6; man wth(5)): the weather at
 // the scene, at equal time steps, that drives the thermal model.
 //
-// Two layouts: the seed's whitespace (tab) separated one, and a fixed-width one read
+// Two layouts: the whitespace (tab) separated one of White (1996), and a fixed-width one read
 // by column, as DIRSIG's later files are, where a value may touch the one before it
 // ("  0.31-20.00"). The reader detects the form per file; the writer writes the form
 // that was read. Times are hours from midnight of the day before the simulation.

@@ -1,5 +1,5 @@
-// A side-by-side preview of a synthetic image and its reference (issue 7: the demo
-// shows the Olinda render beside the real Landsat image).
+// A side-by-side preview of a synthetic image and its reference (the demo shows the
+// Olinda render beside the real Landsat image).
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 // The angular shape of reflection: a cosine (diffuse) part plus a specular lobe about
-// the mirror direction, normalised over the facet's hemisphere (brdf.hpp; DESIGN.md 4,
-// White (1996), section 3.6.5 and 5.2.1-5.2.3).
+// the mirror direction, normalised over the facet's hemisphere (brdf.hpp; mat(5),
+// REFLECTANCE MODELS; White (1996), section 3.6.5 and 5.2.1-5.2.3).
 #include "radiometry/brdf.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // The angular shape of reflection (scalar; the spectral factor is the material's
-// directional reflectance rho(lambda, theta_o)). DESIGN.md section 4, mat(5)
-// REFLECTANCE MODELS, White (1996), section 3.6.5 and 5.2.1-5.2.3.
+// directional reflectance rho(lambda, theta_o)). mat(5) REFLECTANCE
+// MODELS, trace(1) RADIOMETRY, White (1996), section 3.6.5 and 5.2.1-5.2.3.
 //
 // Reflected radiance at a facet, for a viewer in direction wo:
 //     L_o(lambda) = rho(lambda, theta_o) * Int w(wi, wo) L_i(lambda, wi) d(omega_i)

@@ -455,8 +455,7 @@ HawkeyeScene hawkeye_scene(std::uint64_t seed) {
 }
 
 void write_hawkeye_scene(const HawkeyeScene& scene, const std::string& outdir) {
-    const std::string header = "# Written by hawkeye_scene (sigchain issue 7, scene 2), seed " +
-                               std::to_string(scene.seed) +
+    const std::string header = "# Written by hawkeye_scene, seed " + std::to_string(scene.seed) +
                                ": see data/scenes/hawkeye/README.md.\n"
                                "# Local frame: x east, y north, z up (m) about the scene's "
                                "centre; z = 0 the base of the hills.\n";

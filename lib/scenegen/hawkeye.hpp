@@ -1,4 +1,4 @@
-// The hawkeye scene generator (issue 7, scene 2): a Rochester-like 1.1 km x 1.1 km
+// The hawkeye scene generator: a Rochester-like 1.1 km x 1.1 km
 // scene after White (1996), sections 4.1-4.2 (the area around Kodak's Hawkeye plant): a 60 m
 // gorge running south to north, rolling hills of 15-25 m, a street grid with
 // sidewalks and parking lots raised on the terrain, instanced houses (three types and
@@ -35,8 +35,8 @@ private:
 };
 
 // The scene's fixed dimensions (White (1996), section 4.1.1: "1.1 km by 1.1 km with the Genesee River
-// running south to north through the middle", a "200 foot gorge" (61 m; the issue
-// says 60 m), "rolling hills, 50 to 75 feet high" (15-23 m; the issue says 15-25 m)).
+// running south to north through the middle", a "200 foot gorge" (61 m; sigchain
+// uses 60 m), "rolling hills, 50 to 75 feet high" (15-23 m; sigchain uses 15-25 m)).
 inline constexpr double kHawkeyeSizeM = 1100;
 inline constexpr double kHawkeyeGridM = 10;  // terrain grid spacing (m)
 inline constexpr double kGorgeDepthM = 60;
@@ -44,7 +44,7 @@ inline constexpr double kGorgeFloorHalfWidthM = 30;  // river: 60 m wide
 inline constexpr double kGorgeRimHalfWidthM = 110;   // rim to rim: 220 m
 inline constexpr double kMinHillM = 15;
 inline constexpr double kMaxHillM = 25;
-inline constexpr double kStreetRaiseM = 0.1;     // streets and parking (the issue)
+inline constexpr double kStreetRaiseM = 0.1;     // streets and parking (sigchain's value)
 inline constexpr double kSidewalkRaiseM = 0.15;  // "typically a six inch elevation" (White (1996), section 4.2.3.1)
 
 // The terrain: heights at the nodes of a square grid covering the scene.

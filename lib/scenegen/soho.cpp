@@ -40,7 +40,7 @@ void write_soho_gdb(const std::string& path, const std::string& input, const Foo
     AtomicOutput out(path);
     std::ostream& s = out.stream();
     s.precision(17);
-    s << "# soho.gdb: written by soho_scene (sigchain issue 7, scene 4) from " << input << "\n"
+    s << "# soho.gdb: written by soho_scene from " << input << "\n"
       << "# Building footprints: buildings.gpkg from the R package sf 1.0-9 (see README.md).\n"
       << "# CRS " << fp.crs_name << "; local frame: x east, y north (m) about\n"
       << "# easting " << fp.origin[0] << ", northing " << fp.origin[1]

@@ -56,7 +56,8 @@ std::vector<float> band_radiance(const image::Image& cube, BandSamples samples,
     std::vector<double> sum(plane, 0.0);
     double weight_sum = 0;
     for (int k = 0; k < samples.count; ++k) {
-        // Seed 3.2: L̄ = Σ R·L·Δλ / Σ R·Δλ (the normalised response R̄ = R / Σ R·Δλ).
+        // White (1996), section 3.2: L̄ = Σ R·L·Δλ / Σ R·Δλ (the normalised response
+        // R̄ = R / Σ R·Δλ).
         const double w = response[k] * widths_um[k];
         weight_sum += w;
         const float* band = cube.data.data() + (samples.first + k) * plane;

@@ -54,7 +54,7 @@ RankCorrelation rank_order_correlation(std::span<const double> a, std::span<cons
 // Pearson's product-moment correlation (n >= 2; throws if either sample is constant).
 double pearson(std::span<const double> a, std::span<const double> b);
 
-// sqrt(mean((a - b)^2)): the seed's RMS error (section 3.5). Same length, n >= 1.
+// sqrt(mean((a - b)^2)): the RMS error of White (1996), section 3.5. Same length, n >= 1.
 double rms_difference(std::span<const double> a, std::span<const double> b);
 // mean(a - b): positive when `a` is brighter on average. Same length, n >= 1.
 double bias(std::span<const double> a, std::span<const double> b);

@@ -69,7 +69,7 @@ FacetThermal resolve_facet(const SceneFacet& facet, const io::Mat& mat) {
     require_positive(m->specific_heat_cal_g_c, "SPECIFIC_HEAT", *m, mat);
     require_positive(m->thermal_conductivity_dcs, "THERMAL_CONDUCTIVITY", *m, mat);
     double power = facet.power != -1 ? facet.power : m->self_generated_power.value_or(-1);
-    if (power == -1) power = 0;  // -1: none (the seed's default)
+    if (power == -1) power = 0;  // -1: none (the default of White (1996))
     double exposed = facet.exposed_area != -1 ? facet.exposed_area : m->exposed_area;
     if (!std::isfinite(power) || !std::isfinite(exposed))
         throw DataError(facet.where,

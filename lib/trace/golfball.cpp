@@ -132,7 +132,8 @@ const std::vector<GolfRay>& golfball_rays(int matrix) {
 }
 
 int golfball_matrix(double specular_angle_deg) {
-    // Seed 5.2.3: |phi_rps - phi_fn| > 33.75 -> matrix 3, > 11.25 -> matrix 2, else 1.
+    // White (1996), section 5.2.3: |phi_rps - phi_fn| > 33.75 -> matrix 3, > 11.25 ->
+    // matrix 2, else 1.
     double a = std::abs(specular_angle_deg);
     if (a > 33.75) return 3;
     if (a > 11.25) return 2;

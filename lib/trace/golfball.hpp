@@ -3,7 +3,7 @@
 // of half that, plus three specular-lobe matrices that split the cells about the
 // mirror direction into smaller ones of exact solid angle.
 //
-// Geometry (ours; the seed gives only the counts): rings of cells between zenith
+// Geometry (ours; White (1996) gives only the counts): rings of cells between zenith
 // angles whose cosines are exact, so every cell's solid angle is exact:
 //   ring 0: 1 cap cell,              cos theta in [48/49, 1]
 //   ring 1: 6 cells of 60 deg,       cos theta in [42/49, 48/49]
@@ -15,9 +15,9 @@
 // azimuth j * 360 / n (local frame, azimuth 0 = the specular azimuth once rotated),
 // its ray at the cell's mid-cos and mid-azimuth (the cap's at the zenith).
 //
-// Matrices (seed: "centred about zenith angles of 0, 22.5 and 45 degrees"), each
-// seven cells, each of which is split into 7 rays of 1/7 of its solid angle (the
-// seed's 103 rays = 61 - 7 + 49):
+// Matrices (White (1996): "centred about zenith angles of 0, 22.5 and 45 degrees"),
+// each seven cells, each of which is split into 7 rays of 1/7 of its solid angle
+// (the 103 rays of White (1996) = 61 - 7 + 49):
 //   matrix 1: the cap and ring 1 (centre zenith 0)
 //   matrix 2: ring-1 cell 0 (zenith 23.3), the cap, ring-1 cells +-1, ring-2 cells 0, +-1
 //   matrix 3: ring-2 cell 0 (zenith 42.7), ring-1 cell 0, ring-2 cells +-1,

@@ -1,6 +1,7 @@
 // Rendering: primary rays from a sensor (sensor.hpp), the radiance at each hit from the
 // hemisphere above it (by a sampling strategy), and the atmosphere's path terms;
-// one geometry pass serves all spectral samples (White (1996), section 3.4, 3.6.5, 5.2; DESIGN.md 4).
+// one geometry pass serves all spectral samples (White (1996), section 3.4, 3.6.5, 5.2;
+// trace(1), RADIOMETRY).
 #pragma once
 
 #include <cstdint>
@@ -31,7 +32,7 @@ struct RenderOptions {
     long hemisphere_samples = 64;  // montecarlo: rays per hit; dirsig: diffuse pattern size
     // golfball: draw each cell's ray at random inside its cell (cosine-weighted),
     // instead of at its centre: a stratified, unbiased estimator whose error falls
-    // with samples_per_pixel; off = the seed's fixed pattern.
+    // with samples_per_pixel; off = the fixed pattern of White (1996).
     bool golfball_jitter = false;
     int max_transmissions = 8;         // transmissive facets followed per ray
     // Secondary hits followed: at depth d < bounces a hit is shaded with its own

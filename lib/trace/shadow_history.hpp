@@ -1,6 +1,7 @@
 // trace --shadow-history: per facet, the sunlit fraction and the sun's transmittance
 // through transmissive facets at each time step of the hours before the scene time,
-// and the facet's sky-view factor; written as a .shd (shd(5)) for therm (issue 6).
+// and the facet's sky-view factor; written as a .shd (shd(5)) for therm (the thermal
+// chain).
 #pragma once
 
 #include <cstdint>

@@ -47,7 +47,7 @@ run_small() {
     # The box on a plane in 8-12.5 um (the demo's thermal chain at 32 x 32 pixels).
     b="$out/box_lwir"
     mkdir -p "$b"
-    seed="$src/tests/data/seed"
+    seed="$src/tests/data/white1996"
     cp "$src/tests/data/therm/box_on_plane.mat" "$seed/fall_grass.ems" "$b/"
     # The answers name the radiosonde 30Sep95800L.rsd, opened from the current directory.
     (cd "$seed" && "$bin/control7" -q --answers "$src/tests/data/control7/hawkeye.answers" \

@@ -1,7 +1,7 @@
 #!/usr/bin/env bats
 # Tests: build_radiance
 # Also requires: tests/data/build_radiance/{small.snd,rural23.cdk},
-# tests/golden/control7/hawkeye.cdk (the seed's Hawkeye deck), tests/data/seed/hawkeye.snd,
+# tests/golden/control7/hawkeye.cdk (the Hawkeye deck of White (1996)), tests/data/white1996/hawkeye.snd,
 # data/atmosphere/ (reference data)
 load test_helper
 
@@ -167,7 +167,7 @@ line_of() { sed -n "${2}p" "$1"; }
         fail "stderr: $stderr"
 }
 
-@test "the seed's scene node runs: three bands, 156 view angles, sky of 648 cells" {
+@test "the scene node of White (1996) runs: three bands, 156 view angles, sky of 648 cells" {
     run -0 --separate-stderr build_radiance "$HAWKEYE" "$SEED/hawkeye.snd" -o 'seed-%d.rad'
     run -0 sigchain-check seed-1.rad seed-2.rad seed-3.rad
     assert_equal "$(line_of seed-1.rad 7)" 41

@@ -1,18 +1,18 @@
 #!/usr/bin/env bats
 # Tests: control7
-# Also requires: tests/data/control7/*.answers, tests/data/seed/30Sep95800L.rsd,
-# tests/data/seed/flyover.cdk, tests/golden/control7/*.cdk
+# Also requires: tests/data/control7/*.answers, tests/data/white1996/30Sep95800L.rsd,
+# tests/data/white1996/flyover.cdk, tests/golden/control7/*.cdk
 load test_helper
 
 ANSWERS="$SIGCHAIN_SOURCE_DIR/tests/data/control7"
 
-# The seed's answers name 30Sep95800L.rsd, opened from the current directory.
+# The answers of White (1996) name 30Sep95800L.rsd, opened from the current directory.
 seed_setup() {
     cp "$SEED/30Sep95800L.rsd" .
 }
 
-# bad_answer KEY VALUE MESSAGE: the seed's answers with KEY overridden by VALUE stop with
-# exit 1, "control7: --answer KEY: MESSAGE" and no deck or temporary file.
+# bad_answer KEY VALUE MESSAGE: the answers of White (1996) with KEY overridden by VALUE
+# stop with exit 1, "control7: --answer KEY: MESSAGE" and no deck or temporary file.
 bad_answer() {
     local key="$1" value="$2" message="$3"
     seed_setup
@@ -49,7 +49,7 @@ bad_answer() {
     assert_line --partial $'irpt\tSELECT IRPT'
 }
 
-@test "the seed's answers file gives the golden deck" {
+@test "the answers file of White (1996) gives the golden deck" {
     seed_setup
     run -0 --separate-stderr control7 --answers "$ANSWERS/hawkeye.answers" -o hawkeye.cdk
     assert_output ''
@@ -58,11 +58,11 @@ bad_answer() {
     assert_no_temp_files .
 }
 
-@test "the seed's answers reproduce fig. 4.31 except VIS and CARD 4" {
+@test "the answers of White (1996) reproduce its fig. 4.31 except VIS and CARD 4" {
     seed_setup
     run -0 control7 --answers "$ANSWERS/hawkeye.answers" -o hawkeye.cdk
-    # Lines 2 (CARD 2: VIS 23 answered, 0.000 in the seed's deck) and 26 (CARD 4:
-    # 0.4-0.7 um answered, 2000-3333.333 cm-1 in the seed's deck) differ; nothing else.
+    # Lines 2 (CARD 2: VIS 23 answered, 0.000 in the deck of White (1996)) and 26
+    # (CARD 4: 0.4-0.7 um answered, 2000-3333.333 cm-1 in that deck) differ; nothing else.
     run diff "$SEED/flyover.cdk" hawkeye.cdk
     assert_failure 1
     run sh -c "diff '$SEED/flyover.cdk' hawkeye.cdk | grep -E '^[0-9]'"
@@ -204,7 +204,7 @@ bad_answer() {
 }
 
 @test "dew points missing above the last valid one are extrapolated" {
-    # Seed table 4.3: -999 from 250 mb up; the 300 mb depression (3.1 C) is kept.
+    # White (1996), table 4.3: -999 from 250 mb up; the 300 mb depression (3.1 C) is kept.
     sed -e 's/-50.7$/-999/' -e 's/-59.9$/-999/' -e 's/-65.5$/-999/' -e 's/-71.5$/-999/' \
         "$SEED/30Sep95800L.rsd" > 30Sep95800L.rsd
     run -0 control7 --answers "$ANSWERS/hawkeye.answers" -o out.cdk
@@ -241,7 +241,7 @@ bad_answer() {
 @test "on a terminal the questions are asked and a bad answer is asked again" {
     command -v script > /dev/null || skip "script(1) (util-linux) is needed for a terminal"
     seed_setup
-    # The seed's answers typed on a pseudo-terminal, with a bad model number first.
+    # The answers of White (1996) typed on a pseudo-terminal, with a bad model number first.
     { printf 'flyover.cdk\n12\n'; sed -e 's/#.*//' -e '/^ *$/d' "$ANSWERS/hawkeye.answers" | tail -n +2; } > typed
     run -0 sh -c "script -qec 'control7 -o tty.cdk' /dev/null < typed"
     assert_output --partial "ENTER FILE NAME FOR PRODUCED CARD DECK:"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
 # Tests: find_min_max_view_angle
-# Also requires: tests/data/geom/*.adv, tests/data/geom/*.gdb, tests/data/seed/box_on_plane.gdb,
+# Also requires: tests/data/geom/*.adv, tests/data/geom/*.gdb, tests/data/white1996/box_on_plane.gdb,
 #   tests/data/scene/{flat.odb,flat.asc,flat.prj,quad_tri.odb,quad_tri.obj,quad_tri.map}
 load test_helper
 

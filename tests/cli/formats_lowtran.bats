@@ -1,5 +1,5 @@
 # Tests: sigchain-check (formats .cdk .wth)
-# Also requires: tests/data/seed/flyover.cdk, tests/data/seed/weather_30_Sep_95.wth,
+# Also requires: tests/data/white1996/flyover.cdk, tests/data/white1996/weather_30_Sep_95.wth,
 #   tests/data/bad/cdk/, tests/data/bad/wth/, tests/golden/sigchain-check/ (lowtran_messy.*,
 #   weather_fixed.*, weather_spaced.*)
 
@@ -8,13 +8,13 @@ load test_helper
 
 # --- .cdk: good input -------------------------------------------------------------------
 
-@test "cdk: the seed deck (fig. 4.31) is valid" {
+@test "cdk: the deck of White (1996), fig. 4.31, is valid" {
     run -0 --separate-stderr sigchain-check "$SEED/flyover.cdk"
     assert_output "$SEED/flyover.cdk: ok: 1 run, MODEL 7 (19 layers, HAWKEYE), IEMSCT 2, 2000-3333.333 cm-1 step 5"
     assert_equal "$stderr" ''
 }
 
-@test "cdk: rewriting the seed deck gives it back byte for byte" {
+@test "cdk: rewriting the deck of White (1996) gives it back byte for byte" {
     run -0 sigchain-check --rewrite -o flyover.cdk "$SEED/flyover.cdk"
     run -0 cmp flyover.cdk "$SEED/flyover.cdk"
     assert_no_temp_files .
@@ -130,12 +130,12 @@ load test_helper
 
 # --- .wth: good input -------------------------------------------------------------------
 
-@test "wth: the seed weather (fig. 4.32, header corrected to 49) is valid" {
+@test "wth: the weather of White (1996), fig. 4.32 (header corrected to 49), is valid" {
     run -0 --separate-stderr sigchain-check "$SEED/weather_30_Sep_95.wth"
     assert_output "$SEED/weather_30_Sep_95.wth: ok: 49 rows at 1 h, 0-48 h, whitespace form"
 }
 
-@test "wth: the seed's own header (48 rows, 49 present) is reported precisely" {
+@test "wth: the original header of White (1996) (48 rows, 49 present) is reported precisely" {
     check_bad wth seed_header_48.wth 50 "header (line 1) says 48 rows, found 49"
 }
 

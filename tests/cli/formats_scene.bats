@@ -1,5 +1,5 @@
 # Tests: sigchain-check (formats .mat .gdb .odb .shd)
-# Also requires: tests/data/seed/ (hawkeye.mat, box_on_plane.gdb, neighbourhood.odb,
+# Also requires: tests/data/white1996/ (hawkeye.mat, box_on_plane.gdb, neighbourhood.odb,
 #   box_on_plane.shd), tests/data/geom/ (plane_100m.gdb, tower.gdb), tests/data/bad/mat/,
 #   tests/data/bad/gdb/, tests/data/bad/odb/, tests/data/bad/shd/,
 #   tests/golden/sigchain-check/ (scene_messy.*)
@@ -19,7 +19,7 @@ check_golden() {
 }
 
 # --- .mat: good input ---------------------------------------------------------
-@test "mat: the seed sample (fig. 4.34) is valid" {
+@test "mat: the sample of White (1996), fig. 4.34, is valid" {
     run -0 --separate-stderr sigchain-check "$SEED/hawkeye.mat"
     assert_output "$SEED/hawkeye.mat: ok: 1 material"
     assert_equal "$stderr" ''

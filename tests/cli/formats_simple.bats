@@ -1,13 +1,13 @@
 #!/usr/bin/env bats
 # Tests: sigchain-check (formats .adv .snd .rsd .sen .cpt .tmp)
-# Also requires: tests/data/seed, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp},
-# tests/golden/sigchain-check (the canonical rewrites of the seed samples)
+# Also requires: tests/data/white1996, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp},
+# tests/golden/sigchain-check (the canonical rewrites of the samples of White (1996))
 
 load test_helper
 bats_require_minimum_version 1.5.0
 
 # --- .adv ---------------------------------------------------------------------------
-@test "adv: seed sample checks" {
+@test "adv: sample of White (1996) checks" {
     check_good "$SEED/hawkeye.adv" "512 x 512 pixels, frame sensor, focal length 40 mm, units ft"
 }
 @test "adv: stdin with -f adv" {
@@ -30,7 +30,7 @@ bats_require_minimum_version 1.5.0
 @test "adv: extra line" { check_bad adv extra_line.adv 6 "expected 'key = value' after the image size, found '512 512'"; }
 
 # --- .snd ---------------------------------------------------------------------------
-@test "snd: seed sample checks" {
+@test "snd: sample of White (1996) checks" {
     check_good "$SEED/hawkeye.snd" "3 bands, 14400-25000 cm-1, 156 view angles, 1995-09-30 19 h GMT"
 }
 @test "snd: stdin with -f snd" {
@@ -55,7 +55,7 @@ bats_require_minimum_version 1.5.0
 @test "snd: wrong hemisphere letter" { check_bad snd bad_hemisphere.snd 8 "expected latitude (deg) hemisphere N or S, found 'E'"; }
 
 # --- .rsd ---------------------------------------------------------------------------
-@test "rsd: seed sample checks" { check_good "$SEED/30Sep95800L.rsd" "19 levels, 0.218-16.493 km, 998-100 mb"; }
+@test "rsd: sample of White (1996) checks" { check_good "$SEED/30Sep95800L.rsd" "19 levels, 0.218-16.493 km, 998-100 mb"; }
 @test "rsd: stdin with -f rsd" {
     run -0 --separate-stderr sigchain-check -f rsd - < "$SEED/30Sep95800L.rsd"
     assert_output "-: ok: 19 levels, 0.218-16.493 km, 998-100 mb"
@@ -74,7 +74,7 @@ bats_require_minimum_version 1.5.0
 @test "rsd: dew point above temperature" { check_bad rsd dew_above_temperature.rsd 1 "expected dew point (C) at or below the temperature '23.8', found '27.8'"; }
 
 # --- .sen ---------------------------------------------------------------------------
-@test "sen: seed sample checks" { check_good "$SEED/dcs420_band1.sen" "7 spectral samples, gain 1, bias 0"; }
+@test "sen: sample of White (1996) checks" { check_good "$SEED/dcs420_band1.sen" "7 spectral samples, gain 1, bias 0"; }
 @test "sen: stdin with -f sen" {
     run -0 --separate-stderr sigchain-check -f sen - < "$SEED/dcs420_band1.sen"
     assert_output "-: ok: 7 spectral samples, gain 1, bias 0"

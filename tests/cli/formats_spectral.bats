@@ -1,13 +1,13 @@
 #!/usr/bin/env bats
 # Tests: sigchain-check (formats .rad .ems .ext)
-# Also requires: tests/data/seed, tests/data/bad/{rad,ems,ext},
+# Also requires: tests/data/white1996, tests/data/bad/{rad,ems,ext},
 # tests/golden/sigchain-check (the canonical rewrites of the samples)
 
 load test_helper
 bats_require_minimum_version 1.5.0
 
 # --- .rad ---------------------------------------------------------------------------
-@test "rad: seed sample checks" {
+@test "rad: sample of White (1996) checks" {
     check_good "$SEED/hawkeye_band3.rad" "7 samples, 14400-16800 cm-1, 1 view angle, no sky hemisphere"
 }
 @test "rad: sample with the sigchain sky block checks" {
@@ -48,7 +48,7 @@ bats_require_minimum_version 1.5.0
 @test "rad: sky cells not on a grid" { check_bad rad sky_grid.rad 24 "expected zenith 45 (as the first cell of its ring), found '50'"; }
 
 # --- .ems ---------------------------------------------------------------------------
-@test "ems: seed sample checks" { check_good "$SEED/fall_grass.ems" "1 curve, 350-39850 cm-1, no specular lobe"; }
+@test "ems: sample of White (1996) checks" { check_good "$SEED/fall_grass.ems" "1 curve, 350-39850 cm-1, no specular lobe"; }
 @test "ems: stdin with -f ems" {
     run -0 --separate-stderr sigchain-check -f ems - < "$SEED/fall_grass.ems"
     assert_output "-: ok: 1 curve, 350-39850 cm-1, no specular lobe"

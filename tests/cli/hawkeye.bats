@@ -1,5 +1,5 @@
 #!/usr/bin/env bats
-# Tests: hawkeye_scene and data/scenes/hawkeye/Makefile (issue 7, scene 2)
+# Tests: hawkeye_scene and data/scenes/hawkeye/Makefile (the hawkeye scene)
 # Also requires: sigchain-check, and for the chain control7, find_min_max_view_angle,
 # build_radiance, trace, sensorize
 # The hawkeye scene: a generated .odb of .gdb files (terrain, pavement, instanced
@@ -29,7 +29,7 @@ odb_instances() {
     structures=${BASH_REMATCH[1]} houses=${BASH_REMATCH[2]} garages=${BASH_REMATCH[3]}
     large=${BASH_REMATCH[4]} trees=${BASH_REMATCH[5]} vehicles=${BASH_REMATCH[6]}
     files=${BASH_REMATCH[7]}
-    # "about 850 structures" and "about 3000 trees" (the issue).
+    # "about 850 structures" and "about 3000 trees" (the scene's targets).
     [ "$structures" -ge 750 ] && [ "$structures" -le 950 ]
     [ "$trees" -ge 2800 ] && [ "$trees" -le 3200 ]
     [ "$structures" -eq $((houses + garages + large + 2)) ]
@@ -46,7 +46,7 @@ odb_instances() {
     [ "$(odb_instances s/hawkeye.odb '^garage-')" -eq "$garages" ]
     [ "$(odb_instances s/hawkeye.odb '^tree[.]gdb$')" -eq "$trees" ]
     [ "$(odb_instances s/hawkeye.odb '^vehicle-')" -eq "$vehicles" ]
-    # Every tree is the same 20-facet mesh (the seed's budget per tree).
+    # Every tree is the same 20-facet mesh (the budget per tree of White (1996)).
     [ "$(grep -c '^FACE$' s/tree.gdb)" -eq 20 ]
 }
 

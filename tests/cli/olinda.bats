@@ -1,5 +1,5 @@
 #!/usr/bin/env bats
-# Tests: olinda_scene and data/scenes/olinda/Makefile (issue 7, scene 3)
+# Tests: olinda_scene and data/scenes/olinda/Makefile (the Olinda scene)
 # Also requires: build_radiance, trace, sensorize, compare
 # The Olinda chain at full size (352 x 349 pixels, about 10 s on 2 cores): real
 # terrain and land use, fitted class reflectances, held-out comparison with Landsat-7.
@@ -63,8 +63,8 @@ Try 'olinda_scene --help'." ]
     # Every class and band got a finite scale.
     run -0 awk '!/^#/ { for (i = 2; i <= 5; i++) if ($i + 0 != $i) exit 1 } END { exit NR != 5 }' \
         scene/out/scales.txt
-    # Held-out points (not used by the fit). Floors: ROC 0.75 per band, the seed's
-    # lowest nadir ROC (0.78) less a margin for rendering differences between builds
+    # Held-out points (not used by the fit). Floors: ROC 0.75 per band, the lowest
+    # nadir ROC of White (1996) (0.78) less a margin for rendering differences between builds
     # (thread order, compiler); this chain gives 0.799 (band 4) to 0.928 (band 2).
     # RMS 25 DN: achieved 9.6-23.1 DN, dominated by the heterogeneous sand class.
     run -0 compare --fail-roc 0.75 --fail-rms 25 --bands 1,2,3,4 scene/out/olinda.tif \

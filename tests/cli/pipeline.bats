@@ -1,5 +1,5 @@
 #!/usr/bin/env bats
-# Tests: pipelines/scene.mk on the training scene (data/scenes/training), issue 7
+# Tests: pipelines/scene.mk on the training scene (data/scenes/training)
 # Tools run through make: control7 build_radiance find_min_max_view_angle trace therm
 # sensorize compare; sigchain-check validates the text outputs.
 #

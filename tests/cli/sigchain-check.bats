@@ -1,5 +1,5 @@
 # Tests: sigchain-check (generic behaviour; each format's cases are in formats_*.bats)
-# Also requires: CMakeLists.txt (the version in its project() line), tests/data/seed/
+# Also requires: CMakeLists.txt (the version in its project() line), tests/data/white1996/
 #
 # These tests do not depend on which formats exist: they take the formats from
 # `sigchain-check --list-formats` and skip, saying so, when a case needs one and the
@@ -37,7 +37,7 @@ need_a_seed_sample() {
             return 0
         fi
     done
-    skip "no seed sample in tests/data/seed/ has a registered format yet"
+    skip "no sample in tests/data/white1996/ has a registered format yet"
 }
 
 # Runs sigchain-check with ARGS, failing with its stderr unless it exits 0.
@@ -215,7 +215,7 @@ assert_usage_error() {
     assert_output --regexp "^sample\.txt: ok: .+$"
 }
 
-@test "--rewrite of every seed sample re-checks and is idempotent" {
+@test "--rewrite of every sample of White (1996) re-checks and is idempotent" {
     need_a_seed_sample
     local f e n=0
     for f in "$SEED"/*; do
@@ -251,7 +251,7 @@ assert_usage_error() {
     assert_no_temp_files .
 }
 
-@test "every seed sample with DOS line endings (CRLF) reads as with LF" {
+@test "every sample of White (1996) with DOS line endings (CRLF) reads as with LF" {
     need_a_seed_sample
     local f e n=0
     for f in "$SEED"/*; do

@@ -1,5 +1,5 @@
 #!/usr/bin/env bats
-# Tests: soho_scene and data/scenes/soho/Makefile (issue 7, scene 4)
+# Tests: soho_scene and data/scenes/soho/Makefile (the Soho scene)
 # Also requires: sigchain-check, python3 (its sqlite3 module reads the GeoPackage as an
 # independent count), and for the chain control7, find_min_max_view_angle,
 # build_radiance, trace, sensorize

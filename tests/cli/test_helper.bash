@@ -8,7 +8,7 @@ load '/usr/lib/bats/bats-assert/load.bash'
 : "${SIGCHAIN_SOURCE_DIR:=$(cd "$BATS_TEST_DIRNAME/../.." && pwd)}"
 : "${SIGCHAIN_BIN:=$SIGCHAIN_SOURCE_DIR/build/bin}"
 export PATH="$SIGCHAIN_BIN:$PATH"
-SEED="$SIGCHAIN_SOURCE_DIR/tests/data/seed"
+SEED="$SIGCHAIN_SOURCE_DIR/tests/data/white1996"
 GOLDEN="$SIGCHAIN_SOURCE_DIR/tests/golden"
 BAD="$SIGCHAIN_SOURCE_DIR/tests/data/bad"
 

@@ -1,10 +1,10 @@
 # Tests: therm
 # Also requires: sigchain-check
 #
-# therm on the seed's training scene: tests/data/seed/box_on_plane.gdb with its
-# hand-built box_on_plane.shd, the seed's Rochester weather (weather_30_Sep_95.wth) and
-# scene node (hawkeye.snd), and tests/data/therm/box_on_plane.mat (the seed's .mat has
-# grass only; the box is wood, material 37).
+# therm on the training scene of White (1996): tests/data/white1996/box_on_plane.gdb with
+# its hand-built box_on_plane.shd, the Rochester weather of White (1996)
+# (weather_30_Sep_95.wth) and scene node (hawkeye.snd), and tests/data/therm/box_on_plane.mat
+# (the .mat of White (1996) has grass only; the box is wood, material 37).
 
 bats_require_minimum_version 1.5.0
 load test_helper
@@ -28,7 +28,7 @@ therm_bad() {
     assert_no_temp_files .
 }
 
-# weather_rows FIRST LAST: the seed's weather cut to the rows FIRST..LAST h, with the
+# weather_rows FIRST LAST: the weather of White (1996) cut to the rows FIRST..LAST h, with the
 # header's row count to match.
 weather_rows() {
     awk -v a="$1" -v b="$2" '/^#/ { print; next }
@@ -81,7 +81,7 @@ assert_tmp_near() {
     [ ! -e out.tmp ]
 }
 
-@test "therm on the seed's box_on_plane writes a valid .tmp matching the golden" {
+@test "therm on the box_on_plane of White (1996) writes a valid .tmp matching the golden" {
     run -0 --separate-stderr therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o out.tmp
     assert_output ''
     assert_equal "$stderr" ''
@@ -140,7 +140,7 @@ assert_tmp_near() {
 }
 
 @test "therm refuses facets whose material is missing from the .mat" {
-    # The seed's hawkeye.mat has grass (1) only; the box is wood (37).
+    # The hawkeye.mat of White (1996) has grass (1) only; the box is wood (37).
     therm_bad "$GDB:44: facet 2-1-1: material 37 is not in $SEED/hawkeye.mat" \
         "$SHD" "$WTH" "$SEED/hawkeye.mat" "$GDB" "$SND"
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
-# Tests: trace therm build_radiance (the thermal chain of issue 6, end to end)
-# Also requires: tests/data/seed/{box_on_plane.gdb,weather_30_Sep_95.wth,fall_grass.ems},
+# Tests: trace therm build_radiance (the thermal chain, end to end)
+# Also requires: tests/data/white1996/{box_on_plane.gdb,weather_30_Sep_95.wth,fall_grass.ems},
 # tests/data/therm/box_on_plane.mat, tests/golden/control7/hawkeye.cdk,
 # data/demo/{box256.adv,lwir.snd}
 #
@@ -50,7 +50,7 @@ render() {  # render TMP OUT: a 64 x 64 view, one sample per pixel
 }
 
 # 10 K warmer facets raise the 10 um radiance by epsilon x (B(T + 10) - B(T)) on every
-# hit pixel (plus a little of it reflected). The seed's grass emissivity (0.93) with its
+# hit pixel (plus a little of it reflected). The grass emissivity of White (1996) (0.93) with its
 # fall-off at the view angles of this camera (20-48 deg: 0.87 to 0.69) bounds the
 # factor to 0.6-0.95 of the Planck difference at 303 K (Planck's law with CODATA
 # constants here, independent of the code).

@@ -2,7 +2,7 @@
 # Also requires: sigchain-check compare
 #
 # trace on a tiny scene: tests/data/trace/box.adv (16 x 16 pixels, 4 samples per
-# pixel) looking at tests/data/seed/box_on_plane.gdb, two hand-written sigchain .rad
+# pixel) looking at tests/data/white1996/box_on_plane.gdb, two hand-written sigchain .rad
 # bands of 3 samples each (band1.rad, band2.rad), grass and wood materials.
 
 bats_require_minimum_version 1.5.0
@@ -388,11 +388,11 @@ band_bytes() {
     trace_bad 2 "--bounces: expected 0 or 1" $(inputs) --bounces -1 -o out.img
 }
 
-# --- trace --shadow-history (issue 6): the sun/shadow history therm reads ---------------
+# --- trace --shadow-history: the sun/shadow history therm reads --------------------------
 
 SHADOW="$SIGCHAIN_SOURCE_DIR/tests/data/shadow"
 
-# box_on_plane.mat of the therm tests beside the .ems it names (seed/fall_grass.ems):
+# box_on_plane.mat of the therm tests beside the .ems it names (white1996/fall_grass.ems):
 # --shadow-history reads the .mat's curves as trace does.
 therm_materials() {
     cp "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/fall_grass.ems" .

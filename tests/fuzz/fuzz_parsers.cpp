@@ -4,7 +4,7 @@
 // the number of formats); the remaining bytes are the file text. For each input the
 // harness parses the text (handler.check), writes its canonical form
 // (handler.rewrite), and then checks the writer's contract: the canonical text parses
-// again and rewriting it gives the same text (common brief, "Writer").
+// again and rewriting it gives the same text (sigchain-check(1), --rewrite).
 //
 // Expected for bad input: a sigchain::Error (DataError, IoError, ...), which is
 // caught. Everything else is a finding: any other exception (libFuzzer reports it

@@ -1,5 +1,5 @@
 # cards.gdb: the two-gray-card calibration scene (White (1996), section 4.2.4), hand-written
-# for sigchain (issue 7); metres. A 20 x 20 m dark plane (material 100, reflectance
+# for sigchain; metres. A 20 x 20 m dark plane (material 100, reflectance
 # 0.05) at z = 0 and two flat 4 x 4 m cards 1 cm above it, in the middle of the view
 # of cards.adv: card 1 (dark gray, reflectance 0.2, material 101) at x 4..8 and
 # card 2 (light gray, reflectance 0.6, material 102) at x 12..16, both y 8..12.

@@ -1,6 +1,6 @@
 # training.gdb: the training scene of sigchain's pipeline tests (White (1996), section 4.2.1:
 # "a box ... sitting on a flat surface"), here with a pyramid beside the box.
-# Hand-written for sigchain (issue 7); metres (the .adv's units key).
+# Hand-written for sigchain; metres (the .adv's units key).
 # Ground: a 20 x 20 m quad at z = 0 (grass, material 1).
 # Box: 4 x 4 x 3 m, x 4..8, y 8..12, a top and four walls (wood, material 37).
 # Pyramid: 4 x 4 m base, x 12..16, y 8..12, apex (14, 10, 4), four triangles (wood).

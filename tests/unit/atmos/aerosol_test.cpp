@@ -35,7 +35,7 @@ Profile uniform_rh(double rh) {
 
 TEST(AtmosAerosol, ColumnOpticalDepthMatchesLowtranVis23SpringSummer) {
     // LOWTRAN 7's TAPE6, 0-100 km vertical path, rural VIS 23 spring-summer:
-    // AER1+AER2+AER3+AER4 = 0.3249 (lowtran7/README.txt sanity check 4). Brief: 0.5 %.
+    // AER1+AER2+AER3+AER4 = 0.3249 (a reference LOWTRAN 7 run). Required: 0.5 %.
     const auto m = AerosolModel::from_deck(card2(1, 23, 1), afgl_profile(2, kData), kData);
     EXPECT_NEAR(m.layer(0, 100, 0.55).tau_ext, 0.3249, 0.005 * 0.3249);
 }
@@ -169,14 +169,14 @@ TEST(AtmosAerosol, RejectsUnsupportedModels) {
 }
 
 TEST(AtmosAerosol, SeedFlyoverDeck) {
-    // The seed's deck: MODEL 7 (Hawkeye sonde), IHAZE 5 urban, VIS 0 (urban default 5 km),
+    // The deck of White (1996): MODEL 7 (Hawkeye sonde), IHAZE 5 urban, VIS 0 (urban default 5 km),
     // ISEASN 2, GNDALT 0.218 km. At the ground the extinction must follow Koschmieder
     // for 5 km (1 %, as in SurfaceExtinctionFollowsKoschmieder), and the 0.55-um
     // optical depth of the column lies between LOWTRAN's VIS 5 fall-winter column at sea
     // level (1.1416) and that column with the elevated ground's 3.6 % compression of the
     // lower 6 km (GNDALT 0.218: factor 5.782/6).
     const auto run =
-        io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/data/seed/flyover.cdk").runs.at(0);
+        io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/data/white1996/flyover.cdk").runs.at(0);
     const Profile p = profile_from_deck(run, kData);
     const auto m = AerosolModel::from_deck(run.card2, p, kData);
     EXPECT_DOUBLE_EQ(m.visibility_km(), 5);

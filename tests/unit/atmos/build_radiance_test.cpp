@@ -48,7 +48,7 @@ TEST(RadianceOptions, OutOfRangeIsUsageError) {
     EXPECT_THROW(check_radiance_options(o), UsageError);
 }
 
-// The seed's Hawkeye deck and a small scene node, computed once for the tests below.
+// The Hawkeye deck of White (1996) and a small scene node, computed once for the tests below.
 struct HawkeyeRun {
     std::vector<io::Rad> rads;
     RadianceReport report;
@@ -63,12 +63,12 @@ const HawkeyeRun& hawkeye() {
     return run;
 }
 
-// Issue 3: the .rad's hemisphere integrated against cos(zenith) gives the diffuse
+// The .rad's hemisphere integrated against cos(zenith) gives the diffuse
 // irradiance the solver reports at the ground, within 1 %. Each cell's radiance is
 // weighted by the exact integral of cos(theta) over the cell,
 // (sin^2 z1 - sin^2 z0) / 2 * dphi. The residual is the sky grid's quadrature error
 // (5 x 10 deg cells, 2 x 2 directions each) against the solver's Gauss-quadrature
-// flux; 1 % is the issue's tolerance.
+// flux; 1 % is the required tolerance.
 TEST(BuildRadiance, HemisphereIntegratesToTheSolversDiffuseIrradiance) {
     const auto& run = hawkeye();
     ASSERT_EQ(run.rads.size(), 2u);

@@ -11,7 +11,7 @@ using namespace sigchain::atmos;
 
 namespace {
 
-const std::string kRsd = SIGCHAIN_TEST_DATA "/seed/30Sep95800L.rsd";
+const std::string kRsd = SIGCHAIN_TEST_DATA "/white1996/30Sep95800L.rsd";
 
 std::string file_text(const std::string& path) {
     std::ifstream in(path);
@@ -27,7 +27,7 @@ std::vector<std::string> lines_of(const std::string& text) {
     return out;
 }
 
-// The seed's answers (tests/data/control7/hawkeye.answers) with the radiosonde path made
+// The answers of White (1996) (tests/data/control7/hawkeye.answers) with the radiosonde path made
 // absolute.
 std::map<std::string, std::string> seed_overrides(std::map<std::string, std::string> more = {}) {
     more.emplace("rsd", kRsd);
@@ -47,7 +47,7 @@ std::string deck_of(const io::Cdk& cdk) {
     return out.str();
 }
 
-// The seed's answers with the answer to `key` replaced: the DataError message.
+// The answers of White (1996) with the answer to `key` replaced: the DataError message.
 std::string error_with(const std::string& key, const std::string& value) {
     try {
         run_seed(seed_overrides({{key, value}}));
@@ -67,17 +67,17 @@ TEST(Control7, SeedAnswersReproduceTheSeedDeck) {
     EXPECT_EQ(r.deck_path, "flyover.cdk");
     EXPECT_TRUE(r.unused_overrides.empty());
     const auto got = lines_of(deck_of(r.cdk));
-    const auto seed = lines_of(file_text(SIGCHAIN_TEST_DATA "/seed/flyover.cdk"));
+    const auto seed = lines_of(file_text(SIGCHAIN_TEST_DATA "/white1996/flyover.cdk"));
     ASSERT_EQ(got.size(), seed.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
         SCOPED_TRACE("line " + std::to_string(i + 1));
         if (i == 1) {
-            // CARD 2: the seed's deck has VIS 0.000 although its answer was 23 km.
+            // CARD 2: the deck of White (1996) has VIS 0.000 although its answer was 23 km.
             std::string expected = seed[i];
             expected.replace(30, 10, "    23.000");
             EXPECT_EQ(got[i], expected);
         } else if (i == 25) {
-            // CARD 4: 0.4-0.7 um is 14285.714-25000 cm-1 (the seed's deck shows a
+            // CARD 4: 0.4-0.7 um is 14285.714-25000 cm-1 (White's (1996) deck shows a
             // 2000-3333.333 cm-1 run); (25000 - 14285.714)/396 = 27.06 -> DV 25.
             EXPECT_EQ(got[i], " 14285.714 25000.000    25.000");
         } else {
@@ -100,9 +100,9 @@ TEST(Control7, SeedDeckParsesBackToTheSameRuns) {
 }
 
 TEST(Control7, DewPointsAboveTheLastValidKeepItsDepression) {
-    // Seed table 4.3 (0800L): dew points missing from 250 mb up; the last valid level,
+    // White (1996), table 4.3 (0800L): dew points missing from 250 mb up; the last valid level,
     // 300 mb, has T -38.1 C and Td -41.2 C (depression 3.1 C), so 250-100 mb get
-    // T - 3.1: -50.8, -60.0, -65.6, -71.6 C, the values the seed's table shows.
+    // T - 3.1: -50.8, -60.0, -65.6, -71.6 C, the values its table shows.
     io::Rsd raw = sonde({{8.474, 350, -28.5, -34.8},
                          {9.573, 300, -38.1, -41.2},
                          {10.803, 250, -47.7, std::nullopt},

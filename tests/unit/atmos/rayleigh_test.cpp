@@ -40,7 +40,7 @@ double bodhaine_first_principles_tau(double l_um) {
 
 TEST(AtmosRayleigh, Eq30MatchesBodhaineFirstPrinciplesAt550nm) {
     // Bodhaine et al. state eq. 30 reproduces their full calculation to better than
-    // 0.01 % over 0.25-1 um; the brief's 1 % bound is what build_radiance needs. The
+    // 0.01 % over 0.25-1 um; the required 1 % bound is what build_radiance needs. The
     // recomputation gives tau(0.55 um, 1013.25 mb) = 0.09707.
     const double ref = bodhaine_first_principles_tau(0.55);
     EXPECT_NEAR(ref, 0.09707, 0.00001);

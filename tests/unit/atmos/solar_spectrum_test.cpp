@@ -42,8 +42,8 @@ double table_value(double nu, char table) {
 
 TEST(AtmosSolarSpectrum, TotalMatchesTheSolarConstant) {
     // The LOWTRAN 7 header states no solar constant; the reference is Gueymard (2004)'s
-    // 1366.2 W m-2 (data/../solar_gueymard2004_extraterrestrial.txt header, the
-    // integral of that full spectrum). The brief's bound: 1 %. (Achieved: 1372.8, +0.5 %.)
+    // 1366.2 W m-2 (the integral of Gueymard's full spectrum). The required bound:
+    // 1 %. (Achieved: 1372.8, +0.5 %.)
     EXPECT_NEAR(spectrum().total_w_m2(), 1366.2, 0.01 * 1366.2);
 }
 

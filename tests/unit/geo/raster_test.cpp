@@ -39,7 +39,7 @@ std::string data_error_of(F f) {
 
 TEST(GeoRaster, ReadsTheLandsatGridOfItsReadme) {
     const GeoRaster r = read_geo_raster(kEtm);
-    // /work/shared/data/olinda/README.md: 349 x 352 pixels at 28.5 m, 6 bands, upper-left
+    // data/scenes/olinda/README.md: 349 x 352 pixels at 28.5 m, 6 bands, upper-left
     // corner 288776.25 E, 9120760.75 N.
     EXPECT_EQ(r.columns, 349);
     EXPECT_EQ(r.rows, 352);

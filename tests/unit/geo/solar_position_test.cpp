@@ -15,8 +15,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// The report's worked example (NREL/TP-560-34302 table A5.1, also
-// ../shared/data/benchmarks/solar_position_spa_reference.txt, case SPA-1):
+// The report's worked example (NREL/TP-560-34302 table A5.1):
 // 2003-10-17 12:30:30 local at UTC-7, i.e. 19:30:30 UT.
 SolarPositionInput worked_example() {
     SolarPositionInput in;
@@ -88,7 +87,7 @@ TEST(SolarPosition, JulianDayOfTheWorkedExampleAndTheReportsTable) {
 
 TEST(SolarPosition, WorkedExampleWithinAThousandthOfADegree) {
     SolarPosition p = solar_position(worked_example());
-    // Issue 3: within 0.001 deg of the report's zenith 50.11162 and azimuth 194.34024.
+    // NREL report: within 0.001 deg of its zenith 50.11162 and azimuth 194.34024.
     EXPECT_NEAR(p.zenith_deg, 50.111622, 0.001);
     EXPECT_NEAR(p.azimuth_deg, 194.340241, 0.001);
     // The printout's own precision (6 decimals): the implementation matches to it.
@@ -134,7 +133,7 @@ TEST(SolarPosition, AgreesWithTheAlmanacsLowPrecisionSun) {
         double ut, lat, lon;
     };
     const Case cases[] = {
-        {1995, 9, 30, 19, 43.08333, -77.66667},  // the seed's Hawkeye flyover
+        {1995, 9, 30, 19, 43.08333, -77.66667},  // the Hawkeye flyover of White (1996)
         {2003, 10, 17, 19.508333, 39.742476, -105.1786},
         {2010, 6, 21, 12, 51.5, 0},
         {2020, 12, 21, 4, -33.9, 151.2},

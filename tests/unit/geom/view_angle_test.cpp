@@ -83,7 +83,7 @@ TEST(ViewAngle, SignFollowsReference) {
 }
 
 TEST(ViewAngle, SuggestedIncrement) {
-    EXPECT_DOUBLE_EQ(geom::suggested_increment_deg(-77, 78), 1.0);  // the seed's .snd
+    EXPECT_DOUBLE_EQ(geom::suggested_increment_deg(-77, 78), 1.0);  // the .snd of White (1996)
     EXPECT_NEAR(geom::suggested_increment_deg(0, 3), 0.2, 1e-12);
     EXPECT_NEAR(geom::suggested_increment_deg(0, 6), 0.5, 1e-12);
     EXPECT_DOUBLE_EQ(geom::suggested_increment_deg(1, 1), 0.01);

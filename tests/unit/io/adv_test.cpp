@@ -28,7 +28,7 @@ std::string written(const Adv& adv) {
 }  // namespace
 
 TEST(Adv, SeedSampleParsesToTheSeedValues) {
-    Adv a = read_adv_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.adv");
+    Adv a = read_adv_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.adv");
     EXPECT_EQ(a.target, (std::array<double, 3>{1800, 1800, 465}));
     EXPECT_EQ(a.camera, (std::array<double, 3>{1700, 1700, 1600}));
     EXPECT_EQ(a.elevation_deg, 90);
@@ -65,7 +65,7 @@ TEST(Adv, OptionalKeys) {
 }
 
 TEST(Adv, RoundTripIsExactAndIdempotent) {
-    Adv a = read_adv_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.adv");
+    Adv a = read_adv_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.adv");
     a.target = {0.1, -2.0 / 3.0, 1e-7};
     a.pixel_pitch_um = 7.4;
     a.sensor = SensorKind::Line;

@@ -13,7 +13,7 @@ using namespace sigchain::io;
 
 namespace {
 
-const std::string kSeedPath = SIGCHAIN_TEST_DATA "/seed/flyover.cdk";
+const std::string kSeedPath = SIGCHAIN_TEST_DATA "/white1996/flyover.cdk";
 
 std::string seed_text() {
     std::ifstream in(kSeedPath);
@@ -35,7 +35,7 @@ std::string joined(const std::vector<std::string>& lines) {
     return s;
 }
 
-// The seed deck with `text` written over line `line` (1-based) from `column` on.
+// The deck of White (1996) with `text` written over line `line` (1-based) from `column` on.
 std::string seed_with(int line, int column, const std::string& text) {
     auto lines = seed_lines();
     std::string& l = lines[static_cast<std::size_t>(line - 1)];

@@ -29,7 +29,7 @@ std::string written(const Cpt& cpt) {
 }  // namespace
 
 TEST(Cpt, SeedExampleParses) {
-    Cpt c = read_cpt_file(SIGCHAIN_TEST_DATA "/seed/hawkeye_nadir.cpt");
+    Cpt c = read_cpt_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye_nadir.cpt");
     ASSERT_EQ(c.points.size(), 4u);
     const ControlPoint& a = c.points[0];
     EXPECT_EQ(a.name, "new_asphalt");
@@ -51,7 +51,7 @@ TEST(Cpt, MinorVersionsAreAccepted) {
 }
 
 TEST(Cpt, RoundTripIsExactAndIdempotent) {
-    Cpt c = read_cpt_file(SIGCHAIN_TEST_DATA "/seed/hawkeye_nadir.cpt");
+    Cpt c = read_cpt_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye_nadir.cpt");
     c.points[1].reference_row = 1.0 / 3.0;
     std::string once = written(c);
     EXPECT_EQ(once.substr(0, kMagic.size()), kMagic);

@@ -67,7 +67,7 @@ std::string written(const Ems& ems) {
 }  // namespace
 
 TEST(Ems, SeedSampleHasTheValuesTheFigureShows) {
-    Ems e = read_ems_file(SIGCHAIN_TEST_DATA "/seed/fall_grass.ems");
+    Ems e = read_ems_file(SIGCHAIN_TEST_DATA "/white1996/fall_grass.ems");
     EXPECT_EQ(e.layout, EmsLayout::Wavenumber);
     const std::vector<double> first = {1,        1,        0.99896,  0.998968, 0.997936,
                                        0.997936, 0.996904, 0.995872, 0.99484};
@@ -152,7 +152,7 @@ TEST(Ems, RoundTripEveryLayout) {
         EXPECT_EQ(a, b);
         EXPECT_EQ(written(b), once);
     }
-    Ems seed = read_ems_file(SIGCHAIN_TEST_DATA "/seed/fall_grass.ems");
+    Ems seed = read_ems_file(SIGCHAIN_TEST_DATA "/white1996/fall_grass.ems");
     EXPECT_EQ(parsed(written(seed)), seed);
 }
 

@@ -52,7 +52,7 @@ std::string written(const Ext& ext) {
 }  // namespace
 
 TEST(Ext, ExampleCanopyParses) {
-    Ext e = read_ext_file(SIGCHAIN_TEST_DATA "/seed/tree_canopy.ext");
+    Ext e = read_ext_file(SIGCHAIN_TEST_DATA "/white1996/tree_canopy.ext");
     ASSERT_EQ(e.curves.size(), 2u);
     EXPECT_EQ(e.curves[0].wavelength_um.size(), 8u);
     EXPECT_EQ(e.curves[0].wavelength_um.front(), 0.40);
@@ -71,7 +71,7 @@ TEST(Ext, ExtinctionIsLinearInWavelengthAndClamped) {
 }
 
 TEST(Ext, TransmittanceFollowsBeerLambertOverTheSlantPath) {
-    // DESIGN.md section 3: t = exp(-k d / |cos theta|).
+    // ext(5): t = exp(-k d / |cos theta|).
     EXPECT_DOUBLE_EQ(transmittance(500, 0.002, 1), std::exp(-1.0));
     EXPECT_DOUBLE_EQ(transmittance(500, 0.002, 0.5), std::exp(-2.0));
     EXPECT_DOUBLE_EQ(transmittance(500, 0.002, -0.5), std::exp(-2.0));  // from the back side

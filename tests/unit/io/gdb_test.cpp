@@ -91,8 +91,8 @@ void expect_same(const Gdb& a, const Gdb& b) {
 }  // namespace
 
 TEST(Gdb, SampleSceneParses) {
-    Gdb g = read_gdb_file(SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb");
-    EXPECT_EQ(g.file, SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb");
+    Gdb g = read_gdb_file(SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb");
+    EXPECT_EQ(g.file, SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb");
     ASSERT_EQ(g.objects.size(), 2u);
     EXPECT_EQ(g.objects[0].name, "ground");
     EXPECT_EQ(g.objects[0].id, "1-0-0");
@@ -145,7 +145,7 @@ TEST(Gdb, TrianglesAndCommentsAndEmptyScene) {
 }
 
 TEST(Gdb, RoundTripIsExactAndIdempotent) {
-    for (const char* name : {"/seed/box_on_plane.gdb", "/geom/tower.gdb"}) {
+    for (const char* name : {"/white1996/box_on_plane.gdb", "/geom/tower.gdb"}) {
         Gdb a = read_gdb_file(std::string(SIGCHAIN_TEST_DATA) + name);
         std::string once = written(a);
         Gdb b = parsed(once);

@@ -106,7 +106,7 @@ const std::string kFull =
 }  // namespace
 
 TEST(Mat, SeedSampleParsesToTheSeedValues) {
-    Mat mat = read_mat_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.mat");
+    Mat mat = read_mat_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.mat");
     ASSERT_EQ(mat.materials.size(), 1u);
     const Material& m = mat.materials[0];
     EXPECT_EQ(m.name, "grass");
@@ -180,7 +180,7 @@ TEST(Mat, RoundTripKeepsValuesAndStyleAndIsIdempotent) {
             expect_same(a.materials[i], b.materials[i]);
         EXPECT_EQ(written(b), once);
     }
-    Mat seed = read_mat_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.mat");
+    Mat seed = read_mat_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.mat");
     expect_same(parsed(written(seed)).materials.at(0), seed.materials.at(0));
 }
 

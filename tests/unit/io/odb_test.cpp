@@ -75,7 +75,7 @@ const std::string kMixed =
 }  // namespace
 
 TEST(Odb, SampleSceneParses) {
-    Odb odb = read_odb_file(SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb");
+    Odb odb = read_odb_file(SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb");
     ASSERT_EQ(odb.objects.size(), 1u);
     const OdbObject& o = odb.objects[0];
     EXPECT_EQ(o.source, OdbSource::Gdb);
@@ -87,7 +87,7 @@ TEST(Odb, SampleSceneParses) {
     EXPECT_EQ(o.instances[1].rotation_deg, (std::array<double, 3>{0, 0, 90}));
     EXPECT_TRUE(o.instances[2].is_matrix);
     EXPECT_EQ(o.instances[2].matrix, (Matrix4{1, 0, 0, 40, 0, 1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1}));
-    EXPECT_EQ(resolve_odb_path(odb, o.path), SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb");
+    EXPECT_EQ(resolve_odb_path(odb, o.path), SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb");
 }
 
 TEST(Odb, OtherSourcesAndUnitSpellings) {
@@ -167,7 +167,7 @@ TEST(Odb, RoundTripIsExactAndIdempotent) {
         expect_same(a, b);
         EXPECT_EQ(written(b), once);
     }
-    Odb seed = read_odb_file(SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb");
+    Odb seed = read_odb_file(SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb");
     expect_same(seed, parsed(written(seed)));
 }
 

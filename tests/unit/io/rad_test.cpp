@@ -88,7 +88,7 @@ Rad parsed(const std::string& text) { return parse_rad(TextInput::from_string(te
 }  // namespace
 
 TEST(Rad, SeedSampleParsesToTheSeedValues) {
-    Rad r = read_rad_file(SIGCHAIN_TEST_DATA "/seed/hawkeye_band3.rad");
+    Rad r = read_rad_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye_band3.rad");
     EXPECT_EQ(r.sensor_altitude_km, 1.0);
     EXPECT_EQ(r.min_wavelength_um, 0.595238);
     EXPECT_EQ(r.max_wavelength_um, 0.694444);
@@ -153,7 +153,7 @@ TEST(Rad, RoundTripLegacyAndSky) {
 }
 
 TEST(Rad, RoundTripSeed) {
-    Rad a = read_rad_file(SIGCHAIN_TEST_DATA "/seed/hawkeye_band3.rad");
+    Rad a = read_rad_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye_band3.rad");
     Rad b = parsed(written(a));
     EXPECT_EQ(a, b);
 }

@@ -27,7 +27,7 @@ std::string written(const Rsd& rsd) {
 }  // namespace
 
 TEST(Rsd, SeedSampleParsesToTheSeedValues) {
-    Rsd r = read_rsd_file(SIGCHAIN_TEST_DATA "/seed/30Sep95800L.rsd");
+    Rsd r = read_rsd_file(SIGCHAIN_TEST_DATA "/white1996/30Sep95800L.rsd");
     ASSERT_EQ(r.levels.size(), 19u);
     EXPECT_EQ(r.levels[0], (RsdLevel{0.218, 998, 23.8, 7.8}));
     EXPECT_EQ(r.levels[5], (RsdLevel{2.610, 750, 9.1, -17.7}));
@@ -49,7 +49,7 @@ TEST(Rsd, DewPointMayExceedTemperatureByRounding) {
 }
 
 TEST(Rsd, RoundTripIsExactAndIdempotent) {
-    Rsd r = read_rsd_file(SIGCHAIN_TEST_DATA "/seed/30Sep95800L.rsd");
+    Rsd r = read_rsd_file(SIGCHAIN_TEST_DATA "/white1996/30Sep95800L.rsd");
     r.levels[3].dew_point_c = 1.0 / 3.0;
     std::string once = written(r);
     Rsd again = parse(once);

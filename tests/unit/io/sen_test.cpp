@@ -27,7 +27,7 @@ std::string written(const Sen& sen) {
 }  // namespace
 
 TEST(Sen, SeedSampleParsesToTheSeedValues) {
-    Sen s = read_sen_file(SIGCHAIN_TEST_DATA "/seed/dcs420_band1.sen");
+    Sen s = read_sen_file(SIGCHAIN_TEST_DATA "/white1996/dcs420_band1.sen");
     EXPECT_EQ(s.gain, 1);
     EXPECT_EQ(s.bias, 0);
     EXPECT_EQ(s.response, (std::vector<double>{0.30, 0.50, 0.87, 0.75, 0.63, 0.65, 0.65}));

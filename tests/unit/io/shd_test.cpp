@@ -80,7 +80,7 @@ TEST(Shd, ParsesHeaderFacetsAndPoints) {
 }
 
 TEST(Shd, SampleParses) {
-    Shd s = read_shd_file(SIGCHAIN_TEST_DATA "/seed/box_on_plane.shd");
+    Shd s = read_shd_file(SIGCHAIN_TEST_DATA "/white1996/box_on_plane.shd");
     EXPECT_EQ(s.facets.size(), 6u);
     EXPECT_EQ(s.steps, 5);
     EXPECT_EQ(s.facets[0].sunlit(4), 0.95);

@@ -30,7 +30,7 @@ std::string written(const Snd& snd) {
 }  // namespace
 
 TEST(Snd, SeedSampleParsesToTheSeedValues) {
-    Snd s = read_snd_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.snd");
+    Snd s = read_snd_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd");
     EXPECT_EQ(s.sensor_altitude_km, 1.0);
     ASSERT_EQ(s.bands.size(), 3u);
     EXPECT_EQ(s.bands[0], (SndBand{14400, 16800, 60}));
@@ -76,7 +76,7 @@ TEST(Snd, YearsAndHemispheres) {
 }
 
 TEST(Snd, RoundTripKeepsTheLegacyForm) {
-    Snd s = read_snd_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.snd");
+    Snd s = read_snd_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd");
     std::string once = written(s);
     EXPECT_EQ(once,
               "1\n3\n14400 16800 60\n16800 20000 80\n20000 25000 125\n-77 78 1\n9 30 95\n19\n5\n"

@@ -29,7 +29,7 @@ std::string written(const Tmp& tmp) {
 }  // namespace
 
 TEST(Tmp, ExampleParses) {
-    Tmp t = read_tmp_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.tmp");
+    Tmp t = read_tmp_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.tmp");
     EXPECT_EQ(t.time_hours, 38.0);
     ASSERT_EQ(t.facets.size(), 4u);
     EXPECT_EQ(t.facets[0].facet_id, "1-1-1");
@@ -47,7 +47,7 @@ TEST(Tmp, TimeIsOptionalAndRowsMayBeAbsent) {
 }
 
 TEST(Tmp, RoundTripIsExactAndIdempotent) {
-    Tmp t = read_tmp_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.tmp");
+    Tmp t = read_tmp_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.tmp");
     t.facets[1].temperature_k = 273.15 + 1.0 / 3.0;
     t.time_hours = 14.25;
     std::string once = written(t);

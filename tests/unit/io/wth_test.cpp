@@ -14,7 +14,7 @@ using namespace sigchain::io;
 
 namespace {
 
-const std::string kSeedPath = SIGCHAIN_TEST_DATA "/seed/weather_30_Sep_95.wth";
+const std::string kSeedPath = SIGCHAIN_TEST_DATA "/white1996/weather_30_Sep_95.wth";
 
 Wth parse(const std::string& text) { return parse_wth(TextInput::from_string(text, "t.wth")); }
 

@@ -19,7 +19,7 @@ using geo::Vec3;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
-const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/seed/";
+const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/white1996/";
 
 Atmosphere example_sky() {
     std::string file = kSeed + "example_sky.rad";

@@ -1,4 +1,4 @@
-// MaterialLibrary and MaterialOptics: loading the seed's .mat/.ems, models, transmission,
+// MaterialLibrary and MaterialOptics: loading the .mat/.ems of White (1996), models, transmission,
 // errors naming the .mat line, and the reflectance/fall-off/transmittance formulas.
 #include "radiometry/material.hpp"
 
@@ -15,7 +15,7 @@
 namespace sigchain::radiometry {
 namespace {
 
-const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/seed/";
+const std::string kSeed = std::string(SIGCHAIN_TEST_DATA) + "/white1996/";
 
 SpectralGrid grid_of(std::vector<double> wavelengths_um) {
     SpectralGrid g;

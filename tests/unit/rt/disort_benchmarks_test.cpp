@@ -194,7 +194,7 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
     std::sort(p.umu.begin(), p.umu.end());
     const Result r = solve(p);
 
-    // Tolerances: fluxes 0.1 %, intensities 1 % relative (the requirement), with an
+    // Tolerances: fluxes 0.1 %, intensities 1 % relative (the required accuracy), with an
     // absolute floor for values near zero: 1e-3 of the case's incident flux scale
     // (beam mu0 F + pi (isotropic + top emission), or pi B of the hottest emitter for the
     // internal-source cases), and that floor / pi for intensities. Below it a relative

@@ -1,5 +1,5 @@
 // Tests of lib/scenegen/hawkeye: the hawkeye scene's terrain (the 60 m gorge, hills of
-// 15-25 m), its counts against the issue's "about 850 structures" and "about 3000
+// 15-25 m), its counts against the targets "about 850 structures" and "about 3000
 // trees", raised pavement, placement on the terrain, and determinism.
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@ namespace io = sigchain::io;
 
 namespace {
 
-io::Snd seed_snd() { return io::read_snd_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.snd"); }
+io::Snd seed_snd() { return io::read_snd_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd"); }
 
 io::WthRow row(double t, double air_c, double dew_c) {
     io::WthRow r;

@@ -34,11 +34,11 @@ th::FacetThermal aluminium_plate() {
     return f;
 }
 
-// The seed's Rochester day (weather_30_Sep_95.wth, hawkeye.snd), sampled every minute.
+// The Rochester day of White (1996) (weather_30_Sep_95.wth, hawkeye.snd), sampled every minute.
 std::vector<th::EnvironmentStep> seed_day(double start_h, double end_h) {
-    const std::string wth_path = SIGCHAIN_TEST_DATA "/seed/weather_30_Sep_95.wth";
+    const std::string wth_path = SIGCHAIN_TEST_DATA "/white1996/weather_30_Sep_95.wth";
     io::Wth wth = io::read_wth_file(wth_path);
-    io::Snd snd = io::read_snd_file(SIGCHAIN_TEST_DATA "/seed/hawkeye.snd");
+    io::Snd snd = io::read_snd_file(SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd");
     return th::sample_environment(wth, wth_path, snd, start_h, end_h, 60, nullptr);
 }
 
@@ -60,7 +60,7 @@ std::vector<th::EnvironmentStep> still_air(double air_k, double hours, double h_
 
 }  // namespace
 
-// Energy balance over the seed's second day (24 h to 48 h): absorbed - emitted -
+// Energy balance over the second day of White's (1996) weather (24 h to 48 h): absorbed - emitted -
 // convected - stored = 0 up to the linearisation of T^4 inside each 60 s step. That
 // error is about 6 eps sigma T^2 dT^2 per step with dT < 0.1 K: < 3e-4 W/m2, i.e.
 // < 30 J/m2 over the day, against ~3e7 J/m2 absorbed (sun and long-wave); the bound

@@ -52,7 +52,7 @@ std::vector<std::string> keys_of(const std::vector<th::SceneFacet>& facets) {
 }  // namespace
 
 TEST(SceneFacets, GdbKeysNormalsAndOverrides) {
-    auto facets = th::read_scene_facets(SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb");
+    auto facets = th::read_scene_facets(SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb");
     ASSERT_EQ(facets.size(), 6u);
     EXPECT_EQ(facets[0].key, "1-1-1");
     expect_normal(find(facets, "2-1-1"), 0, 0, 1);
@@ -64,12 +64,13 @@ TEST(SceneFacets, GdbKeysNormalsAndOverrides) {
     EXPECT_EQ(top.where.line, 44);
 }
 
-// The seed's neighbourhood.odb places box_on_plane.gdb three times: as built, turned a
-// quarter turn counter-clockwise about z (the south wall then faces east: Rz(90)
-// maps (0,-1,0) to (1,0,0)), and stretched x2 in z (normals of the walls and the top
-// keep their directions: the inverse transpose of diag(1,1,2) is diag(1,1,0.5)).
+// tests/data/white1996/neighbourhood.odb places box_on_plane.gdb three times: as built,
+// turned a quarter turn counter-clockwise about z (the south wall then faces east:
+// Rz(90) maps (0,-1,0) to (1,0,0)), and stretched x2 in z (normals of the walls and
+// the top keep their directions: the inverse transpose of diag(1,1,2) is
+// diag(1,1,0.5)).
 TEST(SceneFacets, OdbPlacementsPrefixKeysAndTurnNormals) {
-    auto facets = th::read_scene_facets(SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb");
+    auto facets = th::read_scene_facets(SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb");
     ASSERT_EQ(facets.size(), 18u);
     expect_normal(find(facets, "1.1/2-1-2"), 0, -1, 0);
     expect_normal(find(facets, "1.2/2-1-2"), 1, 0, 0);

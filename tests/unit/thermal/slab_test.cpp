@@ -25,7 +25,7 @@ struct Harmonic {
 
 // Periodic absorbed flux q0 cos(wt) on a thick slab with a linear surface loss h:
 // the classical semi-infinite solution (Carslaw & Jaeger, Conduction of Heat in
-// Solids, 2nd ed., 1959, sec. 2.6; the brief's formula) gives the surface amplitude
+// Solids, 2nd ed., 1959, sec. 2.6) gives the surface amplitude
 // q0 / sqrt((h + k/d)^2 + (k/d)^2) and lag atan((k/d)/(h + k/d)) / w, d = sqrt(2 alpha/w).
 // For k = 1.4, rho c = 2e6, h = 20, q0 = 400, 24 h: 12.60 K and 1.24 h.
 TEST(Slab, PeriodicSurfaceFluxMatchesSemiInfiniteSolution) {
@@ -58,7 +58,7 @@ TEST(Slab, PeriodicSurfaceFluxMatchesSemiInfiniteSolution) {
         hm.amplitude = 2 * std::hypot(a, b) / steps_per_period;
         hm.phase_rad = std::atan2(b, a);
     }
-    // Brief's requirement: amplitude within 1 %. Phase: backward Euler lags by about
+    // Requirement: amplitude within 1 %. Phase: backward Euler lags by about
     // dt/2 = 30 s and the grid adds a little; 2 % of the lag (89 s) bounds both.
     EXPECT_NEAR(hm.amplitude, amp_ref, 0.01 * amp_ref);
     EXPECT_NEAR(hm.phase_rad / w, lag_ref_s, 0.02 * lag_ref_s);

@@ -1,4 +1,4 @@
-// Tests of therm's job: the seed's box_on_plane scene end to end, facet resolution and
+// Tests of therm's job: the box_on_plane scene of White (1996) end to end, facet resolution and
 // its errors, the sun/shadow lookup, and refused weather windows.
 #include "thermal/therm_job.hpp"
 
@@ -18,7 +18,7 @@ namespace io = sigchain::io;
 
 namespace {
 
-const std::string kSeed = SIGCHAIN_TEST_DATA "/seed/";
+const std::string kSeed = SIGCHAIN_TEST_DATA "/white1996/";
 const std::string kTherm = SIGCHAIN_TEST_DATA "/therm/";
 
 th::ThermJob seed_job() {
@@ -50,7 +50,7 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 }  // namespace
 
-// The seed's scene at 14:00 on 30 Sep 1995 (air 17 C): every facet solved, sunlit
+// The scene of White (1996) at 14:00 on 30 Sep 1995 (air 17 C): every facet solved, sunlit
 // horizontal surfaces warmer than the air, the north wall (sun behind it, half the
 // sky) cooler than the south wall, all within physical bounds of the air temperature.
 TEST(ThermJob, SeedBoxOnPlane) {
@@ -150,7 +150,7 @@ TEST(ThermJob, SunFactorsFromTheHistory) {
 }
 
 TEST(ThermJob, WeatherWindowMustCoverTheHistory) {
-    // The seed's weather cut to 0..30 h: the scene time (38 h) is outside.
+    // The weather of White (1996) cut to 0..30 h: the scene time (38 h) is outside.
     std::ifstream in(kSeed + "weather_30_Sep_95.wth");
     std::string text, line;
     int row = -1;
@@ -181,7 +181,7 @@ TEST(ThermJob, SceneTimeMustMatchTheSnd) {
 
 // An .odb of an OBJ object (quad_tri.obj: a grass quad, an asphalt triangle taken as
 // wood) and a DEM (flat.odb's grass terrain), every facet given the history of the
-// seed's sunlit ground 1-1-1 under the keys trace gives them (scene::load_scene).
+// sunlit ground 1-1-1 of White's (1996) scene under the keys trace gives them (scene::load_scene).
 // The rows are those keys in scene order. The grass facets share history and
 // material; flat.asc lies about 9 km south-east of hawkeye.snd's point, about which it
 // is placed, so its ellipsoid surface is tilted by ~1.4e-3 rad in the scene frame:

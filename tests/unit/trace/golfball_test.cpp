@@ -117,7 +117,7 @@ TEST(Golfball, MatricesAreCentredNearTheSeedZeniths) {
 }
 
 TEST(Golfball, MatrixChoiceThresholds) {
-    // Seed 5.2.3: > 33.75 -> 3, > 11.25 -> 2, else 1.
+    // White (1996), section 5.2.3: > 33.75 -> 3, > 11.25 -> 2, else 1.
     EXPECT_EQ(golfball_matrix(0), 1);
     EXPECT_EQ(golfball_matrix(11.25), 1);
     EXPECT_EQ(golfball_matrix(11.26), 2);

@@ -1,7 +1,7 @@
-// Analytic cases for render(), each against an independent reference (issue 4,
-// "Tests"): white furnace, Lambertian plate under sun and sky, the sky-view factor of
-// an infinite street canyon, the shadow of a box, and the sun in the specular
-// direction of a glossy plate (White (1996), section 5, case 2b).
+// Analytic cases for render(), each against an independent reference: white furnace,
+// Lambertian plate under sun and sky, the sky-view factor of an infinite street
+// canyon, the shadow of a box, and the sun in the specular direction of a glossy
+// plate (White (1996), section 5, case 2b).
 //
 // The scenes are built in memory (scene::MeshData) and seen by an orthographic
 // camera defined here, so the expected values follow from geometry alone.
@@ -165,9 +165,9 @@ std::vector<double> canyon_svf(const Canyon& k, Sampling s, long n, double r, do
     return v;
 }
 
-// The seed's golf ball (one ray at each cell's centre) is a 61-point quadrature: on
+// The golf ball of White (1996) (one ray at each cell's centre) is a 61-point quadrature: on
 // a sharp sky/wall edge its error is the part of a cell on the wrong side of the
-// edge. Measured (closing note of issue 4): centre 0.5202 (+16.3%), floor mean
+// edge. Measured (when golfball was written): centre 0.5202 (+16.3%), floor mean
 // 0.4010 (-3.2%); the centre value was checked by hand, ring by ring. The test pins
 // these (a change means the pattern changed) rather than pretending 1%.
 TEST(Physics, CanyonSkyViewFactorSeedGolfballErrorIsTheCellSize) {
@@ -186,7 +186,7 @@ TEST(Physics, CanyonSkyViewFactorSeedGolfballErrorIsTheCellSize) {
 
 // The jittered golf ball (each cell's ray drawn inside the cell, cosine-weighted) is
 // stratified and unbiased: with 16 primary samples per pixel, the floor average and
-// the centre are within 1% (issue 4's requirement for golfball).
+// the centre are within 1% (the accuracy required of golfball).
 TEST(Physics, CanyonSkyViewFactorJitteredGolfballWithinOnePercent) {
     const double w = 10, h = 10, r = 0.5, sky = 0.01;
     const long columns = 41;
@@ -252,14 +252,14 @@ TEST(Physics, BoxShadowMatchesTrigonometry) {
             if (res.radiance.at(0, row, x) < 0.5 * lit) ++shadowed;
         }
         long expected = (y > -2 && y < 2) ? 12 : 0;  // 3 m / 0.25 m
-        // Within one pixel along the edge (issue 4); rows that straddle y = +-2 can
+        // Within one pixel along the edge; rows that straddle y = +-2 can
         // be either.
         if (std::abs(std::abs(y) - 2) < pitch) continue;
         EXPECT_NEAR(shadowed, expected, 1) << "row " << row;
     }
 }
 
-// --- Sun in the specular direction of a glossy plate (seed case 2b). ---
+// --- Sun in the specular direction of a glossy plate (White (1996), section 5, case 2b). ---
 
 TEST(Physics, SunInSpecularDirectionIsFiniteForEveryStrategy) {
     const double r = 0.4, s = 0.5, es = 0.15, sky = 0.004, zenith = 30, n = 100;
@@ -297,7 +297,7 @@ TEST(Physics, SunInSpecularDirectionIsFiniteForEveryStrategy) {
             RecordProperty("phong_reference", std::to_string(ref));
             // The sun term (98% of ref) is explicit in golfball and Monte Carlo, so
             // both are within 2% of the reference; dirsig's scheme is DIRSIG 3's and
-            // is only required to be finite (its error is what the seed measured).
+            // is only required to be finite (its error is what White (1996) measured).
             EXPECT_NEAR(mc, ref, 0.02 * ref);
             EXPECT_NEAR(golf, ref, 0.02 * ref);
         }

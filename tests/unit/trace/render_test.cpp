@@ -422,7 +422,8 @@ TEST(Render, EmissionFromFacetTemperatures) {
 }
 
 TEST(Render, DirsigSchemeWeightsTheSunAsDirsig3) {
-    // The dirsig strategy's documented scheme (C_render_notes.md, White (1996), section 3.4/3.6.5):
+    // The dirsig strategy's documented scheme (trace(1), SAMPLING STRATEGIES; White (1996),
+    // section 3.4/3.6.5):
     // L = rho [(1 - s)(E cos/pi + L_sky) + s (L_sky(mirror) + [sun within 10 deg of
     // the mirror] E cos/pi)], for any lobe model. A plate (rho 0.4, s 0.5) under a
     // uniform sky, sun at zenith 30 due north; views with the sun in the mirror

@@ -1,7 +1,7 @@
 // trace --shadow-history (shadow_history.hpp): the time grid and SPA sun against therm's
 // clock and lib/geo; sunlit fractions, transmittances and sky-view factors against
-// geometry worked by hand; key agreement with therm's scene reader; and (issue 6,
-// trace's emissive part) a blackbody plate rendered through tau2 = 1.
+// geometry worked by hand; key agreement with therm's scene reader; and (the thermal
+// chain, trace's emissive part) a blackbody plate rendered through tau2 = 1.
 #include "trace/shadow_history.hpp"
 
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 using test::Mesh;
 
-const std::string kSnd = SIGCHAIN_TEST_DATA "/seed/hawkeye.snd";
+const std::string kSnd = SIGCHAIN_TEST_DATA "/white1996/hawkeye.snd";
 
 radiometry::MaterialLibrary grey(std::size_t samples = 3) {
     return radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, samples)});
@@ -262,7 +262,7 @@ TEST(ShadowHistory, KeysAndNormalsAgreeWithThermsSceneReader) {
     // and facing sides must be the ones therm reads, including the turned and the
     // stretched instance.
     for (const std::string path :
-         {SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb", SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb",
+         {SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb", SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb",
           SIGCHAIN_TEST_DATA "/shadow/facing.gdb"}) {
         const ShadowScene sc = load_shadow_scene(path, 1.0, false);
         const auto therm = thermal::read_scene_facets(path);
@@ -297,7 +297,7 @@ TEST(ShadowHistory, SceneIsTheOneLoadSceneBuilds) {
     // load_shadow_scene re-assembles the .odb to keep each facet's triangles; the traced
     // scene must be load_scene's: the same placements, facets (in order, by key),
     // triangles and bounds (the .odb's stretched instance is twice as tall).
-    const std::string path = SIGCHAIN_TEST_DATA "/seed/neighbourhood.odb";
+    const std::string path = SIGCHAIN_TEST_DATA "/white1996/neighbourhood.odb";
     scene::LoadOptions lo;
     const scene::Scene ref = scene::load_scene(path, lo);
     const ShadowScene sc = load_shadow_scene(path, 1.0, false);
@@ -322,7 +322,7 @@ TEST(ShadowHistory, SceneIsTheOneLoadSceneBuilds) {
 }
 
 TEST(RenderEmission, BlackbodyPlateThroughUnitTransmissionGivesPlanck) {
-    // Issue 6: a blackbody plate (emissivity 1) at 300 K, no sun, no sky, tau2 = 1 and
+    // Thermal chain: a blackbody plate (emissivity 1) at 300 K, no sun, no sky, tau2 = 1 and
     // no path radiance: every thermal sample is B(lambda, 300 K). Reference: Planck's
     // law with CODATA 2018 h, c, k written out here (1 W m-2 sr-1 m-1 = 1e-10 W cm-2
     // sr-1 um-1); and B(10 um, 300 K) = 9.924 W m-2 sr-1 um-1 (tabulated). Tolerance:

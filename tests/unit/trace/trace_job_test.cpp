@@ -31,7 +31,7 @@ struct Recorder final : Reporter {
 };
 
 const std::string kData = SIGCHAIN_TEST_DATA "/trace/";
-const std::string kGdb = SIGCHAIN_TEST_DATA "/seed/box_on_plane.gdb";
+const std::string kGdb = SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb";
 
 TraceJob box_job(const std::string& output) {
     TraceJob job;

@@ -1,5 +1,5 @@
-# box_on_plane.gdb: the seed's training scene (section 4.2.1): "a box ... sitting on a
-# flat surface". Hand-built for sigchain; the seed shows no .gdb sample.
+# box_on_plane.gdb: the training scene of White (1996), section 4.2.1: "a box ... sitting
+# on a flat surface". Hand-built for sigchain; White (1996) shows no .gdb sample.
 # Units are not in the file (the .odb or the .adv `units` key gives them): metres here.
 # Ground: a 20 x 20 quad at z = 0 (grass, material 1). Box: 4 x 4 x 3, x and y from
 # 8 to 12, a top and four walls (wood, material 37, White (1996), table 4.2 defaults:
