@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "core/parallel.hpp"
+#include "trace/adjacency.hpp"
 #include "trace/sampling.hpp"
 #include "trace/tracer.hpp"
 
@@ -65,6 +66,7 @@ bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
     if (!hit) return false;
     double va = cam.view_angle_deg(d);
     c.in.atmosphere->path(d, va, {b.tau2, n}, {b.lus, n}, {b.lue, n});
+    c.adjacency->add_path(va, b.lus);  // the environment's light scattered toward the sensor
     for (std::size_t k = 0; k < n; ++k) {
         double l = b.tau2[k] * b.leave[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0);
         w.pixel[k] += l;
@@ -146,6 +148,7 @@ std::vector<std::string> skipped(const TraceContext& c) {
     if (!c.in.atmosphere->has_sky()) out.push_back("downwelled sky (no sky in the .rad)");
     if (c.opt.bounces > 1) out.push_back("bounces beyond 1 (secondary hits are one bounce deep)");
     if (c.opt.bounces == 0) out.push_back("light from neighbouring facets (bounces 0)");
+    if (!c.adjacency->active()) out.push_back(c.adjacency->skipped());
     return out;
 }
 
