@@ -2,7 +2,8 @@
 // control7 writes it, and scene node: three DCS 420 bands of 41 samples over
 // 14400-25000 cm-1, 156 view angles, a 18 x 36 sky), on one thread and on every core;
 // then tau1, L_us (nadir) and L_ds (zenith cell and the diffuse irradiance) at 0.45,
-// 0.55 and 0.65 um for the same deck. The target: under 2 s on one core.
+// 0.55 and 0.65 um for the same deck, with the coupling terms (S, t_d_down, t_d_up at
+// nadir). Target: under 2 s on one core; the coupling terms' share printed beside.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,10 +18,11 @@ namespace {
 const std::string kSource = SIGCHAIN_SOURCE_DIR;
 
 double seconds_for(const sigchain::io::Cdk& deck, const sigchain::io::Snd& snd, unsigned threads,
-                   int repeats) {
+                   int repeats, bool coupling = true) {
     atmos::RadianceOptions o;
     o.data_dir = kSource + "/data";
     o.threads = threads;
+    o.coupling = coupling;
     double best = 1e300;
     for (int r = 0; r < repeats; ++r) {
         const auto start = std::chrono::steady_clock::now();
@@ -46,6 +48,13 @@ int main() {
                 snd.bands.size(), samples, snd.view_angle_count());
     std::printf("  1 thread : %.3f s (best of 3; target < 2 s)\n", seconds_for(deck, snd, 1, 3));
     std::printf("  %u threads: %.3f s (best of 3)\n", cores, seconds_for(deck, snd, cores, 3));
+    // The coupling terms' extra solve per sample (rad(5) COUPLING), side by side on
+    // one thread: with and without.
+    const double with = seconds_for(deck, snd, 1, 3, true);
+    const double without = seconds_for(deck, snd, 1, 3, false);
+    std::printf("  coupling terms: %.3f s with, %.3f s without (1 thread, best of 3): "
+                "+%.1f %%\n",
+                with, without, 100 * (with / without - 1));
 
     // The three wavelengths of README.md's Hawkeye table, one sample each, nadir only.
     snd.bands.clear();
@@ -63,14 +72,17 @@ int main() {
                 "visibility %.2f km\n",
                 rep.sun_zenith_deg, rep.sun_azimuth_deg, rep.ground_km, rep.sensor_km,
                 rep.visibility_km);
-    std::printf("%8s %12s %8s %8s %12s %12s %12s\n", "um", "Es", "tau1", "tau2", "L_us",
-                "L_ds(zen)", "E_diffuse");
+    std::printf("%8s %12s %8s %8s %12s %12s %12s %8s %8s %8s\n", "um", "Es", "tau1", "tau2",
+                "L_us", "L_ds(zen)", "E_diffuse", "S", "t_d_dn", "t_d_up");
     for (std::size_t b = 0; b < rads.size(); ++b) {
         const auto& r = rads[b];
-        std::printf("%8.4f %12.5g %8.4f %8.4f %12.5g %12.5g %12.5g\n", r.samples[0].wavelength_um,
-                    r.samples[0].solar_irradiance, r.samples[0].sun_transmission,
-                    r.views[0].path[0].transmission, r.views[0].path[0].scattered_radiance,
-                    r.sky->cells[0].scattered_radiance[0], rep.ground_diffuse_irradiance[b][0]);
+        const auto& k = *r.sky->coupling;
+        std::printf("%8.4f %12.5g %8.4f %8.4f %12.5g %12.5g %12.5g %8.4f %8.4f %8.4f\n",
+                    r.samples[0].wavelength_um, r.samples[0].solar_irradiance,
+                    r.samples[0].sun_transmission, r.views[0].path[0].transmission,
+                    r.views[0].path[0].scattered_radiance, r.sky->cells[0].scattered_radiance[0],
+                    rep.ground_diffuse_irradiance[b][0], k.spherical_albedo[0],
+                    k.diffuse_down[0], k.diffuse_up[0][0]);
     }
     std::printf("units: Es, E_diffuse W cm-2 um-1; L W cm-2 sr-1 um-1; L_ds(zen) is the mean of "
                 "the first ring's first cell (0-5 deg zenith)\n");

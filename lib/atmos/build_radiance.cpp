@@ -136,20 +136,25 @@ io::Rad rad_header(const io::SndBand& band, const io::Snd& snd, const std::vecto
 }
 
 // The sky and upwelled grids without their samples.
-io::RadSky sky_header(const geo::SolarPosition& sun, const Directions& dirs) {
+io::RadSky sky_header(const geo::SolarPosition& sun, const Directions& dirs, bool coupling) {
     io::RadSky sky;
     sky.sun_zenith_deg = std::clamp(sun.zenith_deg, 0.0, 180.0);
     sky.sun_azimuth_deg = wrap_degrees(sun.azimuth_deg);
     sky.zenith_count = dirs.zenith_count;
     sky.azimuth_count = dirs.azimuth_count;
     sky.cells = dirs.cells;
-    sky.version_minor = 1;  // the UPWELLED grid
+    sky.version_minor = coupling ? 2 : 1;  // 1: the UPWELLED grid; 2: the COUPLING terms
     io::RadUpwelled up;
     up.zenith_count = static_cast<long>(dirs.up_zenith_deg.size());
     up.azimuth_count = static_cast<long>(dirs.up_azimuth_deg.size());
     for (double z : dirs.up_zenith_deg)
         for (double a : dirs.up_azimuth_deg) up.cells.push_back({z, a, {}, {}});
     sky.upwelled = std::move(up);
+    if (coupling) {
+        io::RadCoupling terms;
+        terms.diffuse_up.resize(dirs.view_mu.size());
+        sky.coupling = std::move(terms);
+    }
     return sky;
 }
 
@@ -166,6 +171,12 @@ void append_sample(io::Rad& rad, io::RadSky& sky, const SampleResult& r) {
         up[c].scattered_radiance.push_back(r.us[c]);
         up[c].emitted_radiance.push_back(r.ue[c]);
     }
+    if (!sky.coupling) return;
+    io::RadCoupling& coupling = *sky.coupling;
+    coupling.spherical_albedo.push_back(r.spherical_albedo);
+    coupling.diffuse_down.push_back(r.diffuse_down);
+    for (std::size_t v = 0; v < coupling.diffuse_up.size(); ++v)
+        coupling.diffuse_up[v].push_back(r.diffuse_up[v]);
 }
 
 }  // namespace
@@ -252,7 +263,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     std::size_t j = 0;
     for (const io::SndBand& band : snd.bands) {
         io::Rad rad = rad_header(band, snd, views, height_km);
-        io::RadSky sky = sky_header(sun, dirs);
+        io::RadSky sky = sky_header(sun, dirs, o.coupling);
         std::vector<double> ground_irradiance;
         for (long s = 0; s < band.sample_count(); ++s, ++j) {
             append_sample(rad, sky, results[j]);

@@ -23,6 +23,9 @@ struct RadianceOptions {
     double thermal_min_wavelength_um = 2.5;  // layer emission solved at and above this
     double merge_tau = 0.01;                 // the solver merges consecutive layers while
                                              // their optical depth stays within this (0: never)
+    bool coupling = true;                    // solve and write the COUPLING terms (rad(5)):
+                                             // one more solve per sample (benchmarks turn it
+                                             // off to measure it)
     unsigned threads = 0;                    // worker threads (0: every core); results do
                                              // not depend on it
 };

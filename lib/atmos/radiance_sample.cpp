@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "atmos/rayleigh.hpp"
+#include "rt/coupling.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
 
@@ -193,6 +194,21 @@ void read_tables(const SampleSetup& s, const Solutions& sol, const std::vector<L
     if (!sol.thermal.levels.empty()) res.ground_irradiance += sol.thermal.levels[1].diffuse_down;
 }
 
+// The coupling terms of the sample (rt/coupling.hpp): one more solve, of the column
+// lit only by a ground of unit isotropic radiance, read at the sensor level.
+void read_coupling(const SampleSetup& s, const rt::Problem& prob, const rt::Result& solar,
+                   SampleResult& res) {
+    std::vector<double> mus;
+    for (double v : s.views_deg) mus.push_back(std::cos(v * kDeg));
+    const rt::SurfaceCoupling c = rt::surface_coupling(prob, prob.utau[0], mus);
+    res.spherical_albedo = c.spherical_albedo;
+    res.diffuse_up = c.diffuse_up;
+    // Diffuse transmittance of the beam: E_diffuse(ground) / (mu0 Es), dimensionless.
+    const double normal = s.mu0 * res.sample.solar_irradiance;
+    if (!solar.levels.empty() && normal > 0)
+        res.diffuse_down = std::clamp(solar.levels[1].diffuse_down / normal, 0.0, 1.0);
+}
+
 }  // namespace
 
 SampleResult solve_sample(const SampleSetup& s, double nu) {
@@ -222,6 +238,7 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
         sol.thermal_up = solve_emission(s, col, prob, nu, s.column.sensor_level());
     }
     read_tables(s, sol, col, nu, res);
+    if (s.options.coupling) read_coupling(s, prob, sol.solar, res);
     return res;
 }
 

@@ -34,6 +34,11 @@ struct SampleResult {
     std::vector<double> ls, le;           // per sky cell: scattered, emitted
     std::vector<double> us, ue;           // per upwelled cell: scattered, emitted
     double ground_irradiance = 0;         // diffuse downward at the ground, W cm-2 um-1
+    // The coupling terms (rad(5) COUPLING; rt/coupling.hpp): spherical albedo S, the
+    // sun beam's diffuse transmittance to the ground t_d_down = E_diffuse / (mu0 Es)
+    // (0 with the sun down) and t_d_up per view (per unit isotropic ground radiance).
+    double spherical_albedo = 0, diffuse_down = 0;
+    std::vector<double> diffuse_up;
     bool thermal = false;                 // layer emission solved
 };
 

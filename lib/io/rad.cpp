@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "io/rad_coupling.hpp"
 #include "io/spectral_curve.hpp"
 
 namespace sigchain::io {
@@ -361,6 +362,7 @@ std::string rad_summary(const Rad& rad) {
     if (rad.sky->upwelled)
         s += ", upwelled " + std::to_string(rad.sky->upwelled->zenith_count) + "x" +
              std::to_string(rad.sky->upwelled->azimuth_count) + " cells";
+    if (rad.sky->coupling) s += ", coupling terms";
     return s;
 }
 
@@ -421,7 +423,17 @@ Rad parse_rad(const TextInput& in) {
                                 std::to_string(rad.sky->version_minor));
         rad.sky->upwelled = read_upwelled(c, rad.samples.size());
     }
-    c.require_end(rad.sky->upwelled ? "the upwelled grid" : "the sky hemisphere");
+    if (at_coupling(c)) {
+        if (rad.sky->version_minor < 2)
+            throw DataError(c.where(c.peek("COUPLING")),
+                            "expected the end of the file: COUPLING needs SIGCHAIN_RAD 1.2, "
+                            "found version 1." +
+                                std::to_string(rad.sky->version_minor));
+        rad.sky->coupling = read_coupling(c, rad);
+    }
+    c.require_end(rad.sky->coupling   ? "the coupling terms"
+                  : rad.sky->upwelled ? "the upwelled grid"
+                                      : "the sky hemisphere");
     return rad;
 }
 
@@ -444,7 +456,9 @@ void write_rad(std::ostream& out, const Rad& rad) {
             out << format_number(p.transmission) << ' ' << format_number(p.emitted_radiance) << ' '
                 << format_number(p.scattered_radiance) << '\n';
     }
-    if (rad.sky) write_sky(out, *rad.sky);
+    if (!rad.sky) return;
+    write_sky(out, *rad.sky);
+    if (rad.sky->coupling) write_coupling(out, *rad.sky->coupling, rad);
 }
 
 FormatHandler rad_format() {

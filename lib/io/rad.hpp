@@ -72,6 +72,20 @@ struct RadUpwelled {
     bool operator==(const RadUpwelled&) const = default;
 };
 
+// The coupling of the atmosphere with the ground (optional, SIGCHAIN_RAD 1.2; Tanre
+// et al. 1981, Vermote et al. 1997): what turns the black-ground tables into those of
+// a Lambertian ground and environment (rad(5) COUPLING, trace(1) RADIOMETRY).
+struct RadCoupling {
+    std::vector<double> spherical_albedo;  // S per spectral sample, [0, 1]
+    // t_d_down per spectral sample, [0, 1]: diffuse irradiance at the (black) ground
+    // per unit direct normal irradiance above the atmosphere, E_diffuse / (mu_s Es).
+    std::vector<double> diffuse_down;
+    // t_d_up per legacy view angle (the views' order), per spectral sample, [0, 1]:
+    // diffuse radiance at the sensor per unit isotropic ground radiance.
+    std::vector<std::vector<double>> diffuse_up;
+    bool operator==(const RadCoupling&) const = default;
+};
+
 // sigchain's additions after the legacy tables (SIGCHAIN_RAD block).
 struct RadSky {
     long version_minor = 0;      // SIGCHAIN_RAD 1[.minor]
@@ -83,6 +97,7 @@ struct RadSky {
     // increasing within a ring; every ring has the same azimuths; solid angles sum to 2 pi.
     std::vector<RadSkyCell> cells;
     std::optional<RadUpwelled> upwelled;  // after the sky cells; needs version 1.1
+    std::optional<RadCoupling> coupling;  // after those; needs version 1.2
     bool operator==(const RadSky&) const = default;
 };
 

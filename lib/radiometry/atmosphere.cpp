@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "io/spectral_curve.hpp"
+#include "radiometry/atmosphere_data.hpp"
 
 namespace sigchain::radiometry {
 
@@ -25,46 +26,6 @@ constexpr double kSunTolerance_deg = 0.01;
 constexpr double kGridTolerance_deg = 1e-6;
 
 }  // namespace
-
-struct Atmosphere::Data {
-    SpectralGrid grid;
-    bool sun_known = false;
-    double sun_zenith_deg = 0, sun_azimuth_deg = 0;
-    geo::Vec3 sun_direction{0, 0, 1};
-    std::vector<double> es_tau1;        // Es * tau1 per sample
-    std::vector<double> sun_at_ground;  // es_tau1, or zeros when the sun is down
-    // View angles (increasing) and, per view, per sample: tau2, L_us, L_ue.
-    std::vector<double> view_angles_deg, range_km;
-    std::vector<double> tau2, scattered, emitted;  // [view * samples + k]
-    bool has_sky = false;
-    std::vector<SkyCell> cells;           // ring by ring, azimuth increasing
-    std::vector<double> ring_edges_deg;   // rings + 1 zenith edges, 0 .. 90
-    std::vector<double> azimuth_hi_deg;   // upper azimuth edge of each column
-    std::vector<double> ring_cos_edges;   // cos of the inner ring edges, decreasing
-    double uniform_azimuth_step_deg = 0;  // > 0 when every column has this width
-    int rings = 0, columns = 0;
-    std::vector<double> sky_irradiance, sky_emitted_irradiance;  // horizontal, per sample
-    // The UPWELLED grid (rad(5), SIGCHAIN_RAD 1.1) when every file has the same one:
-    // view-zenith rings (increasing), azimuth nodes (increasing in [0, 360)), and per
-    // node, per sample L_us and L_ue at [(ring * azimuths + a) * samples + k].
-    bool has_upwelled = false;
-    std::vector<double> up_zenith_deg, up_azimuth_deg;
-    std::vector<double> up_scattered, up_emitted;
-
-    bool sun_up() const { return sun_known && sun_zenith_deg < 90; }
-    void place_sun(double zenith_deg, double azimuth_deg) {
-        sun_known = true;
-        sun_zenith_deg = zenith_deg;
-        sun_azimuth_deg = azimuth_deg;
-        sun_direction = geo::direction_from_degrees(zenith_deg, azimuth_deg);
-        sun_at_ground = sun_up() ? es_tau1 : std::vector<double>(es_tau1.size(), 0.0);
-    }
-    void merge_spectra(const std::vector<io::Rad>& rads, const std::vector<std::string>& files);
-    void merge_views(const std::vector<io::Rad>& rads);
-    void build_sky_grid(const io::RadSky& sky);
-    SkyCell merge_sky_cell(const std::vector<io::Rad>& rads, std::size_t c);
-    void load_upwelled(const std::vector<io::Rad>& rads, const std::vector<std::string>& files);
-};
 
 namespace {
 
@@ -223,6 +184,7 @@ void Atmosphere::Data::merge_spectra(const std::vector<io::Rad>& rads,
         for (const auto& s : rads[b].samples) {
             grid.wavelength_um.push_back(s.wavelength_um);
             grid.band_of_sample.push_back(static_cast<int>(b));
+            es.push_back(s.solar_irradiance);
             es_tau1.push_back(s.solar_irradiance * s.sun_transmission);
         }
     }
@@ -311,6 +273,7 @@ Atmosphere Atmosphere::from_rads(const std::vector<io::Rad>& rads,
             d->cells.push_back(d->merge_sky_cell(rads, c));
         d->place_sun(sky.sun_zenith_deg, sky.sun_azimuth_deg);
         d->load_upwelled(rads, files);
+        d->load_coupling(rads, files);
     }
     Atmosphere a;
     a.m_data = d;

@@ -65,6 +65,7 @@ public:
               std::span<double> scattered, std::span<double> emitted) const;
     bool has_upwelled() const;
     double range_km(double view_angle_deg) const;
+    std::span<const double> view_angles_deg() const;  // the table's, increasing
     double min_view_angle_deg() const;
     double max_view_angle_deg() const;
 
@@ -81,6 +82,24 @@ public:
     // over the cells, per grid sample (scattered, and emitted).
     std::span<const double> sky_irradiance_horizontal() const;
     std::span<const double> sky_emitted_irradiance_horizontal() const;
+
+    // The coupling of the atmosphere with the ground (rad(5) COUPLING; Tanre et al.
+    // 1981, Vermote et al. 1997), when every .rad has it; else the spans are empty.
+    bool has_coupling() const;
+    std::span<const double> spherical_albedo() const;  // S per grid sample, [0, 1]
+    std::span<const double> diffuse_down() const;      // t_d_down per grid sample
+    // E_tot(0) per grid sample: direct + diffuse irradiance on a horizontal ground that
+    // reflects nothing, mu_s Es (tau1 + t_d_down), W cm-2 um-1; zeros with the sun down
+    // or without coupling terms.
+    std::vector<double> ground_irradiance() const;
+    // t_d_up for a view angle (deg, signed as in the .rad), linear between the
+    // tabulated view angles and clamped at the ends like path(); `out` has grid().size()
+    // (zeros without coupling terms).
+    void diffuse_transmittance_up(double view_angle_deg, std::span<double> out) const;
+    // This atmosphere with `radiance` (W cm-2 sr-1 um-1 per grid sample) added to the
+    // scattered radiance L_ds of every sky cell: an isotropic increment, which raises
+    // the horizontal sky irradiance by pi * radiance. Without a sky, an unchanged copy.
+    Atmosphere with_isotropic_sky(std::span<const double> radiance) const;
 
     // Replaces the sun with one at the given position (tests, or a DIRSIG .rad).
     void set_sun(double zenith_deg, double azimuth_deg);

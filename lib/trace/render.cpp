@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "core/parallel.hpp"
+#include "trace/adjacency.hpp"
 #include "trace/sampling.hpp"
 #include "trace/tracer.hpp"
 #include "trace/world.hpp"
@@ -94,6 +95,7 @@ bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
     }
     double va = cam.view_angle_deg(d);
     c.in.atmosphere->path(d, va, {b.tau2, n}, {b.lus, n}, {b.lue, n});
+    c.adjacency->add_path(va, b.lus);  // the environment's light scattered toward the sensor
     for (std::size_t k = 0; k < n; ++k) {
         double l = b.tau2[k] * b.leave[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0);
         w.pixel[k] += l;
@@ -181,6 +183,7 @@ std::vector<std::string> skipped(const TraceContext& c) {
         out.push_back("bounces beyond " + std::to_string(c.opt.bounces) +
                       " (the last is closed with the sun and an unobstructed sky)");
     if (c.opt.bounces == 0) out.push_back("light from neighbouring facets (bounces 0)");
+    if (!c.adjacency->active()) out.push_back(c.adjacency->skipped());
     return out;
 }
 

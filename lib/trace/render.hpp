@@ -46,6 +46,11 @@ struct RenderOptions {
     BackgroundChoice background = BackgroundChoice::Mean;
     long background_material = 0;  // MATERIAL_ID, with BackgroundChoice::Material
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)
+    // Ground-sky coupling and adjacency effect (adjacency.hpp; trace(1) RADIOMETRY):
+    // on when the .rad has COUPLING terms; the environment's mean reflectance is taken
+    // within this radius (metres) of the ground point the image centre sees.
+    bool adjacency = true;
+    double adjacency_radius_m = 1000;
 };
 
 // Facet temperatures (kelvin) by facet key ("1-1-1", "2.3/1-1-1"; tmp(5)).

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "trace/adjacency.hpp"
 #include "trace/tracer.hpp"
 
 namespace sigchain::trace {
@@ -53,8 +54,13 @@ void facet_temperatures(const RenderInputs& in, TraceContext& c) {
 
 }  // namespace
 
-TraceContext make_context(const RenderInputs& in, const RenderOptions& opt) {
+TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) {
+    // The sky with the ground-sky coupling of the scene's environment (adjacency.hpp):
+    // the context reads the coupled atmosphere, which the Adjacency holds.
+    auto adjacency = std::make_shared<const Adjacency>(inputs, opt);
+    const RenderInputs& in = adjacency->inputs();
     TraceContext c(in, opt);
+    c.adjacency = adjacency;
     const auto& atm = *in.atmosphere;
     c.n = atm.grid().size();
     c.emission = in.temperatures != nullptr;

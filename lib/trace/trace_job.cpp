@@ -156,6 +156,10 @@ void check_job(const TraceJob& job) {
         throw UsageError("--max-transmissions: expected 0 or more");
     if (job.bounces && (*job.bounces < 0 || *job.bounces > kMaxBounces))
         throw UsageError("--bounces: expected 0 to " + std::to_string(kMaxBounces));
+    if (job.adjacency_radius_m && !(*job.adjacency_radius_m > 0))
+        throw UsageError("--adjacency-radius: expected a positive number of metres");
+    if (job.adjacency_radius_m && !job.adjacency)
+        throw UsageError("--adjacency-radius does not apply with --no-adjacency");
     if (job.rows && (job.rows->first < 0 || job.rows->second <= job.rows->first))
         throw UsageError("--rows: expected 0 <= A < B");
 }
@@ -294,6 +298,8 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     options.row_end = st.row_end;
     options.truth = !job.truth_path.empty();
     options.meters_per_unit = io::meters_per_unit(st.adv.units);
+    options.adjacency = job.adjacency;
+    if (job.adjacency_radius_m) options.adjacency_radius_m = *job.adjacency_radius_m;
     return options;
 }
 

@@ -35,6 +35,8 @@ struct TraceJob {
     unsigned threads = 0;                       // 0: all cores
     std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
     bool allow_degenerate = false;
+    bool adjacency = true;                     // --no-adjacency turns it off
+    std::optional<double> adjacency_radius_m;  // default: RenderOptions's (1000 m)
 };
 
 // What happened, for -v: the scene's counts, the render's statistics.

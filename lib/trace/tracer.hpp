@@ -33,10 +33,15 @@ namespace sigchain::trace {
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kDeg = 180.0 / kPi;  // degrees per radian
 
-// Shared, read-only render state, made once per render (make_context).
+class Adjacency;
+
+// Shared, read-only render state, made once per render (make_context). `in` is the
+// render's inputs with the atmosphere coupled to the scene's environment
+// (adjacency.hpp), held by `adjacency`.
 struct TraceContext {
     TraceContext(const RenderInputs& i, const RenderOptions& o) : in(i), opt(o) {}
     const RenderInputs& in;
+    std::shared_ptr<const Adjacency> adjacency;
     const RenderOptions& opt;
     std::size_t n = 0;  // spectral samples
     bool emission = false;

@@ -211,3 +211,14 @@ line_of() { sed -n "${2}p" "$1"; }
     run -2 --separate-stderr build_radiance --sky-subsamples 9 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"sky subsamples must be 1 to 8"* ]] || fail "stderr: $stderr"
 }
+
+@test "the tables carry the coupling terms (SIGCHAIN_RAD 1.2), physically bounded" {
+    run -0 build_radiance "${QUICK[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'k-%d.rad'
+    run -0 grep -c '^SIGCHAIN_RAD 1.2$' k-1.rad
+    run -0 grep -c '^COUPLING$' k-1.rad
+    # One DIFFUSE_UP line per view angle (line 12 of the header).
+    assert_equal "$(grep -c '^DIFFUSE_UP ' k-1.rad)" "$(line_of k-1.rad 12)"
+    # S and t_d in (0, 1): the atmosphere scatters and does not reflect everything.
+    awk '/^(SPHERICAL_ALBEDO|DIFFUSE_DOWN)/ { for (i = 2; i <= NF; ++i) if (!($i > 0 && $i < 1)) exit 1 }
+         /^DIFFUSE_UP/ { for (i = 3; i <= NF; ++i) if (!($i > 0 && $i < 1)) exit 1 }' k-1.rad
+}

@@ -106,3 +106,52 @@ bats_require_minimum_version 1.5.0
 @test "ext: truncated file" { check_bad ext truncated.ext 7 "unexpected end of file, expected at least one row of wavelength (um) and extinction coefficient (1/km) of curve 1 of 2"; }
 @test "ext: negative extinction" { check_bad ext negative_extinction.ext 5 "expected extinction coefficient (1/km) >= 0, found '-3'"; }
 @test "ext: wavelengths not increasing" { check_bad ext not_increasing.ext 6 "expected wavelength (um) greater than 0.7 (strictly increasing), found '0.7'"; }
+
+# --- .rad: the COUPLING terms (SIGCHAIN_RAD 1.2) --------------------------------------
+
+# The rad(5) EXAMPLE (block 1.2 with COUPLING) into example.rad.
+man_example() {
+    sed -n '/^# EXAMPLE/,/^# /p' "$SIGCHAIN_SOURCE_DIR/man/rad.5.scd" |
+        sed -n '/^```$/,/^```$/p' | sed '1d;$d' > example.rad
+}
+
+@test "rad: the coupling terms check and round-trip through --rewrite" {
+    man_example
+    check_good example.rad "3 samples, 18000-20000 cm-1, 2 view angles, sky 2x2 cells, coupling terms"
+    run -0 --separate-stderr sigchain-check --rewrite -o once.rad example.rad
+    grep -q '^SIGCHAIN_RAD 1.2$' once.rad
+    grep -q '^DIFFUSE_UP 10 0.073 0.067 0.062$' once.rad
+    run -0 --separate-stderr sigchain-check --rewrite -o twice.rad once.rad
+    cmp once.rad twice.rad
+}
+
+@test "rad: older blocks (1.0, 1.1) still read; COUPLING in one is refused at its line" {
+    check_good "$SEED/example_sky.rad" "3 samples, 18000-20000 cm-1, 2 view angles, sky 2x2 cells"
+    man_example
+    sed 's/^SIGCHAIN_RAD 1.2$/SIGCHAIN_RAD 1.1/' example.rad > old.rad
+    local line
+    line=$(grep -n '^COUPLING$' old.rad | cut -d: -f1)
+    run -1 --separate-stderr sigchain-check old.rad
+    assert_output ''
+    [[ "$stderr" == "sigchain-check: old.rad:$line: expected the end of the file: COUPLING needs SIGCHAIN_RAD 1.2, found version 1.1" ]] ||
+        fail "$stderr"
+}
+
+@test "rad: a malformed COUPLING line names its file and line, exit 1" {
+    man_example
+    sed 's/^DIFFUSE_DOWN .*/DIFFUSE_DOWN 0.142 0.131/' example.rad > short.rad
+    local line
+    line=$(grep -n '^DIFFUSE_DOWN' short.rad | cut -d: -f1)
+    run -1 --separate-stderr sigchain-check short.rad
+    [[ "$stderr" == "sigchain-check: short.rad:$line: expected 4 fields (DIFFUSE_DOWN ONE_PER_SPECTRAL_SAMPLE), found 3"* ]] ||
+        fail "$stderr"
+    sed 's/^DIFFUSE_UP 10 /DIFFUSE_UP 20 /' example.rad > angle.rad
+    line=$(grep -n '^DIFFUSE_UP 20' angle.rad | cut -d: -f1)
+    run -1 --separate-stderr sigchain-check angle.rad
+    [[ "$stderr" == "sigchain-check: angle.rad:$line: expected view angle 10"* ]] || fail "$stderr"
+    sed 's/^SPHERICAL_ALBEDO 0.171/SPHERICAL_ALBEDO 1.171/' example.rad > big.rad
+    line=$(grep -n '^SPHERICAL_ALBEDO' big.rad | cut -d: -f1)
+    run -1 --separate-stderr sigchain-check big.rad
+    [[ "$stderr" == "sigchain-check: big.rad:$line: expected spherical albedo S (sample 1)"* ]] ||
+        fail "$stderr"
+}

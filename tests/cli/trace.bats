@@ -514,3 +514,63 @@ therm_materials() {
     run -0 sigchain-check deg.tmp
     assert_output --partial "deg.tmp: ok: 6 facets"
 }
+
+# coupled BAND: $DATA/BAND.rad as block version 1.2 with COUPLING terms (S 0.2, t_d_down
+# 0.15, t_d_up 0.1 at its five view angles), written to BAND.rad here.
+coupled() {
+    sed 's/^SIGCHAIN_RAD 1$/SIGCHAIN_RAD 1.2/' "$DATA/$1.rad" > "$1.rad"
+    {
+        echo COUPLING
+        echo SPHERICAL_ALBEDO 0.2 0.2 0.2
+        echo DIFFUSE_DOWN 0.15 0.15 0.15
+        for v in -90 -45 0 45 90; do echo "DIFFUSE_UP $v 0.1 0.1 0.1"; done
+    } >> "$1.rad"
+    sigchain-check -q "$1.rad"
+}
+
+coupled_inputs() {
+    echo "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" band1.rad band2.rad
+}
+
+@test "trace couples the scene with the atmosphere when the .rad has COUPLING terms" {
+    coupled band1
+    coupled band2
+    trace_ok $(inputs) -o black.img
+    trace_ok $(coupled_inputs) -o coupled.img
+    trace_ok --no-adjacency $(coupled_inputs) -o off.img
+    # Coupling brightens every pixel; --no-adjacency gives back the black-ground cube.
+    ! cmp -s black.img coupled.img
+    cmp black.img off.img
+    # The same cube with 1 and 2 threads.
+    trace_ok --threads 1 $(coupled_inputs) -o one.img
+    trace_ok --threads 2 $(coupled_inputs) -o two.img
+    cmp one.img two.img
+    cmp one.img coupled.img
+}
+
+@test "trace --adjacency-radius changes the environment; -v says when the coupling is skipped" {
+    coupled band1
+    coupled band2
+    trace_ok $(coupled_inputs) -o wide.img
+    trace_ok --adjacency-radius 1 $(coupled_inputs) -o narrow.img
+    ! cmp -s wide.img narrow.img
+    run -0 --separate-stderr trace -v $(inputs) -o out.img
+    [[ "$stderr" == *"not modelled: adjacency and ground-sky coupling (no COUPLING terms in the .rad)"* ]] ||
+        fail "$stderr"
+    run -0 --separate-stderr trace -v --no-adjacency $(coupled_inputs) -o out.img
+    [[ "$stderr" == *"not modelled: adjacency and ground-sky coupling (--no-adjacency)"* ]] ||
+        fail "$stderr"
+    run -0 --separate-stderr trace -v $(coupled_inputs) -o out.img
+    [[ "$stderr" != *"adjacency"* ]] || fail "$stderr"
+}
+
+@test "trace: bad --adjacency-radius values and misplaced adjacency options are usage errors" {
+    trace_bad 2 "--adjacency-radius: expected a positive number of metres" \
+        --adjacency-radius 0 $(inputs) -o out.img
+    trace_bad 2 "--adjacency-radius: expected a positive number of metres" \
+        --adjacency-radius=-5 $(inputs) -o out.img
+    trace_bad 2 "--adjacency-radius does not apply with --no-adjacency" \
+        --no-adjacency --adjacency-radius 10 $(inputs) -o out.img
+    trace_bad 2 "--no-adjacency does not apply to --shadow-history" \
+        --shadow-history --no-adjacency "$SEED/hawkeye.snd" "$GDB" "$DATA/box.mat" -o out.shd
+}

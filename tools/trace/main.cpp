@@ -14,7 +14,8 @@ namespace {
 // trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
-                          "background", "rows", "truth", "tmp"})
+                          "background", "rows", "truth", "tmp", "no-adjacency",
+                          "adjacency-radius"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -71,6 +72,8 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
     job.allow_degenerate = vm.count("allow-degenerate") > 0;
     job.golfball_jitter = vm.count("golfball-jitter") > 0;
+    job.adjacency = vm.count("no-adjacency") == 0;
+    if (vm.count("adjacency-radius")) job.adjacency_radius_m = vm["adjacency-radius"].as<double>();
     return job;
 }
 
@@ -112,6 +115,9 @@ int main(int argc, char** argv) {
                                                cli::po::value<std::string>()->value_name("FILE"),
                                                "facet temperatures (.tmp): add emission")(
         "allow-degenerate", "skip degenerate facets with a warning instead of failing")(
+        "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
+        "adjacency-radius", cli::po::value<double>()->value_name("M"),
+        "radius of the environment whose mean reflectance couples (default 1000 m)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
         "history-hours", cli::po::value<double>()->value_name("H"),
         "--shadow-history: hours of history before the scene time (default 24)")(

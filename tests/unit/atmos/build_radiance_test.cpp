@@ -214,7 +214,7 @@ TEST(BuildRadiance, UpwelledGridAgreesWithTheViewPlane) {
     const auto rads = build_radiance(hawkeye_deck(), small_snd(), o);
     const io::Rad& rad = rads[0];
     ASSERT_TRUE(rad.sky && rad.sky->upwelled);
-    EXPECT_EQ(rad.sky->version_minor, 1);
+    EXPECT_EQ(rad.sky->version_minor, 2);  // UPWELLED (1.1) and COUPLING (1.2)
     const io::RadUpwelled& up = *rad.sky->upwelled;
     ASSERT_EQ(up.zenith_count, 2);  // |v| = 0 and 10
     ASSERT_EQ(up.azimuth_count, 36);
@@ -323,6 +323,33 @@ TEST(BuildRadiance, ThermalEmissionMatchesTheAbsorptionOnlyFormalSolution) {
         EXPECT_NEAR(l_de / down, 1.0, 0.01) << nu << " cm-1: L_de " << l_de << " vs " << down;
         std::printf("%g cm-1: L_ue %.5g (formal %.5g), L_de zenith %.5g (formal %.5g)\n", nu, l_ue,
                     up, l_de, down);
+    }
+}
+
+// The coupling terms of every band: S and t_d in (0, 1); t_d_up depends on the view
+// zenith only (the same for +v and -v, one solver cosine).
+TEST(BuildRadiance, CouplingTermsAreBoundedAndDependOnTheViewZenithOnly) {
+    const auto rads = build_radiance(hawkeye_deck(), small_snd(), options());
+    for (const io::Rad& rad : rads) {
+        ASSERT_TRUE(rad.sky && rad.sky->coupling);
+        const io::RadCoupling& k = *rad.sky->coupling;
+        ASSERT_EQ(k.spherical_albedo.size(), rad.samples.size());
+        ASSERT_EQ(k.diffuse_up.size(), rad.views.size());
+        for (std::size_t i = 0; i < rad.samples.size(); ++i) {
+            EXPECT_GT(k.spherical_albedo[i], 0.0);
+            EXPECT_LT(k.spherical_albedo[i], 1.0);
+            EXPECT_GT(k.diffuse_down[i], 0.0);
+            EXPECT_LT(k.diffuse_down[i], 1.0);
+            for (std::size_t v = 0; v < rad.views.size(); ++v) {
+                EXPECT_GT(k.diffuse_up[v][i], 0.0);
+                EXPECT_LT(k.diffuse_up[v][i], 1.0);
+                for (std::size_t w = 0; w < rad.views.size(); ++w) {
+                    if (rad.views[w].view_angle_deg == -rad.views[v].view_angle_deg) {
+                        EXPECT_EQ(k.diffuse_up[w][i], k.diffuse_up[v][i]);
+                    }
+                }
+            }
+        }
     }
 }
 

@@ -431,3 +431,86 @@ TEST(RadBad, UpwelledGridMustBeAGrid) {
     v.push_back("extra");
     EXPECT_NE(error_of(join(v)).find("t.rad:44:"), std::string::npos) << error_of(join(v));
 }
+
+// --- SIGCHAIN_RAD 1.2: the coupling terms ---
+
+namespace {
+
+// with_upwelled() as version 1.2 with the COUPLING terms after the grid: lines 44-48.
+std::vector<std::string> with_coupling() {
+    auto v = with_upwelled();
+    v[20] = "SIGCHAIN_RAD 1.2";
+    const std::vector<std::string> k = {
+        "COUPLING",                     // 44
+        "SPHERICAL_ALBEDO 0.16 0.14",   // 45
+        "DIFFUSE_DOWN 0.12 0.1",        // 46
+        "DIFFUSE_UP -10 0.061 0.052",   // 47
+        "DIFFUSE_UP 0 0.06 0.05",       // 48
+    };
+    v.insert(v.end(), k.begin(), k.end());
+    return v;
+}
+
+}  // namespace
+
+TEST(Rad, CouplingParsesAndRoundTrips) {
+    Rad r = parsed(join(with_coupling()));
+    ASSERT_TRUE(r.sky && r.sky->coupling);
+    const RadCoupling& k = *r.sky->coupling;
+    EXPECT_EQ(k.spherical_albedo, (std::vector<double>{0.16, 0.14}));
+    EXPECT_EQ(k.diffuse_down, (std::vector<double>{0.12, 0.1}));
+    ASSERT_EQ(k.diffuse_up.size(), 2u);
+    EXPECT_EQ(k.diffuse_up[0], (std::vector<double>{0.061, 0.052}));
+    EXPECT_EQ(k.diffuse_up[1], (std::vector<double>{0.06, 0.05}));
+    const std::string once = written(r);
+    EXPECT_NE(once.find("SIGCHAIN_RAD 1.2\n"), std::string::npos);
+    EXPECT_EQ(parsed(once), r);
+    EXPECT_EQ(written(parsed(once)), once);
+    EXPECT_EQ(rad_format().check(TextInput::from_string(join(with_coupling()), "t.rad")),
+              "2 samples, 19000-20000 cm-1, 2 view angles, sky 1x2 cells, upwelled 2x2 cells, "
+              "coupling terms");
+    // Without the UPWELLED grid, and a 1.2 block without coupling terms.
+    auto v = with_coupling();
+    v.erase(v.begin() + 30, v.begin() + 43);
+    EXPECT_TRUE(parsed(join(v)).sky->coupling);
+    v = with_upwelled();
+    v[20] = "SIGCHAIN_RAD 1.2";
+    EXPECT_FALSE(parsed(join(v)).sky->coupling);
+}
+
+TEST(RadBad, CouplingNeedsVersionOneTwo) {
+    auto v = with_coupling();
+    v[20] = "SIGCHAIN_RAD 1.1";
+    EXPECT_EQ(error_of(join(v)),
+              "t.rad:44: expected the end of the file: COUPLING needs SIGCHAIN_RAD 1.2, found "
+              "version 1.1");
+}
+
+TEST(RadBad, CouplingLines) {
+    auto v = with_coupling();
+    v[44] = "SPHERICAL_ALBEDO 0.16";  // line 45: one value for two samples
+    EXPECT_EQ(error_of(join(v)),
+              "t.rad:45: expected 3 fields (SPHERICAL_ALBEDO ONE_PER_SPECTRAL_SAMPLE), found 2: "
+              "'SPHERICAL_ALBEDO 0.16'");
+    v = with_coupling();
+    v[45] = "DIFFUSE_DOWN 0.12 1.5";  // line 46: a transmittance above 1
+    EXPECT_NE(
+        error_of(join(v)).find("t.rad:46: expected diffuse transmittance t_d_down (sample 2)"),
+        std::string::npos)
+        << error_of(join(v));
+    v = with_coupling();
+    v[46] = "DIFFUSE_UP 10 0.061 0.052";  // line 47: not the first view angle
+    EXPECT_EQ(error_of(join(v)),
+              "t.rad:47: expected view angle -10 (view angle 1 of 2) (the view-angle blocks' "
+              "order), found '10'");
+    v = with_coupling();
+    v[45] = "DIFFUSE_UP -10 0.061 0.052";  // line 46: keyword out of order
+    EXPECT_NE(error_of(join(v)).find("t.rad:46: expected DIFFUSE_DOWN"), std::string::npos)
+        << error_of(join(v));
+    v = with_coupling();
+    v.pop_back();  // a view angle missing: the file ends
+    EXPECT_NE(error_of(join(v)).find("t.rad:"), std::string::npos) << error_of(join(v));
+    v = with_coupling();
+    v.push_back("DIFFUSE_UP 0 0.06 0.05");  // line 49: one too many
+    EXPECT_NE(error_of(join(v)).find("t.rad:49:"), std::string::npos) << error_of(join(v));
+}

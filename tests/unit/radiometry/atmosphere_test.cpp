@@ -251,5 +251,62 @@ TEST(Atmosphere, UpwelledGridIsInterpolatedInZenithAndAzimuth) {
     EXPECT_NEAR(lus, 0.001, 1e-15);
 }
 
+// Two bands with coupling terms (band b: S = 0.1 (b + 1), t_d_down = 0.05 (b + 1),
+// t_d_up at view v = 0.01 (v + 1) + 0.001 b), views -60, 0, 60.
+std::vector<io::Rad> coupled_bands() {
+    std::vector<io::Rad> rads;
+    for (int b = 0; b < 2; ++b) {
+        io::Rad rad = uniform_rad({0.5 + b, 0.6 + b}, 30, 120, 0.2, 0.004, 0.9, 0.001);
+        rad.sky->version_minor = 2;
+        io::RadCoupling c;
+        c.spherical_albedo.assign(2, 0.1 * (b + 1));
+        c.diffuse_down.assign(2, 0.05 * (b + 1));
+        for (int v = 0; v < 3; ++v) {
+            const double t = 0.01 * (v + 1) + 0.001 * b;
+            c.diffuse_up.push_back({t, t});
+        }
+        rad.sky->coupling = c;
+        rads.push_back(rad);
+    }
+    return rads;
+}
+
+TEST(AtmosphereCoupling, MergedOnTheGridAndInterpolatedInViewAngle) {
+    const Atmosphere atm = Atmosphere::from_rads(coupled_bands(), {"a.rad", "b.rad"});
+    ASSERT_TRUE(atm.has_coupling());
+    const std::vector<double> s(atm.spherical_albedo().begin(), atm.spherical_albedo().end());
+    EXPECT_EQ(s, (std::vector<double>{0.1, 0.1, 0.2, 0.2}));
+    std::vector<double> td(4);
+    atm.diffuse_transmittance_up(-30, td);  // halfway between views 1 and 2
+    EXPECT_NEAR(td[0], 0.015, 1e-15);
+    EXPECT_NEAR(td[3], 0.016, 1e-15);
+    atm.diffuse_transmittance_up(80, td);  // clamped at the last view
+    EXPECT_NEAR(td[0], 0.03, 1e-15);
+    // E_tot(0) = mu_s Es (tau1 + t_d_down), uniform_rad: Es = 0.2, tau1 = 1.
+    const auto e = atm.ground_irradiance();
+    EXPECT_NEAR(e[0], std::cos(30 * kDeg) * 0.2 * 1.05, 1e-15);
+    EXPECT_NEAR(e[3], std::cos(30 * kDeg) * 0.2 * 1.10, 1e-15);
+    // One band without the terms: named.
+    auto rads = coupled_bands();
+    rads[1].sky->coupling.reset();
+    EXPECT_EQ(test::data_error_of([&] { Atmosphere::from_rads(rads, {"a.rad", "b.rad"}); }),
+              "b.rad: COUPLING terms missing, unlike in a.rad");
+}
+
+TEST(AtmosphereCoupling, IsotropicSkyRaisesEveryCellAndTheIrradianceByPiL) {
+    const Atmosphere atm = Atmosphere::from_rads(coupled_bands(), {"a.rad", "b.rad"});
+    const std::vector<double> add{0.001, 0.002, 0.003, 0.004};
+    const Atmosphere up = atm.with_isotropic_sky(add);
+    for (std::size_t c = 0; c < atm.sky_cells().size(); c += 37)
+        for (std::size_t k = 0; k < 4; ++k)
+            EXPECT_NEAR(up.sky_cells()[c].scattered[k],
+                        atm.sky_cells()[c].scattered[k] + add[k], 1e-15);
+    for (std::size_t k = 0; k < 4; ++k)
+        EXPECT_NEAR(up.sky_irradiance_horizontal()[k],
+                    atm.sky_irradiance_horizontal()[k] + kPi * add[k], 1e-12);
+    // The original is unchanged (shared data is copied on write).
+    EXPECT_NEAR(atm.sky_cells()[0].scattered[0], 0.004, 1e-15);
+}
+
 }  // namespace
 }  // namespace sigchain::radiometry
