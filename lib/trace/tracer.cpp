@@ -118,9 +118,10 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
     if (geo::dot(n, dir) > 0) n = geo::scale(n, -1);
     Vec3 point = geo::add(origin, geo::scale(dir, hit->distance));
     Vec3 wo = geo::scale(dir, -1);
-    if (depth == 0)
+    bool black = back_is_black(m, hit->normal, dir);
+    if (depth == 0 && !black)
         shade_full(*hit, m, a, point, n, wo, out, truth);
-    else if (m_c.opt.bounces >= 1)
+    else if (depth > 0 && !black && m_c.opt.bounces >= 1)
         shade_one_bounce(*hit, m, a, point, n, wo, out);
     if (m.transmissive && transmissions < m_c.opt.max_transmissions) {
         ArenaScope scope(m_arena);
@@ -182,6 +183,7 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     double theta_o = std::acos(cos_o) * kDeg;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    apply_texture_gain(m_c, m, hit, rho);
     double s = specularity_of(m);
     double sky_factor = (1 - s) / kPi * (1 + n[2]) / 2;
     for (std::size_t k = 0; k < m_c.n; ++k) in[k] = sky_factor * m_c.sky_e[k];
@@ -216,6 +218,7 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
     double* solar = m_arena.take();
     double* down = m_arena.take();
     m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    apply_texture_gain(m_c, m, hit, rho);
     Vec3 p = geo::add(point, geo::scale(n, m_c.eps));
 
     double visibility = 0;
