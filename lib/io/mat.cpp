@@ -102,7 +102,7 @@ struct TagSpec {
     Text (*write)(const Material&);
 };
 
-const std::array<TagSpec, 22> kTags = {{
+const std::array<TagSpec, 23> kTags = {{
     {"MATERIAL_NAME", true, [](Material& m, const Value& v) { m.name = v.text; },
      [](const Material& m) { return Text(m.name); }},
     {"MATERIAL_ID", true,
@@ -144,6 +144,9 @@ const std::array<TagSpec, 22> kTags = {{
     {"USE_GAUSSIAN_TEXTURE", false,
      [](Material& m, const Value& v) { m.use_gaussian_texture = boolean(v); },
      [](const Material& m) { return opt_bool(m.use_gaussian_texture); }},
+    {"GAUSSIAN_TEXTURE_STDDEV", false,
+     [](Material& m, const Value& v) { m.gaussian_texture_stddev = fraction(v); },
+     [](const Material& m) { return opt_num(m.gaussian_texture_stddev); }},
     {"DOUBLE_SIDED", false, [](Material& m, const Value& v) { m.double_sided = boolean(v); },
      [](const Material& m) { return opt_bool(m.double_sided); }},
     {"SELF_GENERATED_POWER", false,

@@ -41,9 +41,10 @@ struct Material {
     std::optional<double> thickness_cm;
     std::string extinction_file;  // .ext; required for the transmissions
     std::string texture_file;
-    std::optional<bool> use_gaussian_texture;    // absent means FALSE
-    std::optional<bool> double_sided;            // absent means FALSE
-    std::optional<double> self_generated_power;  // DCS THERM units (mat(5))
+    std::optional<bool> use_gaussian_texture;       // absent means FALSE
+    std::optional<double> gaussian_texture_stddev;  // relative, [0, 1]; absent: from the .ems
+    std::optional<bool> double_sided;               // absent: trace takes TRUE (mat(5) SIDES)
+    std::optional<double> self_generated_power;     // DCS THERM units (mat(5))
     // sigchain's reflectance model and its parameters (only the model's own).
     std::optional<ReflectanceModel> reflectance_model;  // absent means Dirsig
     std::optional<double> cone_half_angle_deg;          // cone: (0, 90]

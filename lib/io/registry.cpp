@@ -5,6 +5,7 @@
 
 // FORMAT HEADERS (one include per format)
 #include "io/adv.hpp"
+#include "io/brdf.hpp"
 #include "io/cdk.hpp"
 #include "io/cpt.hpp"
 #include "io/ems.hpp"
@@ -28,6 +29,7 @@ const std::vector<FormatHandler>& formats() {
         std::vector<FormatHandler> v = {
             // FORMAT LIST (one line per format: X_format(),)
             adv_format(),
+            brdf_format(),
             cdk_format(),
             cpt_format(),
             ems_format(),

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "radiometry/brdf_table.hpp"
+
 namespace sigchain::radiometry {
 
 namespace {
@@ -87,6 +89,7 @@ struct Brdf::Impl {
     // table[i] for u = i / kTableSteps: 1 / m(theta_o) (LinearCone: with its radius
     // r(theta_o) at that u).
     std::vector<double> table;
+    std::shared_ptr<const TableLobe> tabulated;  // Table
 
     // Cone radius (rad) for a viewer at theta_o (rad): linear between the rows.
     double cone_radius(double theta_o_rad) const {
@@ -246,6 +249,8 @@ struct Brdf::Impl {
                 double alpha = std::acos(c);
                 return alpha < radius ? density(alpha, radius) * table_at(u) : 0;
             }
+            case LobeShape::Table:
+                return tabulated->weight(wi, wo);
             default:
                 return 0;
         }
@@ -346,6 +351,15 @@ Brdf Brdf::exponential(double width_deg) {
     return b;
 }
 
+Brdf Brdf::table(const io::BrdfTable& table) {
+    auto impl = std::make_shared<Impl>();
+    impl->shape = LobeShape::Table;
+    impl->tabulated = std::make_shared<const TableLobe>(table);
+    Brdf b;
+    b.m_impl = impl;
+    return b;
+}
+
 LobeShape Brdf::shape() const { return m_impl ? m_impl->shape : LobeShape::None; }
 
 bool Brdf::is_delta() const { return shape() == LobeShape::Delta; }
@@ -392,7 +406,9 @@ BrdfSample Brdf::sample(const geo::Vec3& wo, double specularity, double u1, doub
                         double u3) const {
     BrdfSample out;
     bool lobe = m_impl && m_impl->lobed() && u1 < specularity;
-    if (lobe) {
+    if (lobe && m_impl->shape == LobeShape::Table) {
+        out.wi = m_impl->tabulated->sample(wo, u1 / specularity, u2, u3);
+    } else if (lobe) {
         geo::Vec3 axis = mirror(wo);
         double radius = m_impl->shape == LobeShape::LinearCone
                             ? m_impl->cone_radius(std::acos(std::clamp(wo[2], 0.0, 1.0)))
@@ -413,6 +429,7 @@ double Brdf::pdf(const geo::Vec3& wi, const geo::Vec3& wo, double specularity) c
     double s = std::clamp(specularity, 0.0, 1.0);
     double p = (1 - s) * cosine;
     if (s <= 0) return p;
+    if (m_impl->shape == LobeShape::Table) return p + s * m_impl->tabulated->pdf(wi, wo);
     double c = clamp_unit(-wi[0] * wo[0] - wi[1] * wo[1] + wi[2] * wo[2]);
     double radius = m_impl->shape == LobeShape::LinearCone
                         ? m_impl->cone_radius(std::acos(std::clamp(wo[2], 0.0, 1.0)))

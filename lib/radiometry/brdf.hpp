@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "geo/vec3.hpp"
+#include "io/brdf.hpp"
 
 namespace sigchain::radiometry {
 
@@ -33,6 +34,7 @@ enum class LobeShape {
     LinearCone,   // cone with the .ems lobe table: 1 - alpha / radius(specular angle)
     CosinePower,  // phong: cos^n(alpha), alpha < 90 deg
     Exponential,  // exp(-alpha / width)
+    Table,        // a tabulated BRDF (brdf(5), brdf_table.hpp): its shape replaces the lobe
 };
 
 struct BrdfSample {
@@ -50,6 +52,10 @@ public:
     static Brdf linear_cone(const std::array<double, 7>& base_radius_deg);
     static Brdf phong(double exponent);
     static Brdf exponential(double width_deg);
+    // A tabulated BRDF as the lobe: lobe/m is replaced by the table's normalised weight
+    // f cos(theta_i) / A(theta_o) (brdf_table.hpp). Throws std::invalid_argument for a
+    // table that is 0 everywhere.
+    static Brdf table(const io::BrdfTable& table);
 
     LobeShape shape() const;
     bool is_delta() const;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "io/brdf.hpp"
 #include "io/ext.hpp"
 
 namespace sigchain::radiometry {
@@ -49,8 +50,25 @@ const T& cached(std::map<std::string, T>& cache, const std::string& path, const 
     }
 }
 
+// The table model's Brdf, one per TABLE_FILE (brdf(5)), read with the entry's line in
+// its errors.
+Brdf table_brdf(const io::Material& m, const std::string& mat_path,
+                std::map<std::string, Brdf>& tables) {
+    std::string path = resolve(mat_path, m.table_file);
+    auto read = [](const std::string& p) {
+        io::BrdfTable t = io::read_brdf_file(p);
+        try {
+            return Brdf::table(t);
+        } catch (const std::invalid_argument&) {
+            throw DataError({p, 0}, "expected a BRDF table with a value above 0, found none");
+        }
+    };
+    return cached(tables, path, m, mat_path, "TABLE_FILE", read);
+}
+
 // The Brdf of the entry's effective model (mat(5) REFLECTANCE MODELS).
-Brdf brdf_of(const io::Material& m, const io::Ems& ems, const std::string& mat_path) {
+Brdf brdf_of(const io::Material& m, const io::Ems& ems, const std::string& mat_path,
+             std::map<std::string, Brdf>& tables) {
     switch (io::effective_model(m)) {
         case io::ReflectanceModel::Lambertian:
             return Brdf::lambertian();
@@ -69,10 +87,26 @@ Brdf brdf_of(const io::Material& m, const io::Ems& ems, const std::string& mat_p
         case io::ReflectanceModel::Exponential:
             return Brdf::exponential(m.exponential_width_deg.value_or(0));
         case io::ReflectanceModel::Table:
-            throw DataError({mat_path, m.line},
-                            label(m) + ": REFLECTANCE_MODEL table is not supported yet");
+            return table_brdf(m, mat_path, tables);
     }
     throw std::logic_error("brdf_of: unknown model");
+}
+
+// Relative spread of the curves' mean reflectances 1 - eps (over the grid): their
+// standard deviation over their mean (0 with one curve), the default Gaussian texture
+// sigma (mat(5) GAUSSIAN TEXTURE).
+double curve_spread(const std::vector<std::vector<double>>& emissivity) {
+    std::vector<double> r;
+    for (const auto& e : emissivity) {
+        double sum = 0;
+        for (double x : e) sum += 1 - x;
+        r.push_back(e.empty() ? 0 : sum / static_cast<double>(e.size()));
+    }
+    if (r.size() < 2) return 0;
+    double mean = 0, var = 0;
+    for (double x : r) mean += x / static_cast<double>(r.size());
+    for (double x : r) var += (x - mean) * (x - mean) / static_cast<double>(r.size());
+    return mean > 0 ? std::sqrt(var) / mean : 0;
 }
 
 // Fall-off F(theta): linear between the values at whole degrees, theta clamped to [0, 90].
@@ -89,6 +123,7 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
                                       const SpectralGrid& grid) {
     std::map<std::string, io::Ems> ems_cache;
     std::map<std::string, io::Ext> ext_cache;
+    std::map<std::string, Brdf> tables;
     std::vector<MaterialOptics> out;
     for (const auto& m : mat.materials) {
         MaterialOptics o;
@@ -102,7 +137,7 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
             o.emissivity.push_back(std::move(e));
         }
         o.fall_off = ems.fall_off;
-        o.brdf = brdf_of(m, ems, mat_path);
+        o.brdf = brdf_of(m, ems, mat_path, tables);
         o.specularity = o.brdf.shape() == LobeShape::None ? 0 : m.specularity;
         o.transmissive = m.optical != io::OpticalDescription::Opaque;
         if (o.transmissive) {
@@ -113,8 +148,10 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
                 o.extinction_per_km[k] = io::extinction_per_km(ext, 0, grid.wavelength_um[k]);
         }
         o.thickness_cm = m.thickness_cm.value_or(0);
-        o.double_sided = m.double_sided.value_or(false);
+        o.double_sided = m.double_sided.value_or(true);
         o.gaussian_texture = m.use_gaussian_texture.value_or(false);
+        if (o.gaussian_texture)
+            o.gaussian_sigma = m.gaussian_texture_stddev.value_or(curve_spread(o.emissivity));
         if (!m.texture_file.empty())
             o.texture = read_texture_map(resolve(mat_path, m.texture_file), o);
         out.push_back(std::move(o));
@@ -194,6 +231,24 @@ void MaterialOptics::transmittance(double cos_theta, double thickness,
     std::size_t n = std::min(out.size(), extinction_per_km.size());
     for (std::size_t k = 0; k < n; ++k)
         out[k] = io::transmittance(extinction_per_km[k], d_km, cos_theta);
+}
+
+// z by Box-Muller from two splitmix64-hashed uniforms of (seed, key1, key2) (Steele, Lea
+// & Flood 2014's mix; the constants tell this draw from trace's other random numbers).
+double MaterialOptics::texture_gain(std::uint64_t seed, std::uint64_t key1,
+                                    std::uint64_t key2) const {
+    if (!gaussian_texture || gaussian_sigma <= 0) return 1;
+    auto mix = [](std::uint64_t z) {
+        z += 0x9e3779b97f4a7c15ULL;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    };
+    std::uint64_t h = mix(mix(mix(seed ^ 0x7465787475726531ULL) ^ key1) ^ (key2 + 0x632be59bULL));
+    double u1 = static_cast<double>(h >> 11) * 0x1.0p-53;
+    double u2 = static_cast<double>(mix(h) >> 11) * 0x1.0p-53;
+    double z = std::sqrt(-2 * std::log1p(-u1)) * std::cos(2 * std::numbers::pi * u2);
+    return std::max(0.0, 1 + gaussian_sigma * z);
 }
 
 MaterialOptics grey_material(long id, double reflectance, std::size_t samples, double specularity,

@@ -39,14 +39,19 @@ struct MaterialOptics {
     // material's own; further curves are texture curves).
     std::vector<std::vector<double>> emissivity;
     std::array<double, io::kFallOffCount> fall_off{};  // F(theta) at 0..90 deg
-    double specularity = 0;                           // 0 for lambertian
-    Brdf brdf;                                        // angular shape (brdf.hpp)
+    double specularity = 0;                            // 0 for lambertian
+    Brdf brdf;                                         // angular shape (brdf.hpp)
 
-    bool transmissive = false;                // UNIFORM/NONUNIFORM_TRANSMISSION
-    std::vector<double> extinction_per_km;    // per grid sample (curve 0 of the .ext)
-    double thickness_cm = 0;                  // THICKNESS (a facet's own overrides)
-    bool double_sided = false;
+    bool transmissive = false;              // UNIFORM/NONUNIFORM_TRANSMISSION
+    std::vector<double> extinction_per_km;  // per grid sample (curve 0 of the .ext)
+    double thickness_cm = 0;                // THICKNESS (a facet's own overrides)
+    // DOUBLE_SIDED (absent: true): a single-sided facet seen from behind is black
+    // (mat(5) SIDES).
+    bool double_sided = true;
+    // USE_GAUSSIAN_TEXTURE: the reflectance times a per-facet Gaussian gain of mean 1
+    // and standard deviation gaussian_sigma (mat(5) GAUSSIAN TEXTURE).
     bool gaussian_texture = false;
+    double gaussian_sigma = 0;
     std::shared_ptr<const TextureMap> texture;  // TEXTURE_FILE, or null
 
     // The .ems curve at scene point (x, y): the texture map's where it covers the
@@ -66,6 +71,11 @@ struct MaterialOptics {
     void reflectance(int curve, double theta_deg, double thickness_cm, std::span<double> out) const;
     // Slab transmittance exp(-k d / |cos theta|) per grid sample (ext(5)), d in cm.
     void transmittance(double cos_theta, double thickness_cm, std::span<double> out) const;
+    // The Gaussian texture gain of the facet with this key (any two integers naming it,
+    // such as placement and facet index) for render seed `seed`: max(0, 1 + sigma z),
+    // z standard normal from a hash of (seed, key) (reproducible, thread-independent);
+    // 1 when the texture is off.
+    double texture_gain(std::uint64_t seed, std::uint64_t key1, std::uint64_t key2) const;
 };
 
 // Reads a texture map with GDAL (band 1, any format GDAL reads). Every cell must be a

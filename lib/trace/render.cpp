@@ -9,6 +9,7 @@
 
 #include "core/parallel.hpp"
 #include "trace/adjacency.hpp"
+#include "trace/material_fraction.hpp"
 #include "trace/sampling.hpp"
 #include "trace/tracer.hpp"
 #include "trace/world.hpp"
@@ -43,6 +44,7 @@ struct RowWorker {
     std::vector<double> pixel;
     std::vector<double> truth_acc;
     std::uint64_t sky = 0, background = 0;  // primary samples that left the scene
+    MaterialTally materials;  // material_fraction layers
 };
 
 // The spectral buffers of one primary sample: radiance leaving the hit and the path
@@ -89,6 +91,8 @@ bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
     cam.ray(static_cast<double>(row) + off[0], static_cast<double>(col) + off[1], o, d);
     HitTruth ht;
     auto hit = w.tracer.primary(o, d, row, col, i, b.leave, c.opt.truth ? &ht : nullptr);
+    if (c.opt.truth)
+        w.materials.add(hit ? c.in.scene->attributes(*hit).material_id : kMissMaterial);
     if (!hit) {
         add_miss(c, w, b, o, d);
         return false;
@@ -159,13 +163,17 @@ void render_row(const TraceContext& c, RowWorker& w, long row, long out_row, Ren
     for (long col = 0; col < c.in.sensor->columns(); ++col) {
         std::fill(w.pixel.begin(), w.pixel.end(), 0.0);
         std::fill(w.truth_acc.begin(), w.truth_acc.end(), 0.0);
+        w.materials.clear();
         long hits = 0;
         for (long i = 0; i < spp; ++i)
             if (add_sample(c, w, buffers, centre, row, col, i)) ++hits;
         for (std::size_t k = 0; k < c.n; ++k)
             res.radiance.at(static_cast<int>(k), out_row, col) =
                 static_cast<float>(w.pixel[k] / static_cast<double>(spp));
-        if (c.opt.truth) put_truth(c, w.truth_acc, hits, spp, row, col, out_row, res.truth);
+        if (!c.opt.truth) continue;
+        put_truth(c, w.truth_acc, hits, spp, row, col, out_row, res.truth);
+        w.materials.put(spp, res.truth.channels - 2 * kMaterialFractionSlots, out_row, col,
+                        res.truth);
     }
 }
 
@@ -221,6 +229,7 @@ std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid)
         for (const char* q :
              {"reflectance_", "solar_", "downwelled_", "upwelled_", "transmission_"})
             names.push_back(q + band);
+    for (const auto& name : material_fraction_layer_names()) names.push_back(name);
     return names;
 }
 

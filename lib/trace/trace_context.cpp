@@ -104,6 +104,17 @@ bool has_delta(const MaterialOptics& m) {
     return m.specularity > 0 && m.brdf.shape() == LobeShape::Delta;
 }
 
+bool back_is_black(const MaterialOptics& m, const geo::Vec3& normal, const geo::Vec3& dir) {
+    return !m.double_sided && geo::dot(normal, dir) > 0;
+}
+
+void apply_texture_gain(const TraceContext& c, const MaterialOptics& m, const scene::Hit& hit,
+                        double* rho) {
+    if (!m.gaussian_texture) return;
+    double g = m.texture_gain(c.opt.seed, hit.object, hit.facet);
+    for (std::size_t k = 0; k < c.n; ++k) rho[k] = std::min(1.0, g * rho[k]);
+}
+
 const MaterialOptics& facet_material(const radiometry::MaterialLibrary& materials,
                                      const scene::FacetAttributes& a, const scene::FacetOrigin& o) {
     const MaterialOptics* m = materials.find(a.material_id);

@@ -117,12 +117,16 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
     if (geo::dot(n, dir) > 0) n = geo::scale(n, -1);
     Vec3 point = geo::add(origin, geo::scale(dir, hit->distance));
     Vec3 wo = geo::scale(dir, -1);
-    if (depth == 0)
+    bool black = back_is_black(m, hit->normal, dir);
+    if (black) {
+        // the back of a single-sided facet reflects and emits nothing
+    } else if (depth == 0) {
         shade_full(*hit, m, a, point, n, wo, out, truth);
-    else if (depth < m_c.opt.bounces)
+    } else if (depth < m_c.opt.bounces) {
         shade_path(*hit, m, a, point, n, wo, depth, out);
-    else if (depth == m_c.opt.bounces)
+    } else if (depth == m_c.opt.bounces) {
         shade_one_bounce(*hit, m, a, point, n, wo, out);
+    }
     if (m.transmissive && transmissions < m_c.opt.max_transmissions) {
         ArenaScope scope(m_arena);
         double* t = m_arena.take();
@@ -194,6 +198,7 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     double theta_o = std::acos(cos_o) * kDeg;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    apply_texture_gain(m_c, m, hit, rho);
     double s = specularity_of(m);
     // The sky fills the part (1 + cos(tilt))/2 of the facet's view, the background
     // plane the rest (irradiance pi L_bg (1 - cos(tilt))/2).
@@ -292,6 +297,7 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
     double* solar = m_arena.take();
     double* down = m_arena.take();
     m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    apply_texture_gain(m_c, m, hit, rho);
     Vec3 p = geo::add(point, geo::scale(n, m_c.eps));
 
     double visibility = 0;

@@ -79,6 +79,15 @@ struct FacetFrame {
 double specularity_of(const radiometry::MaterialOptics& m);
 bool has_lobe(const radiometry::MaterialOptics& m);   // a finite specular lobe
 bool has_delta(const radiometry::MaterialOptics& m);  // a mirror (delta) specular part
+// A ray along `dir` meets the back of a single-sided facet (geometric normal `normal`):
+// the facet reflects and emits nothing toward it (mat(5) SIDES).
+bool back_is_black(const radiometry::MaterialOptics& m, const geo::Vec3& normal,
+                   const geo::Vec3& dir);
+// Multiplies the reflectance `rho` (c.n samples) by the material's Gaussian texture gain
+// for the hit facet, each value capped at 1 (mat(5) GAUSSIAN TEXTURE); nothing when
+// the material has no Gaussian texture.
+void apply_texture_gain(const TraceContext& c, const radiometry::MaterialOptics& m,
+                        const scene::Hit& hit, double* rho);
 
 // The facet's material, or DataError naming the facet: a material missing from the
 // .mat, or a texture curve the material's .ems does not have.

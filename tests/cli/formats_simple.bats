@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
-# Tests: sigchain-check (formats .adv .snd .rsd .sen .cpt .tmp)
-# Also requires: tests/data/white1996, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp},
+# Tests: sigchain-check (formats .adv .snd .rsd .sen .cpt .tmp .brdf)
+# Also requires: tests/data/white1996, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp,brdf}, data/brdf,
 # tests/golden/sigchain-check (the canonical rewrites of the samples of White (1996))
 
 load test_helper
@@ -137,3 +137,17 @@ bats_require_minimum_version 1.5.0
     [ ! -e out.adv ]
     assert_no_temp_files .
 }
+
+# --- .brdf --------------------------------------------------------------------------
+@test "brdf: shipped RPV example checks" {
+    check_good "$SIGCHAIN_SOURCE_DIR/data/brdf/rpv_example.brdf" "18 x 18 x 37 angles"
+}
+@test "brdf: --rewrite reads back to the same table" {
+    run -0 --separate-stderr sigchain-check --rewrite -o "$BATS_TEST_TMPDIR/r.brdf" \
+        "$SIGCHAIN_SOURCE_DIR/data/brdf/rpv_example.brdf"
+    run -0 --separate-stderr sigchain-check "$BATS_TEST_TMPDIR/r.brdf"
+    assert_output --partial "ok: 18 x 18 x 37 angles"
+}
+@test "brdf: repeated grid point" { check_bad brdf repeated.brdf 6 "repeated grid point (first on line 5)"; }
+@test "brdf: missing grid point" { check_bad brdf missing.brdf 5 "expected a row for theta_i 0, theta_o 0, phi 180, found none in the file"; }
+@test "brdf: unknown major version" { check_bad brdf version.brdf 1 "expected sigchain-brdf version 1 or 1.N, found '2'"; }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numbers>
 
 #include "../io/data_error.hpp"
 #include "core/error.hpp"
@@ -144,16 +145,33 @@ TEST(MaterialLibrary, ModelsBecomeLobes) {
     EXPECT_NEAR(r[1], 1 - 0.3 * 5.0 / 6.0, 1e-6);  // fall-off printed with 6 decimals
 }
 
-TEST(MaterialLibrary, TableModelIsNotSupportedYet) {
+TEST(MaterialLibrary, TableModelReadsItsBrdfFile) {
     auto dir = scratch("table");
     write(dir / "plain.ems", ems_text(false));
-    write(dir / "m.mat",
-          entry("tab", 9, "plain.ems", "REFLECTANCE_MODEL = table\nTABLE_FILE = brdf.txt\n"));
-    std::string mat_path = (dir / "m.mat").string();
+    write(dir / "flat.brdf",
+          "# sigchain-brdf 1\ntheta_i_deg = 0\ntheta_o_deg = 0\nphi_deg = 0 180\n"
+          "0 0 0 0.3\n0 0 180 0.3\n");
+    write(dir / "bad.brdf",
+          "# sigchain-brdf 1\ntheta_i_deg = 0\ntheta_o_deg = 0\nphi_deg = 0 90\n");
+    write(
+        dir / "m.mat",
+        entry("tab", 9, "plain.ems", "REFLECTANCE_MODEL = table\nTABLE_FILE = flat.brdf\n", 1) +
+            entry("tab2", 10, "plain.ems", "REFLECTANCE_MODEL = table\nTABLE_FILE = flat.brdf\n"));
+    write(dir / "bad.mat",
+          entry("bad", 9, "plain.ems", "REFLECTANCE_MODEL = table\nTABLE_FILE = bad.brdf\n"));
+    std::string mat_path = (dir / "m.mat").string(), bad_path = (dir / "bad.mat").string();
+    MaterialLibrary lib =
+        MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid_of({0.5}));
+    EXPECT_EQ(lib.find(9)->brdf.shape(), LobeShape::Table);
+    EXPECT_EQ(lib.find(9)->specularity, 1.0);
+    geo::Vec3 wi{0.6, 0, 0.8}, wo{0, 0, 1};
+    EXPECT_NEAR(lib.find(9)->brdf.weight(wi, wo, 1.0), 0.8 / std::numbers::pi, 1e-15);
+    std::string bad_file = (dir / "bad.brdf").string();
     EXPECT_EQ(test::data_error_of([&] {
-                  MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid_of({0.5}));
+                  MaterialLibrary::load(io::read_mat_file(bad_path), bad_path, grid_of({0.5}));
               }),
-              mat_path + ":1: material 'tab' (9): REFLECTANCE_MODEL table is not supported yet");
+              bad_path + ":1: material 'bad' (9): cannot read TABLE_FILE " + bad_file + ": " +
+                  bad_file + ":4: expected phi_deg from 0 to 180, found 0 to 90");
 }
 
 TEST(MaterialLibrary, TransmissiveMaterialSamplesItsExtinction) {
