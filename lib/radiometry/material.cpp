@@ -117,6 +117,25 @@ double fall_off_at(const std::array<double, io::kFallOffCount>& f, double theta_
     return f[i] + t * (f[i + 1] - f[i]);
 }
 
+// The fall-off's projected-solid-angle mean 2 Int_0^90 F cos sin d(theta) (midpoint,
+// 0.1-deg steps: exact to 1e-6 for F linear between whole degrees) and whether F = 1.
+void fall_off_statistics(MaterialOptics& o) {
+    o.flat_fall_off = std::all_of(o.fall_off.begin(), o.fall_off.end(),
+                                  [](double f) { return f == 1.0; });
+    if (o.flat_fall_off) {
+        o.mean_fall_off = 1;
+        return;
+    }
+    constexpr int kSteps = 900;
+    constexpr double kDegToRad = std::numbers::pi / 180;
+    double sum = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double theta = (i + 0.5) * 90.0 / kSteps;
+        sum += fall_off_at(o.fall_off, theta) * std::sin(2 * theta * kDegToRad);
+    }
+    o.mean_fall_off = sum * (90.0 / kSteps) * kDegToRad;  // Int F sin(2 theta) d(theta)
+}
+
 }  // namespace
 
 MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat_path,
@@ -172,6 +191,7 @@ namespace {
 }  // namespace
 
 MaterialLibrary MaterialLibrary::from_optics(std::vector<MaterialOptics> materials) {
+    for (auto& m : materials) fall_off_statistics(m);
     MaterialLibrary lib;
     long max_id = -1;
     for (const auto& m : materials) {
@@ -194,15 +214,22 @@ const MaterialOptics* MaterialLibrary::find(long id) const {
     return &m_materials[m_index[id]];
 }
 
+double MaterialOptics::fall_off_cos(double cos_theta) const {
+    if (flat_fall_off) return 1;
+    return fall_off_at(fall_off, std::acos(std::clamp(cos_theta, -1.0, 1.0)) * 180 / std::numbers::pi);
+}
+
 void MaterialOptics::directional_emissivity(int curve, double theta_deg,
                                             std::span<double> out) const {
     const std::vector<double>& e = emissivity.at(curve);
-    double f = fall_off_at(fall_off, theta_deg);
+    const double f = fall_off_at(fall_off, theta_deg);
+    const double s = brdf.shape() == LobeShape::None ? 0.0 : specularity;
+    const double albedo = f * ((1 - s) * mean_fall_off + s * f);  // rho_dh / (1 - eps)
     std::size_t n = std::min(out.size(), e.size());
-    for (std::size_t k = 0; k < n; ++k) out[k] = e[k] * f;
+    for (std::size_t k = 0; k < n; ++k) out[k] = 1 - (1 - e[k]) * albedo;
 }
 
-// rho = 1 - eps F (opaque); (1 - eps F)(1 - t) for a transmissive slab (mat(5):
+// rho = (1 - eps) F (opaque); (1 - eps) F (1 - t) for a transmissive slab (mat(5):
 // r + a + t = 1). A negative thickness means the material's own THICKNESS.
 void MaterialOptics::reflectance(int curve, double theta_deg, double thickness,
                                  std::span<double> out) const {
@@ -210,13 +237,13 @@ void MaterialOptics::reflectance(int curve, double theta_deg, double thickness,
     double f = fall_off_at(fall_off, theta_deg);
     std::size_t n = std::min(out.size(), e.size());
     if (!transmissive) {
-        for (std::size_t k = 0; k < n; ++k) out[k] = 1 - e[k] * f;
+        for (std::size_t k = 0; k < n; ++k) out[k] = (1 - e[k]) * f;
         return;
     }
     double d_km = (thickness < 0 ? thickness_cm : thickness) * kKmPerCm;
     double c = std::cos(theta_deg * std::numbers::pi / 180);
     for (std::size_t k = 0; k < n; ++k)
-        out[k] = (1 - e[k] * f) * (1 - io::transmittance(extinction_per_km[k], d_km, c));
+        out[k] = (1 - e[k]) * f * (1 - io::transmittance(extinction_per_km[k], d_km, c));
 }
 
 // t = exp(-k d / |cos theta|) (ext(5); io::transmittance clamps |cos| at grazing). 0 for

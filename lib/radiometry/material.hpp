@@ -39,6 +39,10 @@ struct MaterialOptics {
     // material's own; further curves are texture curves).
     std::vector<std::vector<double>> emissivity;
     std::array<double, io::kFallOffCount> fall_off{};  // F(theta) at 0..90 deg
+    // Projected-solid-angle mean of F over the hemisphere, 2 Int F cos sin d(theta)
+    // (set by MaterialLibrary::load/from_optics; 1 for a flat fall-off).
+    double mean_fall_off = 1;
+    bool flat_fall_off = true;  // F = 1 at every angle: no lookups
     double specularity = 0;                            // 0 for lambertian
     Brdf brdf;                                         // angular shape (brdf.hpp)
 
@@ -62,12 +66,20 @@ struct MaterialOptics {
         return c < 0 ? facet_curve : c;
     }
 
-    // Directional emissivity eps(lambda) * F(theta) of curve `curve` for an angle
-    // `theta_deg` from the normal, into `out` (grid size).
+    // Fall-off as White (1996), section 5.2.3 proposes (ems(5) FALL-OFF): F lowers the
+    // reflectance at high view angles, rho(lambda, theta_o) = (1 - eps(lambda)) F(theta_o),
+    // and damps the radiance arriving at high zenith angles, each incoming direction
+    // weighted F(theta_i). F at the angle whose cosine to the normal is `cos_theta`
+    // (1 for a flat fall-off).
+    double fall_off_cos(double cos_theta) const;
+    // Directional emissivity of curve `curve` at `theta_deg` from the normal, by
+    // Kirchhoff 1 - the directional-hemispherical reflectance:
+    // 1 - (1 - eps) F(theta) [(1 - s) Fbar + s F(theta)], the lobe taken about the
+    // mirror direction (at theta from the normal), Fbar = mean_fall_off. Into `out`.
     void directional_emissivity(int curve, double theta_deg, std::span<double> out) const;
-    // Directional-hemispherical reflectance rho(lambda, theta) = 1 - eps(lambda) F(theta)
-    // for an opaque facet; for a transmissive one (1 - eps F)(1 - t) with t the
-    // slab transmittance at that angle (mat(5): r + a + t = 1). Into `out`.
+    // Reflectance rho(lambda, theta) = (1 - eps(lambda)) F(theta) of an opaque facet;
+    // for a transmissive one (1 - eps) F (1 - t) with t the slab transmittance at that
+    // angle (mat(5): r + a + t = 1). Into `out`.
     void reflectance(int curve, double theta_deg, double thickness_cm, std::span<double> out) const;
     // Slab transmittance exp(-k d / |cos theta|) per grid sample (ext(5)), d in cm.
     void transmittance(double cos_theta, double thickness_cm, std::span<double> out) const;

@@ -35,9 +35,10 @@ public:
         long escaped = 0;
         for (const Vec3& d : m_pattern) {
             if (tracer.incoming(p, f.to_world(d), li)) ++escaped;
-            for (std::size_t k = 0; k < n; ++k) acc[k] += w * li[k];
+            const double wf = w * m.fall_off_cos(d[2]);  // incoming fall-off (material.hpp)
+            for (std::size_t k = 0; k < n; ++k) acc[k] += wf * li[k];
         }
-        if (s > 0 && m.brdf.shape() != LobeShape::None) tracer.add_mirror(s, f, p, wo_l, acc);
+        if (s > 0 && m.brdf.shape() != LobeShape::None) tracer.add_mirror(s * m.fall_off_cos(wo_l[2]), f, p, wo_l, acc);
         return static_cast<double>(escaped) / static_cast<double>(m_pattern.size());
     }
 

@@ -43,11 +43,12 @@ public:
             const GolfRay& r = rays[i];
             double w = (1 - s) * r.projected_sr / kPi;
             if (lobe_rays) w += s * m_lobe[i] / lobe_sum;
+            w *= m.fall_off_cos(m_dirs[i][2]);  // incoming fall-off (material.hpp)
             if (tracer.incoming(p, f.to_world(m_dirs[i]), li)) svf += r.projected_sr / kPi;
             if (w == 0) continue;
             for (std::size_t k = 0; k < n; ++k) acc[k] += w * li[k];
         }
-        if (has_delta(m) || (lobe && !lobe_rays)) tracer.add_mirror(s, f, p, wo_l, acc);
+        if (has_delta(m) || (lobe && !lobe_rays)) tracer.add_mirror(s * m.fall_off_cos(wo_l[2]), f, p, wo_l, acc);
         return svf;
     }
 

@@ -69,6 +69,7 @@ public:
             }
             if (d_l[2] <= 0) continue;  // below the facet: w = 0
             double fw = delta ? (1 - s) * d_l[2] / kPi : m.brdf.weight(d_l, wo_l, s);
+            fw *= m.fall_off_cos(d_l[2]);  // incoming fall-off (material.hpp)
             double denom = static_cast<double>(n_b) * m.brdf.pdf(d_l, wo_l, s_sample);
             if (n_l > 0) denom += static_cast<double>(n_l) * sky_pdf(d_w);
             if (denom <= 0) continue;
@@ -76,7 +77,7 @@ public:
             if (escaped) svf += d_l[2] / kPi / denom;
             for (std::size_t k = 0; k < c.n; ++k) acc[k] += fw / denom * li[k];
         }
-        if (has_delta(m)) tracer.add_mirror(s, f, p, wo_l, acc);
+        if (has_delta(m)) tracer.add_mirror(s * m.fall_off_cos(wo_l[2]), f, p, wo_l, acc);
         return svf;
     }
 

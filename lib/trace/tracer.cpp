@@ -202,10 +202,11 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     double s = specularity_of(m);
     // The sky fills the part (1 + cos(tilt))/2 of the facet's view, the background
     // plane the rest (irradiance pi L_bg (1 - cos(tilt))/2).
-    double sky_factor = (1 - s) / kPi * (1 + n[2]) / 2;
+    // Incoming fall-off: Fbar over the sky and the ground, F(sun) on the sun.
+    double sky_factor = (1 - s) / kPi * (1 + n[2]) / 2 * m.mean_fall_off;
     for (std::size_t k = 0; k < m_c.n; ++k) in[k] = sky_factor * m_c.sky_e[k];
     if (m_c.background.enabled && n[2] < 1) {
-        const double ground_factor = (1 - s) * (1 - n[2]) / 2;
+        const double ground_factor = (1 - s) * (1 - n[2]) / 2 * m.mean_fall_off;
         for (std::size_t k = 0; k < m_c.n; ++k)
             in[k] += ground_factor * m_c.background.radiance[k];
     }
@@ -218,6 +219,7 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
                 FacetFrame f(n);
                 w += s * m.brdf.lobe_weight(f.to_local(m_c.sun), f.to_local(wo));
             }
+            w *= m.fall_off_cos(cos_sun);
             for (std::size_t k = 0; k < m_c.n; ++k) in[k] += w * m_c.sun_e[k] * vis[k];
         }
     }
@@ -252,6 +254,7 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
         if (sun_visibility(p, vis) > 0) {
             double w = (1 - s) * cos_sun / kPi;
             if (has_lobe(m)) w += s * m.brdf.lobe_weight(f.to_local(m_c.sun), wo_l);
+            w *= m.fall_off_cos(cos_sun);
             for (std::size_t k = 0; k < m_c.n; ++k) in[k] += w * m_c.sun_e[k] * vis[k];
         }
     }
@@ -263,7 +266,8 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
         const Vec3 d_l = m.brdf.sample(wo_l, delta ? 0.0 : s, u1, u2, u3).wi;
         if (d_l[2] > 0) {
             const double pdf = m.brdf.pdf(d_l, wo_l, delta ? 0.0 : s);
-            const double fw = delta ? (1 - s) * d_l[2] / kPi : m.brdf.weight(d_l, wo_l, s);
+            const double fw = (delta ? (1 - s) * d_l[2] / kPi : m.brdf.weight(d_l, wo_l, s)) *
+                              m.fall_off_cos(d_l[2]);
             if (pdf > 0) {
                 std::fill(li, li + m_c.n, 0.0);
                 ++m_counters.secondary;
@@ -275,7 +279,8 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
             std::fill(li, li + m_c.n, 0.0);
             ++m_counters.secondary;
             along(p, f.to_world(radiometry::mirror(wo_l)), 0.0, depth + 1, 0, li, nullptr);
-            for (std::size_t k = 0; k < m_c.n; ++k) in[k] += s / q * li[k];
+            const double sm = s * m.fall_off_cos(wo_l[2]) / q;
+            for (std::size_t k = 0; k < m_c.n; ++k) in[k] += sm * li[k];
         }
     }
     for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * in[k];
@@ -306,7 +311,8 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
         double* vis = m_arena.take();
         visibility = sun_visibility(p, vis);
         if (visibility > 0) {
-            double w = m_strategy->sun_weight(m, f.to_local(m_c.sun), wo_l, cos_sun);
+            double w = m_strategy->sun_weight(m, f.to_local(m_c.sun), wo_l, cos_sun) *
+                       m.fall_off_cos(cos_sun);
             for (std::size_t k = 0; k < m_c.n; ++k) solar[k] = w * m_c.sun_e[k] * vis[k];
         }
     }

@@ -50,23 +50,24 @@ render() {  # render TMP OUT: a 64 x 64 view, one sample per pixel
 }
 
 # 10 K warmer facets raise the 10 um radiance by epsilon x (B(T + 10) - B(T)) on every
-# hit pixel (plus a little of it reflected). The grass emissivity of White (1996) (0.93) with its
-# fall-off at the view angles of this camera (20-48 deg: 0.87 to 0.69) bounds the
-# factor to 0.6-0.95 of the Planck difference at 303 K (Planck's law with CODATA
-# constants here, independent of the code).
+# pixel (plus a little of it reflected). The grass emissivity of White (1996) (0.93)
+# is the nadir value; by Kirchhoff with its fall-off (trace(1): 1 - (1 - eps) F Fbar,
+# F 0.87 to 0.69 at this camera's 20-48 deg) the directional emissivity is 0.95-0.98,
+# and the pixels beyond the plate's far edge see the background plane, as warm as the
+# scene's mean with emissivity 0.93. So the factor lies within 0.9-1.02 of the Planck
+# difference at 303 K (Planck's law with CODATA constants here, independent of the
+# code; 1.02 leaves room for the warmer neighbours' reflected emission).
 @test "warmer facets brighten the thermal band by emissivity x the Planck difference" {
     chain
     render box.tmp cube.img
     awk '/^[0-9]/ { $2 = $2 + 10 } { print }' box.tmp > hot.tmp
     render hot.tmp hot.img
     run -0 compare --pixelwise hot.img cube.img
-    # Band 6 is 10 um (1000 cm-1). The bias is a mean over every pixel, and about 10 %
-    # of them see the sky beyond the plate's far edge (radiance 0 in both), hence the
-    # lower bound's extra 0.85.
+    # Band 6 is 10 um (1000 cm-1). The bias is a mean over every pixel.
     bias=$(awk '$1 == 6 { print $5 }' <<< "$output")
     awk -v b="$bias" 'BEGIN {
         c1 = 1.191042972e4; c2 = 14387.7688; l = 10
         B1 = c1 / l^5 / (exp(c2 / (l * 303)) - 1); B2 = c1 / l^5 / (exp(c2 / (l * 313)) - 1)
         d = B2 - B1
-        if (!(b > 0.6 * 0.85 * d && b < 0.95 * d)) { print "bias " b " vs dB " d; exit 1 } }'
+        if (!(b > 0.9 * d && b < 1.02 * d)) { print "bias " b " vs dB " d; exit 1 } }'
 }

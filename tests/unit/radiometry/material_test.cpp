@@ -80,10 +80,14 @@ TEST(MaterialLibrary, LoadsTheSeedMaterialAndItsEmissivity) {
     std::vector<double> r(2), e(2);
     grass->reflectance(0, 0, 0, r);
     EXPECT_NEAR(r[0], 1 - 0.9358, 1e-12);
+    // Kirchhoff with fall-off (material.hpp): 1 - (1 - eps) F(theta) Fbar (no lobe).
+    EXPECT_GT(grass->mean_fall_off, 0.0);
+    EXPECT_LT(grass->mean_fall_off, 1.0);
     grass->directional_emissivity(0, 6.5, e);  // halfway between F(6) and F(7)
-    EXPECT_NEAR(e[0], 0.9358 * 0.5 * (0.996904 + 0.995872), 1e-12);
-    grass->directional_emissivity(0, 120, e);  // clamped to 90 deg: F(90) = 0
-    EXPECT_EQ(e[0], 0.0);
+    EXPECT_NEAR(e[0], 1 - (1 - 0.9358) * 0.5 * (0.996904 + 0.995872) * grass->mean_fall_off,
+                1e-12);
+    grass->directional_emissivity(0, 120, e);  // clamped to 90 deg: F(90) = 0, black
+    EXPECT_EQ(e[0], 1.0);
 }
 
 TEST(MaterialLibrary, MissingEmissivityFileNamesTheMatLine) {
@@ -139,10 +143,10 @@ TEST(MaterialLibrary, ModelsBecomeLobes) {
     // Curve 0.2 at 0.4 um .. 0.4 at 1.0 um: 0.3 at 0.7, clamped (0.4) at 2.0 um.
     EXPECT_NEAR(lib.find(3)->emissivity[0][1], 0.3, 1e-12);
     EXPECT_NEAR(lib.find(3)->emissivity[0][2], 0.4, 1e-12);
-    // Fall-off 1 - angle/180 at 30 deg = 5/6: rho = 1 - 0.3 * 5/6.
+    // Fall-off 1 - angle/180 at 30 deg = 5/6: rho = (1 - 0.3) * 5/6.
     std::vector<double> r(3);
     lib.find(5)->reflectance(0, 30, 0, r);
-    EXPECT_NEAR(r[1], 1 - 0.3 * 5.0 / 6.0, 1e-6);  // fall-off printed with 6 decimals
+    EXPECT_NEAR(r[1], (1 - 0.3) * 5.0 / 6.0, 1e-6);  // fall-off printed with 6 decimals
 }
 
 TEST(MaterialLibrary, TableModelReadsItsBrdfFile) {
@@ -197,9 +201,9 @@ TEST(MaterialLibrary, TransmissiveMaterialSamplesItsExtinction) {
     EXPECT_NEAR(t[1], std::exp(-0.6), 1e-12);
     m->transmittance(-0.5, -1, t);  // either side; negative thickness: the material's
     EXPECT_NEAR(t[0], std::exp(-1.04), 1e-12);
-    // rho = (1 - eps F)(1 - t): eps(0.55) = 0.2 + 0.2 * 0.15 / 0.6 = 0.25, F(60) = 2/3.
+    // rho = (1 - eps) F (1 - t): eps(0.55) = 0.2 + 0.2 * 0.15 / 0.6 = 0.25, F(60) = 2/3.
     m->reflectance(0, 60, 100, r);
-    EXPECT_NEAR(r[0], (1 - 0.25 * (1 - 60 / 180.0)) * (1 - std::exp(-1.04)), 1e-6);
+    EXPECT_NEAR(r[0], (1 - 0.25) * (1 - 60 / 180.0) * (1 - std::exp(-1.04)), 1e-6);
 }
 
 TEST(MaterialLibrary, FromOpticsRefusesDuplicateIds) {
