@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "io/spectral_curve.hpp"
 #include "radiometry/atmosphere_data.hpp"
+#include "radiometry/bracket.hpp"
 
 namespace sigchain::radiometry {
 
@@ -292,29 +293,15 @@ std::span<const double> Atmosphere::sun_irradiance_at_ground() const {
 
 namespace {
 
-// Index i and weight f so that a value at `x` is (1 - f) t[i] + f t[i + 1], clamped.
-void bracket(const std::vector<double>& t, double x, std::size_t& i, double& f) {
-    if (t.size() == 1 || x <= t.front()) {
-        i = 0, f = 0;
-        return;
-    }
-    if (x >= t.back()) {
-        i = t.size() - 2, f = 1;
-        return;
-    }
-    i = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin()) - 1;
-    f = (x - t[i]) / (t[i + 1] - t[i]);
-}
-
 }  // namespace
 
 void Atmosphere::path(double view_angle_deg, std::span<double> tau2, std::span<double> scattered,
                       std::span<double> emitted) const {
     const Data& d = *m_data;
-    std::size_t n = d.grid.size(), i = 0;
-    double f = 0;
-    bracket(d.view_angles_deg, view_angle_deg, i, f);
-    std::size_t j = d.view_angles_deg.size() == 1 ? i : i + 1;
+    const std::size_t n = d.grid.size();
+    const Bracket b = bracket(d.view_angles_deg, view_angle_deg);
+    const std::size_t i = b.k, j = b.next(d.view_angles_deg.size());
+    const double f = b.t;
     auto lerp = [&](const std::vector<double>& t, std::span<double> out) {
         if (out.empty()) return;
         if (out.size() != n) throw std::invalid_argument("Atmosphere::path: span size");
@@ -342,10 +329,9 @@ void Atmosphere::path(const geo::Vec3& line_of_sight, double view_angle_deg, std
     const double zenith = std::acos(std::clamp(-line_of_sight[2] / len, -1.0, 1.0)) / kDegToRad;
     double azimuth = std::atan2(line_of_sight[0], line_of_sight[1]) / kDegToRad;
     if (azimuth < 0) azimuth += 360;
-    std::size_t i = 0;
-    double f = 0;
-    bracket(d.up_zenith_deg, zenith, i, f);
-    const std::size_t i1 = d.up_zenith_deg.size() == 1 ? i : i + 1;
+    const Bracket bz = bracket(d.up_zenith_deg, zenith);
+    const std::size_t i = bz.k, i1 = bz.next(d.up_zenith_deg.size());
+    const double f = bz.t;
     // Azimuth nodes are periodic: between the last and the first across north.
     const auto& az = d.up_azimuth_deg;
     const std::size_t na = az.size();

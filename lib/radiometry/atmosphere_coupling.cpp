@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "radiometry/atmosphere_data.hpp"
+#include "radiometry/bracket.hpp"
 
 namespace sigchain::radiometry {
 
@@ -84,18 +85,9 @@ void Atmosphere::diffuse_transmittance_up(double view_angle_deg, std::span<doubl
     }
     // Linear in the view angle between the tabulated ones, clamped (as path()).
     const auto& t = d.view_angles_deg;
-    std::size_t i = 0, j = 0;
-    double f = 0;
-    if (t.size() > 1 && view_angle_deg > t.front()) {
-        if (view_angle_deg >= t.back()) {
-            i = j = t.size() - 1;
-        } else {
-            j = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), view_angle_deg) -
-                                         t.begin());
-            i = j - 1;
-            f = (view_angle_deg - t[i]) / (t[j] - t[i]);
-        }
-    }
+    const Bracket b = bracket(t, view_angle_deg);
+    const std::size_t i = b.k, j = b.next(t.size());
+    const double f = b.t;
     for (std::size_t k = 0; k < n; ++k)
         out[k] = (1 - f) * d.diffuse_up[i * n + k] + f * d.diffuse_up[j * n + k];
 }

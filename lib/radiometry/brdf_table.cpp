@@ -2,6 +2,8 @@
 // the table's albedo, tabulated-CDF importance sampling (brdf_table.hpp, brdf(5)).
 #include "radiometry/brdf_table.hpp"
 
+#include "radiometry/bracket.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -20,21 +22,7 @@ constexpr int kCellsPhi = 36;
 // Share of cosine-weighted draws (defensive mixture: pdf > 0 wherever w > 0).
 constexpr double kCosineShare = 0.1;
 
-struct Bracket {
-    std::size_t k = 0;
-    double t = 0;  // weight of node k + 1
-};
-
-// x's interval in `grid` (clamped to the grid's range), for linear interpolation.
-Bracket bracket(const std::vector<double>& grid, double x) {
-    if (grid.size() == 1 || x <= grid.front()) return {0, 0};
-    if (x >= grid.back()) return {grid.size() - 2, 1};
-    auto k =
-        static_cast<std::size_t>(std::upper_bound(grid.begin(), grid.end(), x) - grid.begin()) - 1;
-    return {k, (x - grid[k]) / (grid[k + 1] - grid[k])};
-}
-
-std::size_t next(const Bracket& b, std::size_t size) { return std::min(b.k + 1, size - 1); }
+std::size_t next(const Bracket& b, std::size_t size) { return b.next(size); }
 
 // Relative azimuth of wi and wo folded into [0, pi]; an azimuth at the normal is taken
 // as 0 (the x axis), as sample() does.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radiometry/bracket.hpp"
 #include "trace/tracer.hpp"
 
 namespace sigchain::trace {
@@ -15,10 +16,6 @@ namespace {
 // few milliseconds, and a reflectance mean good to well under 1 % for any scene
 // whose materials are resolved at 1/128 of the environment's diameter.
 constexpr int kEnvironmentSide = 128;
-
-double thickness_of(const scene::FacetAttributes& a, const radiometry::MaterialOptics& m) {
-    return a.thickness_cm >= 0 ? a.thickness_cm : m.thickness_cm;
-}
 
 // The ground point the image centre sees, or the scene's centre when that ray misses.
 geo::Vec3 environment_centre(const RenderInputs& in) {
@@ -72,28 +69,24 @@ std::vector<double> environment_reflectance(const RenderInputs& in, const geo::V
     const double x1 = std::min(b.upper[0], centre[0] + radius);
     const double y0 = std::max(b.lower[1], centre[1] - radius);
     const double y1 = std::min(b.upper[1], centre[1] + radius);
-    const double top = b.upper[2] + 1 + 0.01 * (b.upper[2] - b.lower[2]);
     std::vector<double> sum(n, 0.0), rho(n);
     long hits = 0;
-    for (int i = 0; i < side; ++i)
-        for (int j = 0; j < side; ++j) {
-            const double x = x0 + (i + 0.5) / side * (x1 - x0);
-            const double y = y0 + (j + 0.5) / side * (y1 - y0);
-            if (std::hypot(x - centre[0], y - centre[1]) > radius) continue;
-            auto hit = sc.intersect({x, y, top}, {0, 0, -1});
-            if (!hit) continue;
-            const auto& a = sc.attributes(*hit);
-            const auto& m = facet_material(*in.materials, a, sc.origin(*hit));
-            geo::Vec3 normal = hit->normal;
+    for_each_seen_from_above(
+        sc, x0, x1, y0, y1, side,
+        [&](double x, double y) { return std::hypot(x - centre[0], y - centre[1]) <= radius; },
+        [&](const scene::Hit& hit, double x, double y) {
+            const auto& a = sc.attributes(hit);
+            const auto& m = facet_material(*in.materials, a, sc.origin(hit));
+            geo::Vec3 normal = hit.normal;
             if (normal[2] < 0) normal = geo::scale(normal, -1);
             const double cos_i =
                 atm.sun_up() ? std::max(0.0, geo::dot(normal, atm.sun_direction())) : 1.0;
             const double theta = std::acos(std::min(1.0, cos_i)) * kDeg;
             const int curve = m.curve_at(x, y, static_cast<int>(a.texture_curve));
-            m.reflectance(curve, theta, thickness_of(a, m), rho);
+            m.reflectance(curve, theta, a.thickness_cm, rho);
             for (std::size_t k = 0; k < n; ++k) sum[k] += rho[k];
             ++hits;
-        }
+        });
     if (hits == 0) return {};
     for (double& v : sum) v /= static_cast<double>(hits);
     return sum;
@@ -137,18 +130,9 @@ void Adjacency::add_path(double view_angle_deg, double* lus) const {
     if (!m_active) return;
     const std::size_t n = m_rho_bar.size();
     const auto& t = m_view_deg;
-    std::size_t i = 0, j = 0;
-    double f = 0;
-    if (t.size() > 1 && view_angle_deg > t.front()) {
-        if (view_angle_deg >= t.back()) {
-            i = j = t.size() - 1;
-        } else {
-            j = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), view_angle_deg) -
-                                         t.begin());
-            i = j - 1;
-            f = (view_angle_deg - t[i]) / (t[j] - t[i]);
-        }
-    }
+    const radiometry::Bracket br = radiometry::bracket(t, view_angle_deg);
+    const std::size_t i = br.k, j = br.next(t.size());
+    const double f = br.t;
     const double* a = &m_l_adj[i * n];
     const double* b = &m_l_adj[j * n];
     for (std::size_t k = 0; k < n; ++k) lus[k] += (1 - f) * a[k] + f * b[k];
