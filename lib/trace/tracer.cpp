@@ -14,14 +14,6 @@ namespace sigchain::trace {
 using geo::Vec3;
 using radiometry::MaterialOptics;
 
-namespace {
-
-double thickness_of(const scene::FacetAttributes& a, const MaterialOptics& m) {
-    return a.thickness_cm >= 0 ? a.thickness_cm : m.thickness_cm;
-}
-
-}  // namespace
-
 Tracer::Tracer(const TraceContext& c)
     : m_c(c),
       m_arena(c.n),
@@ -131,7 +123,7 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
         ArenaScope scope(m_arena);
         double* t = m_arena.take();
         double* behind = m_arena.take();
-        m.transmittance(std::abs(geo::dot(n, dir)), thickness_of(a, m), {t, m_c.n});
+        m.transmittance(std::abs(geo::dot(n, dir)), a.thickness_cm, {t, m_c.n});
         if (depth == 0)
             ++m_counters.primary;
         else
@@ -197,7 +189,7 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     double cos_o = std::clamp(geo::dot(n, wo), 0.0, 1.0);
     double theta_o = std::acos(cos_o) * kDeg;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
-    m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    m.reflectance(curve, theta_o, a.thickness_cm, {rho, m_c.n});
     apply_texture_gain(m_c, m, hit, rho);
     double s = specularity_of(m);
     // The sky fills the part (1 + cos(tilt))/2 of the facet's view, the background
@@ -245,7 +237,8 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
     const Vec3 wo_l = f.to_local(wo);
     const double theta_o = std::acos(std::clamp(wo_l[2], 0.0, 1.0)) * kDeg;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
-    m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    m.reflectance(curve, theta_o, a.thickness_cm, {rho, m_c.n});
+    apply_texture_gain(m_c, m, hit, rho);
     const Vec3 p = geo::add(point, geo::scale(n, m_c.eps));
     const double s = specularity_of(m);
     const double cos_sun = geo::dot(n, m_c.sun);
@@ -301,7 +294,7 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
     double* rho = m_arena.take();
     double* solar = m_arena.take();
     double* down = m_arena.take();
-    m.reflectance(curve, theta_o, thickness_of(a, m), {rho, m_c.n});
+    m.reflectance(curve, theta_o, a.thickness_cm, {rho, m_c.n});
     apply_texture_gain(m_c, m, hit, rho);
     Vec3 p = geo::add(point, geo::scale(n, m_c.eps));
 

@@ -28,24 +28,20 @@ int mean_from_above(const TraceContext& c, std::vector<double>& rho, double& tem
     std::vector<double> r(c.n);
     int hits = 0, warm = 0;
     double t_sum = 0;
-    const double top = b.upper[2] + 1 + std::abs(b.upper[2] - b.lower[2]);
-    for (int i = 0; i < kGrid; ++i)
-        for (int j = 0; j < kGrid; ++j) {
-            const double x = b.lower[0] + (i + 0.5) / kGrid * (b.upper[0] - b.lower[0]);
-            const double y = b.lower[1] + (j + 0.5) / kGrid * (b.upper[1] - b.lower[1]);
-            auto hit = sc.intersect({x, y, top}, {0, 0, -1});
-            if (!hit) continue;
-            const auto& a = sc.attributes(*hit);
-            const auto& m = facet_material(*c.in.materials, a, sc.origin(*hit));
-            const double thickness = a.thickness_cm >= 0 ? a.thickness_cm : m.thickness_cm;
-            m.reflectance(m.curve_at(x, y, static_cast<int>(a.texture_curve)), 0.0, thickness, r);
+    for_each_seen_from_above(
+        sc, b.lower[0], b.upper[0], b.lower[1], b.upper[1], kGrid, {},
+        [&](const scene::Hit& hit, double x, double y) {
+            const auto& a = sc.attributes(hit);
+            const auto& m = facet_material(*c.in.materials, a, sc.origin(hit));
+            m.reflectance(m.curve_at(x, y, static_cast<int>(a.texture_curve)), 0.0,
+                          a.thickness_cm, r);
             for (std::size_t k = 0; k < c.n; ++k) rho[k] += r[k];
             ++hits;
             if (c.emission) {
-                const double t = c.temperatures_k[hit->object][hit->facet];
+                const double t = c.temperatures_k[hit.object][hit.facet];
                 if (t > 0) t_sum += t, ++warm;
             }
-        }
+        });
     if (hits > 0)
         for (double& v : rho) v /= hits;
     if (warm > 0) temperature_k = t_sum / warm;
@@ -64,6 +60,21 @@ void from_material(const TraceContext& c, std::vector<double>& rho) {
 }
 
 }  // namespace
+
+void for_each_seen_from_above(const scene::Scene& scene, double x0, double x1, double y0,
+                              double y1, int side, const std::function<bool(double, double)>& keep,
+                              const std::function<void(const scene::Hit&, double, double)>& visit) {
+    const scene::Bounds b = scene.bounds();
+    if (b.empty() || side < 1) return;
+    const double top = b.upper[2] + 1 + 0.01 * (b.upper[2] - b.lower[2]);
+    for (int i = 0; i < side; ++i)
+        for (int j = 0; j < side; ++j) {
+            const double x = x0 + (i + 0.5) / side * (x1 - x0);
+            const double y = y0 + (j + 0.5) / side * (y1 - y0);
+            if (keep && !keep(x, y)) continue;
+            if (auto hit = scene.intersect({x, y, top}, {0, 0, -1})) visit(*hit, x, y);
+        }
+}
 
 Background make_background(const TraceContext& c) {
     Background bg;

@@ -18,10 +18,12 @@
 //   it through the path terms of its view angle, like any ground point.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "geo/vec3.hpp"
+#include "scene/scene.hpp"
 
 namespace sigchain::trace {
 
@@ -42,6 +44,16 @@ struct Background {
 // scene, materials, sun and sky. Throws DataError for --background ID naming a
 // material the .mat does not have.
 Background make_background(const TraceContext& c);
+
+// What the scene shows from above: the first hit of side x side vertical rays cast
+// down from above the scene at the centres of a regular grid over [x0, x1] x [y0, y1]
+// (scene units), x outer, y inner; `keep(x, y)` false skips a grid point. `visit(hit,
+// x, y)` is called for each hit. The background's and the adjacency environment's
+// mean reflectance are both taken this way (each facet counts by its area seen from
+// above).
+void for_each_seen_from_above(const scene::Scene& scene, double x0, double x1, double y0,
+                              double y1, int side, const std::function<bool(double, double)>& keep,
+                              const std::function<void(const scene::Hit&, double, double)>& visit);
 
 // The distance along `dir` from `origin` to the background plane, or a negative
 // value when the ray does not meet it.
