@@ -178,8 +178,8 @@ Setup read_setup(const TraceJob& job) {
     st.adv = io::read_adv_file(job.adv_path);
     if (st.adv.sensor != io::SensorKind::Frame)
         throw NotImplemented(job.adv_path +
-                             ": not implemented yet: line scanner and pushbroom sensors "
-                             "(a later issue); trace renders frame cameras");
+                             ": not implemented yet: line scanner and pushbroom sensors; "
+                             "trace renders frame cameras");
     st.snd = io::read_snd_file(job.snd_path);
     if (st.snd.bands.size() != job.rad_paths.size())
         throw UsageError(job.snd_path + " has " + std::to_string(st.snd.bands.size()) +
