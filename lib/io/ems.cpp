@@ -40,7 +40,9 @@ EmsLobeRow read_lobe_row(LineCursor& c, int row) {
     auto f = c.fields(4, "depth, base radius and 2 spares" + at);
     SourceLocation where = c.where();
     EmsLobeRow r;
-    r.depth = parse_in_range(f[0], where, "lobe depth" + at, 0, 1);
+    // -999 marks the depth column unused (ems(5)); any other value is a depth in [0, 1].
+    r.depth = parse_double(f[0], where, "lobe depth" + at);
+    if (r.depth != kLobeDepthUnused) r.depth = parse_in_range(f[0], where, "lobe depth" + at, 0, 1);
     r.base_radius_deg = parse_at_least(f[1], where, "lobe base radius (deg)" + at, 0);
     r.spare1 = parse_double(f[2], where, "spare column 3" + at);
     r.spare2 = parse_double(f[3], where, "spare column 4" + at);
@@ -57,8 +59,18 @@ void read_lobe_table(LineCursor& c, Ems& ems) {
         throw DataError(c.where(next), std::string("expected ") + what +
                                            " after the 91 fall-off values, found " +
                                            quoted(next.text));
-    for (int row = 0; row < kLobeRowCount; ++row)
+    for (int row = 0; row < kLobeRowCount; ++row) {
         ems.specular_lobe.push_back(read_lobe_row(c, row));
+        // The depth column is used whole or not at all: no depth to interpolate toward
+        // an unused row.
+        const bool unused = ems.specular_lobe.back().depth == kLobeDepthUnused;
+        if (row > 0 && unused != (ems.specular_lobe.front().depth == kLobeDepthUnused))
+            throw DataError(c.where(), "expected lobe depth " +
+                                           std::string(unused ? "in [0, 1]" : "-999 (unused)") +
+                                           " like the row at 0 deg (specular lobe at " +
+                                           std::to_string(row * 15) + " deg), found " +
+                                           quoted(format_number(ems.specular_lobe.back().depth)));
+    }
 }
 
 // The first line of curve `index`: "INDEX" (wavenumber layout) or CURVE_BEGIN.
@@ -180,6 +192,10 @@ FormatHandler ems_format() {
     return {"ems", "emissivity: fall-off, specular lobe, spectral curves (White (1996), fig. 4.35, 5.22)",
             [](const TextInput& in) { return ems_summary(parse_ems(in)); },
             [](const TextInput& in, std::ostream& out) { write_ems(out, parse_ems(in)); }};
+}
+
+bool lobe_depth_used(const Ems& ems) {
+    return !ems.specular_lobe.empty() && ems.specular_lobe.front().depth != kLobeDepthUnused;
 }
 
 double emissivity(const Ems& ems, int curve, double wavelength_um) {

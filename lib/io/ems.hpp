@@ -30,7 +30,8 @@ struct EmsCurve {
 
 // One row of the proposed specular-lobe table (White (1996), fig. 5.22), for one specular angle.
 struct EmsLobeRow {
-    double depth = 0;            // lobe depth below the diffuse value, emissivity units [0, 1]
+    double depth = 0;            // lobe depth below the diffuse value, emissivity units [0, 1],
+                                 // or kLobeDepthUnused in every row
     double base_radius_deg = 0;  // cone base radius, >= 0
     double spare1 = -999;        // unused (-999)
     double spare2 = -999;        // unused (-999)
@@ -39,6 +40,8 @@ struct EmsLobeRow {
 
 inline constexpr int kFallOffCount = 91;  // 0..90 deg in 1 deg steps
 inline constexpr int kLobeRowCount = 7;   // 0..90 deg in 15 deg steps
+// A depth column of -999 (DIRSIG's "not used") leaves the lobe's energy to SPECULARITY.
+inline constexpr double kLobeDepthUnused = -999;
 
 struct Ems {
     EmsLayout layout = EmsLayout::Wavenumber;  // one layout for all curves of a file
@@ -54,6 +57,10 @@ Ems parse_ems(const TextInput& in);
 void write_ems(std::ostream& out, const Ems& ems);
 inline Ems read_ems_file(const std::string& path) { return parse_ems(TextInput::from_file(path)); }
 FormatHandler ems_format();
+
+// True when the file has a lobe table whose depth column is not -999 (ems(5), SPECULAR
+// LOBE): the cone's depth then sets the lobe's energy in trace.
+bool lobe_depth_used(const Ems& ems);
 
 // Emissivity of curve `curve` at `wavelength_um`: linear in wavelength between the
 // curve's rows; outside its range, the value of the nearest end (clamped, never

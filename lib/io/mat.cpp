@@ -102,7 +102,7 @@ struct TagSpec {
     Text (*write)(const Material&);
 };
 
-const std::array<TagSpec, 23> kTags = {{
+const std::array<TagSpec, 24> kTags = {{
     {"MATERIAL_NAME", true, [](Material& m, const Value& v) { m.name = v.text; },
      [](const Material& m) { return Text(m.name); }},
     {"MATERIAL_ID", true,
@@ -171,6 +171,14 @@ const std::array<TagSpec, 23> kTags = {{
      [](const Material& m) { return opt_num(m.exponential_width_deg); }},
     {"TABLE_FILE", false, [](Material& m, const Value& v) { m.table_file = v.text; },
      [](const Material& m) { return opt_text(m.table_file); }},
+    {"SPECULAR_CURVE", false,
+     [](Material& m, const Value& v) {
+         m.specular_curve = parse_count(v.text, v.where, v.tag);
+         m.specular_curve_line = v.where.line;
+     },
+     [](const Material& m) {
+         return m.specular_curve ? Text(std::to_string(*m.specular_curve)) : Text();
+     }},
 }};
 
 const TagSpec* find_tag(std::string_view name) {
@@ -282,6 +290,11 @@ void check_combinations(const RawEntry& e, const Material& m) {
                                 ", this entry's model is " +
                                 std::string(kModelNames[static_cast<std::size_t>(rm)]));
     }
+    auto specular = e.tags.find("SPECULAR_CURVE");
+    if (rm == ReflectanceModel::Lambertian && specular != e.tags.end())
+        throw DataError(specular->second.where,
+                        "unexpected tag SPECULAR_CURVE: REFLECTANCE_MODEL = lambertian has no "
+                        "specular part");
     if (!own.empty() && !e.tags.count(own))
         throw DataError(e.tags.at("REFLECTANCE_MODEL").where,
                         "expected tag " + std::string(own) + " with REFLECTANCE_MODEL = " +

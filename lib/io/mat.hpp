@@ -51,6 +51,10 @@ struct Material {
     std::optional<double> phong_exponent;               // phong: 0 or more
     std::optional<double> exponential_width_deg;        // exponential: (0, 90]
     std::string table_file;                             // table: BRDF table file
+    // SPECULAR_CURVE: the curve of the EMISSIVITY_FILE whose 1 - emissivity is the
+    // specular reflectance (absent: the diffuse curve's); refused with lambertian.
+    std::optional<long> specular_curve;
+    int specular_curve_line = 0;  // its line, for errors found with the .ems
     MaterialEntryStyle style = MaterialEntryStyle::BeginEnd;
     int line = 0;  // line of the entry's opening keyword
 };

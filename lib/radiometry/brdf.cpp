@@ -320,6 +320,29 @@ Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg) {
     return b;
 }
 
+Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg,
+                       const std::array<double, 7>& depth) {
+    for (double d : depth)
+        if (!(d >= 0 && d <= 1))
+            throw std::invalid_argument("Brdf::linear_cone: depth must be in [0, 1]");
+    Brdf b = linear_cone(base_radius_deg);
+    b.m_depth = std::make_shared<const std::array<double, 7>>(depth);
+    return b;
+}
+
+// a_s = 2 alpha (1 - sin(beta)/beta): Int_0^beta (alpha/pi)(1 - phi/beta) 2 pi sin(phi) d(phi)
+// = 2 alpha [1 - cos(beta) - (sin(beta) - beta cos(beta))/beta] (White (1996), section 3's
+// cone), with the lobe's own radius (cone_radius, so a_s and the shape agree).
+double Brdf::depth_albedo(double cos_theta_o) const {
+    if (!m_depth) return 0;
+    const double theta = std::acos(std::clamp(cos_theta_o, 0.0, 1.0));
+    const double x = std::clamp(theta / (15 * kDegToRad), 0.0, 6.0);
+    const int i = std::min(static_cast<int>(x), 5);
+    const double f = x - i;
+    const double alpha = (*m_depth)[i] + f * ((*m_depth)[i + 1] - (*m_depth)[i]);
+    return 2 * alpha * one_minus_sinc(m_impl->cone_radius(theta));
+}
+
 Brdf Brdf::phong(double exponent) {
     if (!(exponent >= 0)) throw std::invalid_argument("Brdf::phong: exponent must be >= 0");
     Brdf b;

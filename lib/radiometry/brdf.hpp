@@ -50,6 +50,12 @@ public:
     // White's cone (White (1996), section 5.2.3): radius interpolated in the specular angle from the
     // .ems table rows at 0, 15, ..., 90 deg (base_radius_deg of each row).
     static Brdf linear_cone(const std::array<double, 7>& base_radius_deg);
+    // The same cone with the table's depth column alpha (emissivity units, rows at 0, 15,
+    // ..., 90 deg): the lobe is then White's (alpha/pi)(1 - phi/beta) above the diffuse
+    // (White (1996), section 3), its energy depth_albedo() instead of SPECULARITY's.
+    // Throws std::invalid_argument for a depth outside [0, 1].
+    static Brdf linear_cone(const std::array<double, 7>& base_radius_deg,
+                            const std::array<double, 7>& depth);
     static Brdf phong(double exponent);
     static Brdf exponential(double width_deg);
     // A tabulated BRDF as the lobe: lobe/m is replaced by the table's normalised weight
@@ -59,6 +65,12 @@ public:
 
     LobeShape shape() const;
     bool is_delta() const;
+    bool has_depth() const { return m_depth != nullptr; }
+    // Specular albedo of the cone with a depth column for a viewer at cos_theta_o from
+    // the normal (the specular angle): Int (alpha/pi)(1 - phi/beta) d(omega) over phi <
+    // beta = 2 alpha (1 - sin(beta)/beta), beta in radians, alpha and beta linear in the
+    // specular angle between the rows. 0 without a depth column.
+    double depth_albedo(double cos_theta_o) const;
 
     // w(wi, wo) of the header comment for specularity s (0 below the horizon; the
     // delta part is not included: 0 for Delta's specular term).
@@ -78,6 +90,7 @@ public:
 private:
     struct Impl;
     std::shared_ptr<const Impl> m_impl;
+    std::shared_ptr<const std::array<double, 7>> m_depth;  // LinearCone's depth column, or null
 };
 
 // Mirror direction of wo about the local normal (0, 0, 1).

@@ -76,10 +76,13 @@ Brdf brdf_of(const io::Material& m, const io::Ems& ems, const std::string& mat_p
             return Brdf::delta();
         case io::ReflectanceModel::Cone:
             if (ems.specular_lobe.size() == static_cast<std::size_t>(io::kLobeRowCount)) {
-                std::array<double, 7> radii{};
-                for (int i = 0; i < io::kLobeRowCount; ++i)
+                std::array<double, 7> radii{}, depth{};
+                for (int i = 0; i < io::kLobeRowCount; ++i) {
                     radii[i] = ems.specular_lobe[i].base_radius_deg;
-                return Brdf::linear_cone(radii);
+                    depth[i] = ems.specular_lobe[i].depth;
+                }
+                return io::lobe_depth_used(ems) ? Brdf::linear_cone(radii, depth)
+                                                : Brdf::linear_cone(radii);
             }
             return Brdf::cone(m.cone_half_angle_deg.value_or(0));
         case io::ReflectanceModel::Phong:
@@ -136,6 +139,46 @@ void fall_off_statistics(MaterialOptics& o) {
     o.mean_fall_off = sum * (90.0 / kSteps) * kDegToRad;  // Int F sin(2 theta) d(theta)
 }
 
+// SPECULAR_CURVE (mat(5)): a curve of the entry's .ems, and not with a cone whose depth
+// column already sets the specular reflectance. DataError at the tag's line.
+void set_specular_curve(MaterialOptics& o, const io::Material& m, const io::Ems& ems,
+                        const std::string& mat_path) {
+    if (!m.specular_curve) return;
+    const long k = *m.specular_curve, n = static_cast<long>(ems.curves.size());
+    const SourceLocation where{mat_path, m.specular_curve_line};
+    if (k >= n)
+        throw DataError(where, label(m) + ": expected SPECULAR_CURVE a curve of " +
+                                   m.emissivity_file + " (0 to " + std::to_string(n - 1) +
+                                   "), found " + std::to_string(k));
+    if (o.brdf.has_depth())
+        throw DataError(where, label(m) + ": SPECULAR_CURVE and the lobe depths of " +
+                                   m.emissivity_file +
+                                   " both set the specular reflectance; give one (depths of "
+                                   "-999 leave it to SPECULAR_CURVE)");
+    o.specular_curve = static_cast<int>(k);
+}
+
+// With a depth column the diffuse (1 - s)(1 - eps) and the cone's a_s (brdf.hpp) add up:
+// more than 1 at some angle would reflect more than arrives (a negative Kirchhoff
+// emissivity). Checked at every whole degree of specular angle, every curve and sample.
+void check_depth_energy(const MaterialOptics& o, const io::Material& m,
+                        const std::string& mat_path) {
+    if (!o.brdf.has_depth()) return;
+    double a_max = 0, r_max = 0;
+    for (int deg = 0; deg <= 90; ++deg)
+        a_max = std::max(a_max, o.brdf.depth_albedo(std::cos(deg * std::numbers::pi / 180)));
+    for (const auto& e : o.emissivity)
+        for (double x : e) r_max = std::max(r_max, 1 - x);
+    const double total = (1 - o.specularity) * r_max + a_max;
+    if (total > 1 + 1e-12)
+        throw DataError({mat_path, m.line},
+                        label(m) +
+                            ": reflects more than it receives: (1 - SPECULARITY)(1 - "
+                            "emissivity) + the cone depth's albedo 2 alpha (1 - sin "
+                            "beta / beta) reaches " +
+                            format_number(total));
+}
+
 }  // namespace
 
 MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat_path,
@@ -158,6 +201,8 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
         o.fall_off = ems.fall_off;
         o.brdf = brdf_of(m, ems, mat_path, tables);
         o.specularity = o.brdf.shape() == LobeShape::None ? 0 : m.specularity;
+        set_specular_curve(o, m, ems, mat_path);
+        check_depth_energy(o, m, mat_path);
         o.transmissive = m.optical != io::OpticalDescription::Opaque;
         if (o.transmissive) {
             const io::Ext& ext = cached(ext_cache, resolve(mat_path, m.extinction_file), m,
@@ -192,6 +237,13 @@ namespace {
 
 MaterialLibrary MaterialLibrary::from_optics(std::vector<MaterialOptics> materials) {
     for (auto& m : materials) fall_off_statistics(m);
+    for (const auto& m : materials) {
+        if (m.specular_curve >= static_cast<int>(m.emissivity.size()))
+            material_error(m, "SPECULAR_CURVE " + std::to_string(m.specular_curve) +
+                                  " is not one of its curves");
+        if (m.specular_curve >= 0 && m.brdf.shape() == LobeShape::None)
+            material_error(m, "SPECULAR_CURVE with REFLECTANCE_MODEL = lambertian");
+    }
     MaterialLibrary lib;
     long max_id = -1;
     for (const auto& m : materials) {
@@ -219,10 +271,34 @@ double MaterialOptics::fall_off_cos(double cos_theta) const {
     return fall_off_at(fall_off, std::acos(std::clamp(cos_theta, -1.0, 1.0)) * 180 / std::numbers::pi);
 }
 
+ReflectanceSplit MaterialOptics::split_weights(double cos_theta_o) const {
+    ReflectanceSplit w;
+    const LobeShape shape = brdf.shape();
+    const double s = shape == LobeShape::None ? 0.0 : specularity;
+    w.diffuse = 1 - s;
+    w.specular = brdf.has_depth() ? brdf.depth_albedo(cos_theta_o) : s;
+    w.delta = w.specular > 0 && shape == LobeShape::Delta;
+    w.lobe = w.specular > 0 && shape != LobeShape::None && shape != LobeShape::Delta;
+    if (w.lobe) w.lobe_probability = brdf.has_depth() ? w.specular / (w.specular + w.diffuse) : s;
+    return w;
+}
+
 void MaterialOptics::directional_emissivity(int curve, double theta_deg,
                                             std::span<double> out) const {
     const std::vector<double>& e = emissivity.at(curve);
     const double f = fall_off_at(fall_off, theta_deg);
+    if (split_reflectance()) {
+        // Kirchhoff with the two parts apart: 1 - F [(1 - s) r_d Fbar + w_s r_s F].
+        const ReflectanceSplit w = split_weights(std::cos(theta_deg * std::numbers::pi / 180));
+        const std::vector<double>* es =
+            specular_curve >= 0 ? &emissivity.at(specular_curve) : nullptr;
+        std::size_t n = std::min(out.size(), e.size());
+        for (std::size_t k = 0; k < n; ++k) {
+            const double r_s = es ? 1 - (*es)[k] : 1.0;
+            out[k] = 1 - f * (w.diffuse * (1 - e[k]) * mean_fall_off + w.specular * r_s * f);
+        }
+        return;
+    }
     const double s = brdf.shape() == LobeShape::None ? 0.0 : specularity;
     const double albedo = f * ((1 - s) * mean_fall_off + s * f);  // rho_dh / (1 - eps)
     std::size_t n = std::min(out.size(), e.size());
@@ -233,6 +309,35 @@ void MaterialOptics::directional_emissivity(int curve, double theta_deg,
 // r + a + t = 1). A negative thickness means the material's own THICKNESS.
 void MaterialOptics::reflectance(int curve, double theta_deg, double thickness,
                                  std::span<double> out) const {
+    if (!split_reflectance()) return diffuse_reflectance(curve, theta_deg, thickness, out);
+    // What a uniform sky sees: (1 - s) rho_d + w_s rho_s.
+    std::vector<double> rho_s(out.size());
+    diffuse_reflectance(curve, theta_deg, thickness, out);
+    specular_reflectance(theta_deg, thickness, rho_s);
+    const ReflectanceSplit w = split_weights(std::cos(theta_deg * std::numbers::pi / 180));
+    for (std::size_t k = 0; k < out.size(); ++k)
+        out[k] = w.diffuse * out[k] + w.specular * rho_s[k];
+}
+
+void MaterialOptics::specular_reflectance(double theta_deg, double thickness,
+                                          std::span<double> out) const {
+    if (specular_curve >= 0) return diffuse_reflectance(specular_curve, theta_deg, thickness, out);
+    if (!brdf.has_depth()) return diffuse_reflectance(0, theta_deg, thickness, out);
+    // The depth's lobe is grey (emissivity units): F(theta) [(1 - t)], its energy in w_s.
+    const double f = fall_off_at(fall_off, theta_deg);
+    if (!transmissive) {
+        std::fill(out.begin(), out.end(), f);
+        return;
+    }
+    const double d_km = (thickness < 0 ? thickness_cm : thickness) * kKmPerCm;
+    const double c = std::cos(theta_deg * std::numbers::pi / 180);
+    const std::size_t n = std::min(out.size(), extinction_per_km.size());
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = f * (1 - io::transmittance(extinction_per_km[k], d_km, c));
+}
+
+void MaterialOptics::diffuse_reflectance(int curve, double theta_deg, double thickness,
+                                         std::span<double> out) const {
     const std::vector<double>& e = emissivity.at(curve);
     double f = fall_off_at(fall_off, theta_deg);
     std::size_t n = std::min(out.size(), e.size());

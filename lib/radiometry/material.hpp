@@ -29,6 +29,17 @@ struct TextureMap {
     int curve_at(double x, double y) const;
 };
 
+// The diffuse and specular parts of a material's weight w (brdf.hpp) for one viewer,
+// kept apart for a material whose two parts reflect differently
+// (MaterialOptics::split_reflectance): w = diffuse cos(theta_i)/pi + specular lobe/m.
+struct ReflectanceSplit {
+    double diffuse = 0;           // 1 - SPECULARITY
+    double specular = 0;          // SPECULARITY, or the cone's depth albedo a_s (brdf.hpp)
+    double lobe_probability = 0;  // chance of drawing a ray from the lobe (montecarlo, paths)
+    bool lobe = false;            // a finite lobe of weight > 0
+    bool delta = false;           // a mirror lobe of weight > 0
+};
+
 struct MaterialOptics {
     long id = 0;
     std::string name;
@@ -45,6 +56,9 @@ struct MaterialOptics {
     bool flat_fall_off = true;  // F = 1 at every angle: no lookups
     double specularity = 0;                            // 0 for lambertian
     Brdf brdf;                                         // angular shape (brdf.hpp)
+    // SPECULAR_CURVE: the emissivity curve whose 1 - eps is the specular reflectance
+    // (mat(5)); -1: the diffuse curve's. Texture maps never change it.
+    int specular_curve = -1;
 
     bool transmissive = false;              // UNIFORM/NONUNIFORM_TRANSMISSION
     std::vector<double> extinction_per_km;  // per grid sample (curve 0 of the .ext)
@@ -66,6 +80,16 @@ struct MaterialOptics {
         return c < 0 ? facet_curve : c;
     }
 
+    // True when the specular part has its own reflectance: a SPECULAR_CURVE, or a cone
+    // whose .ems lobe table has a depth column (White (1996), section 5.1.2's separate
+    // r_specular and r_diffuse). trace then shades the two parts apart; every other
+    // material keeps the single reflectance rho of reflectance().
+    bool split_reflectance() const { return specular_curve >= 0 || brdf.has_depth(); }
+    // The weights of the two parts for a viewer at cos_theta_o from the normal: diffuse
+    // 1 - s; specular s, or with a depth column the cone's a_s(theta_o) whatever s; the
+    // lobe is drawn with probability s, or a_s / (a_s + 1 - s) with a depth column.
+    ReflectanceSplit split_weights(double cos_theta_o) const;
+
     // Fall-off as White (1996), section 5.2.3 proposes (ems(5) FALL-OFF): F lowers the
     // reflectance at high view angles, rho(lambda, theta_o) = (1 - eps(lambda)) F(theta_o),
     // and damps the radiance arriving at high zenith angles, each incoming direction
@@ -75,12 +99,22 @@ struct MaterialOptics {
     // Directional emissivity of curve `curve` at `theta_deg` from the normal, by
     // Kirchhoff 1 - the directional-hemispherical reflectance:
     // 1 - (1 - eps) F(theta) [(1 - s) Fbar + s F(theta)], the lobe taken about the
-    // mirror direction (at theta from the normal), Fbar = mean_fall_off. Into `out`.
+    // mirror direction (at theta from the normal), Fbar = mean_fall_off; for a split
+    // material 1 - F(theta) [(1 - s) r_d Fbar + w_s r_s F(theta)] with r_d = 1 - eps,
+    // w_s and r_s those of split_weights and specular_reflectance. Into `out`.
     void directional_emissivity(int curve, double theta_deg, std::span<double> out) const;
     // Reflectance rho(lambda, theta) = (1 - eps(lambda)) F(theta) of an opaque facet;
     // for a transmissive one (1 - eps) F (1 - t) with t the slab transmittance at that
-    // angle (mat(5): r + a + t = 1). Into `out`.
+    // angle (mat(5): r + a + t = 1). For a split material the reflectance a uniform
+    // sky sees, (1 - s) rho_d + w_s rho_s. Into `out`.
     void reflectance(int curve, double theta_deg, double thickness_cm, std::span<double> out) const;
+    // rho_d: the reflectance above of curve `curve` alone (the diffuse part's).
+    void diffuse_reflectance(int curve, double theta_deg, double thickness_cm,
+                             std::span<double> out) const;
+    // rho_s of the specular part: (1 - eps_k) F(theta) [(1 - t)] with k =
+    // specular_curve, or F(theta) [(1 - t)] (grey) with a depth column, whose energy
+    // is in w_s; rho_d of curve 0 for any other material.
+    void specular_reflectance(double theta_deg, double thickness_cm, std::span<double> out) const;
     // Slab transmittance exp(-k d / |cos theta|) per grid sample (ext(5)), d in cm.
     void transmittance(double cos_theta, double thickness_cm, std::span<double> out) const;
     // The Gaussian texture gain of the facet with this key (any two integers naming it,

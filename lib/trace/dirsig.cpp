@@ -56,6 +56,37 @@ public:
         return ((1 - s) + spec) * cos_sun / kPi;
     }
 
+    // The same scheme, the parts apart: the pattern's mean weighted w_d into `diffuse`,
+    // the mirror ray weighted w_s into `specular`.
+    double add_hemisphere_split(Tracer& tracer, const MaterialOptics& m,
+                                const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                                const Vec3& p, const Vec3& wo_l, double* diffuse,
+                                double* specular) override {
+        Arena& arena = tracer.arena();
+        ArenaScope scope(arena);
+        double* li = arena.take();
+        const std::size_t n = tracer.context().n;
+        const double wd = w.diffuse / static_cast<double>(m_pattern.size());
+        long escaped = 0;
+        for (const Vec3& d : m_pattern) {
+            if (tracer.incoming(p, f.to_world(d), li)) ++escaped;
+            const double wf = wd * m.fall_off_cos(d[2]);
+            for (std::size_t k = 0; k < n; ++k) diffuse[k] += wf * li[k];
+        }
+        if (w.lobe || w.delta)
+            tracer.add_mirror(w.specular * m.fall_off_cos(wo_l[2]), f, p, wo_l, specular);
+        return static_cast<double>(escaped) / static_cast<double>(m_pattern.size());
+    }
+
+    // DIRSIG 3's sun weights (sun_weight above) with w_d and w_s for 1 - s and s.
+    SplitWeight sun_weight_split(const MaterialOptics&, const radiometry::ReflectanceSplit& w,
+                                 const Vec3& sun_l, const Vec3& wo_l,
+                                 double cos_sun) const override {
+        const double c = std::clamp(geo::dot(radiometry::mirror(wo_l), sun_l), -1.0, 1.0);
+        const bool near = (w.lobe || w.delta) && std::acos(c) * kDeg <= 10.0;
+        return {w.diffuse * cos_sun / kPi, near ? w.specular * cos_sun / kPi : 0.0};
+    }
+
 private:
     std::vector<Vec3> m_pattern;  // local frame, z = normal
 };

@@ -52,6 +52,39 @@ public:
         return svf;
     }
 
+    // The same rays, the parts apart: w_d projected/pi into `diffuse`, w_s lobe(centre)
+    // solid angle / S into `specular` (or the mirror ray, weight w_s, for a mirror lobe or
+    // one narrower than the cells).
+    double add_hemisphere_split(Tracer& tracer, const MaterialOptics& m,
+                                const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                                const Vec3& p, const Vec3& wo_l, double* diffuse,
+                                double* specular) override {
+        Arena& arena = tracer.arena();
+        ArenaScope scope(arena);
+        double* li = arena.take();
+        const std::size_t n = tracer.context().n;
+        const Vec3 mir = radiometry::mirror(wo_l);
+        const int matrix =
+            w.lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDeg) : 0;
+        const auto& rays = golfball_rays(matrix);
+        const double lobe_sum = directions(tracer, m, rays, mir, wo_l, w.lobe);
+        const bool lobe_rays = w.lobe && lobe_sum >= 0.5;
+        double svf = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            const GolfRay& r = rays[i];
+            const double fall_off = m.fall_off_cos(m_dirs[i][2]);
+            const double wd = w.diffuse * r.projected_sr / kPi * fall_off;
+            const double ws = lobe_rays ? w.specular * m_lobe[i] / lobe_sum * fall_off : 0.0;
+            if (tracer.incoming(p, f.to_world(m_dirs[i]), li)) svf += r.projected_sr / kPi;
+            for (std::size_t k = 0; k < n; ++k) diffuse[k] += wd * li[k];
+            if (ws != 0)
+                for (std::size_t k = 0; k < n; ++k) specular[k] += ws * li[k];
+        }
+        if (w.delta || (w.lobe && !lobe_rays))
+            tracer.add_mirror(w.specular * m.fall_off_cos(wo_l[2]), f, p, wo_l, specular);
+        return svf;
+    }
+
 private:
     bool m_jitter;
     std::vector<Vec3> m_dirs;    // ray directions (local frame)

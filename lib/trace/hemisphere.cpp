@@ -11,6 +11,13 @@ double HemisphereStrategy::sun_weight(const radiometry::MaterialOptics& m, const
     return (1 - s) * cos_sun / kPi;
 }
 
+SplitWeight HemisphereStrategy::sun_weight_split(const radiometry::MaterialOptics& m,
+                                                 const radiometry::ReflectanceSplit& w,
+                                                 const geo::Vec3& sun_l, const geo::Vec3& wo_l,
+                                                 double cos_sun) const {
+    return split_sun_weight(m, w, sun_l, wo_l, cos_sun);
+}
+
 std::unique_ptr<HemisphereStrategy> make_hemisphere_strategy(const TraceContext& c) {
     switch (c.opt.sampling) {
         case Sampling::Dirsig:

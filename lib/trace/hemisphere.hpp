@@ -28,6 +28,20 @@ public:
     // brdf.hpp; `sun_l` in the facet frame, cos_sun its cosine to the normal.
     virtual double sun_weight(const radiometry::MaterialOptics& m, const geo::Vec3& sun_l,
                               const geo::Vec3& wo_l, double cos_sun) const;
+
+    // The same two for a material whose diffuse and specular parts reflect differently
+    // (MaterialOptics::split_reflectance), each part apart and weighted by `w`'s
+    // diffuse and specular weights instead of 1 - s and s: the caller multiplies the
+    // first by rho_d, the second by rho_s. Only such materials come here, so that every
+    // other material keeps the operations of the single sum above.
+    virtual double add_hemisphere_split(Tracer& tracer, const radiometry::MaterialOptics& m,
+                                        const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                                        const geo::Vec3& p, const geo::Vec3& wo_l, double* diffuse,
+                                        double* specular) = 0;
+    virtual SplitWeight sun_weight_split(const radiometry::MaterialOptics& m,
+                                         const radiometry::ReflectanceSplit& w,
+                                         const geo::Vec3& sun_l, const geo::Vec3& wo_l,
+                                         double cos_sun) const;
 };
 
 // The strategy of c.opt.sampling.

@@ -81,6 +81,49 @@ public:
         return svf;
     }
 
+    // The same estimator, the parts apart: the lobe drawn with w's lobe_probability,
+    // each ray's w_d cos/pi and w_s lobe/m over the same mixture density into `diffuse`
+    // and `specular`; a mirror lobe's exact ray (weight w_s) into `specular`.
+    double add_hemisphere_split(Tracer& tracer, const MaterialOptics& m,
+                                const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                                const Vec3& p, const Vec3& wo_l, double* diffuse,
+                                double* specular) override {
+        Arena& arena = tracer.arena();
+        ArenaScope scope(arena);
+        double* li = arena.take();
+        const TraceContext& c = tracer.context();
+        const double p_lobe = w.lobe ? w.lobe_probability : 0.0;
+        const long total = std::max(1L, c.opt.hemisphere_samples);
+        const long n_l = m_light_sampling ? total / 2 : 0;
+        const long n_b = total - n_l;
+        double svf = 0;
+        for (long i = 0; i < total; ++i) {
+            const double u1 = tracer.uniform(), u2 = tracer.uniform(), u3 = tracer.uniform();
+            Vec3 d_l, d_w;
+            if (i < n_b) {
+                d_l = m.brdf.sample(wo_l, p_lobe, u1, u2, u3).wi;
+                d_w = f.to_world(d_l);
+            } else {
+                d_w = sample_sky(u1, u2, u3);
+                d_l = f.to_local(d_w);
+            }
+            if (d_l[2] <= 0) continue;  // below the facet: w = 0
+            double denom = static_cast<double>(n_b) * m.brdf.pdf(d_l, wo_l, p_lobe);
+            if (n_l > 0) denom += static_cast<double>(n_l) * sky_pdf(d_w);
+            if (denom <= 0) continue;
+            const double fall_off = m.fall_off_cos(d_l[2]) / denom;
+            const double fd = w.diffuse * d_l[2] / kPi * fall_off;
+            const double fs = w.lobe ? w.specular * m.brdf.lobe_weight(d_l, wo_l) * fall_off : 0.0;
+            if (tracer.incoming(p, d_w, li)) svf += d_l[2] / kPi / denom;
+            for (std::size_t k = 0; k < c.n; ++k) {
+                diffuse[k] += fd * li[k];
+                specular[k] += fs * li[k];
+            }
+        }
+        if (w.delta) tracer.add_mirror(w.specular * m.fall_off_cos(wo_l[2]), f, p, wo_l, specular);
+        return svf;
+    }
+
 private:
     const radiometry::Atmosphere& m_atm;
     std::vector<double> m_sky_prob, m_sky_cdf;

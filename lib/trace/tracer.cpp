@@ -183,6 +183,7 @@ void Tracer::add_mirror(double s, const FacetFrame& f, const Vec3& p, const Vec3
 void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
                               const scene::FacetAttributes& a, const Vec3& point, const Vec3& n,
                               const Vec3& wo, double* out) {
+    if (m.split_reflectance()) return shade_one_bounce_split(hit, m, a, point, n, wo, out);
     ArenaScope scope(m_arena);
     double* rho = m_arena.take();
     double* in = m_arena.take();
@@ -228,6 +229,7 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
 void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
                         const scene::FacetAttributes& a, const Vec3& point, const Vec3& n,
                         const Vec3& wo, int depth, double* out) {
+    if (m.split_reflectance()) return shade_path_split(hit, m, a, point, n, wo, depth, out);
     ArenaScope scope(m_arena);
     double* rho = m_arena.take();
     double* in = m_arena.take();
@@ -285,6 +287,7 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
 void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
                         const scene::FacetAttributes& a, const Vec3& point, const Vec3& n,
                         const Vec3& wo, double* out, HitTruth* truth) {
+    if (m.split_reflectance()) return shade_full_split(hit, m, a, point, n, wo, out, truth);
     ArenaScope scope(m_arena);
     FacetFrame f(n);
     Vec3 wo_l = f.to_local(wo);

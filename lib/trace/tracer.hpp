@@ -79,6 +79,16 @@ struct FacetFrame {
 double specularity_of(const radiometry::MaterialOptics& m);
 bool has_lobe(const radiometry::MaterialOptics& m);   // a finite specular lobe
 bool has_delta(const radiometry::MaterialOptics& m);  // a mirror (delta) specular part
+// The sun's weights for a material shaded in two parts (MaterialOptics::
+// split_reflectance): diffuse w_d cos(sun)/pi, specular w_s lobe(sun)/m for a finite
+// lobe (a mirror lobe meets the sun on a set of measure zero); `sun_l`, `wo_l` in the
+// facet frame.
+struct SplitWeight {
+    double diffuse = 0, specular = 0;
+};
+SplitWeight split_sun_weight(const radiometry::MaterialOptics& m,
+                             const radiometry::ReflectanceSplit& w, const geo::Vec3& sun_l,
+                             const geo::Vec3& wo_l, double cos_sun);
 // A ray along `dir` meets the back of a single-sided facet (geometric normal `normal`):
 // the facet reflects and emits nothing toward it (mat(5) SIDES).
 bool back_is_black(const radiometry::MaterialOptics& m, const geo::Vec3& normal,
@@ -168,6 +178,28 @@ private:
                     const geo::Vec3& wo, double* out, HitTruth* truth);
     void keep_truth(double visibility, double sky_view, double t_k, const double* rho,
                     const double* solar, const double* down, HitTruth& truth);
+    // The same three shadings for a material whose diffuse and specular parts reflect
+    // differently (tracer_split.cpp): each sum kept in two parts, multiplied by rho_d
+    // and rho_s. Every other material takes the functions above, unchanged.
+    void shade_one_bounce_split(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                                const scene::FacetAttributes& a, const geo::Vec3& point,
+                                const geo::Vec3& n, const geo::Vec3& wo, double* out);
+    void shade_path_split(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                          const scene::FacetAttributes& a, const geo::Vec3& point,
+                          const geo::Vec3& n, const geo::Vec3& wo, int depth, double* out);
+    void shade_full_split(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                          const scene::FacetAttributes& a, const geo::Vec3& point,
+                          const geo::Vec3& n, const geo::Vec3& wo, double* out, HitTruth* truth);
+    // rho_d (texture curve and Gaussian gain) and rho_s of the hit at theta_o.
+    void split_reflectances(const scene::Hit& hit, const radiometry::MaterialOptics& m,
+                            const scene::FacetAttributes& a, int curve, double theta_o_deg,
+                            double* rho_d, double* rho_s);
+    // The sun's two parts at `point` (normal n, facet frame f) into in_d and in_s,
+    // E F(sun) V times split_sun_weight (or the strategy's for a primary hit, `primary`).
+    // Returns the sun's mean visibility.
+    double add_split_sun(const radiometry::MaterialOptics& m, const radiometry::ReflectanceSplit& w,
+                         const FacetFrame& f, const geo::Vec3& p, const geo::Vec3& wo_l,
+                         bool primary, double* in_d, double* in_s);
 };
 
 }  // namespace sigchain::trace
