@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 
 #include "core/parallel.hpp"
 #include "trace/adjacency.hpp"
@@ -187,12 +188,27 @@ std::vector<std::string> skipped(const TraceContext& c) {
     for (const auto& m : c.in.materials->materials()) lobes |= specularity_of(m) > 0;
     if (!lobes) out.push_back("specular lobes (every specularity is 0)");
     if (!c.in.atmosphere->has_sky()) out.push_back("downwelled sky (no sky in the .rad)");
-    if (c.opt.bounces >= 1)
-        out.push_back("bounces beyond " + std::to_string(c.opt.bounces) +
+    if (c.bounces >= 1)
+        out.push_back("bounces beyond " + std::to_string(c.bounces) +
                       " (the last is closed with the sun and an unobstructed sky)");
-    if (c.opt.bounces == 0) out.push_back("light from neighbouring facets (bounces 0)");
+    if (c.bounces == 0) out.push_back("light from neighbouring facets (bounces 0)");
     if (!c.adjacency->active()) out.push_back(c.adjacency->skipped());
     return out;
+}
+
+// The bounce depth and why, for --verbose.
+std::string bounce_report(const TraceContext& c) {
+    const BounceEstimate& e = c.bounce_estimate;
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "bounces %d%s: by estimate, paths of more facet reflections carry %.2g %% of "
+                  "the reflected radiance (facet albedo %.3g over %ld sensor-seen points; "
+                  "--bounces auto keeps it under %.2g %%%s)",
+                  c.bounces, c.opt.bounces == kAutoBounces ? " (auto)" : "",
+                  100 * e.tail(c.bounces), e.facet_albedo, e.points, 100 * kBounceTolerance,
+                  c.opt.bounces == kAutoBounces ? ""
+                  : (" with " + std::to_string(e.bounces)).c_str());
+    return buf;
 }
 
 // The empty cubes of `rows` rows.
@@ -262,6 +278,7 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
     });
     res.stats.skipped = skipped(c);
     res.stats.background = c.background.description;
+    res.stats.bounces = bounce_report(c);
     if (res.stats.sky_samples + res.stats.background_samples == 0)
         res.stats.skipped.push_back("the world beyond the scene for primary rays (none left it)");
     res.stats.seconds =

@@ -21,6 +21,7 @@ namespace sigchain::trace {
 enum class Sampling { Dirsig, Golfball, MonteCarlo };
 
 inline constexpr int kMaxBounces = 64;  // --bounces
+inline constexpr int kAutoBounces = -1;  // --bounces auto: the estimate's (bounce_estimate.hpp)
 
 // What rays that leave the scene below the horizon see (world.hpp): the mean of the
 // scene seen from above, one material of the .mat, or nothing.
@@ -37,8 +38,9 @@ struct RenderOptions {
     int max_transmissions = 8;         // transmissive facets followed per ray
     // Secondary hits followed: at depth d < bounces a hit is shaded with its own
     // one-ray hemisphere estimate (a path), at depth = bounces it is closed with the
-    // sun and an unobstructed sky (White (1996), section 5.2.3 step 4); 0: black.
-    int bounces = 1;
+    // sun and an unobstructed sky (White (1996), section 5.2.3 step 4); 0: black;
+    // kAutoBounces: as deep as the scene needs (bounce_estimate.hpp).
+    int bounces = kAutoBounces;
     std::uint64_t seed = 1;            // results depend only on seed (not on threads)
     unsigned threads = 0;              // 0: all cores
     long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row
@@ -75,6 +77,7 @@ struct RenderStats {
     double seconds = 0;
     std::vector<std::string> skipped;  // what was not modelled, for --verbose
     std::string background;            // how the background world was made (world.hpp)
+    std::string bounces;               // the bounce depth and its estimate, for --verbose
 };
 
 struct RenderResult {

@@ -79,6 +79,8 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
     }
     c.sky.emplace(atm);
     c.background = make_background(c);
+    c.bounce_estimate = estimate_bounces(c);
+    c.bounces = opt.bounces == kAutoBounces ? c.bounce_estimate.bounces : opt.bounces;
     return c;
 }
 

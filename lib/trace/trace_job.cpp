@@ -118,6 +118,15 @@ std::string sampling_name(Sampling sampling) {
     return "?";
 }
 
+int parse_bounces(const std::string& text) {
+    if (text == "auto") return kAutoBounces;
+    long n = 0;
+    if (!parse_count(text, n) || n > kMaxBounces)
+        throw UsageError("--bounces: expected auto or 0 to " + std::to_string(kMaxBounces) +
+                         ", found '" + text + "'");
+    return static_cast<int>(n);
+}
+
 std::pair<long, long> parse_rows(const std::string& text, const std::string& option) {
     const auto colon = text.find(':');
     long a = 0, b = 0;
@@ -154,8 +163,6 @@ void check_job(const TraceJob& job) {
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)
         throw UsageError("--max-transmissions: expected 0 or more");
-    if (job.bounces && (*job.bounces < 0 || *job.bounces > kMaxBounces))
-        throw UsageError("--bounces: expected 0 to " + std::to_string(kMaxBounces));
     if (job.adjacency_radius_m && !(*job.adjacency_radius_m > 0))
         throw UsageError("--adjacency-radius: expected a positive number of metres");
     if (job.adjacency_radius_m && !job.adjacency)
@@ -312,6 +319,7 @@ void report_stats(const RenderStats& s, const Reporter& reporter) {
                   " hits, " + format("%.3f", s.seconds) + " s, " + format("%.2f", mrays) +
                   " Mrays/s");
     if (!s.background.empty()) reporter.info(s.background);
+    if (!s.bounces.empty()) reporter.info(s.bounces);
     reporter.info(std::to_string(s.sky_samples) + " primary sample(s) saw the sky, " +
                   std::to_string(s.background_samples) + " the background world");
     for (const auto& skipped : s.skipped) reporter.info("not modelled: " + skipped);

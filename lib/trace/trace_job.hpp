@@ -53,6 +53,8 @@ Sampling parse_sampling(const std::string& name);
 std::string sampling_name(Sampling sampling);
 // "mean", "none" or a MATERIAL_ID (an integer) into options; else UsageError.
 void parse_background(const std::string& text, RenderOptions& options);
+// "auto" (kAutoBounces) or an integer 0 to kMaxBounces; else UsageError.
+int parse_bounces(const std::string& text);
 // "A:B" with 0 <= A < B (integers) as [A, B); else UsageError naming `option`.
 std::pair<long, long> parse_rows(const std::string& text, const std::string& option = "--rows");
 

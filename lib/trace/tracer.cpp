@@ -114,9 +114,9 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
         // the back of a single-sided facet reflects and emits nothing
     } else if (depth == 0) {
         shade_full(*hit, m, a, point, n, wo, out, truth);
-    } else if (depth < m_c.opt.bounces) {
+    } else if (depth < m_c.bounces) {
         shade_path(*hit, m, a, point, n, wo, depth, out);
-    } else if (depth == m_c.opt.bounces) {
+    } else if (depth == m_c.bounces) {
         shade_one_bounce(*hit, m, a, point, n, wo, out);
     }
     if (m.transmissive && transmissions < m_c.opt.max_transmissions) {
@@ -161,6 +161,12 @@ void Tracer::refine(const Vec3& origin, const Vec3& dir, scene::Hit& hit) const 
         again->distance += base;
         hit = *again;
     }
+}
+
+std::optional<scene::Hit> Tracer::first_hit(const Vec3& origin, const Vec3& dir) const {
+    auto hit = m_c.in.scene->intersect(origin, dir, 0.0, INFINITY);
+    if (hit) refine(origin, dir, *hit);
+    return hit;
 }
 
 bool Tracer::incoming(const Vec3& p, const Vec3& d, double* li) {

@@ -24,6 +24,7 @@
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
 #include "trace/arena.hpp"
+#include "trace/bounce_estimate.hpp"
 #include "radiometry/sky_interpolation.hpp"
 #include "trace/render.hpp"
 #include "trace/world.hpp"
@@ -55,6 +56,8 @@ struct TraceContext {
     // looked up once here so that no key string is built per hit.
     std::vector<std::vector<double>> temperatures_k;
     bool missing_temperature = false;
+    int bounces = 1;                 // opt.bounces, kAutoBounces resolved by the estimate
+    BounceEstimate bounce_estimate;  // of the scene (bounce_estimate.hpp)
     std::optional<radiometry::SkyInterpolator> sky;  // the sky between the .rad's cells
     Background background;                           // below the horizon (world.hpp)
 };
@@ -144,6 +147,9 @@ public:
                     double* acc);
     // The sample's next uniform number in [0, 1).
     double uniform();
+    // The first facet along the ray, its distance refined in double precision (as
+    // every ray of the tracer), or none; counts nothing.
+    std::optional<scene::Hit> first_hit(const geo::Vec3& origin, const geo::Vec3& dir) const;
 
     Arena& arena() { return m_arena; }
     const TraceContext& context() const { return m_c; }

@@ -140,11 +140,11 @@ bats_require_minimum_version 1.5.0
 
 # --- .brdf --------------------------------------------------------------------------
 @test "brdf: shipped RPV example checks" {
-    check_good "$SIGCHAIN_SOURCE_DIR/data/brdf/rpv_example.brdf" "18 x 18 x 37 angles"
+    check_good "$SIGCHAIN_SOURCE_DIR/data/brdf/rpv_grassland.brdf" "18 x 18 x 37 angles"
 }
 @test "brdf: --rewrite reads back to the same table" {
     run -0 --separate-stderr sigchain-check --rewrite -o "$BATS_TEST_TMPDIR/r.brdf" \
-        "$SIGCHAIN_SOURCE_DIR/data/brdf/rpv_example.brdf"
+        "$SIGCHAIN_SOURCE_DIR/data/brdf/rpv_grassland.brdf"
     run -0 --separate-stderr sigchain-check "$BATS_TEST_TMPDIR/r.brdf"
     assert_output --partial "ok: 18 x 18 x 37 angles"
 }

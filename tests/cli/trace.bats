@@ -376,9 +376,12 @@ band_bytes() {
 }
 
 @test "trace --bounces: 0 makes neighbours black, 3 follows paths, -1 and 65 are usage errors" {
-    trace_ok $(inputs) -o one.img
-    trace_ok $(inputs) --bounces 1 -o one_again.img
-    cmp one.img one_again.img
+    trace_ok $(inputs) --bounces 1 -o one.img
+    # The box on the lawn needs no more than one bounce: auto (the default) picks 1.
+    trace_ok $(inputs) -o auto.img
+    cmp one.img auto.img
+    trace_ok $(inputs) --bounces auto -o auto_again.img
+    cmp one.img auto_again.img
     trace_ok $(inputs) --bounces 0 -o zero.img
     # Light reflected by the box and the lawn is gone: the mean radiance drops.
     run -0 compare --pixelwise zero.img one.img
@@ -390,8 +393,18 @@ band_bytes() {
     trace_ok $(inputs) --bounces 3 --threads 1 -o three_again.img
     cmp three.img three_again.img
     ! cmp -s three.img one.img || fail "--bounces 3 rendered the --bounces 1 image"
-    trace_bad 2 "--bounces: expected 0 to 64" $(inputs) --bounces 65 -o out.img
-    trace_bad 2 "--bounces: expected 0 to 64" $(inputs) --bounces -1 -o out.img
+    trace_bad 2 "--bounces: expected auto or 0 to 64, found '65'" $(inputs) --bounces 65 -o out.img
+    trace_bad 2 "--bounces: expected auto or 0 to 64, found '-1'" $(inputs) --bounces -1 -o out.img
+    trace_bad 2 "--bounces: expected auto or 0 to 64, found 'deep'" $(inputs) --bounces deep -o out.img
+}
+
+@test "trace -v says how many bounces it followed and what the estimate gives" {
+    run -0 --separate-stderr trace -v $(inputs) -o auto.img
+    [[ "$stderr" == *"bounces 1 (auto): by estimate, paths of more facet reflections carry "* ]] ||
+        fail "stderr: $stderr"
+    run -0 --separate-stderr trace -v $(inputs) --bounces 3 -o three.img
+    [[ "$stderr" == *"bounces 3: by estimate"*"--bounces auto keeps it under 0.1 % with 1)"* ]] ||
+        fail "stderr: $stderr"
 }
 
 # --- trace --shadow-history: the sun/shadow history therm reads --------------------------

@@ -63,7 +63,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     if (vm.count("hemisphere-samples"))
         job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
     if (vm.count("max-transmissions")) job.max_transmissions = vm["max-transmissions"].as<int>();
-    if (vm.count("bounces")) job.bounces = vm["bounces"].as<int>();
+    if (vm.count("bounces")) job.bounces = trace::parse_bounces(vm["bounces"].as<std::string>());
     if (vm.count("background")) job.background = vm["background"].as<std::string>();
     job.seed = cli::seed(vm);
     job.threads = cli::threads(vm);
@@ -103,9 +103,10 @@ int main(int argc, char** argv) {
         "max-transmissions", cli::po::value<int>()->value_name("N"),
         "transmissive facets followed per ray (default 8)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
-        "bounces", cli::po::value<int>()->value_name("N"),
-        "secondary hits followed (default 1: lit by the sun and an open sky;\n"
-        "                    N > 1: paths N hits deep; 0: other facets are black)")(
+        "bounces", cli::po::value<std::string>()->value_name("N|auto"),
+        "secondary hits followed (default auto: as deep as an estimate says the\n"
+        "                    scene needs; 1: lit by the sun and an open sky; N > 1:\n"
+        "                    paths N hits deep; 0: other facets are black)")(
         "background", cli::po::value<std::string>()->value_name("WHAT"),
         "what rays below the horizon see beyond the scene: mean (of the scene seen\n"
         "                    from above; default), none, or a MATERIAL_ID of the .mat")(

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <sstream>
 
 #include "data_error.hpp"
@@ -60,10 +63,42 @@ TEST(Brdf, RewriteReadsBack) {
 }
 
 TEST(Brdf, ShippedExampleParses) {
-    BrdfTable t = read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_example.brdf");
+    BrdfTable t = read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_grassland.brdf");
     EXPECT_EQ(t.phi_deg.front(), 0);
     EXPECT_EQ(t.phi_deg.back(), 180);
     EXPECT_EQ(t.values.size(), t.theta_i_deg.size() * t.theta_o_deg.size() * t.phi_deg.size());
+}
+
+TEST(Brdf, ShippedExampleIsRahmanGrassland) {
+    // Rahman, Pinty & Verstraete (1993), eq. 4-8, with their grassland parameters
+    // (table 1: rho0 0.183, k 0.780, Theta -0.1), evaluated here independently of
+    // scripts/rpv-brdf; the file holds 6 significant digits.
+    BrdfTable t = read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_grassland.brdf");
+    const double rho0 = 0.183, k = 0.780, big_theta = -0.1, pi = std::acos(-1.0);
+    auto rpv = [&](double ti_deg, double to_deg, double phi_deg) {
+        const double ti = ti_deg * pi / 180, to = to_deg * pi / 180, phi = phi_deg * pi / 180;
+        const double ci = std::cos(ti), co = std::cos(to);
+        const double cg = ci * co + std::sin(ti) * std::sin(to) * std::cos(phi);
+        const double hg = (1 - big_theta * big_theta) /
+                          std::pow(1 + big_theta * big_theta + 2 * big_theta * cg, 1.5);
+        const double g2 = std::tan(ti) * std::tan(ti) + std::tan(to) * std::tan(to) -
+                          2 * std::tan(ti) * std::tan(to) * std::cos(phi);
+        const double h = 1 + (1 - rho0) / (1 + std::sqrt(std::max(0.0, g2)));
+        return rho0 / pi * std::pow(ci * co * (ci + co), k - 1) * hg * h;
+    };
+    auto at = [&](double ti, double to, double phi) {
+        auto index = [](const std::vector<double>& axis, double v) {
+            return static_cast<std::size_t>(std::find(axis.begin(), axis.end(), v) - axis.begin());
+        };
+        const std::size_t i = index(t.theta_i_deg, ti), o = index(t.theta_o_deg, to),
+                          p = index(t.phi_deg, phi);
+        return t.values[t.value_index(i, o, p)];
+    };
+    for (auto [ti, to, phi] : {std::array<double, 3>{0, 0, 0}, {30, 30, 0}, {30, 30, 180},
+                               {60, 20, 90}, {85, 45, 135}})
+        EXPECT_NEAR(at(ti, to, phi), rpv(ti, to, phi), 1e-5 * rpv(ti, to, phi))
+            << ti << " " << to << " " << phi;
+    EXPECT_GT(at(30, 30, 0), at(30, 30, 180));  // the hot spot: back-scattering
 }
 
 TEST(Brdf, ErrorsNameFileAndLine) {

@@ -113,7 +113,7 @@ TEST(TableLobe, PhongTableReproducesPhong) {
 
 TEST(TableLobe, WeightIntegratesToOne) {
     // Quadrature error of the 400 x 400 midpoint rule on these smooth tables: < 1e-3.
-    io::BrdfTable rpv = io::read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_example.brdf");
+    io::BrdfTable rpv = io::read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_grassland.brdf");
     TableLobe rpv_lobe(rpv), phong_lobe(phong_table(Brdf::phong(10), 5));
     for (double theta_o : {0.0, 30.0, 62.5, 85.0, 89.0}) {
         EXPECT_NEAR(hemisphere_integral(rpv_lobe, direction(theta_o, 20)), 1, 1e-3) << theta_o;
@@ -124,7 +124,7 @@ TEST(TableLobe, WeightIntegratesToOne) {
 TEST(TableLobe, SamplingIsUnbiased) {
     // E[w / pdf] = Int w = 1 for the mixture of Brdf::sample (s = 1 and 0.5).
     // Tolerance: 4 standard errors of the mean, estimated from the same samples.
-    io::BrdfTable rpv = io::read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_example.brdf");
+    io::BrdfTable rpv = io::read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_grassland.brdf");
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (const Brdf& b : {Brdf::table(rpv), Brdf::table(phong_table(Brdf::phong(20), 3))}) {
@@ -150,7 +150,7 @@ TEST(TableLobe, SampledDirectionsFollowThePdf) {
     // Histogram of (theta_i, relative azimuth) of 400000 draws in 9 x 6 bins against
     // pdf() integrated over each bin (midpoint rule, 40 x 40 nodes per bin, error well
     // under the tolerance): 5 binomial standard deviations per bin.
-    io::BrdfTable rpv = io::read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_example.brdf");
+    io::BrdfTable rpv = io::read_brdf_file(SIGCHAIN_SOURCE_DIR "/data/brdf/rpv_grassland.brdf");
     TableLobe lobe(rpv);
     Vec3 wo = direction(50, 0);
     std::mt19937_64 rng(13);
