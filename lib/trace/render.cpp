@@ -185,7 +185,8 @@ std::vector<std::string> skipped(const TraceContext& c) {
     if (c.missing_temperature) out.push_back("emission of facets without a temperature");
     if (!c.any_transmissive) out.push_back("transmission (no transmissive material)");
     bool lobes = false;
-    for (const auto& m : c.in.materials->materials()) lobes |= specularity_of(m) > 0;
+    for (const auto& m : c.in.materials->materials())
+        lobes |= specularity_of(m) > 0 || m.brdf.has_depth();
     if (!lobes) out.push_back("specular lobes (every specularity is 0)");
     if (!c.in.atmosphere->has_sky()) out.push_back("downwelled sky (no sky in the .rad)");
     if (c.bounces >= 1)
