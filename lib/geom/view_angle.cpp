@@ -24,6 +24,12 @@ struct Accumulator {
 };
 }  // namespace
 
+double world_view_angle_deg(double view_angle_deg) {
+    const double a = std::abs(view_angle_deg);
+    const double folded = std::min(a > 90 ? 180 - a : a, kWorldMaxViewAngleDeg);
+    return view_angle_deg < 0 ? -folded : folded;
+}
+
 Vec3 reference_direction(const FrameCamera& cam) {
     Vec3 h{cam.forward[0], cam.forward[1], 0.0};
     double n = std::hypot(h[0], h[1]);
@@ -67,12 +73,17 @@ ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& sce
     rep.bounding_box = box.range();
 
     Accumulator fov, border;
+    std::size_t hits = 0;
     auto cast = [&](double row, double col, bool on_border) {
         Vec3 d = cam.direction(row, col);
         double angle = signed_view_angle_deg(d, ref);
         if (on_border) border.add(angle);
         ++rep.rays_cast;
-        if (scene.intersect(cam.position, d)) fov.add(angle);
+        if (scene.intersect(cam.position, d)) {
+            fov.add(angle);
+            ++hits;
+        } else
+            fov.add(world_view_angle_deg(angle));
     };
     double R = static_cast<double>(cam.rows), C = static_cast<double>(cam.columns);
     for (double r : {0.0, R})
@@ -90,7 +101,7 @@ ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& sce
     for (int i = 0; i < gr; ++i)
         for (int j = 0; j < gc; ++j) cast((i + 0.5) * R / gr, (j + 0.5) * C / gc, false);
     rep.unclipped_field_of_view = border.range();
-    if (fov.n > 0) rep.field_of_view = fov.range();
+    if (hits > 0) rep.field_of_view = fov.range();
     return rep;
 }
 

@@ -31,6 +31,14 @@ struct ViewAngleReport {
     std::size_t rays_cast = 0;
 };
 
+// Rays that leave the scene see the world beyond it (trace(1)): below the horizon the
+// background plane through the path terms of their own view angle, above it the sky
+// through those of the mirrored, downward line of sight. The view angle whose path
+// terms such a ray needs: |angle| folded at the horizon (180 - |angle| above it),
+// at most kWorldMaxViewAngleDeg, sign kept.
+inline constexpr double kWorldMaxViewAngleDeg = 89;
+double world_view_angle_deg(double view_angle_deg);
+
 // Horizontal reference direction (unit, z = 0) for the sign of view angles.
 Vec3 reference_direction(const FrameCamera& cam);
 // Signed view angle (deg) of a ray direction from the sensor.
@@ -41,7 +49,8 @@ double suggested_increment_deg(double min_deg, double max_deg, int min_steps = 1
 
 // Both methods. The field-of-view method casts the rays through every border
 // pixel centre and the four image corners, plus an interior grid of at most
-// `grid` x `grid` rays, and keeps the angles of those that hit the scene.
+// `grid` x `grid` rays: the angles of those that hit the scene, and of those that
+// miss it, world_view_angle_deg's (none if no ray hits).
 // Throws DataError if the scene is empty.
 ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& scene, int grid = 256);
 

@@ -1,6 +1,6 @@
 // The atmosphere's coupling with the ground (atmosphere.hpp; rad(5) COUPLING): the
-// terms of every band merged on the grid, the ground irradiance they give, and the
-// sky with an isotropic increment.
+// terms of every band merged on the grid, the ground irradiance they give, the sky
+// with an isotropic increment, and the column transmittance along any zenith.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -107,6 +107,19 @@ Atmosphere Atmosphere::with_isotropic_sky(std::span<const double> radiance) cons
     Atmosphere a;
     a.m_data = d;
     return a;
+}
+
+bool Atmosphere::column_transmittance(double mu, std::span<double> out) const {
+    const Data& d = *m_data;
+    const double mu_sun = std::cos(d.sun_zenith_deg * std::numbers::pi / 180);
+    if (!(mu_sun > 0) || !(mu > 0)) return false;
+    for (std::size_t k = 0; k < out.size(); ++k)
+        if (!(d.es[k] > 0)) return false;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        const double tau1 = std::clamp(d.es_tau1[k] / d.es[k], 0.0, 1.0);
+        out[k] = std::pow(tau1, mu_sun / mu);  // Beer: exp(-delta / mu), delta = -mu_sun ln tau1
+    }
+    return true;
 }
 
 }  // namespace sigchain::radiometry

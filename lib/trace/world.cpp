@@ -129,9 +129,17 @@ void effective_sky(const TraceContext& c, const Sensor& sensor, const Vec3& dir,
     c.sky->add(dir, 1.0, {out, n}, c.emission);  // the sky at the ground
     const Vec3 down{dir[0], dir[1], -dir[2]};
     c.in.atmosphere->path(down, sensor.view_angle_deg(down), {tau2, n}, {lus, n}, {lue, n});
+    double* path = lus;  // L_us (+ L_ue): the air's path radiance below the sensor
+    if (c.emission)
+        for (std::size_t k = 0; k < n; ++k) path[k] += lue[k];
+    double* column = lue;  // the whole column's transmittance T along dir
+    const bool bounded = c.in.atmosphere->column_transmittance(dir[2], {column, n});
     for (std::size_t k = 0; k < n; ++k) {
-        const double path = lus[k] + (c.emission ? lue[k] : 0.0);
-        const double above = tau2[k] > 0 ? std::max(0.0, out[k] - path) / tau2[k] : out[k];
+        // No more than the part of L0 made below the sensor, for a source uniform in
+        // optical depth: L0 (1 - tau2) / (1 - T) (trace(1) RADIOMETRY).
+        if (bounded && column[k] < 1)
+            path[k] = std::min(path[k], out[k] * (1 - tau2[k]) / (1 - column[k]));
+        const double above = tau2[k] > 0 ? std::max(0.0, out[k] - path[k]) / tau2[k] : out[k];
         out[k] = std::min(out[k], above);
     }
 }

@@ -40,18 +40,22 @@ SCENE="$SIGCHAIN_SOURCE_DIR/tests/data/scene"
     assert_no_temp_files .
 }
 
-@test "oblique view: field of view clipped to the scene, golden report" {
+@test "oblique view: the field of view reaches the world beyond the scene, golden report" {
     run -0 --separate-stderr find_min_max_view_angle "$GEOM/oblique.adv" "$GEOM/plane_100m.gdb"
     # Hand-computed: bounding box 45.0358..47.7557 deg (atan(hypot(1000,50)/1000),
-    # atan(hypot(1100,50)/1000)).
+    # atan(hypot(1100,50)/1000)). The image spans more than the plane and every ray is
+    # below the horizon: the rays past the plane's edges see the background plane
+    # through their own angles, so the field of view is the unclipped image's range.
     assert_output --regexp 'scene-bounding-box +45\.0358 +47\.7557'
+    assert_output --regexp 'field-of-view +43\.8463 +49\.0240'
+    assert_output --regexp 'unclipped-image +43\.8463 +49\.0240'
     echo "$output" > report.txt
     assert_golden report.txt "$GOLDEN/find_min_max_view_angle/oblique.txt"
 }
 
 @test "--snd prints a line ready for a .snd file, rounded outward" {
     run -0 --separate-stderr find_min_max_view_angle --snd "$GEOM/oblique.adv" "$GEOM/plane_100m.gdb"
-    assert_output --regexp '^45\.0 47\.8 0\.2	# min, max and increment of the view angle \(deg, field-of-view\)$'
+    assert_output --regexp '^43\.5 49\.5 0\.5	# min, max and increment of the view angle \(deg, field-of-view\)$'
     run -0 --separate-stderr find_min_max_view_angle --snd -m scene-bounding-box "$GEOM/oblique.adv" "$GEOM/plane_100m.gdb"
     assert_output --partial "scene-bounding-box"
 }
@@ -88,7 +92,7 @@ SCENE="$SIGCHAIN_SOURCE_DIR/tests/data/scene"
 
 @test "the .adv can come from standard input" {
     run -0 --separate-stderr sh -c "find_min_max_view_angle --snd - '$GEOM/plane_100m.gdb' < '$GEOM/oblique.adv'"
-    assert_output --regexp '^45\.0 47\.8 0\.2'
+    assert_output --regexp '^43\.5 49\.5 0\.5'
 }
 
 @test "--grid sets the interior rays; the border alone fixes a nadir view's range" {

@@ -119,7 +119,10 @@ TEST(ViewAngle, NadirBothMethods) {
 // Oblique view from the west: the image is wider than the square, so the field of
 // view is clipped to the square: nearest point (0, 50, 0) at 45 deg, farthest
 // corners (100, 0|100, 0) at atan(sqrt(1100^2 + 50^2)/1000).
-TEST(ViewAngle, ObliqueFieldOfViewIsClippedToTheScene) {
+TEST(ViewAngle, ObliqueFieldOfViewCoversTheWorldBeyondTheScene) {
+    // The image spans more than the square on both sides; the rays past its edges
+    // see the background plane (trace(1)) through the path terms of their own
+    // angles, so the field of view is the whole image's range, not the square's.
     auto cam = geom::frame_camera(make_adv({-1000, 50, 1000}, {50, 50, 0}, 180, 10, 100));
     auto s = square_scene(false);
     auto rep = geom::find_view_angles(cam, s, 256);
@@ -128,16 +131,29 @@ TEST(ViewAngle, ObliqueFieldOfViewIsClippedToTheScene) {
     EXPECT_NEAR(rep.bounding_box.min_deg, std::atan(std::hypot(1000.0, 50.0) / 1000) * kDeg, 1e-9);
     EXPECT_NEAR(rep.bounding_box.max_deg, far, 1e-9);
     ASSERT_TRUE(rep.field_of_view);
-    // Rays are sampled at pixel centres (and a 256-grid): the extreme hit lies within
-    // one pixel's angular size, atan(0.009 mm / 10 mm) = 0.052 deg, of the true edge.
-    double pixel = std::atan(0.009 / 10) * kDeg;
-    EXPECT_NEAR(rep.field_of_view->min_deg, near, pixel);
-    EXPECT_NEAR(rep.field_of_view->max_deg, far, pixel);
-    EXPECT_GE(rep.field_of_view->min_deg, near - 1e-6);  // never beyond the true edge
-    EXPECT_LE(rep.field_of_view->max_deg, far + 1e-6);
-    // The unclipped image spans more than the scene on both sides.
     EXPECT_LT(rep.unclipped_field_of_view.min_deg, near);
     EXPECT_GT(rep.unclipped_field_of_view.max_deg, far);
+    // Every angle is below the horizon: the extremes are the image's own (its corner
+    // rays), the unclipped range's.
+    EXPECT_DOUBLE_EQ(rep.field_of_view->min_deg, rep.unclipped_field_of_view.min_deg);
+    EXPECT_DOUBLE_EQ(rep.field_of_view->max_deg, rep.unclipped_field_of_view.max_deg);
+}
+
+TEST(ViewAngle, RaysAboveTheHorizonFoldToTheMirroredLineOfSight) {
+    // A ray 100 deg off nadir looks 10 deg above the horizon: its sky needs the path
+    // terms of the mirrored, downward line of sight (80 deg), at most 89 deg.
+    EXPECT_DOUBLE_EQ(geom::world_view_angle_deg(100), 80);
+    EXPECT_DOUBLE_EQ(geom::world_view_angle_deg(-100), -80);
+    EXPECT_DOUBLE_EQ(geom::world_view_angle_deg(89.5), 89);
+    EXPECT_DOUBLE_EQ(geom::world_view_angle_deg(90.5), 89);
+    EXPECT_DOUBLE_EQ(geom::world_view_angle_deg(-30), -30);
+    // The oblique camera above, 46.4 deg off nadir, with a 0.4 mm lens: its image
+    // spans +-48 deg, from the square to 94 deg off nadir.
+    auto cam = geom::frame_camera(make_adv({-1000, 50, 1000}, {50, 50, 0}, 180, 0.4, 100));
+    auto rep = geom::find_view_angles(cam, square_scene(false), 64);
+    ASSERT_TRUE(rep.field_of_view);
+    EXPECT_GT(rep.unclipped_field_of_view.max_deg, 90);  // the image reaches above the horizon
+    EXPECT_DOUBLE_EQ(rep.field_of_view->max_deg, geom::kWorldMaxViewAngleDeg);
 }
 
 // A tower raises the bounding box: its top corners (45|55, 45|55, 50) seen from

@@ -564,6 +564,33 @@ TEST(Render, MissesAboveTheHorizonSeeTheEffectiveSky) {
     EXPECT_EQ(res.stats.sky_samples, 4u);
 }
 
+// Where the tables' path radiance exceeds the ground's sky (near the horizon, the
+// downward L_us of a long slant can), the effective sky would be black; the air's
+// part is bounded by the share of L0 made below the sensor for a source uniform in
+// optical depth, L0 (1 - tau2) / (1 - T), with T = tau1^(mu_sun / mu) the whole
+// column's transmittance along the ray (trace(1) RADIOMETRY). Here tau1 = 0.5, sun
+// at 30 deg, a ray to the zenith: T = 0.5^0.866 = 0.5487, L0 = 0.004, tau2 = 0.9,
+// L_us = 0.005: L = (0.004 - 0.004 * 0.1 / 0.4513) / 0.9 = 0.003459.
+TEST(Render, EffectiveSkyStaysAboveZeroWhereThePathOutshinesTheSky) {
+    Mesh m;
+    m.quad({{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}}, 1);
+    scene::Scene s = single(m.data);
+    auto mats =
+        radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, 0.3, kWl.size())});
+    io::Rad rad = radiometry::uniform_rad(kWl, 30, 120, 0.2, 0.004, 0.9, 0.005);
+    for (auto& smp : rad.samples) {
+        smp.solar_irradiance = 0.4;
+        smp.sun_transmission = 0.5;
+    }
+    auto atm = radiometry::Atmosphere::from_rads({rad}, {"u.rad"});
+    Ortho cam(2, 2, 10, 20, 20, {0, 0, 1});
+    RenderResult res = run(s, mats, atm, cam, RenderOptions{});
+    const double t = std::pow(0.5, std::cos(30 * kPi / 180));
+    const double expected = (0.004 - 0.004 * (1 - 0.9) / (1 - t)) / 0.9;
+    EXPECT_NEAR(expected, 0.003459, 1e-6);  // the hand computation above
+    for (float v : res.radiance.data) EXPECT_NEAR(v, expected, 1e-6 * expected);
+}
+
 // A camera 2 m above a plate looking north, from 30 deg below to 30 deg above the
 // horizon: no pixel is black (before the world beyond the scene, every ray above the
 // horizon and past the plate's edge saw 0).
