@@ -1,5 +1,6 @@
 #!/usr/bin/env bats
-# Tests: trace (the world beyond the scene) on data/scenes/hawkeye/horizon.adv
+# Tests: trace (the world beyond the scene) on data/scenes/hawkeye/horizon.adv and
+# oblique.adv
 # Also requires: hawkeye_scene, control7, find_min_max_view_angle, build_radiance,
 # compare, and data/scenes/hawkeye/Makefile (pipelines/scene.mk)
 # The hawkeye scene's low oblique view, whose top rows look above the horizon: every
@@ -59,25 +60,34 @@ check_truth() {
         }'
 }
 
-@test "hawkeye horizon view: sky in the top row, no zero or NaN pixel, consistent truth" {
-    # The view at SIZE x SIZE pixels, each 512 / SIZE times larger (same field of view,
-    # as scripts/chart shrinks a camera), traced with its truth layers.
-    local pitch
+# render VIEW: the hawkeye view VIEW.adv at SIZE x SIZE pixels, each 512 / SIZE times
+# larger (same field of view, as scripts/chart shrinks a camera), traced with its truth
+# layers into out/VIEW/hawkeye.img and VIEW_truth.img; then checks that no value of
+# the cube is zero or NaN.
+render() {
+    local view="$1" pitch cube="out/$1/hawkeye.img" bands
     pitch=$(awk -v s="$SIZE" 'BEGIN { print 21.5 * 512 / s }')
     sed "s/^512 512\t/$SIZE $SIZE\t/; s/^pixel_pitch_um = 21.5/pixel_pitch_um = $pitch/" \
-        "$HAWKEYE/horizon.adv" > horizon.adv
-    grep -q "^$SIZE $SIZE" horizon.adv && grep -q "^pixel_pitch_um = $pitch\$" horizon.adv
-    run -0 make -C "$HAWKEYE" -j2 VIEW=horizon ADV="$BATS_TEST_TMPDIR/horizon.adv" \
-        OUT="$BATS_TEST_TMPDIR/out/horizon" SIGCHAIN_BIN="$SIGCHAIN_BIN" \
+        "$HAWKEYE/$view.adv" > "$view.adv"
+    grep -q "^$SIZE $SIZE" "$view.adv" && grep -q "^pixel_pitch_um = $pitch\$" "$view.adv"
+    run -0 make -C "$HAWKEYE" -j2 VIEW="$view" ADV="$BATS_TEST_TMPDIR/$view.adv" \
+        OUT="$BATS_TEST_TMPDIR/out/$view" SIGCHAIN_BIN="$SIGCHAIN_BIN" \
         HAWKEYE_SCENE="$(command -v hawkeye_scene)" \
-        TRACE_FLAGS="-q --truth $BATS_TEST_TMPDIR/truth.img" cube
-    local cube=out/horizon/hawkeye.img bands
-    [ -s "$cube" ] && [ -s truth.img ] && [ -s truth.hdr ]
+        TRACE_FLAGS="-q --truth $BATS_TEST_TMPDIR/${view}_truth.img" cube
+    [ -s "$cube" ] && [ -s "${view}_truth.img" ] && [ -s "${view}_truth.hdr" ]
     # No NaN (compare rejects a cube holding one, exit 2) and no zero.
     run -0 --separate-stderr compare --pixelwise "$cube" "$cube"
-    bands=$(sed -n 's/^bands *= *//p' out/horizon/hawkeye.hdr)
+    bands=$(sed -n 's/^bands *= *//p' "out/$view/hawkeye.hdr")
     run -0 count_bad "$cube"
     assert_output "$((SIZE * SIZE * bands)) 0"
-    run -0 check_truth truth.img
+}
+
+@test "hawkeye oblique view: no zero or NaN pixel" {
+    render oblique
+}
+
+@test "hawkeye horizon view: sky in the top row, no zero or NaN pixel, consistent truth" {
+    render horizon
+    run -0 check_truth horizon_truth.img
     assert_line --regexp '^sky pixels [0-9]+, background pixels [1-9][0-9]*$'
 }
