@@ -9,6 +9,24 @@ namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
 
+// out[k] += w[0] v[0][k], then w[1] v[1][k], ... (m terms), one pass over out.
+void add_weighted(const double* w, const double* const* v, int m, std::span<double> out) {
+    const std::size_t n = out.size();
+    switch (m) {
+        case 4:
+            for (std::size_t k = 0; k < n; ++k)
+                out[k] = out[k] + w[0] * v[0][k] + w[1] * v[1][k] + w[2] * v[2][k] +
+                         w[3] * v[3][k];
+            break;
+        case 2:
+            for (std::size_t k = 0; k < n; ++k) out[k] = out[k] + w[0] * v[0][k] + w[1] * v[1][k];
+            break;
+        default:
+            for (int i = 0; i < m; ++i)
+                for (std::size_t k = 0; k < n; ++k) out[k] += w[i] * v[i][k];
+    }
+}
+
 }  // namespace
 
 SkyInterpolator::SkyInterpolator(const Atmosphere& atmosphere) : m_atm(atmosphere) {
@@ -25,6 +43,13 @@ SkyInterpolator::SkyInterpolator(const Atmosphere& atmosphere) : m_atm(atmospher
         m_azimuth_deg.push_back(a < 0 ? a + 360 : a);
     }
     const std::size_t n = cells[0].scattered.size();
+    m_samples = n;
+    for (const SkyCell& cell : cells)
+        for (std::size_t k = 0; k < n; ++k) {
+            const double e = k < cell.emitted.size() ? cell.emitted[k] : 0.0;
+            m_scattered.push_back(cell.scattered[k]);
+            m_total.push_back(cell.scattered[k] + e);
+        }
     m_zenith_mean_scattered.assign(n, 0.0);
     m_zenith_mean_emitted.assign(n, 0.0);
     for (int c = 0; c < m_columns; ++c)
@@ -33,17 +58,6 @@ SkyInterpolator::SkyInterpolator(const Atmosphere& atmosphere) : m_atm(atmospher
             if (k < cells[c].emitted.size())
                 m_zenith_mean_emitted[k] += cells[c].emitted[k] / m_columns;
         }
-}
-
-void SkyInterpolator::add_cell(int ring, int column, double w, std::span<double> out,
-                               bool emitted) const {
-    if (w == 0) return;
-    const SkyCell& cell = m_atm.sky_cells()[static_cast<std::size_t>(ring * m_columns + column)];
-    const std::size_t n = std::min(out.size(), cell.scattered.size());
-    if (emitted)
-        for (std::size_t k = 0; k < n; ++k) out[k] += w * (cell.scattered[k] + cell.emitted[k]);
-    else
-        for (std::size_t k = 0; k < n; ++k) out[k] += w * cell.scattered[k];
 }
 
 void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double> out,
@@ -81,10 +95,22 @@ void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double>
         g = off / span;
     }
     const double w = weight * (1 - top);
-    add_cell(r0, c0, w * (1 - f) * (1 - g), out, emitted);
-    add_cell(r0, c1, w * (1 - f) * g, out, emitted);
-    add_cell(r1, c0, w * f * (1 - g), out, emitted);
-    add_cell(r1, c1, w * f * g, out, emitted);
+    // The four neighbours with a weight, in this order; each sample sums its terms in
+    // the same order whatever the number.
+    const double weights[4] = {w * (1 - f) * (1 - g), w * (1 - f) * g, w * f * (1 - g),
+                               w * f * g};
+    const int cells[4] = {r0 * m_columns + c0, r0 * m_columns + c1, r1 * m_columns + c0,
+                          r1 * m_columns + c1};
+    const std::vector<double>& table = emitted ? m_total : m_scattered;
+    double wt[4];
+    const double* v[4];
+    int m = 0;
+    for (int i = 0; i < 4; ++i)
+        if (weights[i] != 0) {
+            wt[m] = weights[i];
+            v[m++] = table.data() + static_cast<std::size_t>(cells[i]) * m_samples;
+        }
+    add_weighted(wt, v, m, out.first(std::min(out.size(), m_samples)));
     if (top > 0) {
         const double t = weight * top;
         const std::size_t n = std::min(out.size(), m_zenith_mean_scattered.size());

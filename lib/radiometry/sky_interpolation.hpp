@@ -36,8 +36,10 @@ private:
     std::vector<double> m_zenith_deg;   // ring centres, increasing
     std::vector<double> m_azimuth_deg;  // column centres, increasing, in [0, 360)
     std::vector<double> m_zenith_mean_scattered, m_zenith_mean_emitted;  // ring 0's means
-
-    void add_cell(int ring, int column, double w, std::span<double> out, bool emitted) const;
+    // The cells' radiance, contiguous: cell i's samples at [i n, (i + 1) n), L_ds and
+    // L_ds + L_de (the sum formed once, as the per-call sum was).
+    std::size_t m_samples = 0;
+    std::vector<double> m_scattered, m_total;
 };
 
 }  // namespace sigchain::radiometry
