@@ -9,6 +9,19 @@ namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
 
+// std::upper_bound(v, x)'s index (the first element > x) in increasing `v`, found from
+// a guess by even spacing and corrected step by step: the same index, without the
+// search's mispredicted branches when the centres are evenly spaced, as .rad skies are.
+int upper_index(const std::vector<double>& v, double x) {
+    const int n = static_cast<int>(v.size());
+    const double step = n > 1 ? (v.back() - v.front()) / (n - 1) : 1;
+    int i = step > 0 ? static_cast<int>((x - v.front()) / step) + 1 : 0;
+    i = std::clamp(i, 0, n);
+    while (i > 0 && v[static_cast<std::size_t>(i - 1)] > x) --i;
+    while (i < n && !(v[static_cast<std::size_t>(i)] > x)) ++i;
+    return i;
+}
+
 // out[k] += w[0] v[0][k], then w[1] v[1][k], ... (m terms), one pass over out.
 void add_weighted(const double* w, const double* const* v, int m, std::span<double> out) {
     const std::size_t n = out.size();
@@ -76,8 +89,7 @@ void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double>
     } else if (zenith >= m_zenith_deg.back()) {
         r0 = r1 = m_rings - 1;
     } else {
-        auto it = std::upper_bound(m_zenith_deg.begin(), m_zenith_deg.end(), zenith);
-        r1 = static_cast<int>(it - m_zenith_deg.begin());
+        r1 = upper_index(m_zenith_deg, zenith);
         r0 = r1 - 1;
         f = (zenith - m_zenith_deg[r0]) / (m_zenith_deg[r1] - m_zenith_deg[r0]);
     }
@@ -85,8 +97,7 @@ void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double>
     int c0 = 0, c1 = 0;
     double g = 0;
     if (m_columns > 1) {
-        auto it = std::upper_bound(m_azimuth_deg.begin(), m_azimuth_deg.end(), azimuth);
-        c1 = static_cast<int>(it - m_azimuth_deg.begin()) % m_columns;
+        c1 = upper_index(m_azimuth_deg, azimuth) % m_columns;
         c0 = (c1 + m_columns - 1) % m_columns;
         double a0 = m_azimuth_deg[c0], a1 = m_azimuth_deg[c1];
         double span = a1 - a0, off = azimuth - a0;

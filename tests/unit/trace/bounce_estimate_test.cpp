@@ -54,21 +54,7 @@ TEST(BounceEstimate, ClosedBoxIsItsAlbedo) {
     // Every ray from inside meets a wall of reflectance a: x = a exactly, and auto
     // picks the smallest N with a^(N+1) < 0.1 %: 0.5^10 = 9.8e-4 -> N = 9;
     // 0.9^66 = 9.6e-4 -> N = 65, capped at kMaxBounces.
-    Mesh m;
-    constexpr double e = 1.01;  // faces overlap past the edges: no float cracks
-    for (int axis = 0; axis < 3; ++axis)
-        for (double side : {-1.0, 1.0}) {
-            std::array<geo::Vec3, 4> q;
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            const double corners[4][2] = {{-e, -e}, {e, -e}, {e, e}, {-e, e}};
-            for (int i = 0; i < 4; ++i) {
-                q[i][axis] = side;
-                q[i][u] = corners[i][0];
-                q[i][v] = corners[i][1];
-            }
-            m.quad(q, 1);
-        }
-    scene::Scene s = test::single(m.data);
+    scene::Scene s = test::closed_box(1);
     Ortho cam(4, 4, 0.2, -0.3137, 0.2791, {0, 0, -1}, 0.5);
     BounceEstimate half = estimate(s, 0.5, cam, kAutoBounces);
     EXPECT_NEAR(half.facet_albedo, 0.5, 1e-12);

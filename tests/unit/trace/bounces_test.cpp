@@ -5,7 +5,6 @@
 // to N times: L_N = (1 - a) B (1 + a + ... + a^N) = B (1 - a^(N+1)).
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -18,7 +17,6 @@
 namespace sigchain::trace {
 namespace {
 
-using test::Mesh;
 using test::Ortho;
 using geo::Vec3;
 
@@ -32,24 +30,7 @@ struct FurnaceResult {
 // The box (-1..1)^3 with its floor, walls of reflectance a at kT; the sun down, a
 // black sky, no background; a 4 x 4 camera inside looking down at the floor.
 FurnaceResult furnace(double a, int bounces, Sampling sampling, long spp) {
-    // Six faces, each reaching 1 % past the box's edges: separate quads meet with
-    // float-rounding cracks along shared edges, which a few of the ~10^5 rays of a
-    // render would slip through; overlapping faces leave none.
-    Mesh m;
-    constexpr double e = 1.01;
-    for (int axis = 0; axis < 3; ++axis)
-        for (double side : {-1.0, 1.0}) {
-            std::array<Vec3, 4> q;
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            const double corners[4][2] = {{-e, -e}, {e, -e}, {e, e}, {-e, e}};
-            for (int i = 0; i < 4; ++i) {
-                q[i][axis] = side;
-                q[i][u] = corners[i][0];
-                q[i][v] = corners[i][1];
-            }
-            m.quad(q, 1);
-        }
-    scene::Scene s = test::single(m.data);
+    scene::Scene s = test::closed_box(1);
     auto mats =
         radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, a, kWl.size())});
     auto atm = radiometry::Atmosphere::from_rads(

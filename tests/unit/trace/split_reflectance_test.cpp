@@ -257,21 +257,7 @@ TEST(SplitRender, ADepthColumnOfMinus999RendersByteForByteAsTheConeWithoutDepths
 // (the same from every direction) and emit 1 - a, N bounces give B(T)(1 - a^(N+1)). ---
 
 double cavity(const MaterialLibrary& mats, int bounces, Sampling sampling, long spp) {
-    Mesh m;
-    constexpr double e = 1.01;  // faces overlap at the edges (bounces_test.cpp)
-    for (int axis = 0; axis < 3; ++axis)
-        for (double side : {-1.0, 1.0}) {
-            std::array<Vec3, 4> q;
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            const double corners[4][2] = {{-e, -e}, {e, -e}, {e, e}, {-e, e}};
-            for (int i = 0; i < 4; ++i) {
-                q[i][axis] = side;
-                q[i][u] = corners[i][0];
-                q[i][v] = corners[i][1];
-            }
-            m.quad(q, 1);
-        }
-    const scene::Scene s = test::single(m.data);
+    const scene::Scene s = test::closed_box(1);
     const std::vector<double> wl{8.0, 10.0, 12.0};
     auto atm = radiometry::Atmosphere::from_rads(
         {radiometry::uniform_rad(wl, 120, 0, 0.0, 0.0, 1.0, 0.0)}, {"black.rad"});

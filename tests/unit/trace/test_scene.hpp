@@ -87,6 +87,28 @@ inline scene::Scene single(scene::MeshData m) {
     return s;
 }
 
+// The closed box (-1..1)^3 of material `material`, its six faces seen from inside. Each
+// face reaches 1 % past the box's edges: separate quads meet with float-rounding
+// cracks along shared edges, which a few of the ~10^5 rays of a render would slip
+// through; overlapping faces leave none.
+inline scene::Scene closed_box(long material) {
+    Mesh m;
+    constexpr double e = 1.01;
+    for (int axis = 0; axis < 3; ++axis)
+        for (double side : {-1.0, 1.0}) {
+            std::array<Vec3, 4> q;
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            const double corners[4][2] = {{-e, -e}, {e, -e}, {e, e}, {-e, e}};
+            for (int i = 0; i < 4; ++i) {
+                q[i][axis] = side;
+                q[i][u] = corners[i][0];
+                q[i][v] = corners[i][1];
+            }
+            m.quad(q, material);
+        }
+    return single(m.data);
+}
+
 // Mean of the first channel of a render over its pixels and the standard error of
 // that mean, estimated from the pixels themselves (independent per-pixel estimates).
 struct MeanError {
