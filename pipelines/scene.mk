@@ -30,7 +30,10 @@ MAKEFLAGS += --no-builtin-rules
 SCENE_MK_DIR := $(patsubst %/,%,$(dir $(abspath $(lastword $(MAKEFILE_LIST)))))
 
 ## Where the tools are, one variable per stage --------------------------------------
-SIGCHAIN_BIN   ?= $(SCENE_MK_DIR)/../build/bin
+# The build's tools beside the repository's scene.mk; an installed scene.mk
+# (PREFIX/share/sigchain/pipelines) uses PREFIX/bin.
+SIGCHAIN_BIN   ?= $(if $(filter %/share/sigchain/pipelines,$(SCENE_MK_DIR)),$(abspath \
+  $(SCENE_MK_DIR)/../../../bin),$(SCENE_MK_DIR)/../build/bin)
 CONTROL7       ?= $(SIGCHAIN_BIN)/control7
 BUILD_RADIANCE ?= $(SIGCHAIN_BIN)/build_radiance
 FIND_VIEW      ?= $(SIGCHAIN_BIN)/find_min_max_view_angle
