@@ -43,16 +43,16 @@ THERM          ?= $(SIGCHAIN_BIN)/therm
 SENSORIZE      ?= $(SIGCHAIN_BIN)/sensorize
 COMPARE        ?= $(SIGCHAIN_BIN)/compare
 
-## Options per stage ----------------------------------------------------------------
-CONTROL7_FLAGS       ?= -q
-BUILD_RADIANCE_FLAGS ?= -q
+## Options per stage (the tools' warnings show; -q in a FLAGS variable hides them) ---
+CONTROL7_FLAGS       ?=
+BUILD_RADIANCE_FLAGS ?=
 FIND_VIEW_FLAGS      ?=
-TRACE_FLAGS          ?= -q
+TRACE_FLAGS          ?=
 SHADOW_FLAGS         ?= --points-per-facet 16
-THERM_FLAGS          ?= -q
-CALIBRATE_FLAGS      ?= -q
-SENSORIZE_FLAGS      ?= -q
-PREVIEW_FLAGS        ?= -q
+THERM_FLAGS          ?=
+CALIBRATE_FLAGS      ?=
+SENSORIZE_FLAGS      ?=
+PREVIEW_FLAGS        ?=
 COMPARE_FLAGS        ?=
 
 ## The scene's files (a scene's Makefile sets these) --------------------------------
