@@ -109,6 +109,36 @@ CAL_SENS  := $(addprefix $(OUT)/calibrated/,$(notdir $(SENS)))
 COUNT_SENS := $(if $(CARDS_GDB),$(CAL_SENS),$(SENS))
 TRACE_TMP := $(if $(filter yes,$(CUBE_TMP)),$(TMP))
 
+## Each stage's command (program and options, without the files it reads and writes,
+## which the rules name) -------------------------------------------------------------
+CMD_control7       = $(strip $(CONTROL7) $(CONTROL7_FLAGS))
+CMD_find_view      = $(strip $(FIND_VIEW) $(FIND_VIEW_FLAGS))
+CMD_build_radiance = $(strip $(BUILD_RADIANCE) $(BUILD_RADIANCE_FLAGS))
+CMD_shadow         = $(strip $(SHADOW) $(SHADOW_FLAGS))
+CMD_therm          = $(strip $(THERM) $(THERM_FLAGS))
+CMD_trace          = $(strip $(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(TRACE_TMP)))
+CMD_calibrate      = $(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) \
+  --card2 $(CARD2) --target1 $(TARGET1) --target2 $(TARGET2)
+CMD_sensorize      = $(strip $(SENSORIZE) $(SENSORIZE_FLAGS))
+CMD_preview        = $(strip $(SENSORIZE) $(PREVIEW_FLAGS))
+CMD_compare        = $(strip $(COMPARE) $(COMPARE_FLAGS))
+STAGES := control7 find_view build_radiance shadow therm trace calibrate sensorize \
+  preview compare
+# $(call CMD_STAMP,STAGE): the file that records STAGE's command, a prerequisite of
+# what the stage makes. It is rewritten when this file is read, and only when the
+# command differs from the one recorded, so that BUILD_RADIANCE=..., TRACE_FLAGS=...
+# rerun that stage (and the stages after it) and a rerun with the same command does
+# nothing (make -q included).
+CMD_STAMP = $(OUT)/$(1).cmd.stamp
+define record_cmd
+$(shell mkdir -p $(OUT) && f=$(call CMD_STAMP,$(1)) && \
+  printf '%s\n' '$(subst ','\'',$(strip $(CMD_$(1))))' > $$f.new && \
+  if cmp -s $$f.new $$f; then rm -f $$f.new; else mv -f $$f.new $$f; fi)
+endef
+ifneq ($(if $(MAKECMDGOALS),$(filter-out clean help,$(MAKECMDGOALS)),all),)
+RECORDED_CMDS := $(foreach stage,$(STAGES),$(call record_cmd,$(stage)))
+endif
+
 # Files made by pattern rules stay after the build (else make removes them as
 # intermediate and remakes them next time).
 .SECONDARY: $(CDK) $(foreach k,$(BAND_IDS),$(OUT)/band-$(k).snd) $(TILE_IMGS) \
@@ -130,20 +160,20 @@ $(OUT) $(OUT)/calibrated:
 
 ## control7: the answers (and the radiosonde they name, opened from the scene folder)
 ## -> LOWTRAN 7 card deck.
-$(OUT)/%.cdk: %.answers $(RSD) | $(OUT)
-	$(CONTROL7) $(CONTROL7_FLAGS) --answers $< -o $@
+$(OUT)/%.cdk: %.answers $(RSD) $(call CMD_STAMP,control7) | $(OUT)
+	$(CMD_control7) --answers $< -o $@
 
 ## find_min_max_view_angle: the view-angle range of a camera over its scene: the
 ## .snd line (--snd), then the full report (which names the look azimuth).
 ## (The camera and the scene are the first two prerequisites; GEOM_FILES, the files an
 ## .odb places, only make the range depend on them.)
 define find_view
-$(FIND_VIEW) $(FIND_VIEW_FLAGS) --snd $(wordlist 1,2,$^) > $@
-$(FIND_VIEW) $(FIND_VIEW_FLAGS) $(wordlist 1,2,$^) >> $@
+$(CMD_find_view) --snd $(wordlist 1,2,$^) > $@
+$(CMD_find_view) $(wordlist 1,2,$^) >> $@
 endef
-$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) $(GEOM_FILES) | $(OUT)
+$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) $(GEOM_FILES) $(call CMD_STAMP,find_view) | $(OUT)
 	$(find_view)
-$(OUT)/cards.view: $(CARDS_ADV) $(CARDS_GDB) | $(OUT)
+$(OUT)/cards.view: $(CARDS_ADV) $(CARDS_GDB) $(call CMD_STAMP,find_view) | $(OUT)
 	$(find_view)
 
 ## The scene node used downstream: SND with its view-angle line replaced by the union
@@ -181,29 +211,32 @@ $(OUT)/band-%.snd: $(RUN_SND)
 
 ## build_radiance: card deck + one-band scene node -> that band's radiance table.
 ## Called as BUILD_RADIANCE [FLAGS] --view-azimuth DEG CDK SND -o FILE.rad.
-$(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH)
-	$(BUILD_RADIANCE) $(BUILD_RADIANCE_FLAGS) --view-azimuth $$(cat $(AZIMUTH)) \
+$(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH) $(call CMD_STAMP,build_radiance)
+	$(CMD_build_radiance) --view-azimuth $$(cat $(AZIMUTH)) \
 	  $(CDK) $(OUT)/band-$*.snd -o $@
 
 ## trace --shadow-history: 24 h of sun and shadow per facet, for therm.
-$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) $(GEOM_FILES) | $(OUT)
-	$(SHADOW) $(SHADOW_FLAGS) $(SND) $(SCENE_GDB) $(SCENE_MAT) -o $@
+$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) $(GEOM_FILES) $(call CMD_STAMP,shadow) | $(OUT)
+	$(CMD_shadow) $(SND) $(SCENE_GDB) $(SCENE_MAT) -o $@
 
 ## therm: shadow history + weather -> facet temperatures.
-$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES) $(GEOM_FILES)
-	$(THERM) $(THERM_FLAGS) $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) -o $@
+$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES) $(GEOM_FILES) \
+  $(call CMD_STAMP,therm)
+	$(CMD_therm) $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) -o $@
 
 ## trace: the radiance cube (with emission from out/NAME.tmp when CUBE_TMP=yes).
 TRACE_INPUTS := $(ADV) $(RUN_SND) $(SCENE_GDB) $(SCENE_MAT) $(RADS)
 define trace_cube
-$(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(TRACE_TMP)) $(2) $(TRACE_INPUTS) -o $(1)
+$(CMD_trace) $(2) $(TRACE_INPUTS) -o $(1)
 endef
 ifeq ($(TILES),1)
-$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP)
+$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP) \
+  $(call CMD_STAMP,trace)
 	$(call trace_cube,$(CUBE))
 else
 ## trace --rows: tile T holds rows T*ROWS/TILES to (T+1)*ROWS/TILES - 1.
-$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP)
+$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) \
+  $(TRACE_TMP) $(call CMD_STAMP,trace)
 	$(call trace_cube,$(OUT)/$(NAME).tile-$*.img,--rows $$(($* * $(ROWS) / $(TILES))):$$((($* + 1) * $(ROWS) / $(TILES))))
 
 ## Merge the tiles (trace(1), EXAMPLES): the cube is band-sequential float32, so for
@@ -223,23 +256,24 @@ ifneq ($(CARDS_GDB),)
 ## The calibration scene: trace the cards with the same tables, then
 ## sensorize --calibrate derives each band's gain and bias (White (1996), section 4.2.4) into
 ## out/calibrated/ (its table of radiances and counts into out/calibration.txt).
-$(CARDS_CUBE) $(basename $(CARDS_CUBE)).hdr &: $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(MAT_FILES) $(RADS)
+$(CARDS_CUBE) $(basename $(CARDS_CUBE)).hdr &: $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) \
+  $(MAT_FILES) $(RADS) $(call CMD_STAMP,trace)
 	$(TRACE) $(TRACE_FLAGS) $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(RADS) -o $(CARDS_CUBE)
-$(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) | $(OUT)/calibrated
-	$(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) --card2 $(CARD2) \
-	  --target1 $(TARGET1) --target2 $(TARGET2) $(CARDS_CUBE) $(SENS) -o $(OUT)/calibrated \
+$(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) $(call CMD_STAMP,calibrate) \
+  | $(OUT)/calibrated
+	$(CMD_calibrate) $(CARDS_CUBE) $(SENS) -o $(OUT)/calibrated \
 	  > $(OUT)/calibration.txt
 endif
 
 ## sensorize: radiance cube -> digital counts (TIFF), and an 8-bit preview PNG.
-$(COUNTS): $(CUBE) $(COUNT_SENS)
-	$(SENSORIZE) $(SENSORIZE_FLAGS) $(CUBE) $(COUNT_SENS) -o $@
-$(PREVIEW): $(CUBE) $(COUNT_SENS)
-	$(SENSORIZE) $(PREVIEW_FLAGS) $(CUBE) $(COUNT_SENS) -o $@
+$(COUNTS): $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,sensorize)
+	$(CMD_sensorize) $(CUBE) $(COUNT_SENS) -o $@
+$(PREVIEW): $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,preview)
+	$(CMD_preview) $(CUBE) $(COUNT_SENS) -o $@
 
 ## compare: counts against the reference image at the control points -> report.
-$(REPORT): $(COUNTS) $(REFERENCE) $(CPT)
-	$(COMPARE) $(COMPARE_FLAGS) $(COUNTS) $(REFERENCE) $(CPT) -o $@
+$(REPORT): $(COUNTS) $(REFERENCE) $(CPT) $(call CMD_STAMP,compare)
+	$(CMD_compare) $(COUNTS) $(REFERENCE) $(CPT) -o $@
 
 clean:
 	rm -rf $(OUT)
@@ -252,7 +286,8 @@ help:
 	@echo '  SENSORIZE COMPARE; default $$(SIGCHAIN_BIN)/TOOL, SIGCHAIN_BIN=$(SIGCHAIN_BIN)'
 	@echo 'options: CONTROL7_FLAGS BUILD_RADIANCE_FLAGS FIND_VIEW_FLAGS TRACE_FLAGS'
 	@echo '  SHADOW_FLAGS THERM_FLAGS CALIBRATE_FLAGS SENSORIZE_FLAGS PREVIEW_FLAGS'
-	@echo '  COMPARE_FLAGS'
+	@echo '  COMPARE_FLAGS (a changed program or option reruns its stage: out/STAGE.cmd.stamp)'
+	@echo 'this file: SCENE_MK=$(SCENE_MK_DIR)/scene.mk'
 	@echo 'scene: NAME=$(NAME) OUT=$(OUT) ANSWERS=$(ANSWERS) RSD=$(RSD) SND=$(SND)'
 	@echo '  ADV=$(ADV) SCENE_GDB=$(SCENE_GDB) SCENE_MAT=$(SCENE_MAT) MAT_FILES=$(MAT_FILES)'
 	@echo '  GEOM_FILES=$(GEOM_FILES) SENS=$(SENS) WTH=$(WTH) CUBE_TMP=$(CUBE_TMP)'
