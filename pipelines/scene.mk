@@ -128,12 +128,14 @@ STAGES := control7 find_view build_radiance shadow therm trace calibrate sensori
 # what the stage makes. It is rewritten when this file is read, and only when the
 # command differs from the one recorded, so that BUILD_RADIANCE=..., TRACE_FLAGS=...
 # rerun that stage (and the stages after it) and a rerun with the same command does
-# nothing (make -q included).
+# nothing (make -q included; make -n records the command too). The new text goes to
+# a file of the shell's own (.PID), since the make that a recipe below starts again
+# reads this file too, perhaps two at once under make -j.
 CMD_STAMP = $(OUT)/$(1).cmd.stamp
 define record_cmd
-$(shell mkdir -p $(OUT) && f=$(call CMD_STAMP,$(1)) && \
-  printf '%s\n' '$(subst ','\'',$(strip $(CMD_$(1))))' > $$f.new && \
-  if cmp -s $$f.new $$f; then rm -f $$f.new; else mv -f $$f.new $$f; fi)
+$(shell mkdir -p $(OUT) && f=$(call CMD_STAMP,$(1)) && n=$$f.$$$$ && \
+  printf '%s\n' '$(subst ','\'',$(strip $(CMD_$(1))))' > $$n && \
+  if cmp -s $$n $$f; then rm -f $$n; else mv -f $$n $$f; fi)
 endef
 ifneq ($(if $(MAKECMDGOALS),$(filter-out clean help,$(MAKECMDGOALS)),all),)
 RECORDED_CMDS := $(foreach stage,$(STAGES),$(call record_cmd,$(stage)))
