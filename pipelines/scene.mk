@@ -30,7 +30,10 @@ MAKEFLAGS += --no-builtin-rules
 SCENE_MK_DIR := $(patsubst %/,%,$(dir $(abspath $(lastword $(MAKEFILE_LIST)))))
 
 ## Where the tools are, one variable per stage --------------------------------------
-SIGCHAIN_BIN   ?= $(SCENE_MK_DIR)/../build/bin
+# The build's tools beside the repository's scene.mk; an installed scene.mk
+# (PREFIX/share/sigchain/pipelines) uses PREFIX/bin.
+SIGCHAIN_BIN   ?= $(if $(filter %/share/sigchain/pipelines,$(SCENE_MK_DIR)),$(abspath \
+  $(SCENE_MK_DIR)/../../../bin),$(SCENE_MK_DIR)/../build/bin)
 CONTROL7       ?= $(SIGCHAIN_BIN)/control7
 BUILD_RADIANCE ?= $(SIGCHAIN_BIN)/build_radiance
 FIND_VIEW      ?= $(SIGCHAIN_BIN)/find_min_max_view_angle
@@ -40,16 +43,16 @@ THERM          ?= $(SIGCHAIN_BIN)/therm
 SENSORIZE      ?= $(SIGCHAIN_BIN)/sensorize
 COMPARE        ?= $(SIGCHAIN_BIN)/compare
 
-## Options per stage ----------------------------------------------------------------
-CONTROL7_FLAGS       ?= -q
-BUILD_RADIANCE_FLAGS ?= -q
+## Options per stage (the tools' warnings show; -q in a FLAGS variable hides them) ---
+CONTROL7_FLAGS       ?=
+BUILD_RADIANCE_FLAGS ?=
 FIND_VIEW_FLAGS      ?=
-TRACE_FLAGS          ?= -q
+TRACE_FLAGS          ?=
 SHADOW_FLAGS         ?= --points-per-facet 16
-THERM_FLAGS          ?= -q
-CALIBRATE_FLAGS      ?= -q
-SENSORIZE_FLAGS      ?= -q
-PREVIEW_FLAGS        ?= -q
+THERM_FLAGS          ?=
+CALIBRATE_FLAGS      ?=
+SENSORIZE_FLAGS      ?=
+PREVIEW_FLAGS        ?=
 COMPARE_FLAGS        ?=
 
 ## The scene's files (a scene's Makefile sets these) --------------------------------
@@ -106,6 +109,38 @@ CAL_SENS  := $(addprefix $(OUT)/calibrated/,$(notdir $(SENS)))
 COUNT_SENS := $(if $(CARDS_GDB),$(CAL_SENS),$(SENS))
 TRACE_TMP := $(if $(filter yes,$(CUBE_TMP)),$(TMP))
 
+## Each stage's command (program and options, without the files it reads and writes,
+## which the rules name) -------------------------------------------------------------
+CMD_control7       = $(strip $(CONTROL7) $(CONTROL7_FLAGS))
+CMD_find_view      = $(strip $(FIND_VIEW) $(FIND_VIEW_FLAGS))
+CMD_build_radiance = $(strip $(BUILD_RADIANCE) $(BUILD_RADIANCE_FLAGS))
+CMD_shadow         = $(strip $(SHADOW) $(SHADOW_FLAGS))
+CMD_therm          = $(strip $(THERM) $(THERM_FLAGS))
+CMD_trace          = $(strip $(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(TRACE_TMP)))
+CMD_calibrate      = $(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) \
+  --card2 $(CARD2) --target1 $(TARGET1) --target2 $(TARGET2)
+CMD_sensorize      = $(strip $(SENSORIZE) $(SENSORIZE_FLAGS))
+CMD_preview        = $(strip $(SENSORIZE) $(PREVIEW_FLAGS))
+CMD_compare        = $(strip $(COMPARE) $(COMPARE_FLAGS))
+STAGES := control7 find_view build_radiance shadow therm trace calibrate sensorize \
+  preview compare
+# $(call CMD_STAMP,STAGE): the file that records STAGE's command, a prerequisite of
+# what the stage makes. It is rewritten when this file is read, and only when the
+# command differs from the one recorded, so that BUILD_RADIANCE=..., TRACE_FLAGS=...
+# rerun that stage (and the stages after it) and a rerun with the same command does
+# nothing (make -q included; make -n records the command too). The new text goes to
+# a file of the shell's own (.PID), since the make that a recipe below starts again
+# reads this file too, perhaps two at once under make -j.
+CMD_STAMP = $(OUT)/$(1).cmd.stamp
+define record_cmd
+$(shell mkdir -p $(OUT) && f=$(call CMD_STAMP,$(1)) && n=$$f.$$$$ && \
+  printf '%s\n' '$(subst ','\'',$(strip $(CMD_$(1))))' > $$n && \
+  if cmp -s $$n $$f; then rm -f $$n; else mv -f $$n $$f; fi)
+endef
+ifneq ($(if $(MAKECMDGOALS),$(filter-out clean help,$(MAKECMDGOALS)),all),)
+RECORDED_CMDS := $(foreach stage,$(STAGES),$(call record_cmd,$(stage)))
+endif
+
 # Files made by pattern rules stay after the build (else make removes them as
 # intermediate and remakes them next time).
 .SECONDARY: $(CDK) $(foreach k,$(BAND_IDS),$(OUT)/band-$(k).snd) $(TILE_IMGS) \
@@ -127,20 +162,20 @@ $(OUT) $(OUT)/calibrated:
 
 ## control7: the answers (and the radiosonde they name, opened from the scene folder)
 ## -> LOWTRAN 7 card deck.
-$(OUT)/%.cdk: %.answers $(RSD) | $(OUT)
-	$(CONTROL7) $(CONTROL7_FLAGS) --answers $< -o $@
+$(OUT)/%.cdk: %.answers $(RSD) $(call CMD_STAMP,control7) | $(OUT)
+	$(CMD_control7) --answers $< -o $@
 
 ## find_min_max_view_angle: the view-angle range of a camera over its scene: the
 ## .snd line (--snd), then the full report (which names the look azimuth).
 ## (The camera and the scene are the first two prerequisites; GEOM_FILES, the files an
 ## .odb places, only make the range depend on them.)
 define find_view
-$(FIND_VIEW) $(FIND_VIEW_FLAGS) --snd $(wordlist 1,2,$^) > $@
-$(FIND_VIEW) $(FIND_VIEW_FLAGS) $(wordlist 1,2,$^) >> $@
+$(CMD_find_view) --snd $(wordlist 1,2,$^) > $@
+$(CMD_find_view) $(wordlist 1,2,$^) >> $@
 endef
-$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) $(GEOM_FILES) | $(OUT)
+$(OUT)/$(NAME).view: $(ADV) $(SCENE_GDB) $(GEOM_FILES) $(call CMD_STAMP,find_view) | $(OUT)
 	$(find_view)
-$(OUT)/cards.view: $(CARDS_ADV) $(CARDS_GDB) | $(OUT)
+$(OUT)/cards.view: $(CARDS_ADV) $(CARDS_GDB) $(call CMD_STAMP,find_view) | $(OUT)
 	$(find_view)
 
 ## The scene node used downstream: SND with its view-angle line replaced by the union
@@ -178,29 +213,32 @@ $(OUT)/band-%.snd: $(RUN_SND)
 
 ## build_radiance: card deck + one-band scene node -> that band's radiance table.
 ## Called as BUILD_RADIANCE [FLAGS] --view-azimuth DEG CDK SND -o FILE.rad.
-$(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH)
-	$(BUILD_RADIANCE) $(BUILD_RADIANCE_FLAGS) --view-azimuth $$(cat $(AZIMUTH)) \
+$(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH) $(call CMD_STAMP,build_radiance)
+	$(CMD_build_radiance) --view-azimuth $$(cat $(AZIMUTH)) \
 	  $(CDK) $(OUT)/band-$*.snd -o $@
 
 ## trace --shadow-history: 24 h of sun and shadow per facet, for therm.
-$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) $(GEOM_FILES) | $(OUT)
-	$(SHADOW) $(SHADOW_FLAGS) $(SND) $(SCENE_GDB) $(SCENE_MAT) -o $@
+$(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) $(GEOM_FILES) $(call CMD_STAMP,shadow) | $(OUT)
+	$(CMD_shadow) $(SND) $(SCENE_GDB) $(SCENE_MAT) -o $@
 
 ## therm: shadow history + weather -> facet temperatures.
-$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES) $(GEOM_FILES)
-	$(THERM) $(THERM_FLAGS) $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) -o $@
+$(TMP): $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) $(MAT_FILES) $(GEOM_FILES) \
+  $(call CMD_STAMP,therm)
+	$(CMD_therm) $(SHD) $(WTH) $(SCENE_MAT) $(SCENE_GDB) $(SND) -o $@
 
 ## trace: the radiance cube (with emission from out/NAME.tmp when CUBE_TMP=yes).
 TRACE_INPUTS := $(ADV) $(RUN_SND) $(SCENE_GDB) $(SCENE_MAT) $(RADS)
 define trace_cube
-$(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(TRACE_TMP)) $(2) $(TRACE_INPUTS) -o $(1)
+$(CMD_trace) $(2) $(TRACE_INPUTS) -o $(1)
 endef
 ifeq ($(TILES),1)
-$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP)
+$(CUBE) $(basename $(CUBE)).hdr &: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP) \
+  $(call CMD_STAMP,trace)
 	$(call trace_cube,$(CUBE))
 else
 ## trace --rows: tile T holds rows T*ROWS/TILES to (T+1)*ROWS/TILES - 1.
-$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) $(TRACE_TMP)
+$(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES) $(GEOM_FILES) \
+  $(TRACE_TMP) $(call CMD_STAMP,trace)
 	$(call trace_cube,$(OUT)/$(NAME).tile-$*.img,--rows $$(($* * $(ROWS) / $(TILES))):$$((($* + 1) * $(ROWS) / $(TILES))))
 
 ## Merge the tiles (trace(1), EXAMPLES): the cube is band-sequential float32, so for
@@ -220,23 +258,24 @@ ifneq ($(CARDS_GDB),)
 ## The calibration scene: trace the cards with the same tables, then
 ## sensorize --calibrate derives each band's gain and bias (White (1996), section 4.2.4) into
 ## out/calibrated/ (its table of radiances and counts into out/calibration.txt).
-$(CARDS_CUBE) $(basename $(CARDS_CUBE)).hdr &: $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(MAT_FILES) $(RADS)
+$(CARDS_CUBE) $(basename $(CARDS_CUBE)).hdr &: $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) \
+  $(MAT_FILES) $(RADS) $(call CMD_STAMP,trace)
 	$(TRACE) $(TRACE_FLAGS) $(CARDS_ADV) $(RUN_SND) $(CARDS_GDB) $(SCENE_MAT) $(RADS) -o $(CARDS_CUBE)
-$(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) | $(OUT)/calibrated
-	$(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) --card2 $(CARD2) \
-	  --target1 $(TARGET1) --target2 $(TARGET2) $(CARDS_CUBE) $(SENS) -o $(OUT)/calibrated \
+$(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) $(call CMD_STAMP,calibrate) \
+  | $(OUT)/calibrated
+	$(CMD_calibrate) $(CARDS_CUBE) $(SENS) -o $(OUT)/calibrated \
 	  > $(OUT)/calibration.txt
 endif
 
 ## sensorize: radiance cube -> digital counts (TIFF), and an 8-bit preview PNG.
-$(COUNTS): $(CUBE) $(COUNT_SENS)
-	$(SENSORIZE) $(SENSORIZE_FLAGS) $(CUBE) $(COUNT_SENS) -o $@
-$(PREVIEW): $(CUBE) $(COUNT_SENS)
-	$(SENSORIZE) $(PREVIEW_FLAGS) $(CUBE) $(COUNT_SENS) -o $@
+$(COUNTS): $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,sensorize)
+	$(CMD_sensorize) $(CUBE) $(COUNT_SENS) -o $@
+$(PREVIEW): $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,preview)
+	$(CMD_preview) $(CUBE) $(COUNT_SENS) -o $@
 
 ## compare: counts against the reference image at the control points -> report.
-$(REPORT): $(COUNTS) $(REFERENCE) $(CPT)
-	$(COMPARE) $(COMPARE_FLAGS) $(COUNTS) $(REFERENCE) $(CPT) -o $@
+$(REPORT): $(COUNTS) $(REFERENCE) $(CPT) $(call CMD_STAMP,compare)
+	$(CMD_compare) $(COUNTS) $(REFERENCE) $(CPT) -o $@
 
 clean:
 	rm -rf $(OUT)
@@ -249,7 +288,8 @@ help:
 	@echo '  SENSORIZE COMPARE; default $$(SIGCHAIN_BIN)/TOOL, SIGCHAIN_BIN=$(SIGCHAIN_BIN)'
 	@echo 'options: CONTROL7_FLAGS BUILD_RADIANCE_FLAGS FIND_VIEW_FLAGS TRACE_FLAGS'
 	@echo '  SHADOW_FLAGS THERM_FLAGS CALIBRATE_FLAGS SENSORIZE_FLAGS PREVIEW_FLAGS'
-	@echo '  COMPARE_FLAGS'
+	@echo '  COMPARE_FLAGS (a changed program or option reruns its stage: out/STAGE.cmd.stamp)'
+	@echo 'this file: SCENE_MK=$(SCENE_MK_DIR)/scene.mk'
 	@echo 'scene: NAME=$(NAME) OUT=$(OUT) ANSWERS=$(ANSWERS) RSD=$(RSD) SND=$(SND)'
 	@echo '  ADV=$(ADV) SCENE_GDB=$(SCENE_GDB) SCENE_MAT=$(SCENE_MAT) MAT_FILES=$(MAT_FILES)'
 	@echo '  GEOM_FILES=$(GEOM_FILES) SENS=$(SENS) WTH=$(WTH) CUBE_TMP=$(CUBE_TMP)'

@@ -50,7 +50,8 @@ void Context::progress_update(const std::string& label, long done, long total) c
         m_bar_percent = -1;
         m_bar_seconds = -1;
     }
-    const double fraction = std::clamp(static_cast<double>(done) / static_cast<double>(total), 0.0, 1.0);
+    const double fraction =
+        std::clamp(static_cast<double>(done) / static_cast<double>(total), 0.0, 1.0);
     const int percent = static_cast<int>(100.0 * fraction);
     const double elapsed = std::chrono::duration<double>(now - m_bar_start).count();
     const long whole_seconds = static_cast<long>(elapsed);
@@ -91,8 +92,9 @@ void Cli::add_positional(const char* name, int count, const char* help) {
 }
 
 void Cli::add_output_option(const std::string& default_value) {
-    m_options.add_options()("output,o", po::value<std::string>()->default_value(default_value),
-                            "write to FILE ('-' is standard output)");
+    m_options.add_options()(
+        "output,o", po::value<std::string>()->default_value(default_value)->value_name("FILE"),
+        "write to FILE ('-' is standard output)");
 }
 
 void Cli::add_required_output_option(const char* value_name, const char* help) {

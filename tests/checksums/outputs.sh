@@ -36,13 +36,16 @@ machine() {
     echo "# machine: $(uname -m) $isa glibc $(ldd --version 2>/dev/null | head -n 1 | awk '{print $NF}')"
 }
 
+# The scenes' tools run with -q (pipelines/scene.mk's defaults show their warnings).
+quiet="CONTROL7_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q PREVIEW_FLAGS=-q"
+
 # run_small BIN OUT THREADS: the training scene's whole chain and the box's thermal render.
 run_small() {
     bin="$1" out="$2" threads="$3"
     topt=""
     [ -n "$threads" ] && topt="--threads $threads"
     make -s -C "$src/data/scenes/training" --no-print-directory SIGCHAIN_BIN="$bin" \
-        OUT="$out/training" BUILD_RADIANCE_FLAGS="-q $topt" TRACE_FLAGS="-q $topt" \
+        OUT="$out/training" $quiet BUILD_RADIANCE_FLAGS="-q $topt" TRACE_FLAGS="-q $topt" \
         THERM_FLAGS="-q $topt" SHADOW_FLAGS="--points-per-facet 16 $topt" >/dev/null
     # The box on a plane in 8-12.5 um (the demo's thermal chain at 32 x 32 pixels).
     b="$out/box_lwir"
@@ -74,11 +77,11 @@ run_full() {
     flags="BUILD_RADIANCE_FLAGS=-q $topt"
     for scene in olinda soho; do
         make -s -C "$src/data/scenes/$scene" --no-print-directory -j2 SIGCHAIN_BIN="$bin" \
-            OUT="$out/$scene" "$flags" TRACE_FLAGS="-q $topt" >/dev/null
+            OUT="$out/$scene" $quiet "$flags" TRACE_FLAGS="-q $topt" >/dev/null
     done
     for view in nadir oblique; do
         make -s -C "$src/data/scenes/hawkeye" --no-print-directory -j2 SIGCHAIN_BIN="$bin" \
-            VIEW=$view OUT="$out/hawkeye/$view" "$flags" TRACE_FLAGS="-q $topt" >/dev/null
+            VIEW=$view OUT="$out/hawkeye/$view" $quiet "$flags" TRACE_FLAGS="-q $topt" >/dev/null
     done
     # make demo writes into BUILD/demo (made afresh here); copy what it made.
     rm -rf "$build/demo"

@@ -101,6 +101,35 @@ stages() {
     run -0 make -q -C training
 }
 
+@test "pipeline: changing TRACE_FLAGS reruns trace and what follows, not build_radiance" {
+    copy_built
+    mk TRACE_FLAGS="-q --threads 1"
+    assert_success
+    # The scene and the cards are traced again, then calibration, counts, preview and
+    # report; the tables, the view range and the thermal chain stay.
+    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+        || { echo "$output"; stages; return 1; }
+    run -0 cat training/out/trace.cmd.stamp
+    assert_output --partial 'bin/trace -q --threads 1 --tmp out/training.tmp'
+    # The same flags again: nothing to do; the old flags: trace again.
+    mk TRACE_FLAGS="-q --threads 1"
+    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=0 shadow=0 therm=0 calibrate=0 sensorize=0 compare=0" ] \
+        || { echo "$output"; stages; return 1; }
+    run -0 make -q -C training TRACE_FLAGS="-q --threads 1"
+    mk
+    [ "$(ran render)" = 2 ] || { echo "$output"; stages; return 1; }
+}
+
+@test "pipeline: another BUILD_RADIANCE reruns build_radiance and the stages after it" {
+    copy_built
+    mk BUILD_RADIANCE="$SIGCHAIN_BIN/build_radiance --threads 1"
+    assert_success
+    [ "$(stages)" = "control7=0 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+        || { echo "$output"; stages; return 1; }
+    # Same tables, so the same counts.
+    run -0 compare --pixelwise --fail-max 0 training/out/training.tif "$BATS_FILE_TMPDIR/built/out/training.tif"
+}
+
 @test "pipeline: touching a .sen reruns only sensorize and compare" {
     copy_built
     touch training/green.sen

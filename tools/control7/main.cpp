@@ -18,10 +18,11 @@ int main(int argc, char** argv) {
                    "Write a LOWTRAN 7 atmosphere card deck (.cdk) from the answers to\n"
                    "CONTROL7's questions, asked on a terminal or read from a pipe or file.",
                    "[OPTIONS] [--answers FILE] [-o CDK]"});
-    tool.add_options()("answers", cli::po::value<std::string>(),
+    tool.add_options()("answers", cli::po::value<std::string>()->value_name("FILE"),
                        "read the answers from FILE, one per line ('-' standard input)")(
-        "answer,a", cli::po::value<std::vector<std::string>>()->composing(),
-        "KEY=VALUE: answer question KEY with VALUE (repeatable; see --list-questions)")(
+        "answer,a",
+        cli::po::value<std::vector<std::string>>()->composing()->value_name("KEY=VALUE"),
+        "answer question KEY with VALUE (repeatable; see --list-questions)")(
         "list-questions", "print every question's KEY and text, then exit")(
         // Not the shared -o: it is optional, the deck-name answer is its default.
         "output,o", cli::po::value<std::string>()->value_name("FILE"),

@@ -1,4 +1,5 @@
-// find_min_max_view_angle: the view-angle range a sensor sees of a scene (White (1996), section 4.2.3.3).
+// find_min_max_view_angle: the view-angle range a sensor sees of a scene (White (1996),
+// section 4.2.3.3).
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
@@ -15,9 +16,10 @@ int main(int argc, char** argv) {
                    "[OPTIONS] ADV GDB|ODB"});
     tool.add_positional("input", -1, "look-angle file (.adv) and scene (.gdb or .odb)");
     tool.add_options()("snd", "print only the view-angle line for a .snd file")(
-        "method,m", cli::po::value<std::string>()->default_value("field-of-view"),
+        "method,m",
+        cli::po::value<std::string>()->default_value("field-of-view")->value_name("NAME"),
         "method for --snd: field-of-view or scene-bounding-box")(
-        "grid", cli::po::value<int>()->default_value(256),
+        "grid", cli::po::value<int>()->default_value(256)->value_name("N"),
         "interior rays per image axis for the field-of-view method (>= 1)")(
         "origin", cli::po::value<std::string>()->value_name("LAT,LON[,H]"),
         "geodetic scene origin for DEM objects (deg N, deg E, m above the ellipsoid)");

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
                    "[OPTIONS] FILE..."});
     tool.add_positional("file", -1, "files to check ('-' reads standard input; needs --format)");
     tool.add_options()(
-        "format,f", cli::po::value<std::string>()->default_value(""),
+        "format,f", cli::po::value<std::string>()->default_value("")->value_name("EXT"),
         "format of every FILE (extension without the dot), instead of each name's extension")(
         "rewrite", "write the one FILE back in canonical form (to -o)")(
         "list-formats", "list the known formats and exit");
