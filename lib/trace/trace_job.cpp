@@ -50,7 +50,9 @@ std::string written_name(const std::string& path) {
 // The view angles over the image border and centre against the .rad's table (the
 // extremes of the view angle over a frame lie on its border unless nadir is inside,
 // which the border's signs then show): outside the table the path terms are clamped
-// (Atmosphere::path), which trace reports.
+// (Atmosphere::path), which trace reports. The border is sampled where
+// find_min_max_view_angle(1) samples it, at the border pixels' centres and the four
+// outer corners, so that tables made from its range raise no warning.
 void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
                        const Reporter& reporter) {
     double lo = 1e9, hi = -1e9;
@@ -63,13 +65,16 @@ void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
         hi = std::max(hi, va);
     };
     sample(r / 2, c / 2);
+    for (double row : {0.0, r})
+        for (double column : {0.0, c}) sample(row, column);
     const long steps = 256;  // per side: at most 1024 rays, a fraction of a degree apart
     for (long k = 0; k <= steps; ++k) {
         const double f = static_cast<double>(k) / steps;
-        sample(0, f * c);
-        sample(r, f * c);
-        sample(f * r, 0);
-        sample(f * r, c);
+        const double row = 0.5 + f * std::max(0.0, r - 1), column = 0.5 + f * std::max(0.0, c - 1);
+        sample(0.5, column);
+        sample(r - 0.5, column);
+        sample(row, 0.5);
+        sample(row, c - 0.5);
     }
     // 0.01 deg: below the precision the .rad's view-angle grid is written with.
     if (lo < atm.min_view_angle_deg() - 0.01 || hi > atm.max_view_angle_deg() + 0.01)

