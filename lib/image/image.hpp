@@ -74,4 +74,14 @@ void write_counts(const std::string& path, const Image& counts, int bits,
 // GDAL (as write_counts), atomically.
 void write_float(const std::string& path, const Image& image, const WriteOptions& options = {});
 
+// The channels of a true-colour preview, {red, green, blue}: of the bands whose centre
+// wavelength lies in the visible 0.38-0.78 um, red the longest, blue the shortest,
+// green the one between nearest 0.55 um. DataError naming `path` (the preview) when
+// fewer than 3 (or none has a wavelength).
+std::vector<int> true_colour_bands(const Image& image, const std::string& path);
+// An 8-bit RGB preview of those bands (sensorize(1), --preview), each stretched
+// linearly on its own from its 2nd percentile (0) to its 98th (255), clipped and
+// rounded; a band with no spread (or a NaN pixel) gives 0.
+Image true_colour_preview(const Image& image, const std::string& path);
+
 }  // namespace sigchain::image

@@ -71,6 +71,10 @@ void check_job(const SensorizeJob& job) {
                                        : "an image cannot go to standard output: give -o FILE");
     image::check_write_options(job.calibrate ? std::string("-") : job.output_path,
                                job.write_options);
+    if (!job.preview_path.empty() &&
+        (job.calibrate || file_extension(job.preview_path) != "png"))
+        throw UsageError("--preview " + job.preview_path +
+                         ": the preview is a .png file, not made with --calibrate");
     if (job.calibrate) {
         if (job.float_output) throw UsageError("give --calibrate or --float, not both");
         const auto& c = job.calibration;
@@ -134,12 +138,18 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
         out.wavelength_um.push_back(centre_wavelength_um(wavelengths, sens[b].response, widths));
         out.fwhm_um.push_back(fwhm_um(wavelengths, sens[b].response));
     }
+    // The preview is made first: a cube without 3 visible bands then leaves no output.
+    const image::Image preview = job.preview_path.empty()
+                                     ? image::Image()
+                                     : image::true_colour_preview(out, job.preview_path);
     if (job.calibrate)
         write_calibrated_sens(sens, report);
     else if (job.float_output)
         image::write_float(job.output_path, out, job.write_options);
     else
         image::write_counts(job.output_path, out, job.bits, job.write_options);
+    if (!job.preview_path.empty())
+        image::write_counts(job.preview_path, preview, 8);
     return report;
 }
 

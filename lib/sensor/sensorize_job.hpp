@@ -32,6 +32,7 @@ struct SensorizeJob {
     bool calibrate = false;
     CalibrationSetup calibration;
     image::WriteOptions write_options;  // --co and the provenance of the image
+    std::string preview_path;           // --preview: a true-colour PNG too, when not empty
 };
 
 struct BandReport {

@@ -240,3 +240,25 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
     assert_output --partial "--co KEY=VALUE"
     assert_output --partial "--psf FILE"
 }
+
+@test "--preview writes a true-colour PNG; without 3 visible bands it exits 1, writing nothing" {
+    printf '1\n1000\n0\n1\n' > b1.sen
+    cp b1.sen b2.sen; cp b1.sen b3.sen; cp b1.sen b4.sen
+    # Bands at 0.45, 0.5, 0.55, 0.6 um: red 0.6 (b4), green 0.55 (b3), blue 0.45 (b1).
+    run -0 --separate-stderr sensorize -q "$CUBE/tiny.img" b1.sen b2.sen b3.sen b4.sen \
+        -o four.tif --preview p.png
+    run -0 gdalinfo p.png
+    assert_output --partial "Band 3 Block="
+    refute_output --partial "Band 4 "
+    run -0 gdalinfo -stats p.png
+    assert_output --partial "STATISTICS_MAXIMUM=255"
+    assert_output --partial "STATISTICS_MINIMUM=0"
+    rm -f p.png.aux.xml
+    run -1 --separate-stderr sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" \
+        -o two.tif --preview q.png
+    [[ "$stderr" == *"q.png: a true-colour preview needs 3 bands"* ]] || fail "stderr: $stderr"
+    [ ! -e q.png ] && [ ! -e two.tif ]
+    run -2 --separate-stderr sensorize "$CUBE/tiny.img" b1.sen b2.sen b3.sen b4.sen -o f.tif \
+        --preview p.tif
+    assert_no_temp_files .
+}

@@ -74,6 +74,7 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
     }
     if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
     job.write_options = {cli::creation_options(vm), ctx.command()};
+    if (vm.count("preview")) job.preview_path = vm["preview"].as<std::string>();
     job.calibrate = vm.count("calibrate") > 0;
     if (job.calibrate) {
         for (const char* o : {"card1", "card2", "target1", "target2"})
@@ -105,6 +106,8 @@ int main(int argc, char** argv) {
         "psf-sigma", value<double>()->value_name("PX"),
         "Gaussian point-spread function, sigma in pixels")(
         "psf", value<std::string>()->value_name("FILE"), "point-spread function kernel file")(
+        "preview", value<std::string>()->value_name("PNG"),
+        "also write a true-colour 8-bit PNG preview (2-98 % stretch)")(
         "calibrate", "solve gain and bias per band from two gray cards; -o names a directory")(
         "card1", value<std::string>()->value_name("BOX"), "card 1 pixel box ROW0,COL0,ROW1,COL1")(
         "card2", value<std::string>()->value_name("BOX"), "card 2 pixel box ROW0,COL0,ROW1,COL1")(
