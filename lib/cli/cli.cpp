@@ -111,6 +111,12 @@ void Cli::add_seed_option(const char* help, std::uint64_t default_value) {
         "seed", po::value<std::uint64_t>()->default_value(default_value)->value_name("N"), help);
 }
 
+void Cli::add_creation_option() {
+    m_options.add_options()(
+        "co", po::value<std::vector<std::string>>()->composing()->value_name("KEY=VALUE"),
+        "GDAL creation option of GeoTIFF outputs (repeatable), e.g. COMPRESS=DEFLATE");
+}
+
 void Cli::print_help() const {
     std::cout << "Usage: " << m_info.name << ' ' << m_info.usage << "\n"
               << m_info.purpose << "\n\n";
@@ -140,6 +146,7 @@ int Cli::run(int argc, char** argv,
             return 0;
         }
         Context ctx(tool, verbosity, vm.count("progress") > 0 || stderr_is_terminal());
+        ctx.set_command(provenance_command(argc, argv));
         return body(vm, ctx);
     } catch (const po::error& e) {
         std::cerr << tool << ": " << e.what() << "\nTry '" << tool << " --help'.\n";
@@ -175,5 +182,37 @@ std::string output_path(const po::variables_map& vm) {
 unsigned threads(const po::variables_map& vm) { return vm["threads"].as<unsigned>(); }
 
 std::uint64_t seed(const po::variables_map& vm) { return vm["seed"].as<std::uint64_t>(); }
+
+std::vector<std::string> creation_options(const po::variables_map& vm) { return args(vm, "co"); }
+
+namespace {
+
+// A path's base name ("a/b/c.img" -> "c.img"); other text unchanged.
+std::string base_name(const std::string& arg) {
+    const auto slash = arg.find_last_of('/');
+    return slash == std::string::npos ? arg : arg.substr(slash + 1);
+}
+
+}  // namespace
+
+std::string provenance_command(int argc, const char* const* argv) {
+    std::string command = argc > 0 ? base_name(argv[0]) : std::string();
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--threads") {
+            ++i;  // and its value
+            continue;
+        }
+        if (arg.rfind("--threads=", 0) == 0 || arg == "-q" || arg == "--quiet" || arg == "-v" ||
+            arg == "--verbose" || arg == "--progress")
+            continue;
+        const auto eq = arg.find('=');
+        if (arg.rfind("--", 0) == 0 && eq != std::string::npos)
+            command += ' ' + arg.substr(0, eq + 1) + base_name(arg.substr(eq + 1));
+        else
+            command += ' ' + base_name(arg);
+    }
+    return command;
+}
 
 }  // namespace sigchain::cli

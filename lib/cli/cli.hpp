@@ -38,11 +38,15 @@ public:
     void info(const std::string& message) const override;  // "TOOL: message" when verbose
     void note(const std::string& message) const override;  // "TOOL: message" unless quiet
     bool verbose() const override { return m_verbosity >= 1; }
+    // The command line as outputs record it (provenance_command); set by Cli::run.
+    const std::string& command() const { return m_command; }
+    void set_command(std::string command) { m_command = std::move(command); }
     void progress_update(const std::string& label, long done, long total) const override;
     void progress_finish(const std::string& label) const override;
 
 private:
     std::string m_tool;
+    std::string m_command;
     int m_verbosity;
     bool m_progress;
     // The bar being drawn (one at a time).
@@ -83,6 +87,9 @@ public:
     // --seed N: the seed of every random choice (default 1); outputs depend only on it.
     void add_seed_option(const char* help = "seed of the random numbers (default 1)",
                          std::uint64_t default_value = 1);
+    // --co KEY=VALUE, repeatable: a GDAL creation option for GeoTIFF outputs (as
+    // gdal_translate -co), e.g. COMPRESS=DEFLATE.
+    void add_creation_option();
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
@@ -106,6 +113,13 @@ std::vector<std::string> args(const po::variables_map& vm, const char* name);
 std::string output_path(const po::variables_map& vm);  // UsageError if -o is required and missing
 unsigned threads(const po::variables_map& vm);
 std::uint64_t seed(const po::variables_map& vm);
+std::vector<std::string> creation_options(const po::variables_map& vm);  // --co, as given
+
+// The command line as outputs record it (cube(5), PROVENANCE): the tool's name and its
+// arguments, each path reduced to its base name (an argument, or an option's =VALUE,
+// holding a '/'), without the options that cannot change an output (--threads N, -q,
+// -v, --progress), so that a rerun elsewhere or with other threads is byte-identical.
+std::string provenance_command(int argc, const char* const* argv);
 
 // Whether standard error is a terminal (progress bars default on only then).
 bool stderr_is_terminal();

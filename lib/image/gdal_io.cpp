@@ -1,5 +1,5 @@
-// Radiance cubes through GDAL: ENVI (.img + .hdr) and GeoTIFF, with per-band wavelengths
-// (man cube(5)).
+// Reading rasters through GDAL: ENVI (.img + .hdr) and GeoTIFF, with per-band wavelengths
+// (man cube(5)); the writer is gdal_write.cpp.
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_string.h>
@@ -75,12 +75,17 @@ void read_wavelengths(GDALDataset& ds, const std::string& path, Image& image) {
     } else {
         for (int b = 1; b <= ds.GetRasterCount(); ++b) {
             GDALRasterBand* band = ds.GetRasterBand(b);
+            // `wavelength` with `wavelength_units` (cube(5)); WAVELENGTH_UM in older cubes.
             const char* w = band->GetMetadataItem("WAVELENGTH_UM");
+            if (const char* w2 = band->GetMetadataItem("wavelength")) {
+                w = w2;
+                if (const char* u = band->GetMetadataItem("wavelength_units")) units = u;
+            }
             if (!w) break;
             const std::vector<double> one = parse_number_list(w);
             if (one.size() != 1)
                 throw DataError({path, 0}, "band " + std::to_string(b) +
-                                               ": WAVELENGTH_UM is not a number: '" + w + "'");
+                                               ": the wavelength is not a number: '" + w + "'");
             values.push_back(one[0]);
         }
         if (values.size() != static_cast<std::size_t>(ds.GetRasterCount())) values.clear();
@@ -131,122 +136,5 @@ Image read_gdal(const std::string& path) {
 }
 
 }  // namespace detail
-
-namespace {
-
-// Removes the listed files unless released (a failed write leaves nothing behind).
-struct TempFiles {
-    std::vector<std::string> files;
-    ~TempFiles() {
-        for (const auto& f : files) std::remove(f.c_str());
-    }
-};
-
-std::string wavelength_list(const std::vector<double>& wavelength_um) {
-    std::string s = "{";
-    for (std::size_t i = 0; i < wavelength_um.size(); ++i)
-        s += (i ? ", " : "") + format_number(wavelength_um[i]);
-    return s + "}";
-}
-
-// Errors name the output file only: they concern the cube in memory, not a line.
-void check_cube(const std::string& path, const Image& cube) {
-    if (cube.channels < 1 || cube.rows < 1 || cube.columns < 1)
-        throw DataError({path, 0}, "cannot write an empty cube");
-    if (cube.data.size() != static_cast<std::size_t>(cube.channels) * cube.plane_size())
-        throw DataError({path, 0}, "cube data size does not match its dimensions");
-    if (!cube.wavelength_um.empty() &&
-        cube.wavelength_um.size() != static_cast<std::size_t>(cube.channels))
-        throw DataError({path, 0}, "the wavelength list does not match the band count");
-}
-
-void set_metadata(GDALDataset& ds, const Image& cube, CubeFormat format) {
-    for (int c = 0; c < cube.channels; ++c) {
-        GDALRasterBand* band = ds.GetRasterBand(c + 1);
-        if (static_cast<std::size_t>(c) < cube.channel_names.size())
-            band->SetDescription(cube.channel_names[c].c_str());
-        if (!cube.units.empty()) band->SetUnitType(cube.units.c_str());
-        if (cube.wavelength_um.empty()) continue;
-        const std::string w = format_number(cube.wavelength_um[c]);
-        if (format == CubeFormat::GeoTiff)
-            band->SetMetadataItem("WAVELENGTH_UM", w.c_str());
-        else {
-            band->SetMetadataItem("wavelength", w.c_str());
-            band->SetMetadataItem("wavelength_units", "Micrometers");
-        }
-    }
-    if (format == CubeFormat::GeoTiff) {
-        if (!cube.units.empty()) ds.SetMetadataItem("UNITS", cube.units.c_str());
-        return;
-    }
-    // GDAL writes the dataset description (by default the temporary file name) as the
-    // header's description: a fixed text keeps reruns identical.
-    ds.SetDescription("sigchain radiance cube");
-    if (!cube.wavelength_um.empty()) {
-        ds.SetMetadataItem("wavelength", wavelength_list(cube.wavelength_um).c_str(), "ENVI");
-        ds.SetMetadataItem("wavelength_units", "Micrometers", "ENVI");
-    }
-    if (!cube.units.empty()) ds.SetMetadataItem("data_units", cube.units.c_str(), "ENVI");
-}
-
-}  // namespace
-
-void write_cube(const std::string& path, const Image& cube, CubeFormat format) {
-    gdal_init();
-    check_cube(path, cube);
-    std::string target = path;
-    if (file_extension(path) == "hdr")
-        target = std::filesystem::path(path).replace_extension(".img").string();
-    const char* driver_name = format == CubeFormat::GeoTiff ? "GTiff" : "ENVI";
-    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
-    if (!driver) throw IoError(path + ": GDAL has no " + driver_name + " driver");
-    // ENVI names its header by replacing the extension: FILE.tmp.PID.img -> FILE.tmp.PID.hdr.
-    std::string temp = detail::temp_name(target);
-    if (format == CubeFormat::Envi)
-        temp = std::filesystem::path(target).replace_extension().string() + ".tmp." +
-               std::to_string(::getpid()) + ".img";
-    CPLStringList options;
-    options.SetNameValue("INTERLEAVE", format == CubeFormat::Envi ? "BSQ" : "BAND");
-    TempFiles temps;
-    std::vector<std::string> created;
-    {
-        std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(cube.columns),
-                                                       static_cast<int>(cube.rows), cube.channels,
-                                                       GDT_Float32, options.List()));
-        if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
-        if (char** list = ds->GetFileList()) {
-            for (char** f = list; *f; ++f) created.emplace_back(*f);
-            CSLDestroy(list);
-        }
-        temps.files = created;
-        if (created.empty()) temps.files.push_back(temp);
-        set_metadata(*ds, cube, format);
-        for (int c = 0; c < cube.channels; ++c) {
-            float* plane = const_cast<float*>(cube.data.data() + c * cube.plane_size());
-            if (ds->GetRasterBand(c + 1)->RasterIO(
-                    GF_Write, 0, 0, static_cast<int>(cube.columns), static_cast<int>(cube.rows),
-                    plane, static_cast<int>(cube.columns), static_cast<int>(cube.rows), GDT_Float32,
-                    0, 0, nullptr) != CE_None)
-                throw IoError(path + ": write error: " + gdal_message());
-        }
-        CPLErrorReset();
-        ds.reset();  // GDALClose: flushes data and writes the ENVI header
-        if (CPLGetLastErrorType() >= CE_Failure)
-            throw IoError(path + ": write error: " + gdal_message());
-    }
-    for (const std::string& f : temps.files) {
-        std::string final_name = target;
-        if (f != temp) {
-            if (file_extension(f) != "hdr") {  // an unexpected side file: not kept
-                std::remove(f.c_str());
-                continue;
-            }
-            final_name = std::filesystem::path(target).replace_extension(".hdr").string();
-        }
-        if (std::rename(f.c_str(), final_name.c_str()) != 0)
-            throw IoError(final_name + ": cannot rename from " + f);
-    }
-    temps.files.clear();
-}
 
 }  // namespace sigchain::image

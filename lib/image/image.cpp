@@ -26,6 +26,19 @@ CubeFormat cube_format_of(const std::string& path) {
     throw UsageError(path + ": unknown cube format (use .img or .hdr for ENVI, .tif for GeoTIFF)");
 }
 
+void check_write_options(const std::string& path, const WriteOptions& options) {
+    for (const std::string& kv : options.creation_options) {
+        const auto eq = kv.find('=');
+        if (eq == 0 || eq == std::string::npos)
+            throw UsageError("--co " + kv + ": expected KEY=VALUE");
+    }
+    const std::string ext = file_extension(path);
+    if (!options.creation_options.empty() && ext != "tif" && ext != "tiff")
+        throw UsageError(path + ": --co applies to GeoTIFF (.tif) outputs only");
+    if (!options.creation_options.empty())
+        detail::validate_gtiff_options(path, options.creation_options);
+}
+
 Image read_image(const std::string& path) {
     detail::require_readable(path);
     const std::string ext = file_extension(path);

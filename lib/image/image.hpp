@@ -18,6 +18,7 @@ struct Image {
     int channels = 0;
     std::vector<float> data;                 // channels * rows * columns values
     std::vector<double> wavelength_um;       // per channel; empty when the file has none
+    std::vector<double> fwhm_um;             // per channel band width (FWHM); may be empty
     std::vector<std::string> channel_names;  // per channel; may be empty
     std::string units;                       // "W cm-2 sr-1 um-1", "DC", or "" if unknown
 
@@ -34,6 +35,20 @@ struct Image {
 
 enum class CubeFormat { Envi, GeoTiff };
 
+// How an output is written beyond its pixels (cube(5), PROVENANCE and CREATION OPTIONS).
+struct WriteOptions {
+    // GDAL GTiff creation options "KEY=VALUE" (sigchain's --co), after sigchain's own,
+    // so that they override them; a non-empty list on a non-GeoTIFF output is a UsageError.
+    std::vector<std::string> creation_options;
+    // The command that made the output (cli::Context::command()): recorded with
+    // sigchain's version; empty records the version alone.
+    std::string command;
+};
+
+// Throws UsageError when `options` carry creation options (--co) and `path` is not a
+// GeoTIFF (.tif/.tiff) or a creation option is not KEY=VALUE: jobs call it before any work.
+void check_write_options(const std::string& path, const WriteOptions& options);
+
 // Reads any raster: ENVI (.hdr sidecar; the `wavelength` list and `wavelength units`
 // are honoured, nanometres converted to micrometres) and GeoTIFF through GDAL; PNG,
 // JPEG and TIFF through OpenImageIO. Integer pixels are returned as their count values
@@ -42,17 +57,31 @@ Image read_image(const std::string& path);
 
 // Writes a float32 radiance cube through GDAL with per-band wavelength metadata,
 // atomically (temporary name, then rename; for ENVI both .img and .hdr).
-void write_cube(const std::string& path, const Image& cube, CubeFormat format);
+void write_cube(const std::string& path, const Image& cube, CubeFormat format,
+                const WriteOptions& options = {});
 // The cube format from a file name: .tif/.tiff -> GeoTiff, .img/.hdr/.bsq/.dat -> Envi.
 CubeFormat cube_format_of(const std::string& path);
 
-// Writes digital counts through OpenImageIO as 8- or 16-bit unsigned (12 bits are
-// stored in 16-bit samples) TIFF or PNG, one channel per band, atomically. Values
-// must already be integers within the bit depth. Also 8-bit plain-text Netpbm (.pgm for
-// 1 channel, .ppm for 3), which tests diff as text. TIFF is written uncompressed.
-void write_counts(const std::string& path, const Image& counts, int bits);
-// Writes float32 channels (unquantised band radiance, error maps) as TIFF through
-// OpenImageIO, atomically.
-void write_float(const std::string& path, const Image& image);
+// Writes digital counts as 8- or 16-bit unsigned samples (12 bits are stored in 16-bit
+// samples), one channel per band, atomically. Values must already be integers within the
+// bit depth. .tif/.tiff: a GeoTIFF through GDAL, every band gray (PHOTOMETRIC=MINISBLACK,
+// never alpha) with its name, wavelength and FWHM (cube(5)); uncompressed unless
+// `options` say otherwise. PNG through OpenImageIO, and 8-bit plain-text Netpbm (.pgm for
+// 1 channel, .ppm for 3), which tests diff as text.
+void write_counts(const std::string& path, const Image& counts, int bits,
+                  const WriteOptions& options = {});
+// Writes float32 channels (unquantised band radiance, error maps) as a GeoTIFF through
+// GDAL (as write_counts), atomically.
+void write_float(const std::string& path, const Image& image, const WriteOptions& options = {});
+
+// The channels of a true-colour preview, {red, green, blue}: of the bands whose centre
+// wavelength lies in the visible 0.38-0.78 um, red the longest, blue the shortest,
+// green the one between nearest 0.55 um. DataError naming `path` (the preview) when
+// fewer than 3 (or none has a wavelength).
+std::vector<int> true_colour_bands(const Image& image, const std::string& path);
+// An 8-bit RGB preview of those bands (sensorize(1), --preview), each stretched
+// linearly on its own from its 2nd percentile (0) to its 98th (255), clipped and
+// rounded; a band with no spread (or a NaN pixel) gives 0.
+Image true_colour_preview(const Image& image, const std::string& path);
 
 }  // namespace sigchain::image

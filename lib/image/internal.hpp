@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/text.hpp"
 #include "image/image.hpp"
@@ -16,5 +17,10 @@ void require_readable(const std::string& path);
 
 Image read_gdal(const std::string& path);
 Image read_oiio(const std::string& path);
+// Throws UsageError naming `path` when GDAL's GTiff driver rejects a KEY=VALUE option.
+void validate_gtiff_options(const std::string& path, const std::vector<std::string>& options);
+// A GeoTIFF of counts (`bits` 8, 12 or 16) or float32 samples (`bits` 32), gray bands.
+void write_gtiff(const std::string& path, const Image& image, int bits,
+                 const WriteOptions& options);
 
 }  // namespace sigchain::image::detail

@@ -1,4 +1,5 @@
-// Digital-count and float images through OpenImageIO: TIFF, PNG, JPEG.
+// Reading TIFF, PNG, JPEG and Netpbm, and writing PNG and Netpbm counts, through
+// OpenImageIO (TIFF is written through GDAL: gdal_write.cpp).
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -68,13 +69,6 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
             throw DataError({path, 0}, "PGM/PPM output holds 8-bit counts only");
         spec.attribute("pnm:binary", 0);  // plain (text) Netpbm: readable and diffable
     }
-    if (ext == "tif" || ext == "tiff") {
-        spec.attribute("compression", "none");
-        // OpenImageIO stamps a TIFF with the wall-clock time unless the spec has a
-        // DateTime: an empty one keeps reruns byte-identical (sigchain(7): outputs hold no
-        // wall-clock time).
-        spec.attribute("DateTime", "");
-    }
     const std::string temp = detail::temp_name(path);
     bool ok = out->open(temp, spec) && out->write_image(type, pixels) && out->close();
     if (!ok) {
@@ -113,7 +107,17 @@ Image read_oiio(const std::string& path) {
 
 }  // namespace detail
 
-void write_counts(const std::string& path, const Image& counts, int bits) {
+namespace {
+
+bool is_tiff(const std::string& path) {
+    const std::string ext = file_extension(path);
+    return ext == "tif" || ext == "tiff";
+}
+
+}  // namespace
+
+void write_counts(const std::string& path, const Image& counts, int bits,
+                  const WriteOptions& options) {
     if (bits != 8 && bits != 12 && bits != 16)
         throw UsageError("unsupported bit depth " + std::to_string(bits) + " (use 8, 12 or 16)");
     const double max_count = std::ldexp(1.0, bits) - 1;
@@ -121,6 +125,8 @@ void write_counts(const std::string& path, const Image& counts, int bits) {
         if (!(v >= 0 && v <= max_count) || v != std::floor(v))
             throw DataError({path, 0}, "count " + std::to_string(v) + " is not an integer in 0.." +
                                            std::to_string(static_cast<long>(max_count)));
+    if (is_tiff(path)) return detail::write_gtiff(path, counts, bits, options);
+    check_write_options(path, options);
     if (bits == 8) {
         auto pixels = interleave<std::uint8_t>(counts);
         write_oiio(path, counts, TypeDesc::UINT8, pixels.data());
@@ -130,7 +136,9 @@ void write_counts(const std::string& path, const Image& counts, int bits) {
     }
 }
 
-void write_float(const std::string& path, const Image& image) {
+void write_float(const std::string& path, const Image& image, const WriteOptions& options) {
+    if (is_tiff(path)) return detail::write_gtiff(path, image, 32, options);
+    check_write_options(path, options);
     auto pixels = interleave<float>(image);
     write_oiio(path, image, TypeDesc::FLOAT, pixels.data());
 }

@@ -1,7 +1,9 @@
 // Band-effective radiance and digital counts (White (1996), section 3.2; sen(5)).
 #include "sensor/band.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -46,6 +48,42 @@ std::vector<double> sample_widths_um(const std::vector<double>& wavelength_um, i
             widths[i] = std::abs(wavelength_um[i + 1] - wavelength_um[i - 1]) / 2;
     }
     return widths;
+}
+
+double centre_wavelength_um(const std::vector<double>& wavelength_um,
+                            const std::vector<double>& response,
+                            const std::vector<double>& widths_um) {
+    const std::size_t n = wavelength_um.size();
+    double weighted = 0, weight = 0;
+    for (std::size_t i = 0; i < n && i < response.size() && i < widths_um.size(); ++i) {
+        weighted += response[i] * wavelength_um[i] * widths_um[i];
+        weight += response[i] * widths_um[i];
+    }
+    if (!(weight > 0)) return std::numeric_limits<double>::quiet_NaN();
+    return weighted / weight;
+}
+
+double fwhm_um(const std::vector<double>& wl, const std::vector<double>& r) {
+    const std::size_t n = wl.size();
+    if (n < 2 || r.size() != n) return std::numeric_limits<double>::quiet_NaN();
+    const double peak = *std::max_element(r.begin(), r.end());
+    if (!(peak > 0)) return std::numeric_limits<double>::quiet_NaN();
+    const double half = peak / 2;
+    std::size_t first = 0, last = n - 1;
+    while (r[first] < half) ++first;
+    while (r[last] < half) --last;
+    // Signed arithmetic throughout: descending wavelengths give a negative span.
+    double lower = wl[0] - (wl[1] - wl[0]) / 2;
+    if (first > 0) {
+        const double t = (half - r[first - 1]) / (r[first] - r[first - 1]);
+        lower = wl[first - 1] + t * (wl[first] - wl[first - 1]);
+    }
+    double upper = wl[n - 1] + (wl[n - 1] - wl[n - 2]) / 2;
+    if (last + 1 < n) {
+        const double t = (r[last] - half) / (r[last] - r[last + 1]);
+        upper = wl[last] + t * (wl[last + 1] - wl[last]);
+    }
+    return std::abs(upper - lower);
 }
 
 std::vector<float> band_radiance(const image::Image& cube, BandSamples samples,

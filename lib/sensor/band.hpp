@@ -39,6 +39,21 @@ std::vector<float> band_radiance(const image::Image& cube, BandSamples samples,
                                  const std::vector<double>& response,
                                  const std::vector<double>& widths_um, const std::string& sen_path);
 
+// The band's centre wavelength [um], the response-weighted mean λc = Σ R·λ·Δλ / Σ R·Δλ
+// (the midpoint rule of band_radiance, White (1996), section 3.2); one sample's own
+// wavelength. NaN when Σ R·Δλ is not positive. `wavelength_um`, `response`, `widths_um`: one per sample.
+double centre_wavelength_um(const std::vector<double>& wavelength_um,
+                            const std::vector<double>& response,
+                            const std::vector<double>& widths_um);
+
+// The band's full width at half maximum [um]: the distance between the outermost points
+// where the response, interpolated linearly between samples, falls to half its peak. A
+// response still at or above half its peak at an end sample ends at that sample's bin
+// edge (half a sample spacing beyond it, as sample_widths_um's end bins), so a flat
+// response of N samples spaced Δλ is N·Δλ wide. NaN when fewer than 2 samples or no
+// positive response. Wavelengths may be ascending or descending.
+double fwhm_um(const std::vector<double>& wavelength_um, const std::vector<double>& response);
+
 // How many pixels of one band were clipped while quantising.
 struct ClipCount {
     std::size_t low = 0;   // below 0 (or NaN)

@@ -69,6 +69,12 @@ void check_job(const SensorizeJob& job) {
     if (job.output_path.empty() || job.output_path == "-")
         throw UsageError(job.calibrate ? "--calibrate needs -o DIR for the updated .sen files"
                                        : "an image cannot go to standard output: give -o FILE");
+    image::check_write_options(job.calibrate ? std::string("-") : job.output_path,
+                               job.write_options);
+    if (!job.preview_path.empty() &&
+        (job.calibrate || file_extension(job.preview_path) != "png"))
+        throw UsageError("--preview " + job.preview_path +
+                         ": the preview is a .png file, not made with --calibrate");
     if (job.calibrate) {
         if (job.float_output) throw UsageError("give --calibrate or --float, not both");
         const auto& c = job.calibration;
@@ -112,7 +118,8 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     image::Image out(cube.rows, cube.columns, bands);
     out.units = job.float_output ? cube.units : "DC";
     for (int b = 0; b < bands; ++b) {
-        const auto widths = sample_widths_um(band_wavelengths(cube, groups[b]), groups[b].count);
+        const auto wavelengths = band_wavelengths(cube, groups[b]);
+        const auto widths = sample_widths_um(wavelengths, groups[b].count);
         std::vector<float> plane =
             band_radiance(cube, groups[b], sens[b].response, widths, job.sen_paths[b]);
         if (job.calibrate) {
@@ -127,13 +134,22 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
         }
         std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());
         out.channel_names.push_back(stem_of(job.sen_paths[b]));
+        if (wavelengths.empty()) continue;
+        out.wavelength_um.push_back(centre_wavelength_um(wavelengths, sens[b].response, widths));
+        out.fwhm_um.push_back(fwhm_um(wavelengths, sens[b].response));
     }
+    // The preview is made first: a cube without 3 visible bands then leaves no output.
+    const image::Image preview = job.preview_path.empty()
+                                     ? image::Image()
+                                     : image::true_colour_preview(out, job.preview_path);
     if (job.calibrate)
         write_calibrated_sens(sens, report);
     else if (job.float_output)
-        image::write_float(job.output_path, out);
+        image::write_float(job.output_path, out, job.write_options);
     else
-        image::write_counts(job.output_path, out, job.bits);
+        image::write_counts(job.output_path, out, job.bits, job.write_options);
+    if (!job.preview_path.empty())
+        image::write_counts(job.preview_path, preview, 8);
     return report;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image.hpp"
 #include "sensor/band.hpp"
 #include "sensor/calibrate.hpp"
 #include "sensor/noise.hpp"
@@ -30,6 +31,8 @@ struct SensorizeJob {
     std::string psf_path;     // kernel file (sensorize(1) PSF FILE) when not empty
     bool calibrate = false;
     CalibrationSetup calibration;
+    image::WriteOptions write_options;  // --co and the provenance of the image
+    std::string preview_path;           // --preview: a true-colour PNG too, when not empty
 };
 
 struct BandReport {

@@ -344,13 +344,15 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
             cube.channel_names.push_back(grid.band_names[grid.band_of_sample[k]] + " " +
                                          format("%.6g", grid.wavelength_um[k]) + " um");
     }
-    image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path));
+    image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path),
+                      job.write_options);
     if (job.truth_path.empty()) return;
     image::Image& truth = result.truth;
     truth.channel_names = truth_layer_names(grid);
     truth.wavelength_um.clear();
     truth.units.clear();
-    image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path));
+    image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path),
+                      job.write_options);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/report.hpp"
+#include "image/image.hpp"
 #include "scene/load.hpp"
 #include "trace/render.hpp"
 
@@ -37,6 +38,7 @@ struct TraceJob {
     bool allow_degenerate = false;
     bool adjacency = true;                     // --no-adjacency turns it off
     std::optional<double> adjacency_radius_m;  // default: RenderOptions's (1000 m)
+    image::WriteOptions write_options;         // --co and the provenance of the cubes
 };
 
 // What happened, for -v: the scene's counts, the render's statistics.

@@ -176,8 +176,89 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
 }
 
 @test "a TIFF written twice is byte-identical (no wall-clock time stamp)" {
-    sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o first.tif
+    # Two folders: the recorded command holds base names only (cube(5), Provenance).
+    mkdir first second
+    sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o first/out.tif
     sleep 1.1
-    sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o second.tif
-    cmp first.tif second.tif
+    (cd second && sensorize "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o out.tif -q)
+    cmp first/out.tif second/out.tif
+}
+
+# GeoTIFF outputs through GDAL (cube(5), Counts and band-radiance images): gdalinfo is
+# from gdal-bin (scripts/install-deps).
+@test "a 4-band counts TIFF holds 4 gray bands, no alpha, with names and wavelengths" {
+    printf '1\n1000\n0\n1\n' > b1.sen
+    cp b1.sen b2.sen; cp b1.sen b3.sen; cp b1.sen b4.sen
+    run -0 --separate-stderr sensorize -q "$CUBE/tiny.img" b1.sen b2.sen b3.sen b4.sen -o four.tif
+    run -0 gdalinfo four.tif
+    assert_output --partial "Band 4 Block="
+    refute_output --partial "Band 5 "
+    # PHOTOMETRIC=MINISBLACK: band 1 gray, the others plain data; never RGB or alpha.
+    assert_output --partial "Band 1 Block=3x2 Type=Byte, ColorInterp=Gray"
+    refute_output --regexp "ColorInterp=(Alpha|Red|Green|Blue)"
+    for b in 1 2 3 4; do assert_output --partial "Description = b$b"; done
+    for w in 0.45 0.5 0.55 0.6; do assert_output --partial "wavelength=$w"; done
+    assert_output --partial "wavelength_units=Micrometers"
+    assert_output --partial "UNITS=DC"
+}
+
+@test "a counts TIFF records FWHM, centre wavelength and its provenance (gdalinfo)" {
+    # blue.sen: R = 1, 3 at 0.45, 0.5 um: centre (0.45 + 3 * 0.5) / 4 = 0.4875 um; half
+    # maximum 1.5 crossed at 0.4625 um and still exceeded at the end sample, whose bin ends
+    # at 0.525 um: FWHM 0.0625 um.
+    mkdir sub
+    run -0 --separate-stderr sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" \
+        -o sub/two.tif
+    run -0 gdalinfo sub/two.tif
+    assert_output --partial "Description = blue"
+    assert_output --partial "wavelength=0.4875"
+    assert_output --partial "fwhm=0.0625"
+    assert_output --regexp "SIGCHAIN_VERSION=[0-9]+\.[0-9]+\.[0-9]+"
+    # Paths cut to base names, -q left out: the same text from any folder.
+    assert_output --partial "SIGCHAIN_COMMAND=sensorize tiny.img blue.sen red.sen -o two.tif"
+}
+
+@test "--co passes GDAL creation options; bad ones and non-TIFF outputs exit 2" {
+    run -0 --separate-stderr sensorize --co COMPRESS=DEFLATE --co PREDICTOR=2 --bits 16 \
+        "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" -o z.tif
+    run -0 gdalinfo z.tif
+    assert_output --partial "COMPRESSION=DEFLATE"
+    assert_output --partial "Type=UInt16"
+    run -2 --separate-stderr sensorize --co COMPRESS "$CUBE/tiny.img" "$CUBE/blue.sen" -o y.tif
+    [[ "$stderr" == *"--co COMPRESS: expected KEY=VALUE"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr sensorize --co COMPRESS=NOPE "$CUBE/tiny.img" "$CUBE/blue.sen" -o y.tif
+    [[ "$stderr" == *"invalid creation option"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr sensorize --co COMPRESS=DEFLATE "$CUBE/tiny.img" "$CUBE/blue.sen" -o y.png
+    [[ "$stderr" == *"--co applies to GeoTIFF (.tif) outputs only"* ]] || fail "stderr: $stderr"
+    [ ! -e y.tif ] && [ ! -e y.png ]
+    assert_no_temp_files .
+}
+
+@test "--help names what each option takes" {
+    run -0 --separate-stderr sensorize --help
+    refute_output --regexp " arg( |$)"
+    assert_output --partial "--co KEY=VALUE"
+    assert_output --partial "--psf FILE"
+}
+
+@test "--preview writes a true-colour PNG; without 3 visible bands it exits 1, writing nothing" {
+    printf '1\n1000\n0\n1\n' > b1.sen
+    cp b1.sen b2.sen; cp b1.sen b3.sen; cp b1.sen b4.sen
+    # Bands at 0.45, 0.5, 0.55, 0.6 um: red 0.6 (b4), green 0.55 (b3), blue 0.45 (b1).
+    run -0 --separate-stderr sensorize -q "$CUBE/tiny.img" b1.sen b2.sen b3.sen b4.sen \
+        -o four.tif --preview p.png
+    run -0 gdalinfo p.png
+    assert_output --partial "Band 3 Block="
+    refute_output --partial "Band 4 "
+    run -0 gdalinfo -stats p.png
+    assert_output --partial "STATISTICS_MAXIMUM=255"
+    assert_output --partial "STATISTICS_MINIMUM=0"
+    rm -f p.png.aux.xml
+    run -1 --separate-stderr sensorize -q "$CUBE/tiny.img" "$CUBE/blue.sen" "$CUBE/red.sen" \
+        -o two.tif --preview q.png
+    [[ "$stderr" == *"q.png: a true-colour preview needs 3 bands"* ]] || fail "stderr: $stderr"
+    [ ! -e q.png ] && [ ! -e two.tif ]
+    run -2 --separate-stderr sensorize "$CUBE/tiny.img" b1.sen b2.sen b3.sen b4.sen -o f.tif \
+        --preview p.tif
+    assert_no_temp_files .
 }

@@ -593,3 +593,22 @@ coupled_inputs() {
     trace_bad 2 "--no-adjacency does not apply to --shadow-history" \
         --shadow-history --no-adjacency "$SEED/hawkeye.snd" "$GDB" "$DATA/box.mat" -o out.shd
 }
+
+# GeoTIFF cubes through GDAL (cube(5)); gdalinfo is from gdal-bin (scripts/install-deps).
+@test "--co reaches a GeoTIFF cube; every cube records version and command" {
+    mkdir sub
+    trace_ok $(inputs) --co COMPRESS=DEFLATE --threads 1 -o sub/c.tif
+    run -0 gdalinfo sub/c.tif
+    assert_output --partial "COMPRESSION=DEFLATE"
+    assert_output --partial "wavelength=0.5"
+    assert_output --partial "wavelength_units=Micrometers"
+    refute_output --partial "ColorInterp=Alpha"
+    assert_output --regexp "SIGCHAIN_VERSION=[0-9]+\.[0-9]+\.[0-9]+"
+    assert_output --partial "SIGCHAIN_COMMAND=trace box.adv box.snd box_on_plane.gdb box.mat band1.rad band2.rad --co COMPRESS=DEFLATE -o c.tif"
+    trace_ok $(inputs) -o e.img
+    run grep -A1 '^description' e.hdr
+    assert_output --regexp $'description = \\{\nsigchain [0-9.]+: trace box.adv .* -o e.img\\}'
+    run -2 --separate-stderr trace $(inputs) --co COMPRESS=DEFLATE -o e2.img
+    [[ "$stderr" == *"--co applies to GeoTIFF (.tif) outputs only"* ]] || fail "stderr: $stderr"
+    [ ! -e e2.img ]
+}

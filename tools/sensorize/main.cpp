@@ -73,6 +73,8 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
         if (!(job.psf_sigma_px > 0)) throw sigchain::UsageError("--psf-sigma must be positive");
     }
     if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
+    job.write_options = {cli::creation_options(vm), ctx.command()};
+    if (vm.count("preview")) job.preview_path = vm["preview"].as<std::string>();
     job.calibrate = vm.count("calibrate") > 0;
     if (job.calibrate) {
         for (const char* o : {"card1", "card2", "target1", "target2"})
@@ -90,21 +92,30 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
 int main(int argc, char** argv) {
     cli::Cli tool({"sensorize",
                    "Turn a radiance cube into the digital counts of a sensor: one channel per\n"
-                   ".sen band, in a TIFF or PNG.",
+                   ".sen band, in a GeoTIFF or PNG.",
                    "[OPTIONS] CUBE SEN... -o IMAGE"});
     tool.add_positional("input", -1, "radiance cube (ENVI or GeoTIFF) and one .sen per band");
-    tool.add_options()("bits,b", cli::po::value<int>()->default_value(8),
+    using cli::po::value;
+    tool.add_options()("bits,b", value<int>()->default_value(8)->value_name("BITS"),
                        "bits per count: 8, 12 or 16")(
         "float", "write band radiance unquantised (float TIFF) instead of counts")(
-        "shot-noise", cli::po::value<double>(), "photo-electrons per count E (adds shot noise)")(
-        "read-noise", cli::po::value<double>(), "read noise standard deviation, counts")(
-        "psf-sigma", cli::po::value<double>(), "Gaussian point-spread function, sigma in pixels")(
-        "psf", cli::po::value<std::string>(), "point-spread function kernel file")(
+        "shot-noise", value<double>()->value_name("E"),
+        "photo-electrons per count E (adds shot noise)")(
+        "read-noise", value<double>()->value_name("SIGMA"),
+        "read noise standard deviation, counts")(
+        "psf-sigma", value<double>()->value_name("PX"),
+        "Gaussian point-spread function, sigma in pixels")(
+        "psf", value<std::string>()->value_name("FILE"), "point-spread function kernel file")(
+        "preview", value<std::string>()->value_name("PNG"),
+        "also write a true-colour 8-bit PNG preview (2-98 % stretch)")(
         "calibrate", "solve gain and bias per band from two gray cards; -o names a directory")(
-        "card1", cli::po::value<std::string>(), "card 1 pixel box ROW0,COL0,ROW1,COL1")(
-        "card2", cli::po::value<std::string>(), "card 2 pixel box ROW0,COL0,ROW1,COL1")(
-        "target1", cli::po::value<std::string>(), "card 1 target counts: C or C1,C2,...")(
-        "target2", cli::po::value<std::string>(), "card 2 target counts: C or C1,C2,...");
+        "card1", value<std::string>()->value_name("BOX"), "card 1 pixel box ROW0,COL0,ROW1,COL1")(
+        "card2", value<std::string>()->value_name("BOX"), "card 2 pixel box ROW0,COL0,ROW1,COL1")(
+        "target1", value<std::string>()->value_name("COUNTS"),
+        "card 1 target counts: C or C1,C2,...")(
+        "target2", value<std::string>()->value_name("COUNTS"),
+        "card 2 target counts: C or C1,C2,...");
+    tool.add_creation_option();
     // Default 0, as --noise-seed had: an image with noise and no seed stays the same.
     tool.add_seed_option("seed of the noise (default 0)", 0);
     // The former name of --seed, still accepted (sensorize(1), DEPRECATED OPTIONS).

@@ -3,6 +3,7 @@
 
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "image/image.hpp"
 #include "trace/shadow_history.hpp"
 #include "trace/trace_job.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "truth", "tmp", "no-adjacency",
-                          "adjacency-radius"})
+                          "adjacency-radius", "co"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
         "of --shadow-history; required");
     tool.add_seed_option();
     tool.add_threads_option();
+    tool.add_creation_option();
     tool.add_options()("sampling",
                        cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
                        "hemisphere sampling: dirsig, golfball or montecarlo")(
@@ -131,10 +133,15 @@ int main(int argc, char** argv) {
     // -o is read as given (not cli::output_path) so that the jobs name what is missing:
     // a radiance cube, or the .shd of --shadow-history.
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
-        if (vm.count("shadow-history"))
+        if (vm.count("shadow-history")) {
             trace::run_shadow_history(shadow_job(vm), ctx);
-        else
-            trace::run_trace(trace_job(vm), ctx);
+            return 0;
+        }
+        trace::TraceJob job = trace_job(vm);
+        job.write_options = {cli::creation_options(vm), ctx.command()};
+        if (!job.output_path.empty())
+            sigchain::image::check_write_options(job.output_path, job.write_options);
+        trace::run_trace(job, ctx);
         return 0;
     });
 }

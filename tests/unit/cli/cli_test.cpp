@@ -153,3 +153,17 @@ TEST(Cli, SharedOptionsMeanTheSameEverywhere) {
     EXPECT_EQ(missing.status, 2);
     EXPECT_NE(missing.err.find("-o FILE is required"), std::string::npos);
 }
+
+// Outputs record this command (cube(5), PROVENANCE): paths to base names, options that
+// cannot change an output left out, so that the checksum script's two runs (other
+// folders, --threads 1 and 2) record the same text.
+TEST(Cli, ProvenanceCommandDropsPathsAndThreads) {
+    const char* a[] = {"/x/build/bin/sensorize", "-q", "--threads", "2", "/tmp/t1/cube.img",
+                       "../data/red.sen", "--co", "COMPRESS=DEFLATE", "--psf=/k/a.psf",
+                       "--progress", "-v", "--threads=1", "-o", "/tmp/t1/out.tif"};
+    EXPECT_EQ(cli::provenance_command(14, a),
+              "sensorize cube.img red.sen --co COMPRESS=DEFLATE --psf=a.psf -o out.tif");
+    const char* b[] = {"sensorize", "--threads", "1", "/tmp/t2/cube.img", "red.sen", "--co",
+                       "COMPRESS=DEFLATE", "--psf=a.psf", "-o", "out.tif"};
+    EXPECT_EQ(cli::provenance_command(10, b), cli::provenance_command(14, a));
+}

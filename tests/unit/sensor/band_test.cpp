@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -116,4 +117,47 @@ TEST(Quantise, RoundsAndClipsAtEveryBitDepthEdge) {
     EXPECT_EQ(v16, (std::vector<float>{65535, 65535, 65535}));
     EXPECT_EQ(c16.high, 2u);
     EXPECT_EQ(max_count(12), 4095.0);
+}
+
+// A triangle response peaking at 0.55 um with half-width 0.04 um at its base, sampled
+// every 0.01 um: linear between samples, so the interpolated half-maximum crossings are
+// exact (0.53 and 0.57 um, FWHM = the half-width 0.04 um) and, symmetric on a uniform
+// grid, its response-weighted mean is the peak.
+TEST(BandShape, TriangleByHand) {
+    std::vector<double> wl, r;
+    for (int i = 0; i <= 10; ++i) {
+        wl.push_back(0.50 + 0.01 * i);
+        r.push_back(std::max(0.0, 1 - std::abs(wl.back() - 0.55) / 0.04));
+    }
+    const auto widths = sample_widths_um(wl, static_cast<int>(wl.size()));
+    EXPECT_NEAR(centre_wavelength_um(wl, r, widths), 0.55, 1e-12);  // rounding of 0.01 * i only
+    EXPECT_NEAR(fwhm_um(wl, r), 0.04, 1e-12);
+    // Descending wavelengths describe the same band.
+    std::reverse(wl.begin(), wl.end());
+    std::reverse(r.begin(), r.end());
+    EXPECT_NEAR(fwhm_um(wl, r), 0.04, 1e-12);
+}
+
+// A Gaussian of sigma 0.02 um sampled every 0.001 um: FWHM = 2 sqrt(2 ln 2) sigma
+// = 0.0470964 um; linear interpolation of a curve this finely sampled errs by
+// well under 1e-5 um (curvature * spacing^2 / 8 relative to the slope).
+TEST(BandShape, GaussianFwhm) {
+    std::vector<double> wl, r;
+    for (int i = 0; i <= 200; ++i) {
+        wl.push_back(0.60 + 0.001 * i);
+        const double z = (wl.back() - 0.70) / 0.02;
+        r.push_back(std::exp(-0.5 * z * z));
+    }
+    EXPECT_NEAR(fwhm_um(wl, r), 2 * std::sqrt(2 * std::log(2.0)) * 0.02, 1e-5);
+    const auto widths = sample_widths_um(wl, static_cast<int>(wl.size()));
+    EXPECT_NEAR(centre_wavelength_um(wl, r, widths), 0.70, 1e-9);
+}
+
+// A flat response of 4 samples 0.1 um apart fills 4 bins of 0.1 um (sample_widths_um).
+TEST(BandShape, FlatResponseSpansItsBins) {
+    EXPECT_NEAR(fwhm_um({1.0, 1.1, 1.2, 1.3}, {1, 1, 1, 1}), 0.4, 1e-12);
+    EXPECT_TRUE(std::isnan(fwhm_um({1.0}, {1})));
+    EXPECT_TRUE(std::isnan(fwhm_um({1.0, 1.1}, {0, 0})));
+    EXPECT_EQ(centre_wavelength_um({0.6}, {0.5}, {1.0}), 0.6);
+    EXPECT_TRUE(std::isnan(centre_wavelength_um({1.0, 1.1}, {0, 0}, {0.1, 0.1})));
 }

@@ -1,0 +1,225 @@
+// Writing rasters through GDAL: radiance cubes (ENVI .img + .hdr, GeoTIFF) and the
+// GeoTIFF counts and float images, with per-band names, wavelengths, FWHM and the
+// provenance items of cube(5).
+#include <cpl_error.h>
+#include <cpl_string.h>
+#include <gdal_priv.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "geo/crs.hpp"
+#include "image/image.hpp"
+#include "image/internal.hpp"
+#include "sigchain/version.hpp"
+
+namespace sigchain::image {
+
+using geo::gdal_init;
+using geo::gdal_message;
+
+namespace {
+
+// Removes the listed files unless released (a failed write leaves nothing behind).
+struct TempFiles {
+    std::vector<std::string> files;
+    ~TempFiles() {
+        for (const auto& f : files) std::remove(f.c_str());
+    }
+};
+
+bool all_finite(const std::vector<double>& values) {
+    return !values.empty() &&
+           std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+// ENVI's list form: "{a, b, c}".
+std::string number_list(const std::vector<double>& values) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + format_number(values[i]);
+    return s + "}";
+}
+
+// Errors name the output file only: they concern the image in memory, not a line.
+void check_image(const std::string& path, const Image& image) {
+    if (image.channels < 1 || image.rows < 1 || image.columns < 1)
+        throw DataError({path, 0}, "cannot write an empty image");
+    if (image.data.size() != static_cast<std::size_t>(image.channels) * image.plane_size())
+        throw DataError({path, 0}, "image data size does not match its dimensions");
+    for (const auto* list : {&image.wavelength_um, &image.fwhm_um})
+        if (!list->empty() && list->size() != static_cast<std::size_t>(image.channels))
+            throw DataError({path, 0}, "the wavelength or FWHM list does not match the band count");
+}
+
+// "sigchain X.Y.Z: COMMAND" (cube(5), PROVENANCE); braces would end an ENVI field.
+std::string provenance(const WriteOptions& options) {
+    std::string s = std::string("sigchain ") + kVersion;
+    if (!options.command.empty()) s += ": " + options.command;
+    for (char& c : s)
+        if (c == '{')
+            c = '(';
+        else if (c == '}')
+            c = ')';
+    return s;
+}
+
+void set_band_metadata(GDALDataset& ds, const Image& image) {
+    for (int c = 0; c < image.channels; ++c) {
+        GDALRasterBand* band = ds.GetRasterBand(c + 1);
+        if (static_cast<std::size_t>(c) < image.channel_names.size())
+            band->SetDescription(image.channel_names[c].c_str());
+        if (!image.units.empty()) band->SetUnitType(image.units.c_str());
+        // A band whose wavelength or width is unknown (NaN) goes without the item.
+        if (!image.wavelength_um.empty() && std::isfinite(image.wavelength_um[c])) {
+            band->SetMetadataItem("wavelength", format_number(image.wavelength_um[c]).c_str());
+            band->SetMetadataItem("wavelength_units", "Micrometers");
+        }
+        if (!image.fwhm_um.empty() && std::isfinite(image.fwhm_um[c]))
+            band->SetMetadataItem("fwhm", format_number(image.fwhm_um[c]).c_str());
+    }
+}
+
+void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
+                  const WriteOptions& options) {
+    set_band_metadata(ds, image);
+    if (format == CubeFormat::GeoTiff) {
+        if (!image.units.empty()) ds.SetMetadataItem("UNITS", image.units.c_str());
+        ds.SetMetadataItem("SIGCHAIN_VERSION", kVersion);
+        if (!options.command.empty())
+            ds.SetMetadataItem("SIGCHAIN_COMMAND", options.command.c_str());
+        return;
+    }
+    // GDAL writes the dataset description (by default the temporary file name) as the
+    // header's description: the provenance keeps reruns identical.
+    ds.SetDescription(provenance(options).c_str());
+    if (all_finite(image.wavelength_um)) {
+        ds.SetMetadataItem("wavelength", number_list(image.wavelength_um).c_str(), "ENVI");
+        ds.SetMetadataItem("wavelength_units", "Micrometers", "ENVI");
+    }
+    if (all_finite(image.fwhm_um))
+        ds.SetMetadataItem("fwhm", number_list(image.fwhm_um).c_str(), "ENVI");
+    if (!image.units.empty()) ds.SetMetadataItem("data_units", image.units.c_str(), "ENVI");
+}
+
+// sigchain's creation options, then the user's (--co), which override them.
+CPLStringList creation_options(const std::string& path, CubeFormat format,
+                               const WriteOptions& options) {
+    CPLStringList list;
+    list.SetNameValue("INTERLEAVE", format == CubeFormat::Envi ? "BSQ" : "BAND");
+    if (format == CubeFormat::GeoTiff) list.SetNameValue("PHOTOMETRIC", "MINISBLACK");
+    if (format != CubeFormat::GeoTiff && !options.creation_options.empty())
+        throw UsageError(path + ": --co applies to GeoTIFF (.tif) outputs only");
+    check_write_options(path, options);
+    for (const std::string& kv : options.creation_options) {
+        const auto eq = kv.find('=');
+        list.SetNameValue(kv.substr(0, eq).c_str(), kv.substr(eq + 1).c_str());
+    }
+    return list;
+}
+
+// FILE.tmp.PID; ENVI names its header by replacing the extension, so its data file is
+// FILE.tmp.PID.img (header FILE.tmp.PID.hdr).
+std::string temp_for(const std::string& target, CubeFormat format) {
+    if (format != CubeFormat::Envi) return detail::temp_name(target);
+    return std::filesystem::path(target).replace_extension().string() + ".tmp." +
+           std::to_string(::getpid()) + ".img";
+}
+
+void write_planes(GDALDataset& ds, const Image& image, const std::string& path) {
+    for (int c = 0; c < image.channels; ++c) {
+        float* plane = const_cast<float*>(image.data.data() + c * image.plane_size());
+        if (ds.GetRasterBand(c + 1)->RasterIO(
+                GF_Write, 0, 0, static_cast<int>(image.columns), static_cast<int>(image.rows),
+                plane, static_cast<int>(image.columns), static_cast<int>(image.rows), GDT_Float32,
+                0, 0, nullptr) != CE_None)
+            throw IoError(path + ": write error: " + gdal_message());
+    }
+}
+
+// Renames the written files into place: the data file to `target`, an ENVI header
+// beside it; any other side file is removed.
+void rename_outputs(TempFiles& temps, const std::string& temp, const std::string& target) {
+    for (const std::string& f : temps.files) {
+        std::string final_name = target;
+        if (f != temp) {
+            if (file_extension(f) != "hdr") {
+                std::remove(f.c_str());
+                continue;
+            }
+            final_name = std::filesystem::path(target).replace_extension(".hdr").string();
+        }
+        if (std::rename(f.c_str(), final_name.c_str()) != 0)
+            throw IoError(final_name + ": cannot rename from " + f);
+    }
+    temps.files.clear();
+}
+
+// Writes `image` with GDAL as `type` samples, atomically (cube(5)).
+void write_gdal(const std::string& path, const Image& image, GDALDataType type, CubeFormat format,
+                const WriteOptions& options) {
+    gdal_init();
+    check_image(path, image);
+    const CPLStringList co = creation_options(path, format, options);
+    std::string target = path;
+    if (file_extension(path) == "hdr")
+        target = std::filesystem::path(path).replace_extension(".img").string();
+    const char* driver_name = format == CubeFormat::GeoTiff ? "GTiff" : "ENVI";
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
+    if (!driver) throw IoError(path + ": GDAL has no " + driver_name + " driver");
+    const std::string temp = temp_for(target, format);
+    TempFiles temps;
+    std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(image.columns),
+                                                   static_cast<int>(image.rows), image.channels,
+                                                   type, co.List()));
+    if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
+    if (char** list = ds->GetFileList()) {
+        for (char** f = list; *f; ++f) temps.files.emplace_back(*f);
+        CSLDestroy(list);
+    }
+    if (temps.files.empty()) temps.files.push_back(temp);
+    set_metadata(*ds, image, format, options);
+    write_planes(*ds, image, path);
+    CPLErrorReset();
+    ds.reset();  // GDALClose: flushes data and writes the ENVI header
+    if (CPLGetLastErrorType() >= CE_Failure)
+        throw IoError(path + ": write error: " + gdal_message());
+    rename_outputs(temps, temp, target);
+}
+
+}  // namespace
+
+void write_cube(const std::string& path, const Image& cube, CubeFormat format,
+                const WriteOptions& options) {
+    write_gdal(path, cube, GDT_Float32, format, options);
+}
+
+namespace detail {
+
+void validate_gtiff_options(const std::string& path, const std::vector<std::string>& options) {
+    gdal_init();
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+    if (!driver) throw IoError(path + ": GDAL has no GTiff driver");
+    CPLStringList list;
+    for (const std::string& kv : options) {
+        const auto eq = kv.find('=');
+        list.SetNameValue(kv.substr(0, eq).c_str(), kv.substr(eq + 1).c_str());
+    }
+    CPLErrorReset();
+    if (!GDALValidateCreationOptions(driver, list.List()))
+        throw UsageError(path + ": invalid creation option: " + gdal_message());
+}
+
+void write_gtiff(const std::string& path, const Image& image, int bits,
+                 const WriteOptions& options) {
+    const GDALDataType type = bits == 8 ? GDT_Byte : bits <= 16 ? GDT_UInt16 : GDT_Float32;
+    write_gdal(path, image, type, CubeFormat::GeoTiff, options);
+}
+
+}  // namespace detail
+}  // namespace sigchain::image

@@ -1,0 +1,69 @@
+// True-colour previews of multi-band images (sensorize(1), --preview).
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "image/image.hpp"
+
+namespace sigchain::image {
+namespace {
+
+// Visible light, um: the bands a true-colour preview may use.
+constexpr double kVisibleMinUm = 0.38, kVisibleMaxUm = 0.78;
+
+// The value at `fraction` of the sorted finite values (nearest rank); 0 if none.
+double percentile(std::vector<float> values, double fraction) {
+    values.erase(
+        std::remove_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); }),
+        values.end());
+    if (values.empty()) return 0;
+    const auto k = static_cast<std::size_t>(std::lround(fraction * (values.size() - 1)));
+    std::nth_element(values.begin(), values.begin() + k, values.end());
+    return values[k];
+}
+
+}  // namespace
+
+std::vector<int> true_colour_bands(const Image& image, const std::string& path) {
+    std::vector<int> visible;
+    for (int c = 0; c < static_cast<int>(image.wavelength_um.size()); ++c)
+        if (image.wavelength_um[c] >= kVisibleMinUm && image.wavelength_um[c] <= kVisibleMaxUm)
+            visible.push_back(c);
+    if (visible.size() < 3)
+        throw DataError({path, 0},
+                        "a true-colour preview needs 3 bands with centres in 0.38-0.78 "
+                        "um; the image has " +
+                            std::to_string(visible.size()));
+    const auto by_wavelength = [&](int a, int b) {
+        return image.wavelength_um[a] < image.wavelength_um[b];
+    };
+    std::sort(visible.begin(), visible.end(), by_wavelength);
+    const int blue = visible.front(), red = visible.back();
+    // Green: of the bands between, the one nearest 0.55 um (the eye's peak sensitivity).
+    int green = visible[1];
+    for (std::size_t i = 1; i + 1 < visible.size(); ++i)
+        if (std::abs(image.wavelength_um[visible[i]] - 0.55) <
+            std::abs(image.wavelength_um[green] - 0.55))
+            green = visible[i];
+    return {red, green, blue};
+}
+
+Image true_colour_preview(const Image& image, const std::string& path) {
+    const std::vector<int> bands = true_colour_bands(image, path);
+    Image rgb(image.rows, image.columns, 3);
+    rgb.channel_names = {"R", "G", "B"};
+    const std::size_t plane = image.plane_size();
+    for (int o = 0; o < 3; ++o) {
+        const auto first = image.data.begin() + bands[o] * plane;
+        const std::vector<float> values(first, first + plane);
+        const double lo = percentile(values, 0.02), hi = percentile(values, 0.98);
+        for (std::size_t p = 0; p < plane; ++p) {
+            const double v = hi > lo ? (values[p] - lo) / (hi - lo) * 255 : 0;
+            rgb.data[o * plane + p] =
+                std::isfinite(v) ? static_cast<float>(std::lround(std::clamp(v, 0.0, 255.0))) : 0;
+        }
+    }
+    return rgb;
+}
+
+}  // namespace sigchain::image

@@ -1,0 +1,44 @@
+// Tests for true-colour previews (lib/image/preview.cpp): band choice and stretch.
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "image/image.hpp"
+
+using namespace sigchain;
+using namespace sigchain::image;
+
+namespace {
+
+// 1 row of 101 pixels per band: band c holds 0, 1, ..., 100 times (c + 1).
+Image ramp(std::vector<double> wavelength_um) {
+    Image im(1, 101, static_cast<int>(wavelength_um.size()));
+    for (int c = 0; c < im.channels; ++c)
+        for (long x = 0; x < 101; ++x) im.at(c, 0, x) = static_cast<float>(x * (c + 1));
+    im.wavelength_um = std::move(wavelength_um);
+    return im;
+}
+
+}  // namespace
+
+TEST(Preview, RedIsTheLongestVisibleBandBlueTheShortest) {
+    // Given in .sen order red, NIR, blue, green, violet-ish green: NIR (0.86) is not visible.
+    const Image im = ramp({0.66, 0.86, 0.48, 0.56, 0.52});
+    EXPECT_EQ(true_colour_bands(im, "p.png"), (std::vector<int>{0, 3, 2}));
+    EXPECT_THROW(true_colour_bands(ramp({0.48, 0.86, 1.6}), "p.png"), DataError);
+    EXPECT_THROW(true_colour_bands(Image(1, 1, 3), "p.png"), DataError);  // no wavelengths
+}
+
+// Over 0..100 the 2nd and 98th percentiles (nearest rank of 101 values) are 2 and 98:
+// value v maps to (v - 2) / 96 * 255, rounded, clipped; so 2 -> 0, 50 -> 128 (127.5
+// rounded half away from zero), 98 -> 255, and every band, whatever its scale, alike.
+TEST(Preview, TwoToNinetyEightPercentStretchPerBand) {
+    const Image rgb = true_colour_preview(ramp({0.45, 0.55, 0.65}), "p.png");
+    ASSERT_EQ(rgb.channels, 3);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(rgb.at(c, 0, 0), 0);
+        EXPECT_EQ(rgb.at(c, 0, 2), 0);
+        EXPECT_EQ(rgb.at(c, 0, 50), 128);
+        EXPECT_EQ(rgb.at(c, 0, 98), 255);
+        EXPECT_EQ(rgb.at(c, 0, 100), 255);
+    }
+}
