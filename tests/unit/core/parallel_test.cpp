@@ -83,7 +83,9 @@ TEST(Parallel, ProgressMovesForwardAndEndsComplete) {
         opt.threads = threads;
         opt.progress = [&](long done, long total) {
             EXPECT_EQ(total, 500);
-            if (!seen.empty()) EXPECT_GT(done, seen.back());
+            if (!seen.empty()) {
+                EXPECT_GT(done, seen.back());
+            }
             seen.push_back(done);
         };
         parallel_for(500, opt, [](long, unsigned) {});
