@@ -13,30 +13,30 @@ namespace {
 constexpr long kGrid = 16;     // sensor positions per side
 constexpr long kPattern = 64;  // hemisphere rays per point
 
-// The largest reflectance over the spectrum of the facet hit (curve of its land use,
-// fall-off not applied: an upper bound, as the estimate should be).
-double largest_reflectance(const TraceContext& c, const scene::Hit& hit) {
-    const auto& a = c.in.scene->attributes(hit);
-    const auto& m = facet_material(*c.in.materials, a, c.in.scene->origin(hit));
-    const auto& eps = m.emissivity[a.texture_curve];
+// The largest reflectance over the spectrum of curve `curve` of `m` (fall-off not
+// applied: an upper bound, as the estimate should be).
+double largest_reflectance(const radiometry::MaterialOptics& m, std::size_t curve) {
     double rho = 0;
-    for (double e : eps) rho = std::max(rho, 1 - e);
+    for (double e : m.emissivity[curve]) rho = std::max(rho, 1 - e);
     return rho;
 }
 
 // x at one point p (facet normal n facing the sensor): the pattern's mean of the
-// reflectance of the facets its rays hit (0 for a ray that leaves the scene).
-double point_albedo(const TraceContext& c, Tracer& tracer, const std::vector<std::array<double, 3>>& pattern,
-                    const geo::Vec3& p, const geo::Vec3& n) {
+// reflectance of the facets its rays hit (0 for a ray that leaves the scene or meets
+// the black back of a single-sided facet).
+double point_albedo(const TraceContext& c, Tracer& tracer,
+                    const std::vector<std::array<double, 3>>& pattern, const geo::Vec3& p,
+                    const geo::Vec3& n) {
     const FacetFrame f(n);
     double sum = 0;
     for (const auto& d : pattern) {
         const geo::Vec3 dir = f.to_world({d[0], d[1], d[2]});
         auto hit = tracer.first_hit(p, dir);
         if (!hit) continue;
-        const auto* m = c.in.materials->find(c.in.scene->attributes(*hit).material_id);
-        if (m && back_is_black(*m, hit->normal, dir)) continue;
-        sum += largest_reflectance(c, *hit);
+        const auto& a = c.in.scene->attributes(*hit);
+        const auto& m = facet_material(*c.in.materials, a, c.in.scene->origin(*hit));
+        if (back_is_black(m, hit->normal, dir)) continue;
+        sum += largest_reflectance(m, a.texture_curve);
     }
     return sum / static_cast<double>(pattern.size());
 }

@@ -23,23 +23,12 @@ public:
     }
 
     // Diffuse part (1 - s) x the mean over the pattern; specular part s x
-    // L_i(mirror), for every lobe shape. Returns the escaping fraction of the pattern.
+    // L_i(mirror), for every lobe shape: the split scheme below with both parts in
+    // `acc` (a material without a split has w_d = 1 - s and w_s = s). Returns the
+    // escaping fraction of the pattern.
     double add_hemisphere(Tracer& tracer, const MaterialOptics& m, const FacetFrame& f,
                           const Vec3& p, const Vec3& wo_l, double* acc) override {
-        Arena& arena = tracer.arena();
-        ArenaScope scope(arena);
-        double* li = arena.take();
-        const std::size_t n = tracer.context().n;
-        double s = specularity_of(m);
-        double w = (1 - s) / static_cast<double>(m_pattern.size());
-        long escaped = 0;
-        for (const Vec3& d : m_pattern) {
-            if (tracer.incoming(p, f.to_world(d), li)) ++escaped;
-            const double wf = w * m.fall_off_cos(d[2]);  // incoming fall-off (material.hpp)
-            for (std::size_t k = 0; k < n; ++k) acc[k] += wf * li[k];
-        }
-        if (s > 0 && m.brdf.shape() != LobeShape::None) tracer.add_mirror(s * m.fall_off_cos(wo_l[2]), f, p, wo_l, acc);
-        return static_cast<double>(escaped) / static_cast<double>(m_pattern.size());
+        return add_hemisphere_split(tracer, m, m.split_weights(wo_l[2]), f, p, wo_l, acc, acc);
     }
 
     // DIRSIG 3 (White (1996), sections 3.6.5, 3.4 secondary-ray logic): the sun sample of the

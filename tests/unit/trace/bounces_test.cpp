@@ -17,8 +17,6 @@
 namespace sigchain::trace {
 namespace {
 
-using test::Ortho;
-using geo::Vec3;
 
 const std::vector<double> kWl = {8.0, 10.0, 12.0};
 constexpr double kT = 300;
@@ -30,32 +28,14 @@ struct FurnaceResult {
 // The box (-1..1)^3 with its floor, walls of reflectance a at kT; the sun down, a
 // black sky, no background; a 4 x 4 camera inside looking down at the floor.
 FurnaceResult furnace(double a, int bounces, Sampling sampling, long spp) {
-    scene::Scene s = test::closed_box(1);
     auto mats =
         radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, a, kWl.size())});
     auto atm = radiometry::Atmosphere::from_rads(
         {radiometry::uniform_rad(kWl, 120, 0, 0.0, 0.0, 0.9, 0.001)}, {"black.rad"});
-    // Pixels off the box's symmetry lines: from a symmetric point, golf-ball rays
-    // would meet the box's edges exactly, where no face is in front of the next ray.
-    Ortho cam(4, 4, 0.2, -0.3137, 0.2791, {0, 0, -1}, 0.5);
-    Temperatures temps;
-    for (int f = 1; f <= 6; ++f) temps["1-1-" + std::to_string(f)] = kT;
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
-    in.temperatures = &temps;
-    RenderOptions o;
-    o.sampling = sampling;
-    o.bounces = bounces;
-    o.samples_per_pixel = spp;
-    o.hemisphere_samples = 16;
-    o.background = BackgroundChoice::None;
-    RenderResult res = render(in, o);
+    const image::Image img = test::render_closed_box(mats, atm, kT, bounces, sampling, spp);
     std::vector<double> l;
     for (long r = 0; r < 4; ++r)
-        for (long c = 0; c < 4; ++c) l.push_back((res.radiance.at(1, r, c) - 0.001) / 0.9);
+        for (long c = 0; c < 4; ++c) l.push_back((img.at(1, r, c) - 0.001) / 0.9);
     FurnaceResult out;
     for (double v : l) out.mean += v / static_cast<double>(l.size());
     double var = 0;

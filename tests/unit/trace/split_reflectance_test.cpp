@@ -257,26 +257,10 @@ TEST(SplitRender, ADepthColumnOfMinus999RendersByteForByteAsTheConeWithoutDepths
 // (the same from every direction) and emit 1 - a, N bounces give B(T)(1 - a^(N+1)). ---
 
 double cavity(const MaterialLibrary& mats, int bounces, Sampling sampling, long spp) {
-    const scene::Scene s = test::closed_box(1);
     const std::vector<double> wl{8.0, 10.0, 12.0};
     auto atm = radiometry::Atmosphere::from_rads(
         {radiometry::uniform_rad(wl, 120, 0, 0.0, 0.0, 1.0, 0.0)}, {"black.rad"});
-    Ortho cam(4, 4, 0.2, -0.3137, 0.2791, {0, 0, -1}, 0.5);
-    Temperatures temps;
-    for (int f = 1; f <= 6; ++f) temps["1-1-" + std::to_string(f)] = 300;
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
-    in.temperatures = &temps;
-    RenderOptions o;
-    o.sampling = sampling;
-    o.bounces = bounces;
-    o.samples_per_pixel = spp;
-    o.hemisphere_samples = 16;
-    o.background = BackgroundChoice::None;
-    const image::Image img = render(in, o).radiance;
+    const image::Image img = test::render_closed_box(mats, atm, 300, bounces, sampling, spp);
     double mean = 0;
     for (long r = 0; r < 4; ++r)
         for (long c = 0; c < 4; ++c) mean += img.at(1, r, c) / 16.0;

@@ -109,6 +109,32 @@ inline scene::Scene closed_box(long material) {
     return single(m.data);
 }
 
+// A render from inside closed_box(1) with `mats` and `atm`, every wall at `t_k`: a
+// 4 x 4 camera looking down at the floor from off the box's symmetry lines (from a
+// symmetric point, golf-ball rays would meet the box's edges exactly, where no face is
+// in front of the next ray), 16 hemisphere rays, no background.
+inline image::Image render_closed_box(const radiometry::MaterialLibrary& mats,
+                                      const radiometry::Atmosphere& atm, double t_k,
+                                      int bounces, Sampling sampling, long spp) {
+    const scene::Scene s = closed_box(1);
+    Ortho cam(4, 4, 0.2, -0.3137, 0.2791, {0, 0, -1}, 0.5);
+    Temperatures temps;
+    for (int f = 1; f <= 6; ++f) temps["1-1-" + std::to_string(f)] = t_k;
+    RenderInputs in;
+    in.scene = &s;
+    in.materials = &mats;
+    in.atmosphere = &atm;
+    in.sensor = &cam;
+    in.temperatures = &temps;
+    RenderOptions o;
+    o.sampling = sampling;
+    o.bounces = bounces;
+    o.samples_per_pixel = spp;
+    o.hemisphere_samples = 16;
+    o.background = BackgroundChoice::None;
+    return render(in, o).radiance;
+}
+
 // Mean of the first channel of a render over its pixels and the standard error of
 // that mean, estimated from the pixels themselves (independent per-pixel estimates).
 struct MeanError {
