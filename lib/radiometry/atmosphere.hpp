@@ -96,12 +96,11 @@ public:
     // tabulated view angles and clamped at the ends like path(); `out` has grid().size()
     // (zeros without coupling terms).
     void diffuse_transmittance_up(double view_angle_deg, std::span<double> out) const;
-    // The whole atmosphere's transmittance from the ground to space along a ray of
-    // zenith cosine `mu` (> 0), per grid sample, into `out`: tau1 scaled from the sun's
-    // zenith to mu by Beer's law in a plane-parallel atmosphere, tau1^(mu_sun / mu).
-    // False (and `out` untouched) when tau1 is not known: the sun below the horizon, or
-    // a sample with Es = 0.
-    bool column_transmittance(double mu, std::span<double> out) const;
+    // The whole atmosphere's vertical optical depth per grid sample, from tau1 by
+    // Beer's law in a plane-parallel atmosphere: delta = -cos(z_sun) ln tau1, so that a
+    // ray of zenith cosine mu crosses a column of transmittance exp(-delta / mu). Empty
+    // when tau1 is not known: the sun below the horizon, or a sample with Es = 0.
+    std::vector<double> column_optical_depth() const;
     // This atmosphere with `radiance` (W cm-2 sr-1 um-1 per grid sample) added to the
     // scattered radiance L_ds of every sky cell: an isotropic increment, which raises
     // the horizontal sky irradiance by pi * radiance. Without a sky, an unchanged copy.

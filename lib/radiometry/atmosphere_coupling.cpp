@@ -1,6 +1,6 @@
 // The atmosphere's coupling with the ground (atmosphere.hpp; rad(5) COUPLING): the
 // terms of every band merged on the grid, the ground irradiance they give, the sky
-// with an isotropic increment, and the column transmittance along any zenith.
+// with an isotropic increment, and the column's vertical optical depth.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -109,17 +109,17 @@ Atmosphere Atmosphere::with_isotropic_sky(std::span<const double> radiance) cons
     return a;
 }
 
-bool Atmosphere::column_transmittance(double mu, std::span<double> out) const {
+std::vector<double> Atmosphere::column_optical_depth() const {
     const Data& d = *m_data;
     const double mu_sun = std::cos(d.sun_zenith_deg * std::numbers::pi / 180);
-    if (!(mu_sun > 0) || !(mu > 0)) return false;
-    for (std::size_t k = 0; k < out.size(); ++k)
-        if (!(d.es[k] > 0)) return false;
-    for (std::size_t k = 0; k < out.size(); ++k) {
+    if (!(mu_sun > 0)) return {};
+    std::vector<double> depth;
+    for (std::size_t k = 0; k < d.es.size(); ++k) {
+        if (!(d.es[k] > 0)) return {};
         const double tau1 = std::clamp(d.es_tau1[k] / d.es[k], 0.0, 1.0);
-        out[k] = std::pow(tau1, mu_sun / mu);  // Beer: exp(-delta / mu), delta = -mu_sun ln tau1
+        depth.push_back(-mu_sun * std::log(tau1));
     }
-    return true;
+    return depth;
 }
 
 }  // namespace sigchain::radiometry

@@ -59,6 +59,9 @@ struct TraceContext {
     int bounces = 1;                 // opt.bounces, kAutoBounces resolved by the estimate
     BounceEstimate bounce_estimate;  // of the scene (bounce_estimate.hpp)
     std::optional<radiometry::SkyInterpolator> sky;  // the sky between the .rad's cells
+    // The column's vertical optical depth per sample (Atmosphere::column_optical_depth;
+    // empty when unknown), for the effective sky (world.hpp).
+    std::vector<double> column_depth;
     Background background;                           // below the horizon (world.hpp)
 };
 

@@ -132,13 +132,14 @@ void effective_sky(const TraceContext& c, const Sensor& sensor, const Vec3& dir,
     double* path = lus;  // L_us (+ L_ue): the air's path radiance below the sensor
     if (c.emission)
         for (std::size_t k = 0; k < n; ++k) path[k] += lue[k];
-    double* column = lue;  // the whole column's transmittance T along dir
-    const bool bounded = c.in.atmosphere->column_transmittance(dir[2], {column, n});
+    const bool bounded = !c.column_depth.empty();
+    const double air_masses = 1 / std::max(dir[2], 1e-6);  // along dir, per vertical column
     for (std::size_t k = 0; k < n; ++k) {
         // No more than the part of L0 made below the sensor, for a source uniform in
-        // optical depth: L0 (1 - tau2) / (1 - T) (trace(1) RADIOMETRY).
-        if (bounded && column[k] < 1)
-            path[k] = std::min(path[k], out[k] * (1 - tau2[k]) / (1 - column[k]));
+        // optical depth: L0 (1 - tau2) / (1 - T), T = exp(-delta / mu) the whole
+        // column's transmittance along dir (trace(1) RADIOMETRY).
+        const double t = bounded ? std::exp(-c.column_depth[k] * air_masses) : 1.0;
+        if (t < 1) path[k] = std::min(path[k], out[k] * (1 - tau2[k]) / (1 - t));
         const double above = tau2[k] > 0 ? std::max(0.0, out[k] - path[k]) / tau2[k] : out[k];
         out[k] = std::min(out[k], above);
     }
