@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geom/camera.hpp"
+#include "geom/view_angle.hpp"
 #include "image/image.hpp"
 #include "io/adv.hpp"
 #include "io/mat.hpp"
@@ -60,7 +61,10 @@ void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
     auto sample = [&](double row, double column) {
         geo::Vec3 origin{}, direction{};
         camera.ray(row, column, origin, direction);
-        const double va = camera.view_angle_deg(direction);
+        // Above the horizon a ray takes the path terms of its mirrored line of sight,
+        // and within 1 deg of the horizon those of 89 deg (geom::world_view_angle_deg,
+        // as find_min_max_view_angle makes the tables for the world beyond the scene).
+        const double va = geom::world_view_angle_deg(camera.view_angle_deg(direction));
         lo = std::min(lo, va);
         hi = std::max(hi, va);
     };
