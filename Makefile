@@ -30,8 +30,11 @@ install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # The main job: the Olinda scene against the real Landsat-7 image, then the sample
-# files of White (1996) and the training scene (scripts/demo).
-demo: build
+# files of White (1996) and the training scene (scripts/demo), ending with a summary.
+# Builds only the tools and man pages it needs (the tests with `make test`).
+demo: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) >/dev/null
+	cmake --build $(BUILD) -j $(JOBS) --target tools
 	@scripts/demo $(BUILD)
 
 fuzz: deps
@@ -41,7 +44,8 @@ bench: build
 	@for b in $(BUILD)/bench/bench_*; do [ -x "$$b" ] && "$$b"; done
 
 # Speed versus accuracy of trace's sampling strategies on the demo scenes: chart,
-# table and error map into docs/chart/ (a few minutes; not part of `make test`).
+# table and error map into BUILD/chart/ (CHART_OUT=docs/chart refreshes the committed
+# copy; a few minutes; not part of `make test`).
 chart: build
 	@scripts/chart $(BUILD)
 

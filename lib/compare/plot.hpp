@@ -1,4 +1,5 @@
-// PNG histograms for compare --plot: both images' histograms overlaid in one picture.
+// Histogram plots for compare --plot, drawn by gnuplot: both whole images' histograms
+// (the report's, on shared bins) in one picture, with axes, labels and a legend.
 #pragma once
 
 #include <string>
@@ -7,14 +8,21 @@
 
 namespace sigchain::compare {
 
-// Writes DIR/histogram_band1.png, ..., DIR/histogram_combined.png (creating DIR), one
-// per compared band: the reference histogram as filled blue bars, the synthetic one as
-// red bar outlines over it, on the bin edges both share; a black base line. Bars are
-// scaled to the largest count of the two. 8-bit RGB, written atomically. No axis
-// labels: the numbers are in the text or JSON report. Throws IoError.
+// Writes, into DIR (created if needed), per compared band and for "combined":
+// histogram_band1.gp, ... (a self-contained gnuplot script: the bins as an inline
+// data block, run as `gnuplot histogram_band1.gp > histogram_band1.png` to restyle)
+// and histogram_band1.png, ... (the script run by gnuplot's pngcairo terminal,
+// 640 x 400). Reference bars filled blue, synthetic outlined red, on the bins the text
+// report shares; x axis the pixel value, y axis the pixels per bin. Each file
+// is written atomically. Throws IoError (gnuplot missing or failing, a file that
+// cannot be written).
 void write_histogram_plots(const std::string& dir, const PointComparison& cmp);
 
-// One plot (exposed for tests).
-void write_histogram_plot(const std::string& path, const BandComparison& band);
+// The gnuplot script of one band (exposed for tests); `title` heads the plot.
+std::string histogram_script(const BandComparison& band, const std::string& title);
+
+// One band's PNG at `path` and its script beside it (path with .gp for .png).
+void write_histogram_plot(const std::string& path, const BandComparison& band,
+                          const std::string& title);
 
 }  // namespace sigchain::compare

@@ -196,6 +196,27 @@ make_rgb() {
     assert_no_temp_files plots
 }
 
+@test "compare --plot draws with gnuplot: labelled axes, a legend, a script to redraw" {
+    make_rgb
+    run -0 --separate-stderr compare --plot plots --bands 3,2,1 rgb.ppm bgr.ppm row.cpt
+    run -0 grep -c -e "set xlabel 'pixel value'" -e "set ylabel 'pixels per bin'" \
+        -e "title 'reference'" -e "title 'synthetic'" plots/histogram_band1.gp
+    assert_output 4
+    run -0 grep -F "set title 'band 1: rgb.ppm band 1 against bgr.ppm band 3 (whole images)'" plots/histogram_band1.gp
+    # The kept script redraws the same picture.
+    gnuplot plots/histogram_band1.gp > again.png
+    cmp again.png plots/histogram_band1.png
+}
+
+@test "compare --plot without gnuplot on PATH exits 2 (trouble) naming it and writes no PNG" {
+    make_rgb
+    mkdir bin
+    ln -s "$(command -v compare)" bin/compare
+    run -2 --separate-stderr /usr/bin/env PATH="$PWD/bin" compare --plot plots rgb.ppm bgr.ppm row.cpt
+    assert_equal "$stderr" "compare: gnuplot: cannot run: No such file or directory (compare --plot draws with gnuplot: install gnuplot-nox)"
+    [ ! -e plots/histogram_band1.png ]
+}
+
 @test "compare -o writes the report atomically" {
     make_gray
     run -0 --separate-stderr compare -o report.txt syn.pgm ref.pgm pts.cpt
