@@ -1,10 +1,10 @@
 // OBJ facets (order, ids, lines, materials, triangle coordinates) as the hand-written
-// reader gave them, recorded before the reader was replaced by Assimp: the mesh
-// reader must give the same for every statement that reader handled.
+// reader gave them, recorded before that reader was replaced by Assimp: the mesh reader
+// must give the same for every statement the old reader handled.
 #include <gtest/gtest.h>
 
 #include "scene/id_map.hpp"
-#include "scene/obj.hpp"
+#include "scene/mesh_file.hpp"
 
 using namespace sigchain;
 
@@ -36,8 +36,8 @@ std::vector<std::string> facets_of(const scene::MeshData& m) {
 
 scene::MeshData read_features() {
     const scene::IdMap map = scene::read_id_map(kMeshes + "two_materials.map");
-    return scene::read_obj_mesh(kMeshes + "features.obj", map, scene::DegeneratePolicy::Error,
-                                nullptr);
+    return scene::read_mesh_file({kMeshes + "features.obj", &map, {}},
+                                 scene::DegeneratePolicy::Error, nullptr);
 }
 
 }  // namespace
