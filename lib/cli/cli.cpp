@@ -111,6 +111,17 @@ void Cli::add_seed_option(const char* help, std::uint64_t default_value) {
         "seed", po::value<std::uint64_t>()->default_value(default_value)->value_name("N"), help);
 }
 
+void Cli::add_scene_input_options() {
+    m_options.add_options()("material-map", po::value<std::string>()->value_name("FILE"),
+                            "a mesh scene's material names to .mat ids (odb(5) MAP FILES)")(
+        "material-id", po::value<long>()->value_name("N"),
+        "one .mat id for every face of a mesh scene, or for a DEM scene's terrain")(
+        "landuse", po::value<std::string>()->value_name("FILE"),
+        "a DEM scene's land-use raster (with --landuse-map)")(
+        "landuse-map", po::value<std::string>()->value_name("FILE"),
+        "the land-use classes to .mat ids (odb(5) MAP FILES)");
+}
+
 void Cli::add_creation_option() {
     m_options.add_options()(
         "co", po::value<std::vector<std::string>>()->composing()->value_name("KEY=VALUE"),
@@ -184,6 +195,21 @@ unsigned threads(const po::variables_map& vm) { return vm["threads"].as<unsigned
 std::uint64_t seed(const po::variables_map& vm) { return vm["seed"].as<std::uint64_t>(); }
 
 std::vector<std::string> creation_options(const po::variables_map& vm) { return args(vm, "co"); }
+
+SceneInputOptions scene_input(const po::variables_map& vm) {
+    SceneInputOptions o;
+    auto text = [&](const char* name) {
+        return vm.count(name) ? vm[name].as<std::string>() : std::string();
+    };
+    o.material_map = text("material-map");
+    o.landuse = text("landuse");
+    o.landuse_map = text("landuse-map");
+    if (vm.count("material-id")) {
+        o.material_id = vm["material-id"].as<long>();
+        if (*o.material_id < 0) throw UsageError("--material-id must be 0 or more");
+    }
+    return o;
+}
 
 namespace {
 

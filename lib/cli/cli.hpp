@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,9 @@ public:
     // --co KEY=VALUE, repeatable: a GDAL creation option for GeoTIFF outputs (as
     // gdal_translate -co), e.g. COMPRESS=DEFLATE.
     void add_creation_option();
+    // --material-map FILE, --material-id N, --landuse FILE, --landuse-map FILE: the
+    // materials of a mesh or DEM raster given as the scene itself (odb(5), SCENE ARGUMENT).
+    void add_scene_input_options();
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
@@ -105,6 +109,15 @@ private:
     std::string m_positional_help;
     void print_help() const;
 };
+
+// The values of add_scene_input_options() (empty or unset when not given). UsageError
+// for a negative --material-id.
+struct SceneInputOptions {
+    std::string material_map;
+    std::optional<long> material_id;
+    std::string landuse, landuse_map;
+};
+SceneInputOptions scene_input(const po::variables_map& vm);
 
 // The values of a positional argument (empty if absent).
 std::vector<std::string> args(const po::variables_map& vm, const char* name);

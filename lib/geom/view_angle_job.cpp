@@ -71,6 +71,7 @@ void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
     load.scene_meters_per_unit = io::meters_per_unit(adv.units);
     load.allow_degenerate = true;  // geometry only: a degenerate facet is never hit
     load.origin = job.origin;
+    load.input = job.scene_input;
     scene::Scene sc = scene::load_scene(job.scene_path, load);
     // The scene as a whole and the whole field of view: conditions of no single line.
     if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");

@@ -13,7 +13,8 @@ enum class ViewAngleMethod { BoundingBox, FieldOfView };
 
 struct ViewAngleJob {
     std::string adv_path;
-    std::string scene_path;  // .gdb or .odb
+    std::string scene_path;  // .gdb, .odb, a mesh or a DEM raster (scene::assemble_scene)
+    scene::SceneInput scene_input;  // a lone mesh's or DEM's materials
     bool snd_line = false;   // print only the .snd line of `method`
     ViewAngleMethod method = ViewAngleMethod::FieldOfView;
     int grid = 256;  // interior rays per image axis (field-of-view)

@@ -14,11 +14,12 @@ namespace sigchain::io {
 
 namespace {
 
-constexpr std::array<std::string_view, 8> kKeys = {
-    "GDB_FILENAME",     "OBJ_FILENAME", "DEM_FILENAME", "MATERIAL_MAP",
+constexpr std::array<std::string_view, 9> kKeys = {
+    "GDB_FILENAME",     "OBJ_FILENAME", "DEM_FILENAME", "MESH_FILENAME", "MATERIAL_MAP",
     "LANDUSE_FILENAME", "LANDUSE_MAP",  "MATERIAL_ID",  "UNITS"};
-constexpr std::array<std::string_view, 3> kSources = {"GDB_FILENAME", "OBJ_FILENAME",
-                                                      "DEM_FILENAME"};
+// In OdbSource's order.
+constexpr std::array<std::string_view, 4> kSources = {"GDB_FILENAME", "OBJ_FILENAME",
+                                                      "DEM_FILENAME", "MESH_FILENAME"};
 
 struct Value {
     std::string text;
@@ -171,19 +172,30 @@ void apply_source(const Keys& keys, OdbObject& obj, const SourceLocation& close)
         if (it == keys.end()) continue;
         if (src)
             throw DataError(it->second.where,
-                            "expected only one of GDB_FILENAME, OBJ_FILENAME "
-                            "and DEM_FILENAME, found a second one");
+                            "expected only one of GDB_FILENAME, OBJ_FILENAME, "
+                            "MESH_FILENAME and DEM_FILENAME, found a second one");
         src = &it->second;
         obj.source = static_cast<OdbSource>(i);
         obj.path = src->text;
     }
     if (!src)
         throw DataError(close,
-                        "expected GDB_FILENAME, OBJ_FILENAME or DEM_FILENAME in the "
+                        "expected GDB_FILENAME, OBJ_FILENAME, MESH_FILENAME or DEM_FILENAME in the "
                         "OBJECT begun at line " +
                             std::to_string(obj.line) + ", found '}'");
     const Value& where = *src;
-    if (obj.source != OdbSource::Obj) forbid(keys, "MATERIAL_MAP", "OBJ_FILENAME objects");
+    if (obj.source == OdbSource::Mesh) {  // one of a material map and one material id
+        forbid(keys, "LANDUSE_FILENAME", "DEM_FILENAME objects");
+        forbid(keys, "LANDUSE_MAP", "DEM_FILENAME objects");
+        if (keys.count("MATERIAL_MAP"))
+            forbid(keys, "MATERIAL_ID", "DEM_FILENAME and MESH_FILENAME objects without "
+                                        "MATERIAL_MAP");
+        if (!keys.count("MATERIAL_ID"))
+            require(keys, "MATERIAL_MAP", where.where, "(or MATERIAL_ID) with MESH_FILENAME");
+        return;
+    }
+    if (obj.source != OdbSource::Obj)
+        forbid(keys, "MATERIAL_MAP", "OBJ_FILENAME and MESH_FILENAME objects");
     if (obj.source != OdbSource::Dem) {
         forbid(keys, "LANDUSE_FILENAME", "DEM_FILENAME objects");
         forbid(keys, "LANDUSE_MAP", "DEM_FILENAME objects");

@@ -14,7 +14,7 @@
 namespace sigchain::io {
 
 enum class OdbUnits { Meters, Feet };
-enum class OdbSource { Gdb, Obj, Dem };
+enum class OdbSource { Gdb, Obj, Dem, Mesh };
 
 // A row-major 4x4 affine matrix: placed = M * (x, y, z, 1).
 using Matrix4 = std::array<double, 16>;
@@ -34,11 +34,11 @@ struct OdbInstance {
 
 struct OdbObject {
     OdbSource source = OdbSource::Gdb;
-    std::string path;                 // GDB_FILENAME, OBJ_FILENAME or DEM_FILENAME, as written
-    std::string material_map;         // MATERIAL_MAP (OBJ only; required there)
+    std::string path;  // GDB_FILENAME, OBJ_FILENAME, DEM_FILENAME or MESH_FILENAME, as written
+    std::string material_map;         // MATERIAL_MAP (OBJ, required; MESH, or MATERIAL_ID)
     std::string landuse_file;         // LANDUSE_FILENAME (DEM only; with LANDUSE_MAP)
     std::string landuse_map;          // LANDUSE_MAP (DEM only; with LANDUSE_FILENAME)
-    std::optional<long> material_id;  // MATERIAL_ID (DEM without land use only; required there)
+    std::optional<long> material_id;  // MATERIAL_ID (DEM without land use, required; MESH)
     OdbUnits units = OdbUnits::Meters;
     std::vector<OdbInstance> instances;  // as written; empty = no INSTANCES block
     int line = 0;                        // line of `OBJECT {`

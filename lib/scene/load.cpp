@@ -1,16 +1,20 @@
-// Loading .gdb and .odb scene files (GDB, OBJ and DEM objects) into Embree.
+// Loading scenes (.gdb, .odb of GDB, mesh and DEM objects, lone meshes and DEMs) into Embree.
 #include "scene/load.hpp"
 
+#include <gdal.h>
+
+#include <fstream>
 #include <map>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "geo/crs.hpp"
 #include "io/check.hpp"
 #include "io/odb.hpp"
 #include "scene/dem.hpp"
 #include "scene/id_map.hpp"
 #include "scene/mesh_build.hpp"
-#include "scene/obj.hpp"
+#include "scene/mesh_file.hpp"
 
 namespace sigchain::scene {
 
@@ -43,30 +47,57 @@ MeshData build_gdb(const io::Odb& odb, const io::OdbObject& obj, const LoadOptio
                          warnings);
 }
 
-MeshData build_obj(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
-                   std::vector<std::string>* warnings) {
-    IdMap map = read_id_map(io::resolve_odb_path(odb, obj.material_map));
-    return read_obj_mesh(io::resolve_odb_path(odb, obj.path), map, policy_of(o), warnings);
+// A mesh file through Assimp (OBJ_FILENAME, MESH_FILENAME, a lone mesh).
+MeshData mesh_of(const std::string& path, const std::string& map_path,
+                 std::optional<long> material_id, const LoadOptions& o,
+                 std::vector<std::string>* warnings) {
+    MeshSource s{path, nullptr, material_id};
+    IdMap map;
+    if (!map_path.empty()) {
+        map = read_id_map(map_path);
+        s.material_map = &map;
+    }
+    return read_mesh_file(s, policy_of(o), warnings);
+}
+
+MeshData build_mesh(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
+                    std::vector<std::string>* warnings) {
+    return mesh_of(io::resolve_odb_path(odb, obj.path),
+                   obj.material_map.empty() ? "" : io::resolve_odb_path(odb, obj.material_map),
+                   obj.material_id, o, warnings);
+}
+
+// A DEM (DEM_FILENAME, a lone raster); `where` names what asks for it.
+MeshData dem_of(const std::string& path, std::optional<long> material_id,
+                const std::string& landuse, const std::string& landuse_map,
+                double meters_per_unit, const LoadOptions& o, const SourceLocation& where,
+                std::vector<std::string>* warnings) {
+    if (!o.origin)
+        throw DataError(where,
+                        std::string(where.line ? "a DEM object" : "a DEM given as the scene") +
+                            " needs the scene's geodetic origin (the .snd latitude and "
+                            "longitude) to be placed");
+    DemSource s;
+    s.dem_path = path;
+    s.material_id = material_id;
+    IdMap map;
+    if (!landuse.empty()) {
+        s.landuse_path = landuse;
+        map = read_id_map(landuse_map);
+        s.landuse_map = &map;
+    }
+    s.meters_per_unit = meters_per_unit;
+    s.origin = *o.origin;
+    return read_dem_mesh(s, policy_of(o), warnings);
 }
 
 MeshData build_dem(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
                    std::vector<std::string>* warnings) {
-    if (!o.origin)
-        throw DataError({odb.file, obj.line},
-                        "a DEM object needs the scene's geodetic origin (the .snd latitude "
-                        "and longitude) to be placed");
-    DemSource s;
-    s.dem_path = io::resolve_odb_path(odb, obj.path);
-    s.material_id = obj.material_id;
-    IdMap map;
-    if (!obj.landuse_file.empty()) {
-        s.landuse_path = io::resolve_odb_path(odb, obj.landuse_file);
-        map = read_id_map(io::resolve_odb_path(odb, obj.landuse_map));
-        s.landuse_map = &map;
-    }
-    s.meters_per_unit = io::meters_per_odb_unit(obj.units);
-    s.origin = *o.origin;
-    return read_dem_mesh(s, policy_of(o), warnings);
+    const bool lu = !obj.landuse_file.empty();
+    return dem_of(io::resolve_odb_path(odb, obj.path), obj.material_id,
+                  lu ? io::resolve_odb_path(odb, obj.landuse_file) : "",
+                  lu ? io::resolve_odb_path(odb, obj.landuse_map) : "",
+                  io::meters_per_odb_unit(obj.units), o, {odb.file, obj.line}, warnings);
 }
 
 ObjectMesh object_mesh(const io::Odb& odb, const io::OdbObject& obj) {
@@ -75,7 +106,12 @@ ObjectMesh object_mesh(const io::Odb& odb, const io::OdbObject& obj) {
         case io::OdbSource::Gdb:
             return {"gdb\n" + path, build_gdb};
         case io::OdbSource::Obj:
-            return {"obj\n" + path + "\n" + io::resolve_odb_path(odb, obj.material_map), build_obj};
+        case io::OdbSource::Mesh:
+            return {"mesh\n" + path + "\n" +
+                        (obj.material_map.empty()
+                             ? "id " + std::to_string(obj.material_id.value_or(-1))
+                             : io::resolve_odb_path(odb, obj.material_map)),
+                    build_mesh};
         case io::OdbSource::Dem:
             // The DEM's vertices depend on its units and materials: key on all of them.
             return {
@@ -125,6 +161,48 @@ void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink
     sink.place(mesh, identity_affine(), "");
 }
 
+// A lone mesh: in scene units, glTF in metres (glTF 2.0, section 3.4).
+void assemble_mesh(const std::string& path, const LoadOptions& options, SceneSink& sink,
+                   std::vector<std::string>* warnings) {
+    const SceneInput& in = options.input;
+    if (in.material_map.empty() && !in.material_id)
+        throw UsageError(path + ": a mesh given as the scene needs --material-map FILE or "
+                                "--material-id N (see odb(5), SCENE ARGUMENT)");
+    if (!in.material_map.empty() && in.material_id)
+        throw UsageError("--material-map and --material-id exclude each other");
+    const std::size_t mesh = sink.add_mesh(
+        mesh_of(path, in.material_map, in.material_id, options, warnings), nullptr, {path, 0});
+    const double scale = mesh_in_metres(path) ? 1 / options.scene_meters_per_unit : 1;
+    sink.place(mesh, {scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0}, "");
+}
+
+// Whether GDAL opens `path` as a raster (a DEM given as the scene).
+bool is_raster(const std::string& path) {
+    geo::gdal_init();
+    GDALDatasetH d = GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr,
+                                nullptr, nullptr);
+    if (d) GDALClose(d);
+    return d != nullptr;
+}
+
+// A lone DEM: heights in metres, placed in scene units.
+void assemble_dem(const std::string& path, const LoadOptions& options, SceneSink& sink,
+                  std::vector<std::string>* warnings) {
+    const SceneInput& in = options.input;
+    const bool lu = !in.landuse.empty() || !in.landuse_map.empty();
+    if (lu && (in.landuse.empty() || in.landuse_map.empty()))
+        throw UsageError("--landuse and --landuse-map go together");
+    if (lu == in.material_id.has_value())
+        throw UsageError(path + ": a DEM given as the scene needs either --material-id N or "
+                                "--landuse FILE with --landuse-map FILE");
+    const std::size_t mesh = sink.add_mesh(
+        dem_of(path, in.material_id, in.landuse, in.landuse_map, 1, options, {path, 0},
+               warnings),
+        nullptr, {path, 0});
+    const double scale = 1 / options.scene_meters_per_unit;
+    sink.place(mesh, {scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0}, "");
+}
+
 // load_scene's builder: the Scene itself.
 class SceneBuilder final : public SceneSink {
 public:
@@ -156,12 +234,16 @@ void assemble_scene(const std::string& path, const LoadOptions& options, SceneSi
         assemble_gdb(path, options, sink, warnings);
     else if (ext == "odb")
         assemble_odb(path, options, sink, warnings);
-    else if (ext == "obj")
-        throw UsageError(path +
-                         ": a lone OBJ file has no material map; wrap it in an .odb "
-                         "(OBJ_FILENAME, MATERIAL_MAP, UNITS; see odb(5))");
+    else if (is_mesh_path(path))
+        assemble_mesh(path, options, sink, warnings);
+    else if (!std::ifstream(path))
+        throw IoError(path + ": cannot open the scene");
+    else if (is_raster(path))
+        assemble_dem(path, options, sink, warnings);
     else
-        throw UsageError(path + ": the scene must be a .gdb or .odb file");
+        throw UsageError(path +
+                         ": the scene must be a .gdb or .odb file, a mesh (.obj .ply .gltf "
+                         ".glb .fbx .stl) or a raster GDAL can open (a DEM)");
 }
 
 Scene load_scene(const std::string& path, const LoadOptions& options, LoadReport* report) {

@@ -1,5 +1,6 @@
-// Loading a scene file (.gdb, or an .odb assembly of .gdb, OBJ and DEM objects) into a
-// Scene, or into any SceneSink (trace's shadow history, therm's facets).
+// Loading a scene (.gdb; an .odb assembly of .gdb, mesh and DEM objects; a lone mesh;
+// a lone DEM raster) into a Scene, or into any SceneSink (trace's shadow history, therm's
+// facets).
 #pragma once
 
 #include <optional>
@@ -29,8 +30,19 @@ struct GeoOrigin {
     double height_m = 0;            // above the ellipsoid
 };
 
+// What a lone mesh or DEM given as the scene itself (not placed by an .odb) needs: its
+// materials (trace, therm, find_min_max_view_angle: --material-map, --material-id,
+// --landuse, --landuse-map; see odb(5), SCENE ARGUMENT).
+struct SceneInput {
+    std::string material_map;         // a mesh's material names -> mat(5) ids
+    std::optional<long> material_id;  // one id: every face of a mesh, or a DEM's terrain
+    std::string landuse;              // a DEM's land-use raster (with landuse_map)
+    std::string landuse_map;          // its classes -> mat(5) ids
+};
+
 struct LoadOptions {
     double scene_meters_per_unit = 1;
+    SceneInput input;                 // a lone mesh's or DEM's materials
     std::optional<GeoOrigin> origin;  // required by DEM objects
     // Degenerate facets (zero area, repeated vertices) are an error naming file,
     // line, object, part and facet; with this set they are skipped with a warning.
@@ -63,14 +75,20 @@ public:
                                 const std::string& key_prefix);
 };
 
-// Assembles `path` (.gdb or .odb, as load_scene) into `sink`; warnings (degenerate
-// facets skipped or kept) go to `warnings`.
+// Assembles `path` (as load_scene) into `sink`; warnings (degenerate facets skipped or
+// kept) go to `warnings`. The scene's kind is its extension: .gdb, .odb, a mesh
+// (is_mesh_path: .obj .ply .gltf .glb .fbx .stl), or else a raster if GDAL opens it
+// (.tif, .asc, .dem, .img, ...: a DEM, as a DEM_FILENAME object with UNITS m).
+// A lone mesh's coordinates are in scene units, except glTF's, which are metres
+// (glTF 2.0, section 3.4) and are scaled to scene units; its key prefix is "" as a
+// lone .gdb's. Throws UsageError for a lone mesh or DEM without `options.input`'s
+// materials and for a file of no known kind.
 void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,
                     std::vector<std::string>* warnings);
 
-// Loads a .gdb, an .odb (GDB, OBJ with MATERIAL_MAP, DEM with MATERIAL_ID or
-// LANDUSE_FILENAME/LANDUSE_MAP; see odb(5)) or a lone OBJ. Throws DataError/IoError
-// naming the file and line.
+// Loads a .gdb, an .odb (GDB, OBJ with MATERIAL_MAP, MESH with MATERIAL_MAP or
+// MATERIAL_ID, DEM with MATERIAL_ID or LANDUSE_FILENAME/LANDUSE_MAP; see odb(5)), a lone
+// mesh or a lone DEM (assemble_scene). Throws DataError/IoError naming the file and line.
 Scene load_scene(const std::string& path, const LoadOptions& options, LoadReport* report = nullptr);
 
 }  // namespace sigchain::scene

@@ -1,8 +1,7 @@
-// Wavefront OBJ reader: vertices, polygon faces, usemtl, o/g names.
+// Wavefront OBJ statements: the o/g/usemtl/f numbering behind OBJ facet ids and lines.
 #include "scene/obj.hpp"
 
 #include <array>
-#include <charconv>
 
 #include "core/error.hpp"
 
@@ -10,7 +9,8 @@ namespace sigchain::scene {
 
 namespace {
 
-// Statements that describe free-form curves and surfaces, which sigchain does not mesh.
+// Statements that describe free-form curves and surfaces, which sigchain does not mesh
+// (Assimp ignores them: without this check their faces would silently be missing).
 bool is_free_form(std::string_view k) {
     static constexpr std::array<std::string_view, 14> kFreeForm{
         "cstype", "deg",  "bmat", "step", "curv", "curv2", "surf",
@@ -25,40 +25,15 @@ std::string rest_of(std::string_view text, std::string_view keyword) {
     return std::string(trim(text.substr(keyword.size())));
 }
 
-// One face vertex reference ("7", "7/2", "7//3", "-1/2/3") as a 0-based vertex index.
-std::uint32_t vertex_ref(std::string_view token, std::size_t defined, const SourceLocation& at) {
-    std::string_view v = token.substr(0, token.find('/'));
-    long n = 0;
-    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-    if (ec != std::errc() || end != v.data() + v.size() || n == 0)
-        throw DataError(at,
-                        "expected a vertex reference (a non-zero integer, optionally "
-                        "followed by /vt/vn), found " +
-                            quoted(token));
-    long index = n > 0 ? n - 1 : static_cast<long>(defined) + n;
-    if (index < 0 || index >= static_cast<long>(defined))
-        throw DataError(at, "vertex " + std::to_string(n) + " is not defined (" +
-                                std::to_string(defined) + " vertices so far)");
-    return static_cast<std::uint32_t>(index);
-}
-
-struct ObjState {
-    std::string object = "", group = "";
-    long object_number = 0, group_number = 0, face_number = 0;
-    std::string material;
-    long material_id = -1;  // -1: no usemtl yet
-};
-
 }  // namespace
 
-MeshData parse_obj_mesh(const TextInput& in, const IdMap& materials, DegeneratePolicy policy,
-                        std::vector<std::string>* warnings) {
-    MeshBuilder b(policy, warnings);
+std::vector<ObjFace> scan_obj_faces(const TextInput& in) {
     LineCursor cur(in);
     cur.require_not_empty("OBJ statements (v, f, usemtl)");
-    ObjState s;
-    std::size_t defined = 0;
-    std::vector<std::uint32_t> polygon;
+    std::string object, group, material;
+    long object_number = 0, group_number = 0, face_number = 0;
+    bool have_material = false;
+    std::vector<ObjFace> faces;
     while (!cur.at_end()) {
         const Line& line = cur.next("an OBJ statement");
         SourceLocation at = cur.where(line);
@@ -66,58 +41,35 @@ MeshData parse_obj_mesh(const TextInput& in, const IdMap& materials, DegenerateP
             throw DataError(at, "line continuation ('\\') is not supported; join the lines");
         auto f = split_fields(line.text);
         std::string_view k = f[0];
-        if (k == "v") {
-            if (f.size() < 4 || f.size() > 5)
-                throw DataError(at, "expected v x y z [w], found " + quoted(line.text));
-            b.add_vertex({parse_double(f[1], at, "x"), parse_double(f[2], at, "y"),
-                          parse_double(f[3], at, "z")});
-            ++defined;
-        } else if (k == "f") {
-            ++s.face_number;
+        if (k == "f") {
+            ++face_number;
             if (f.size() < 4)
                 throw DataError(
                     at, "expected a face of at least 3 vertices, found " + quoted(line.text));
-            if (s.material_id < 0)
+            if (!have_material)
                 throw DataError(at, "a face before any usemtl: its material is unknown");
-            polygon.clear();
-            for (std::size_t i = 1; i < f.size(); ++i)
-                polygon.push_back(vertex_ref(f[i], defined, at));
-            std::string og = std::to_string(s.object_number) + "-" + std::to_string(s.group_number);
-            std::string id = og + "-" + std::to_string(s.face_number);
-            FacetAttributes a;
-            a.material_id = s.material_id;
-            FacetOrigin o{in.name(), line.number,
-                          "object " + quoted(s.object) + " (" + std::to_string(s.object_number) +
-                              "-0-0), part " + quoted(s.group) + " (" + og + "-0), facet " +
-                              quoted(s.material) + " (" + id + ")",
-                          id};
-            b.add_facet(polygon, a, std::move(o));
+            std::string og = std::to_string(object_number) + "-" + std::to_string(group_number);
+            std::string id = og + "-" + std::to_string(face_number);
+            faces.push_back({line.number, id,
+                             "object " + quoted(object) + " (" + std::to_string(object_number) +
+                                 "-0-0), part " + quoted(group) + " (" + og + "-0), facet " +
+                                 quoted(material) + " (" + id + ")",
+                             material, f.size() - 1});
         } else if (k == "usemtl") {
-            s.material = rest_of(line.text, k);
-            const IdMap::Entry* e = materials.find(s.material);
-            if (!e)
-                throw DataError(at, "material " + quoted(s.material) +
-                                        " is not in the material map " + materials.file);
-            s.material_id = e->id;
+            material = rest_of(line.text, k);
+            have_material = true;
         } else if (k == "o") {
-            s.object = rest_of(line.text, k);
-            ++s.object_number;
+            object = rest_of(line.text, k);
+            ++object_number;
         } else if (k == "g") {
-            s.group = rest_of(line.text, k);
-            ++s.group_number;
+            group = rest_of(line.text, k);
+            ++group_number;
         } else if (is_free_form(k)) {
             throw DataError(at, "free-form geometry (" + std::string(k) +
                                     ") is not supported; export polygons");
         }
-        // Everything else (vt, vn, vp, s, mtllib, l, p, usemap, lod, ...) does not change
-        // the facets a ray can hit: ignored.
     }
-    return b.take();
-}
-
-MeshData read_obj_mesh(const std::string& path, const IdMap& materials, DegeneratePolicy policy,
-                       std::vector<std::string>* warnings) {
-    return parse_obj_mesh(TextInput::from_file(path), materials, policy, warnings);
+    return faces;
 }
 
 }  // namespace sigchain::scene

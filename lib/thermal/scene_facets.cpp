@@ -103,8 +103,10 @@ private:
 
 std::vector<SceneFacet> read_scene_facets(const std::string& path,
                                           const std::optional<scene::GeoOrigin>& origin,
-                                          std::vector<std::string>* warnings) {
+                                          std::vector<std::string>* warnings,
+                                          const scene::SceneInput& input) {
     scene::LoadOptions options;
+    options.input = input;
     options.origin = origin;
     options.allow_degenerate = true;  // every facet has a history (trace keeps them too)
     options.keep_degenerate = true;

@@ -33,6 +33,7 @@ struct SceneFacet {
 // longitude). Throws IoError or DataError (a facet with no normal: zero area).
 std::vector<SceneFacet> read_scene_facets(const std::string& path,
                                           const std::optional<scene::GeoOrigin>& origin = {},
-                                          std::vector<std::string>* warnings = nullptr);
+                                          std::vector<std::string>* warnings = nullptr,
+                                          const scene::SceneInput& input = {});
 
 }  // namespace sigchain::thermal

@@ -19,6 +19,7 @@ namespace sigchain::thermal {
 
 struct ThermJob {
     std::string shd_path, wth_path, mat_path, scene_path, snd_path;
+    scene::SceneInput scene_input;  // a lone mesh's or DEM's materials
     std::string output_path = "-";
     double time_step_s = 60;  // backward-Euler step, (0, 3600]
     unsigned threads = 0;     // facets solved in parallel; 0: all cores

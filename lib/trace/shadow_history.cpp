@@ -313,7 +313,10 @@ io::Shd run_shadow_history(const ShadowJob& job, const Reporter& reporter) {
     const radiometry::MaterialLibrary materials = radiometry::MaterialLibrary::load(
         io::read_mat_file(job.mat_path), job.mat_path, snd_grid(snd));
     scene::LoadReport load;
-    const ShadowScene sc = load_shadow_scene(job.scene_path, 1.0, job.allow_degenerate, &load);
+    // DEMs are placed about the .snd's point, as trace and therm place them.
+    const scene::GeoOrigin origin{snd.latitude_deg, snd.longitude_east_deg, 0.0};
+    const ShadowScene sc = load_shadow_scene(job.scene_path, 1.0, job.allow_degenerate, &load,
+                                             job.scene_input, origin);
     for (const auto& w : load.warnings) reporter.warn(w);
     // No line to name: an empty scene is a property of the whole file (or of every
     // object its .odb lists), not of one record.

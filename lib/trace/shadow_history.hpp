@@ -74,6 +74,7 @@ io::Shd shadow_history(const ShadowScene& scene, const radiometry::MaterialLibra
 // trace --shadow-history as a job: .snd + scene + .mat -> .shd.
 struct ShadowJob {
     std::string snd_path, scene_path, mat_path;
+    scene::SceneInput scene_input;  // a lone mesh's or DEM's materials
     std::string output_path;  // .shd; "-" is standard output
     ShadowOptions options;
     bool allow_degenerate = false;

@@ -103,11 +103,11 @@ class ShadowSink final : public scene::SceneSink {
 public:
     explicit ShadowSink(ShadowScene& scene) : m_scene(scene) {}
     std::size_t add_mesh(scene::MeshData mesh, const io::Gdb* gdb,
-                         const SourceLocation& object) override {
-        if (!gdb)
-            throw DataError(object,
-                            "not implemented yet: OBJ and DEM objects in a shadow history "
-                            "(therm reads .gdb objects only)");
+                         const SourceLocation&) override {
+        if (!gdb) {  // a mesh or DEM: each facet faces its winding (MeshData::normals)
+            std::vector<Vec3> facing = mesh.normals;
+            return m_scene.add_mesh(std::move(mesh), std::move(facing));
+        }
         std::map<int, Vec3> normals;
         for (const auto& o : gdb->objects)
             for (const auto& part : o.parts)
@@ -130,8 +130,12 @@ private:
 // As load_scene (scene::assemble_scene: the same meshes, placements, units and keys),
 // with degenerate facets kept (and reported) so that therm finds every facet.
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
-                              bool allow_degenerate, scene::LoadReport* report) {
+                              bool allow_degenerate, scene::LoadReport* report,
+                              const scene::SceneInput& input,
+                              const std::optional<scene::GeoOrigin>& origin) {
     scene::LoadOptions options;
+    options.input = input;
+    options.origin = origin;
     options.scene_meters_per_unit = scene_meters_per_unit;
     options.allow_degenerate = allow_degenerate;
     options.keep_degenerate = true;

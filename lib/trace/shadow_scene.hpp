@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,14 +45,17 @@ private:
     std::vector<ShadowFacet> m_facets;
 };
 
-// Loads a .gdb or an .odb of .gdb objects as load_scene() does (the same meshes,
-// placements, unit scaling and keys; therm reads the same subset), each facet facing
-// the way its FACE normal says, as therm takes it. OBJ and DEM
-// objects are refused with a DataError at their .odb line. Degenerate facets are an
+// Loads a scene as load_scene() does (the same meshes, placements, unit scaling and
+// keys; therm reads the same), each .gdb facet facing the way its FACE normal says and
+// each mesh or DEM facet the way it winds (MeshData::normals), as therm takes them.
+// `input`: a lone mesh's or DEM's materials; `origin`: the .snd's point, for DEMs.
+// Degenerate facets are an
 // error, or with allow_degenerate reported into `report` and kept as they are (a
 // zero-area facet is never hit; its history is that of its vertices' centroid), so
 // that therm finds every facet.
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
-                              bool allow_degenerate, scene::LoadReport* report = nullptr);
+                              bool allow_degenerate, scene::LoadReport* report = nullptr,
+                              const scene::SceneInput& input = {},
+                              const std::optional<scene::GeoOrigin>& origin = {});
 
 }  // namespace sigchain::trace

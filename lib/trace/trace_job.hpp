@@ -19,7 +19,8 @@ namespace sigchain::trace {
 struct TraceJob {
     std::string adv_path;
     std::string snd_path;
-    std::string scene_path;  // .gdb or .odb
+    std::string scene_path;  // .gdb, .odb, a mesh or a DEM raster (scene::assemble_scene)
+    scene::SceneInput scene_input;  // a lone mesh's or DEM's materials
     std::string mat_path;
     std::vector<std::string> rad_paths;  // one per .snd band, in band order
     std::string output_path;             // .img/.hdr (ENVI) or .tif (GeoTIFF)

@@ -288,7 +288,7 @@ check_golden() {
 }
 
 @test "odb: bad: map on gdb" {
-    check_bad odb map_on_gdb.odb "4" "unexpected key MATERIAL_MAP: it belongs to OBJ_FILENAME objects"
+    check_bad odb map_on_gdb.odb "4" "unexpected key MATERIAL_MAP: it belongs to OBJ_FILENAME and MESH_FILENAME objects"
 }
 
 @test "odb: bad: matrix last row" {
@@ -316,7 +316,7 @@ check_golden() {
 }
 
 @test "odb: bad: no source" {
-    check_bad odb no_source.odb "6" "expected GDB_FILENAME, OBJ_FILENAME or DEM_FILENAME in the OBJECT begun at line 1, found '}'"
+    check_bad odb no_source.odb "6" "expected GDB_FILENAME, OBJ_FILENAME, MESH_FILENAME or DEM_FILENAME in the OBJECT begun at line 1, found '}'"
 }
 
 @test "odb: bad: no units" {
@@ -340,7 +340,7 @@ check_golden() {
 }
 
 @test "odb: bad: two sources" {
-    check_bad odb two_sources.odb "4" "expected only one of GDB_FILENAME, OBJ_FILENAME and DEM_FILENAME, found a second one"
+    check_bad odb two_sources.odb "4" "expected only one of GDB_FILENAME, OBJ_FILENAME, MESH_FILENAME and DEM_FILENAME, found a second one"
 }
 
 @test "odb: bad: unknown key" {

@@ -75,7 +75,7 @@ assert_tmp_near() {
 
 @test "therm wants exactly five inputs and a sane time step (exit 2)" {
     run -2 --separate-stderr therm "$SHD" "$WTH" "$MAT" "$GDB" -o out.tmp
-    [[ "$stderr" == "therm: expected SHD WTH MAT GDB|ODB SND"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == "therm: expected SHD WTH MAT SCENE SND"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr therm --time-step 0 "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o out.tmp
     [[ "$stderr" == "therm: --time-step"* ]] || fail "stderr: $stderr"
     [ ! -e out.tmp ]

@@ -336,7 +336,7 @@ band_bytes() {
 }
 
 @test "trace: too few arguments and unknown options are usage errors" {
-    trace_bad 2 "expected ADV SND GDB|ODB MAT and at least one RAD" "$DATA/box.adv" \
+    trace_bad 2 "expected ADV SND SCENE MAT and at least one RAD" "$DATA/box.adv" \
         "$DATA/box.snd" "$GDB" "$DATA/box.mat" -o out.img
     run -2 --separate-stderr trace --no-such-option
     assert_equal "${stderr##*$'\n'}" "Try 'trace --help'."
@@ -468,7 +468,7 @@ therm_materials() {
         --history-step-minutes 7 "${args[@]}" -o out.shd
     shadow_bad 2 "--history-hours: expected a positive" --shadow-history --history-hours 0 \
         "${args[@]}" -o out.shd
-    shadow_bad 2 "--shadow-history: expected SND GDB|ODB MAT" --shadow-history \
+    shadow_bad 2 "--shadow-history: expected SND SCENE MAT" --shadow-history \
         "$SEED/hawkeye.snd" "$GDB" -o out.shd
     shadow_bad 2 "no output: give -o" --shadow-history "${args[@]}"
     shadow_bad 2 "--points-per-facet: expected 1 to" --shadow-history --points-per-facet 0 \
@@ -485,7 +485,7 @@ therm_materials() {
 
 @test "trace --help documents --shadow-history" {
     run -0 trace --help
-    assert_output --partial "or: trace --shadow-history [OPTIONS] SND GDB|ODB MAT -o FILE.shd"
+    assert_output --partial "or: trace --shadow-history [OPTIONS] SND SCENE MAT -o FILE.shd"
     assert_output --partial "--points-per-facet N"
 }
 

@@ -13,8 +13,10 @@ int main(int argc, char** argv) {
                    "Print the minimum, maximum and suggested increment of the view angle\n"
                    "of a sensor over a scene, by the scene-bounding-box and field-of-view "
                    "methods.",
-                   "[OPTIONS] ADV GDB|ODB"});
-    tool.add_positional("input", -1, "look-angle file (.adv) and scene (.gdb or .odb)");
+                   "[OPTIONS] ADV SCENE"});
+    tool.add_positional("input", -1,
+                        "look-angle file (.adv) and scene (.gdb, .odb, a mesh or a DEM\n"
+                        "                    raster: odb(5) SCENE ARGUMENT)");
     tool.add_options()("snd", "print only the view-angle line for a .snd file")(
         "method,m",
         cli::po::value<std::string>()->default_value("field-of-view")->value_name("NAME"),
@@ -22,12 +24,18 @@ int main(int argc, char** argv) {
         "grid", cli::po::value<int>()->default_value(256)->value_name("N"),
         "interior rays per image axis for the field-of-view method (>= 1)")(
         "origin", cli::po::value<std::string>()->value_name("LAT,LON[,H]"),
-        "geodetic scene origin for DEM objects (deg N, deg E, m above the ellipsoid)");
+        "geodetic scene origin for DEMs (deg N, deg E, m above the ellipsoid)");
     tool.add_output_option();
+    tool.add_scene_input_options();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
         auto inputs = cli::args(vm, "input");
-        if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and GDB|ODB");
-        geom::ViewAngleJob job{inputs[0], inputs[1], vm.count("snd") > 0};
+        if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and SCENE");
+        geom::ViewAngleJob job;
+        job.adv_path = inputs[0];
+        job.scene_path = inputs[1];
+        job.snd_line = vm.count("snd") > 0;
+        const cli::SceneInputOptions in = cli::scene_input(vm);
+        job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
         const auto& method = vm["method"].as<std::string>();
         if (method == "scene-bounding-box")
             job.method = geom::ViewAngleMethod::BoundingBox;

@@ -11,12 +11,14 @@ namespace {
 // The command line as a ThermJob.
 thermal::ThermJob job_of(const cli::po::variables_map& vm) {
     auto inputs = cli::args(vm, "input");
-    if (inputs.size() != 5) throw sigchain::UsageError("expected SHD WTH MAT GDB|ODB SND");
+    if (inputs.size() != 5) throw sigchain::UsageError("expected SHD WTH MAT SCENE SND");
     thermal::ThermJob job;
     job.shd_path = inputs[0];
     job.wth_path = inputs[1];
     job.mat_path = inputs[2];
     job.scene_path = inputs[3];
+    const cli::SceneInputOptions in = cli::scene_input(vm);
+    job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
     job.snd_path = inputs[4];
     job.output_path = cli::output_path(vm);
     job.time_step_s = vm["time-step"].as<double>();
@@ -29,14 +31,16 @@ thermal::ThermJob job_of(const cli::po::variables_map& vm) {
 int main(int argc, char** argv) {
     cli::Cli tool({"therm",
                    "Compute facet temperatures (.tmp) from weather and sun/shadow history.",
-                   "[OPTIONS] SHD WTH MAT GDB|ODB SND -o TMP"});
+                   "[OPTIONS] SHD WTH MAT SCENE SND -o TMP"});
     tool.add_positional("input", -1,
                         "sun/shadow history (.shd), weather (.wth), materials (.mat),\n"
-                        "                    scene (.gdb or .odb), scene node (.snd)");
+                        "                    scene (.gdb, .odb, a mesh or a DEM raster: odb(5)\n"
+                        "                    SCENE ARGUMENT), scene node (.snd)");
     tool.add_output_option();  // "-" (standard output) by default, therm(1)
     tool.add_options()("time-step", cli::po::value<double>()->default_value(60)->value_name("S"),
                        "time step of the thermal model, seconds (0 < S <= 3600)");
     tool.add_threads_option();
+    tool.add_scene_input_options();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         thermal::run_therm(job_of(vm), ctx);
         return 0;

@@ -24,10 +24,12 @@ trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
         throw sigchain::UsageError("--sampling does not apply to --shadow-history");
     auto inputs = cli::args(vm, "input");
     if (inputs.size() != 3)
-        throw sigchain::UsageError("--shadow-history: expected SND GDB|ODB MAT");
+        throw sigchain::UsageError("--shadow-history: expected SND SCENE MAT");
     trace::ShadowJob job;
     job.snd_path = inputs[0];
     job.scene_path = inputs[1];
+    const cli::SceneInputOptions in = cli::scene_input(vm);
+    job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
     job.mat_path = inputs[2];
     if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
     if (vm.count("history-hours")) job.options.history_hours = vm["history-hours"].as<double>();
@@ -51,11 +53,13 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
             throw sigchain::UsageError(std::string("--") + o + " needs --shadow-history");
     auto inputs = cli::args(vm, "input");
     if (inputs.size() < 5)
-        throw sigchain::UsageError("expected ADV SND GDB|ODB MAT and at least one RAD");
+        throw sigchain::UsageError("expected ADV SND SCENE MAT and at least one RAD");
     trace::TraceJob job;
     job.adv_path = inputs[0];
     job.snd_path = inputs[1];
     job.scene_path = inputs[2];
+    const cli::SceneInputOptions in = cli::scene_input(vm);
+    job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
     job.mat_path = inputs[3];
     job.rad_paths.assign(inputs.begin() + 4, inputs.end());
     if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
@@ -82,12 +86,13 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
 
 int main(int argc, char** argv) {
     cli::Cli tool({"trace", "Ray-trace a scene into a spectral radiance cube.",
-                   "[OPTIONS] ADV SND GDB|ODB MAT RAD... -o CUBE\n"
-                   "   or: trace --shadow-history [OPTIONS] SND GDB|ODB MAT -o FILE.shd"});
+                   "[OPTIONS] ADV SND SCENE MAT RAD... -o CUBE\n"
+                   "   or: trace --shadow-history [OPTIONS] SND SCENE MAT -o FILE.shd"});
     tool.add_positional("input", -1,
-                        "look angles (.adv), scene node (.snd), scene (.gdb or .odb),\n"
+                        "look angles (.adv), scene node (.snd), scene (.gdb, .odb, a mesh\n"
+                        "                    or a DEM raster: odb(5) SCENE ARGUMENT),\n"
                         "                    materials (.mat), one .rad per band in band order;\n"
-                        "                    --shadow-history: SND GDB|ODB MAT");
+                        "                    --shadow-history: SND SCENE MAT");
     tool.add_required_output_option(
         "CUBE",
         "write the radiance cube to CUBE (.img/.hdr: ENVI, .tif: GeoTIFF), or the .shd "
@@ -95,6 +100,7 @@ int main(int argc, char** argv) {
     tool.add_seed_option();
     tool.add_threads_option();
     tool.add_creation_option();
+    tool.add_scene_input_options();
     tool.add_options()("sampling",
                        cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
                        "hemisphere sampling: dirsig, golfball or montecarlo")(

@@ -218,18 +218,32 @@ TEST(Odb, KeyErrors) {
 
 TEST(Odb, ExactlyOneGeometrySource) {
     EXPECT_EQ(error_of(edited("    GDB_FILENAME = box.gdb\n", "")),
-              "t.odb:6: expected GDB_FILENAME, OBJ_FILENAME or DEM_FILENAME in the OBJECT begun "
-              "at line 1, found '}'");
+              "t.odb:6: expected GDB_FILENAME, OBJ_FILENAME, MESH_FILENAME or DEM_FILENAME in "
+              "the OBJECT begun at line 1, found '}'");
     EXPECT_EQ(error_of(edited("UNITS = m", "UNITS = m\n    DEM_FILENAME = d.tif")),
-              "t.odb:4: expected only one of GDB_FILENAME, OBJ_FILENAME and DEM_FILENAME, found a "
-              "second one");
+              "t.odb:4: expected only one of GDB_FILENAME, OBJ_FILENAME, MESH_FILENAME and "
+              "DEM_FILENAME, found a second one");
+}
+
+TEST(Odb, MeshObjectsTakeAMapOrOneId) {
+    const std::string mesh = edited("GDB_FILENAME = box.gdb", "MESH_FILENAME = box.glb");
+    EXPECT_EQ(error_of(mesh),
+              "t.odb:2: expected key MATERIAL_MAP (or MATERIAL_ID) with MESH_FILENAME, found none "
+              "in the OBJECT");
+    EXPECT_EQ(error_of(edited("UNITS = m", "UNITS = m\n    MATERIAL_MAP = m.map\n    MATERIAL_ID = 3",
+                              mesh)),
+              "t.odb:5: unexpected key MATERIAL_ID: it belongs to DEM_FILENAME and MESH_FILENAME "
+              "objects without MATERIAL_MAP");
+    EXPECT_EQ(parsed(edited("UNITS = m", "UNITS = m\n    MATERIAL_ID = 3", mesh)).objects[0].source,
+              OdbSource::Mesh);
 }
 
 TEST(Odb, KeysThatBelongToOtherSources) {
     EXPECT_EQ(error_of(edited("GDB_FILENAME = box.gdb", "OBJ_FILENAME = box.obj")),
               "t.odb:2: expected key MATERIAL_MAP with OBJ_FILENAME, found none in the OBJECT");
     EXPECT_EQ(error_of(edited("UNITS = m", "UNITS = m\n    MATERIAL_MAP = m.map")),
-              "t.odb:4: unexpected key MATERIAL_MAP: it belongs to OBJ_FILENAME objects");
+              "t.odb:4: unexpected key MATERIAL_MAP: it belongs to OBJ_FILENAME and MESH_FILENAME "
+              "objects");
     EXPECT_EQ(error_of(edited("UNITS = m", "UNITS = m\n    LANDUSE_MAP = l.map")),
               "t.odb:4: unexpected key LANDUSE_MAP: it belongs to DEM_FILENAME objects");
     std::string dem = edited("GDB_FILENAME = box.gdb", "DEM_FILENAME = dem.tif");

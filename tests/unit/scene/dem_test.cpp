@@ -299,3 +299,40 @@ TEST(Dem, RastersWithoutCrsOrTooSmallAreRefused) {
               }),
               dir + "thin.tif: a DEM needs at least 2 x 2 cells");
 }
+
+TEST(Dem, RasterGivenAsTheSceneIsTheOdbObjectWithoutItsPrefix) {
+    TempDir tmp;
+    std::string dir = tmp.str();
+    write_raster(dir + "t.tif", 5, 5, kGeoGt, 4326, heights());
+    std::ofstream(dir + "t.odb") << "OBJECT {\n    DEM_FILENAME = t.tif\n    MATERIAL_ID = 9\n"
+                                    "    UNITS = m\n}\n";
+    scene::LoadOptions opt;
+    opt.origin = scene::GeoOrigin{kLat0, kLon0, kH0};
+    const scene::Scene via_odb = scene::load_scene(dir + "t.odb", opt);
+    // Without its materials, the raster is a usage error.
+    EXPECT_THROW(scene::load_scene(dir + "t.tif", opt), UsageError);
+    opt.input.material_id = 9;
+    scene::LoadReport report;
+    const scene::Scene lone = scene::load_scene(dir + "t.tif", opt, &report);
+    EXPECT_EQ(report.facets, 32u);
+    for (double x : {-5.0, 0.01, 7.5})
+        for (double y : {-6.0, -0.01, 4.5}) {
+            auto a = via_odb.intersect({x, y, 50}, {0, 0, -1});
+            auto b = lone.intersect({x, y, 50}, {0, 0, -1});
+            ASSERT_TRUE(a && b);
+            EXPECT_EQ(a->distance, b->distance);  // the same floats, placed the same way
+            EXPECT_EQ(lone.attributes(*b).material_id, 9);
+            EXPECT_EQ("1.1/" + lone.facet_key(*b), via_odb.facet_key(*a));
+        }
+    // Land use as options: every class of the land use mapped to one id.
+    write_raster(dir + "lu.tif", 5, 5, kGeoGt, 4326, std::vector<double>(25, 4));
+    std::ofstream(dir + "lu.map") << "4 12\n";
+    opt.input.material_id.reset();
+    opt.input.landuse = dir + "lu.tif";
+    EXPECT_THROW(scene::load_scene(dir + "t.tif", opt), UsageError);  // no --landuse-map
+    opt.input.landuse_map = dir + "lu.map";
+    const scene::Scene with_lu = scene::load_scene(dir + "t.tif", opt);
+    auto hit = with_lu.intersect({0.01, -0.01, 50}, {0, 0, -1});
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(with_lu.attributes(*hit).material_id, 12);
+}
