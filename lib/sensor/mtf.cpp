@@ -81,8 +81,7 @@ double electronics_mtf(double nu_along_scan, double dwell_s, double cutoff_hz, i
 }
 
 void MtfParams::check() const {
-    require(f_number == 0 || finite_positive(f_number),
-            "--mtf-fnumber must be a positive number");
+    require(f_number == 0 || finite_positive(f_number), "--mtf-fnumber must be a positive number");
     require(pitch_um == 0 || finite_positive(pitch_um), "--mtf-pitch must be a positive number");
     require((f_number > 0) == (pitch_um > 0), "give --mtf-fnumber and --mtf-pitch together");
     require(finite_positive(fill_factor) && fill_factor <= 1,
@@ -115,8 +114,7 @@ MtfTerms MtfChain::terms(double nu_x, double nu_y) const {
     if (m_p.smear_px > 0)
         t.motion = std::abs(motion_otf(nu_x * m_cos + nu_y * m_sin, m_p.smear_px));
     if (m_p.electronics_cutoff_hz > 0)
-        t.electronics =
-            electronics_mtf(nu_x, m_p.dwell_s, m_p.electronics_cutoff_hz, m_p.poles);
+        t.electronics = electronics_mtf(nu_x, m_p.dwell_s, m_p.electronics_cutoff_hz, m_p.poles);
     t.system = t.optics * t.detector * t.motion * t.electronics;
     return t;
 }

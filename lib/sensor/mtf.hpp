@@ -47,12 +47,12 @@ double electronics_mtf(double nu_along_scan, double dwell_s, double cutoff_hz, i
 // The MTF parameters of a sensor (sensorize --mtf-* options). A term is off when its
 // parameter is 0 (the detector term is on whenever the chain is).
 struct MtfParams {
-    double f_number = 0;          // optics: diffraction when > 0 (needs pitch_um)
-    double pitch_um = 0;          // detector pitch, micrometres
-    double fill_factor = 1;       // detector width / pitch (linear), 0 < F <= 1
-    double defocus_sigma_px = 0;  // Gaussian defocus/aberration, pixels
-    double smear_px = 0;          // image motion during integration, pixels
-    double smear_angle_deg = 0;   // its direction from +x (along a row) towards +y (down)
+    double f_number = 0;               // optics: diffraction when > 0 (needs pitch_um)
+    double pitch_um = 0;               // detector pitch, micrometres
+    double fill_factor = 1;            // detector width / pitch (linear), 0 < F <= 1
+    double defocus_sigma_px = 0;       // Gaussian defocus/aberration, pixels
+    double smear_px = 0;               // image motion during integration, pixels
+    double smear_angle_deg = 0;        // its direction from +x (along a row) towards +y (down)
     double electronics_cutoff_hz = 0;  // electronics: 3 dB cutoff, Hz (needs dwell_s)
     double dwell_s = 0;                // dwell time per pixel along scan (x), seconds
     int poles = 1;                     // Butterworth order

@@ -128,11 +128,13 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
             continue;
         }
         if (blur) plane = convolve(plane, cube.rows, cube.columns, kernel);
-        if (job.mtf.enabled)
-            report.mtf.push_back(apply_band_mtf(
-                plane, cube.rows, cube.columns, job.mtf,
-                wavelengths.empty() ? 0 : centre_wavelength_um(wavelengths, sens[b].response, widths),
-                job.cube_path));
+        if (job.mtf.enabled) {
+            const double centre_um =
+                wavelengths.empty() ? 0
+                                    : centre_wavelength_um(wavelengths, sens[b].response, widths);
+            report.mtf.push_back(apply_band_mtf(plane, cube.rows, cube.columns, job.mtf,
+                                                centre_um, job.cube_path));
+        }
         if (!job.float_output) {
             apply_gain_bias(plane, sens[b].gain, sens[b].bias);
             add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));

@@ -1,4 +1,6 @@
 // Tests for the MTF chain and its FFTW3 frequency-domain filter (lib/sensor/mtf).
+#include "sensor/mtf.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <thread>
 
 #include "core/error.hpp"
-#include "sensor/mtf.hpp"
 
 using namespace sigchain;
 using namespace sigchain::sensor;
@@ -134,7 +135,8 @@ TEST(MtfFilter, CosineAmplitudeScaledBySystemMtf) {
             const double h = along_x ? chain.transfer(nu, 0) : chain.transfer(0, nu);
             ASSERT_GT(std::abs(h), 1e-3);
             for (std::size_t i = 0; i < in.size(); ++i)
-                ASSERT_NEAR(out[i], h * in[i], 1e-6 * std::abs(h)) << along_x << ' ' << k << ' ' << i;
+                ASSERT_NEAR(out[i], h * in[i], 1e-6 * std::abs(h))
+                    << along_x << ' ' << k << ' ' << i;
         }
     }
 }
