@@ -64,6 +64,7 @@ void check_job(const SensorizeJob& job) {
     if (job.psf_sigma_px > 0 && !job.psf_path.empty())
         throw UsageError("give --psf-sigma or --psf, not both");
     if (job.psf_sigma_px < 0) throw UsageError("--psf-sigma must be positive");
+    if (job.mtf.enabled) job.mtf.check();
     if (job.noise.electrons_per_count < 0) throw UsageError("--shot-noise must be positive");
     if (job.noise.read_noise_counts < 0) throw UsageError("--read-noise must not be negative");
     if (job.output_path.empty() || job.output_path == "-")
@@ -127,6 +128,13 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
             continue;
         }
         if (blur) plane = convolve(plane, cube.rows, cube.columns, kernel);
+        if (job.mtf.enabled) {
+            const double centre_um =
+                wavelengths.empty() ? 0
+                                    : centre_wavelength_um(wavelengths, sens[b].response, widths);
+            report.mtf.push_back(apply_band_mtf(plane, cube.rows, cube.columns, job.mtf,
+                                                centre_um, job.cube_path));
+        }
         if (!job.float_output) {
             apply_gain_bias(plane, sens[b].gain, sens[b].bias);
             add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));

@@ -10,6 +10,7 @@
 #include "image/image.hpp"
 #include "sensor/band.hpp"
 #include "sensor/calibrate.hpp"
+#include "sensor/mtf.hpp"
 #include "sensor/noise.hpp"
 
 namespace sigchain::sensor {
@@ -29,6 +30,7 @@ struct SensorizeJob {
     NoiseModel noise;
     double psf_sigma_px = 0;  // Gaussian PSF when > 0
     std::string psf_path;     // kernel file (sensorize(1) PSF FILE) when not empty
+    MtfParams mtf;            // the MTF chain (sensorize(1) MTF) when mtf.enabled
     bool calibrate = false;
     CalibrationSetup calibration;
     image::WriteOptions write_options;  // --co and the provenance of the image
@@ -53,6 +55,7 @@ struct SensorizeReport {
     bool cube_has_wavelengths = true;  // false: samples weighted equally
     std::vector<BandReport> bands;     // counts mode: saturation per band
     std::vector<CalibrationRow> calibration;
+    std::vector<MtfBandReport> mtf;  // with the MTF chain: each band's MTF at Nyquist
 };
 
 // Checks the job's options (bit depth, output name, calibration targets); throws

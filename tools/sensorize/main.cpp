@@ -1,4 +1,5 @@
 // sensorize: turn a radiance cube into the digital counts of a sensor (White (1996), section 4.2.3.10, 4.2.4).
+#include <cstdio>
 #include <iostream>
 
 #include "cli/cli.hpp"
@@ -25,6 +26,72 @@ std::vector<double> parse_targets(const std::string& text, const std::string& op
     return values;
 }
 
+// "A" or "A,B" (or up to `most` numbers) for --mtf-smear and --mtf-electronics.
+std::vector<double> parse_numbers(const std::string& text, const std::string& option,
+                                  std::size_t least, std::size_t most, const char* form) {
+    std::vector<double> values;
+    try {
+        for (auto field : sigchain::split_fields(text, true))
+            values.push_back(sigchain::parse_double(field, {option, 0}, "a number"));
+    } catch (const sigchain::DataError&) {
+        values.clear();
+    }
+    if (values.size() < least || values.size() > most)
+        throw sigchain::UsageError(option + ": expected " + form + ", found '" + text + "'");
+    return values;
+}
+
+// The MTF chain's parameters from the --mtf-* options (sensorize(1), MTF).
+sensor::MtfParams mtf_from(const cli::po::variables_map& vm) {
+    sensor::MtfParams p;
+    auto number = [&](const char* name, double& to) {
+        if (!vm.count(name)) return;
+        to = vm[name].as<double>();
+        p.enabled = true;
+    };
+    number("mtf-fnumber", p.f_number);
+    number("mtf-pitch", p.pitch_um);
+    number("mtf-fill", p.fill_factor);
+    number("mtf-defocus", p.defocus_sigma_px);
+    if (vm.count("mtf-smear")) {
+        const auto v = parse_numbers(vm["mtf-smear"].as<std::string>(), "--mtf-smear", 1, 2,
+                                     "PX or PX,DEGREES");
+        p.smear_px = v[0];
+        if (v.size() > 1) p.smear_angle_deg = v[1];
+        p.enabled = true;
+    }
+    if (vm.count("mtf-electronics")) {
+        const auto v = parse_numbers(vm["mtf-electronics"].as<std::string>(), "--mtf-electronics",
+                                     2, 3, "HZ,SECONDS or HZ,SECONDS,POLES");
+        p.electronics_cutoff_hz = v[0];
+        p.dwell_s = v[1];
+        if (v.size() > 2) {
+            if (v[2] != static_cast<int>(v[2]))
+                throw sigchain::UsageError("--mtf-electronics: the number of poles must be 1 to 8");
+            p.poles = static_cast<int>(v[2]);
+        }
+        // A cutoff of 0 would silently turn the term off: it must be positive.
+        if (!(p.electronics_cutoff_hz > 0))
+            throw sigchain::UsageError(
+                "--mtf-electronics: the cutoff and the dwell time must be positive numbers");
+        p.enabled = true;
+    }
+    // 0 would turn a term off silently: an f-number or pitch given must be positive.
+    if (vm.count("mtf-fnumber") && !(p.f_number > 0))
+        throw sigchain::UsageError("--mtf-fnumber must be a positive number");
+    if (vm.count("mtf-pitch") && !(p.pitch_um > 0))
+        throw sigchain::UsageError("--mtf-pitch must be a positive number");
+    if (p.enabled) p.check();
+    return p;
+}
+
+// "0.62" or "1": an MTF value for the -v line, 3 significant digits.
+std::string mtf_value(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
 void report(const sensor::SensorizeReport& r, const sensor::SensorizeJob& job,
             const cli::Context& ctx) {
     if (!r.cube_has_wavelengths)
@@ -40,6 +107,15 @@ void report(const sensor::SensorizeReport& r, const sensor::SensorizeJob& job,
             ctx.warn(line);
         else
             ctx.info(line);
+    }
+    for (std::size_t b = 0; b < r.mtf.size(); ++b) {
+        const auto& m = r.mtf[b];
+        const auto& t = m.nyquist;
+        ctx.info("band " + std::to_string(b + 1) + " (" +
+                 (m.wavelength_um > 0 ? mtf_value(m.wavelength_um) + " um" : "no wavelength") +
+                 "): MTF at Nyquist: optics " + mtf_value(t.optics) + ", detector " +
+                 mtf_value(t.detector) + ", motion " + mtf_value(t.motion) + ", electronics " +
+                 mtf_value(t.electronics) + ", system " + mtf_value(t.system));
     }
 }
 
@@ -73,6 +149,7 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
         if (!(job.psf_sigma_px > 0)) throw sigchain::UsageError("--psf-sigma must be positive");
     }
     if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
+    job.mtf = mtf_from(vm);
     job.write_options = {cli::creation_options(vm), ctx.command()};
     if (vm.count("preview")) job.preview_path = vm["preview"].as<std::string>();
     job.calibrate = vm.count("calibrate") > 0;
@@ -106,6 +183,17 @@ int main(int argc, char** argv) {
         "psf-sigma", value<double>()->value_name("PX"),
         "Gaussian point-spread function, sigma in pixels")(
         "psf", value<std::string>()->value_name("FILE"), "point-spread function kernel file")(
+        "mtf-fnumber", value<double>()->value_name("N"),
+        "MTF: diffraction of a circular aperture of f-number N (needs --mtf-pitch)")(
+        "mtf-pitch", value<double>()->value_name("UM"), "MTF: detector pitch, micrometres")(
+        "mtf-fill", value<double>()->value_name("F"),
+        "MTF: detector width / pitch, 0 < F <= 1 (default 1)")(
+        "mtf-defocus", value<double>()->value_name("PX"),
+        "MTF: Gaussian defocus/aberration, sigma in pixels")(
+        "mtf-smear", value<std::string>()->value_name("PX[,DEG]"),
+        "MTF: image motion of PX pixels during integration, DEG from +x toward +y")(
+        "mtf-electronics", value<std::string>()->value_name("HZ,S[,POLES]"),
+        "MTF: Butterworth low-pass along scan: cutoff HZ, dwell S seconds per pixel")(
         "preview", value<std::string>()->value_name("PNG"),
         "also write a true-colour 8-bit PNG preview (2-98 % stretch)")(
         "calibrate", "solve gain and bias per band from two gray cards; -o names a directory")(
