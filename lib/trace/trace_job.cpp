@@ -312,10 +312,10 @@ void check_temperature_keys(const TraceJob& job, const scene::Scene& scene, cons
     const std::string message =
         std::to_string(matched) + " of " + std::to_string(tmp.facets.size()) +
         " facet key(s) match a facet of the scene, " + std::to_string(unmatched) +
-        " match none; " + std::to_string(without) + " of " + std::to_string(facet_keys.size()) +
+        " match none" + (first_unmatched ? " (the first: " + first_unmatched->facet_id + ")" : "") +
+        "; " + std::to_string(without) + " of " + std::to_string(facet_keys.size()) +
         " facet(s) have no temperature (" + std::to_string(from_gdb) +
-        " take the .gdb TEMPERATURE, " + std::to_string(without - from_gdb) +
-        " emit nothing)" + (first_unmatched ? ", e.g. key " + first_unmatched->facet_id : "");
+        " take the .gdb TEMPERATURE, " + std::to_string(without - from_gdb) + " emit nothing)";
     if (job.strict)
         throw DataError({job.tmp_path, first_unmatched ? first_unmatched->line : 0},
                         message + " (--strict)");
