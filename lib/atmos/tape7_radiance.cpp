@@ -124,7 +124,10 @@ io::Cdk path_deck(const io::CdkRun& base, const PathSetup& p, int iemsct, int it
 
 std::string numbered(const char* stem, std::size_t k, int digits) {
     std::string n = std::to_string(k + 1);
-    return stem + std::string(static_cast<std::size_t>(std::max(0, digits - static_cast<int>(n.size()))), '0') + n;
+    return stem +
+           std::string(static_cast<std::size_t>(std::max(0, digits - static_cast<int>(n.size()))),
+                       '0') +
+           n;
 }
 
 }  // namespace
@@ -143,18 +146,18 @@ Tape7Decks tape7_decks(const io::Cdk& deck, const io::Snd& snd, const RadianceOp
     list.sky_azimuth_step_deg = 360.0 / std::lround(360.0 / o.sky_azimuth_step_deg);
     const int radiance = p.sun_up() ? 2 : 1;
     if (p.sun_up()) {
-        out.decks.emplace_back("sun.tp5", path_deck(base, p, 3, 3, p.ground_km, 0,
-                                                    p.sun_zenith_deg, p.sun_azimuth_deg, span));
+        out.decks.emplace_back("sun.tp5", path_deck(base, p, 3, 3, p.ground_km, 0, p.sun_zenith_deg,
+                                                    p.sun_azimuth_deg, span));
         list.sun_tape7 = "sun.tp7";
     }
     for (std::size_t k = 0; k < p.views.size(); ++k) {
         const double v = p.views[k];
         const std::string name = numbered("view-", k, 3);
         // Looking down from the sensor: zenith 180 - |v|, toward view_azimuth for v > 0.
-        out.decks.emplace_back(name + ".tp5",
-                               path_deck(base, p, radiance, 2, p.sensor_km, p.ground_km,
-                                         180 - std::abs(v),
-                                         p.view_azimuth_deg + (v < 0 ? 180 : 0), span));
+        out.decks.emplace_back(
+            name + ".tp5",
+            path_deck(base, p, radiance, 2, p.sensor_km, p.ground_km, 180 - std::abs(v),
+                      p.view_azimuth_deg + (v < 0 ? 180 : 0), span));
         list.views.push_back({v, name + ".tp7", 0});
     }
     const long rings = std::lround(90 / list.sky_zenith_step_deg);
@@ -213,7 +216,8 @@ struct Run {
 
 Run load(const std::string& list_path, const std::string& file, std::string what) {
     const std::filesystem::path dir = std::filesystem::path(list_path).parent_path();
-    const std::string path = std::filesystem::path(file).is_absolute() ? file : (dir / file).string();
+    const std::string path =
+        std::filesystem::path(file).is_absolute() ? file : (dir / file).string();
     return {io::read_tape7_file(path), path, std::move(what)};
 }
 
@@ -235,8 +239,8 @@ void check_run(const Run& r, std::initializer_list<int> modes, double h1, double
                         "expected the path of " + r.what + " (H1 " + format_number(h1) +
                             " km, H2 " + format_number(h2) + " km, ANGLE " +
                             format_number(zenith_deg) + " deg), found H1 " +
-                            format_number(e.h1_km) + ", H2 " + format_number(e.h2_km) +
-                            ", ANGLE " + format_number(e.zenith_angle_deg));
+                            format_number(e.h1_km) + ", H2 " + format_number(e.h2_km) + ", ANGLE " +
+                            format_number(e.zenith_angle_deg));
 }
 
 // L_ue of a view: LOWTRAN 7's ATMOS holds the black ground's emission B(TBOUND) T too
@@ -254,13 +258,18 @@ std::function<double(const io::Tape7Row&)> view_thermal(const Run& r) {
                             format_number(e->surface_albedo));
     const double t_k = e->boundary_temperature_k;
     return [t_k](const io::Tape7Row& row) {
-        const double ground = rt::planck_radiance(1e4 / row.wavenumber_cm1, t_k) * row.transmittance;
+        const double ground =
+            rt::planck_radiance(1e4 / row.wavenumber_cm1, t_k) * row.transmittance;
         return std::max(0.0, io::per_micrometre(row.path_thermal, row.wavenumber_cm1) - ground);
     };
 }
 
-double per_um_solar(const io::Tape7Row& r) { return io::per_micrometre(r.path_solar, r.wavenumber_cm1); }
-double per_um_thermal(const io::Tape7Row& r) { return io::per_micrometre(r.path_thermal, r.wavenumber_cm1); }
+double per_um_solar(const io::Tape7Row& r) {
+    return io::per_micrometre(r.path_solar, r.wavenumber_cm1);
+}
+double per_um_thermal(const io::Tape7Row& r) {
+    return io::per_micrometre(r.path_thermal, r.wavenumber_cm1);
+}
 double trans(const io::Tape7Row& r) { return r.transmittance; }
 
 // The mean of a run's quantity over a sample's interval; DataError when the TAPE7
@@ -270,17 +279,22 @@ struct Sampler {
     double operator()(const Run& r, const Series& s) const {
         if (nu < s.nu.front() || nu > s.nu.back())
             throw DataError({r.path, r.tape.heading_line},
-                            "expected rows covering " + format_number(nu) + " cm-1 (a sample of "
-                            "the scene node), found " + format_number(s.nu.front()) + " to " +
-                                format_number(s.nu.back()) + " cm-1");
+                            "expected rows covering " + format_number(nu) +
+                                " cm-1 (a sample of "
+                                "the scene node), found " +
+                                format_number(s.nu.front()) + " to " + format_number(s.nu.back()) +
+                                " cm-1");
         return mean_over(s, std::max(nu - half, s.nu.front()), std::min(nu + half, s.nu.back()));
     }
 };
 
 void check_list(const io::T7m& list, const std::string& list_path, const PathSetup& p) {
     const SourceLocation at{list_path, 0};
-    auto differs = [](double a, double b) { return std::abs(wrap_180(a - b)) > kAngleTolerance_deg; };
-    if (differs(list.sun_zenith_deg, p.sun_zenith_deg) || differs(list.sun_azimuth_deg, p.sun_azimuth_deg))
+    auto differs = [](double a, double b) {
+        return std::abs(wrap_180(a - b)) > kAngleTolerance_deg;
+    };
+    if (differs(list.sun_zenith_deg, p.sun_zenith_deg) ||
+        differs(list.sun_azimuth_deg, p.sun_azimuth_deg))
         throw DataError(at, "expected runs for the scene node's sun (zenith " +
                                 format_number(p.sun_zenith_deg) + ", azimuth " +
                                 format_number(p.sun_azimuth_deg) + " deg), found zenith " +
@@ -311,7 +325,9 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
     if (sun_up) {
         sun = load(list_path, list.sun_tape7, "SUN");
         check_run(*sun, {3}, p.ground_km, 0, p.sun_zenith_deg);
-        es = series(sun->tape, [](const io::Tape7Row& r) { return io::per_micrometre(r.solar_exo, r.wavenumber_cm1); });
+        es = series(sun->tape, [](const io::Tape7Row& r) {
+            return io::per_micrometre(r.solar_exo, r.wavenumber_cm1);
+        });
         tau1 = series(sun->tape, trans);
     }
     std::vector<Run> views;
@@ -327,10 +343,12 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
     std::vector<Run> sky;
     std::vector<std::array<Series, 2>> sky_series;  // L_ds, L_de
     for (const io::T7mSky& cell : list.sky) {
-        sky.push_back(load(list_path, cell.tape7,
-                           "SKY " + format_number(cell.zenith_deg) + " " + format_number(cell.azimuth_deg)));
+        sky.push_back(
+            load(list_path, cell.tape7,
+                 "SKY " + format_number(cell.zenith_deg) + " " + format_number(cell.azimuth_deg)));
         check_run(sky.back(), {1, 2}, p.ground_km, 0, cell.zenith_deg);
-        sky_series.push_back({series(sky.back().tape, per_um_solar), series(sky.back().tape, per_um_thermal)});
+        sky_series.push_back(
+            {series(sky.back().tape, per_um_solar), series(sky.back().tape, per_um_thermal)});
     }
 
     std::vector<io::Rad> out;
@@ -344,9 +362,12 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
         for (const io::T7mSky& cell : list.sky) {
             const double z0 = cell.zenith_deg - list.sky_zenith_step_deg / 2;
             const double z1 = cell.zenith_deg + list.sky_zenith_step_deg / 2;
-            s.cells.push_back({cell.zenith_deg, cell.azimuth_deg,
-                               (std::cos(z0 * kDeg) - std::cos(z1 * kDeg)) * list.sky_azimuth_step_deg * kDeg,
-                               {}, {}});
+            s.cells.push_back(
+                {cell.zenith_deg,
+                 cell.azimuth_deg,
+                 (std::cos(z0 * kDeg) - std::cos(z1 * kDeg)) * list.sky_azimuth_step_deg * kDeg,
+                 {},
+                 {}});
         }
         for (long k = band.sample_count() - 1; k >= 0; --k) {
             const double nu = band.min_wavenumber_cm1 + k * band.increment_cm1;
@@ -358,9 +379,9 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
             }
             rad.samples.push_back(sample);
             for (std::size_t v = 0; v < views.size(); ++v)
-                rad.views[v].path.push_back({std::clamp(mean(views[v], view_series[v][0]), 0.0, 1.0),
-                                             mean(views[v], view_series[v][1]),
-                                             mean(views[v], view_series[v][2])});
+                rad.views[v].path.push_back(
+                    {std::clamp(mean(views[v], view_series[v][0]), 0.0, 1.0),
+                     mean(views[v], view_series[v][1]), mean(views[v], view_series[v][2])});
             for (std::size_t c = 0; c < sky.size(); ++c) {
                 s.cells[c].scattered_radiance.push_back(mean(sky[c], sky_series[c][0]));
                 s.cells[c].emitted_radiance.push_back(mean(sky[c], sky_series[c][1]));

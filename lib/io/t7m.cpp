@@ -1,6 +1,7 @@
 // Reading and writing .t7m TAPE7 run lists (man t7m(5)).
 #include "io/t7m.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -26,9 +27,12 @@ void parse_keys(LineCursor& cur, T7m& t) {
         cur.next("key = value");
         const std::string key(kv->key);
         if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
-            throw DataError(at, "expected one of sun_zenith, sun_azimuth, view_azimuth, "
-                                "sky_zenith_step, sky_azimuth_step, found " + quoted(key));
-        if (values.count(key)) throw DataError(at, "expected each key once, found " + quoted(key) + " again");
+            throw DataError(at,
+                            "expected one of sun_zenith, sun_azimuth, view_azimuth, "
+                            "sky_zenith_step, sky_azimuth_step, found " +
+                                quoted(key));
+        if (values.count(key))
+            throw DataError(at, "expected each key once, found " + quoted(key) + " again");
         values[key] = parse_double(kv->value, at, key);
     }
     for (const char* k : kKeys)
@@ -43,7 +47,8 @@ void parse_keys(LineCursor& cur, T7m& t) {
 
 void check_keys(const T7m& t, const SourceLocation& at) {
     if (!(t.sun_zenith_deg >= 0 && t.sun_zenith_deg <= 180))
-        throw DataError(at, "expected sun_zenith in [0, 180], found " + format_number(t.sun_zenith_deg));
+        throw DataError(
+            at, "expected sun_zenith in [0, 180], found " + format_number(t.sun_zenith_deg));
     for (double a : {t.sun_azimuth_deg, t.view_azimuth_deg})
         if (!(a >= 0 && a < 360))
             throw DataError(at, "expected azimuths in [0, 360), found " + format_number(a));
@@ -52,8 +57,9 @@ void check_keys(const T7m& t, const SourceLocation& at) {
         return step > 0 && n >= 1 && std::abs(n - std::round(n)) < 1e-9;
     };
     if (!divides(90, t.sky_zenith_step_deg) || !divides(360, t.sky_azimuth_step_deg))
-        throw DataError(at, "expected sky_zenith_step dividing 90 and sky_azimuth_step "
-                            "dividing 360");
+        throw DataError(at,
+                        "expected sky_zenith_step dividing 90 and sky_azimuth_step "
+                        "dividing 360");
 }
 
 // The sky cells must be the grid of the steps, ring by ring (rad(5) HEMISPHERE).
@@ -65,8 +71,10 @@ void check_sky(const T7m& t, const SourceLocation& end) {
                                  std::to_string(rings) + " rings of " + std::to_string(cells) +
                                  " cells), found " + std::to_string(t.sky.size()));
     for (std::size_t k = 0; k < t.sky.size(); ++k) {
-        const double z = (static_cast<double>(k / static_cast<std::size_t>(cells)) + 0.5) * t.sky_zenith_step_deg;
-        const double a = (static_cast<double>(k % static_cast<std::size_t>(cells)) + 0.5) * t.sky_azimuth_step_deg;
+        const double z = (static_cast<double>(k / static_cast<std::size_t>(cells)) + 0.5) *
+                         t.sky_zenith_step_deg;
+        const double a = (static_cast<double>(k % static_cast<std::size_t>(cells)) + 0.5) *
+                         t.sky_azimuth_step_deg;
         const T7mSky& s = t.sky[k];
         if (std::abs(s.zenith_deg - z) > 1e-6 || std::abs(s.azimuth_deg - a) > 1e-6)
             throw DataError(SourceLocation{end.file, s.line},
@@ -93,8 +101,10 @@ void parse_run(const Line& line, const SourceLocation& at, T7m& t) {
         const double a = parse_in_range(f[2], at, "sky azimuth (deg)", 0, 360);
         t.sky.push_back({z, a, std::string(f[3]), line.number});
     } else {
-        throw DataError(at, "expected 'SUN FILE', 'VIEW ANGLE FILE' or 'SKY ZENITH AZIMUTH "
-                            "FILE', found " + quoted(line.text));
+        throw DataError(at,
+                        "expected 'SUN FILE', 'VIEW ANGLE FILE' or 'SKY ZENITH AZIMUTH "
+                        "FILE', found " +
+                            quoted(line.text));
     }
 }
 
@@ -125,7 +135,8 @@ void write_t7m(std::ostream& out, const T7m& t) {
         << "sky_zenith_step = " << format_number(t.sky_zenith_step_deg) << '\n'
         << "sky_azimuth_step = " << format_number(t.sky_azimuth_step_deg) << '\n';
     if (!t.sun_tape7.empty()) out << "SUN " << t.sun_tape7 << '\n';
-    for (const auto& v : t.views) out << "VIEW " << format_number(v.view_angle_deg) << ' ' << v.tape7 << '\n';
+    for (const auto& v : t.views)
+        out << "VIEW " << format_number(v.view_angle_deg) << ' ' << v.tape7 << '\n';
     for (const auto& s : t.sky)
         out << "SKY " << format_number(s.zenith_deg) << ' ' << format_number(s.azimuth_deg) << ' '
             << s.tape7 << '\n';

@@ -30,15 +30,14 @@ struct T7mSky {
     std::string tape7;
     int line = 0;  // not compared
     friend bool operator==(const T7mSky& a, const T7mSky& b) {
-        return a.zenith_deg == b.zenith_deg && a.azimuth_deg == b.azimuth_deg &&
-               a.tape7 == b.tape7;
+        return a.zenith_deg == b.zenith_deg && a.azimuth_deg == b.azimuth_deg && a.tape7 == b.tape7;
     }
 };
 
 struct T7m {
     double sun_zenith_deg = 0;  // [0, 180]: the sun the runs were set up for
     double sun_azimuth_deg = 0;
-    double view_azimuth_deg = 0;  // of positive view angles
+    double view_azimuth_deg = 0;                               // of positive view angles
     double sky_zenith_step_deg = 0, sky_azimuth_step_deg = 0;  // the sky grid's cells
     std::string sun_tape7;  // the sun path's run (IEMSCT 3); empty when the sun is down
     int sun_line = 0;

@@ -2,6 +2,7 @@
 #include "io/tape7.hpp"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -29,11 +30,12 @@ constexpr std::array<const char*, 13> kModtranTwoWordNames = {
     "TOT TRANS", "PTH THRML", "THRML SCT", "SURF EMIS", "SOL SCAT", "SING SCAT", "GRND RFLT",
     "DRCT RFLT", "TOTAL RAD", "REF SOL",   "SOL TR",    "DIR EM",   "TOA SUN"};
 
+// The heading in upper case, its words separated by one blank.
 std::string collapse_blanks(std::string_view text) {
     std::string out;
     for (auto f : split_fields(text)) {
         if (!out.empty()) out += ' ';
-        out += ascii_lower(f);
+        out += f;
     }
     for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return out;
@@ -97,8 +99,7 @@ Tape7Row lowtran_row(const Line& line, const TextInput& in, int iemsct) {
 
 // Where MODTRAN's heading puts each quantity (-1: absent).
 struct ModtranColumns {
-    int trans = -1, thermal = -1, thermal_scatter = -1, solar = -1, solar_exo = -1,
-        solar_tr = -1;
+    int trans = -1, thermal = -1, thermal_scatter = -1, solar = -1, solar_exo = -1, solar_tr = -1;
     std::size_t count = 0;
 };
 
@@ -116,8 +117,9 @@ ModtranColumns modtran_columns(const std::vector<std::string>& names, const Sour
         if (n == "SOL_TR") c.solar_tr = k;
     }
     if (c.trans < 0)
-        throw DataError(at, "expected a transmittance column (TOT_TRANS, COMBIN or TRANS) "
-                            "in the heading");
+        throw DataError(at,
+                        "expected a transmittance column (TOT_TRANS, COMBIN or TRANS) "
+                        "in the heading");
     return c;
 }
 
@@ -157,12 +159,12 @@ void check_row(const Tape7Row& r, const Tape7Row* previous, const SourceLocation
                                 format_number(r.wavenumber_cm1) +
                                 " (wavelength output is not read: use cm-1)");
     if (!(r.transmittance >= 0 && r.transmittance <= 1))
-        throw DataError(at, "expected a transmittance in [0, 1], found " +
-                                format_number(r.transmittance));
+        throw DataError(
+            at, "expected a transmittance in [0, 1], found " + format_number(r.transmittance));
     for (double v : {r.path_thermal, r.path_solar, r.solar_exo, r.solar_transmitted})
         if (v < 0)
-            throw DataError(at, "expected radiances and irradiances >= 0, found " +
-                                    format_number(v));
+            throw DataError(at,
+                            "expected radiances and irradiances >= 0, found " + format_number(v));
 }
 
 // The rows from `from` to the " -9999." marker; nothing but blank lines may follow it.
@@ -174,8 +176,8 @@ void read_rows(const std::vector<Line>& lines, std::size_t from, const TextInput
         if (text.empty()) continue;
         if (text.substr(0, 6) == "-9999.") break;
         const SourceLocation at = in.at(lines[i].number);
-        Tape7Row r = modtran ? modtran_row(lines[i], in, *modtran)
-                             : lowtran_row(lines[i], in, t.iemsct);
+        Tape7Row r =
+            modtran ? modtran_row(lines[i], in, *modtran) : lowtran_row(lines[i], in, t.iemsct);
         check_row(r, t.rows.empty() ? nullptr : &t.rows.back(), at);
         t.rows.push_back(r);
     }
@@ -237,9 +239,8 @@ Tape7 parse_tape7(const TextInput& in) {
         t.iemsct = t.echo->iemsct;
         if (heading != kLowtranHeadings[static_cast<std::size_t>(t.iemsct)])
             throw DataError(in.at(lines[h].number),
-                            "expected the column heading of IEMSCT " +
-                                std::to_string(t.iemsct) + " (echoed CARD 1), found " +
-                                quoted(heading));
+                            "expected the column heading of IEMSCT " + std::to_string(t.iemsct) +
+                                " (echoed CARD 1), found " + quoted(heading));
         t.thermal_includes_boundary = t.iemsct == 1 || t.iemsct == 2;
         read_rows(lines, h + 1, in, t, nullptr);
         return t;
@@ -250,8 +251,8 @@ Tape7 parse_tape7(const TextInput& in) {
     std::size_t first = h + 1;  // a units line ("CM-1 ...") may follow the heading
     while (first < lines.size()) {
         const auto f = split_fields(lines[first].text);
-        if (!f.empty() && (std::isdigit(static_cast<unsigned char>(f[0][0])) || f[0][0] == '.' ||
-                           f[0][0] == '-'))
+        if (!f.empty() &&
+            (std::isdigit(static_cast<unsigned char>(f[0][0])) || f[0][0] == '.' || f[0][0] == '-'))
             break;
         ++first;
     }

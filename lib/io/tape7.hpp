@@ -20,12 +20,12 @@ enum class Tape7Program { Lowtran7, Modtran };
 // whose echo is not read).
 struct Tape7Echo {
     int model = 0, itype = 0, iemsct = 0, imult = 0;
-    double boundary_temperature_k = 0;  // TBOUND as LOWTRAN used it (0 replaced by the
-                                        // ground air temperature when the path ends there)
-    double surface_albedo = 0;          // SALB
-    double ground_km = 0;               // GNDALT (CARD 2)
-    double h1_km = 0, h2_km = 0;        // CARD 3: observer, end of the path
-    double zenith_angle_deg = 0;        // CARD 3 ANGLE at H1
+    double boundary_temperature_k = 0;          // TBOUND as LOWTRAN used it (0 replaced by the
+                                                // ground air temperature when the path ends there)
+    double surface_albedo = 0;                  // SALB
+    double ground_km = 0;                       // GNDALT (CARD 2)
+    double h1_km = 0, h2_km = 0;                // CARD 3: observer, end of the path
+    double zenith_angle_deg = 0;                // CARD 3 ANGLE at H1
     double v1_cm1 = 0, v2_cm1 = 0, dv_cm1 = 0;  // CARD 4
     int card1_line = 0, card3_line = 0;         // where they are, for messages
 };
@@ -48,11 +48,11 @@ struct Tape7 {
     Tape7Program program = Tape7Program::Lowtran7;
     // 0 transmittance, 1 thermal radiance, 2 thermal and solar radiance, 3 solar irradiance
     int iemsct = 0;
-    std::optional<Tape7Echo> echo;  // LOWTRAN 7 only
+    std::optional<Tape7Echo> echo;           // LOWTRAN 7 only
     bool thermal_includes_boundary = false;  // LOWTRAN 7 radiance: ATMOS adds
                                              // (1 - SALB) B(TBOUND) T when the path
                                              // ends at the ground
-    std::vector<Tape7Row> rows;  // wavenumber increasing, at least 2
+    std::vector<Tape7Row> rows;              // wavenumber increasing, at least 2
     int heading_line = 0;
 };
 

@@ -4,14 +4,13 @@
 #include "atmos/tape7_radiance.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-
-#include <unistd.h>
 
 #include "core/error.hpp"
 #include "io/fortran_columns.hpp"
