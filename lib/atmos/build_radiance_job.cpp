@@ -53,8 +53,9 @@ void write_decks(const BuildRadianceJob& job, const io::Cdk& deck, const io::Snd
 
 // The run list of --from-tape7: the file, or runs.t7m in the directory.
 std::string t7m_path(const std::string& given) {
-    return std::filesystem::is_directory(given) ? (std::filesystem::path(given) / "runs.t7m").string()
-                                                : given;
+    return std::filesystem::is_directory(given)
+               ? (std::filesystem::path(given) / "runs.t7m").string()
+               : given;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Reading the TAPE7 of one LOWTRAN 7 or MODTRAN run (see tape7.hpp, man tape7(5)).
 #include "io/tape7.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -100,12 +101,12 @@ Tape7Row lowtran_row(const Line& line, const TextInput& in, int iemsct) {
 // Where MODTRAN's heading puts each quantity (-1: absent).
 struct ModtranColumns {
     int trans = -1, thermal = -1, thermal_scatter = -1, solar = -1, solar_exo = -1, solar_tr = -1;
-    std::size_t count = 0;
+    std::size_t count = 0;  // values a row needs: up to the last column read
 };
 
 ModtranColumns modtran_columns(const std::vector<std::string>& names, const SourceLocation& at) {
     ModtranColumns c;
-    c.count = names.size();
+    c.count = 1;
     for (std::size_t i = 1; i < names.size(); ++i) {
         const std::string& n = names[i];
         const int k = static_cast<int>(i);
@@ -116,6 +117,8 @@ ModtranColumns modtran_columns(const std::vector<std::string>& names, const Sour
         if (n == "SOLAR") c.solar_exo = k;
         if (n == "SOL_TR") c.solar_tr = k;
     }
+    for (int k : {c.trans, c.thermal, c.thermal_scatter, c.solar, c.solar_exo, c.solar_tr})
+        c.count = std::max(c.count, static_cast<std::size_t>(k + 1));
     if (c.trans < 0)
         throw DataError(at,
                         "expected a transmittance column (TOT_TRANS, COMBIN or TRANS) "
@@ -134,7 +137,7 @@ Tape7Row modtran_row(const Line& line, const TextInput& in, const ModtranColumns
     const auto f = split_fields(line.text);
     if (f.size() < c.count)
         throw DataError(at, "expected " + std::to_string(c.count) +
-                                " values (one per heading name), found " +
+                                " values (up to the last heading name read), found " +
                                 std::to_string(f.size()));
     auto value = [&](int k, const char* what) {
         return k < 0 ? 0.0 : parse_double(f[static_cast<std::size_t>(k)], at, what);
@@ -218,6 +221,19 @@ std::size_t heading_index(const std::vector<Line>& lines, const TextInput& in) {
                     "expected a column heading line starting with FREQ, found none");
 }
 
+// LOWTRAN 7 when the heading is one of its own, after its 10-line card echo whose
+// first line starts with an integer (MODEL; MODTRAN's CARD 1 starts with its MODTRN
+// and SPEED letters, and MODTRAN 4-5 print LOWTRAN 7's IEMSCT 3 heading too).
+bool is_lowtran(const std::vector<Line>& lines, std::size_t h, const std::string& heading) {
+    if (std::find(kLowtranHeadings.begin(), kLowtranHeadings.end(), heading) ==
+            kLowtranHeadings.end() ||
+        h != kLowtranEchoLines)
+        return false;
+    const std::string_view model = lines[0].text.substr(0, 5);
+    const std::string_view digits = trim(model);
+    return !digits.empty() && digits.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
 }  // namespace
 
 Tape7 parse_tape7(const TextInput& in) {
@@ -226,14 +242,7 @@ Tape7 parse_tape7(const TextInput& in) {
     const std::string heading = collapse_blanks(lines[h].text);
     Tape7 t;
     t.heading_line = lines[h].number;
-    bool lowtran = false;
-    for (const char* known : kLowtranHeadings) lowtran = lowtran || heading == known;
-    if (lowtran) {
-        if (h != kLowtranEchoLines)
-            throw DataError(in.at(lines[h].number),
-                            "expected LOWTRAN 7's column heading after its 10-line card echo, "
-                            "found it on line " +
-                                std::to_string(lines[h].number));
+    if (is_lowtran(lines, h, heading)) {
         t.program = Tape7Program::Lowtran7;
         t.echo = read_echo(lines, in);
         t.iemsct = t.echo->iemsct;

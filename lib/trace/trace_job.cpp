@@ -304,16 +304,18 @@ void check_temperature_keys(const TraceJob& job, const scene::Scene& scene, cons
     long matched = 0;
     const io::FacetTemperature* first_unmatched = nullptr;
     for (const auto& t : tmp.facets) {
-        if (facet_keys.count(t.facet_id)) ++matched;
-        else if (!first_unmatched) first_unmatched = &t;
+        if (facet_keys.count(t.facet_id))
+            ++matched;
+        else if (!first_unmatched)
+            first_unmatched = &t;
     }
     const long unmatched = static_cast<long>(tmp.facets.size()) - matched;
     if (unmatched == 0 && without == 0) return;
     const std::string message =
         std::to_string(matched) + " of " + std::to_string(tmp.facets.size()) +
-        " facet key(s) match a facet of the scene, " + std::to_string(unmatched) +
-        " match none" + (first_unmatched ? " (the first: " + first_unmatched->facet_id + ")" : "") +
-        "; " + std::to_string(without) + " of " + std::to_string(facet_keys.size()) +
+        " facet key(s) match a facet of the scene, " + std::to_string(unmatched) + " match none" +
+        (first_unmatched ? " (the first: " + first_unmatched->facet_id + ")" : "") + "; " +
+        std::to_string(without) + " of " + std::to_string(facet_keys.size()) +
         " facet(s) have no temperature (" + std::to_string(from_gdb) +
         " take the .gdb TEMPERATURE, " + std::to_string(without - from_gdb) + " emit nothing)";
     if (job.strict)

@@ -97,6 +97,21 @@ TEST(Tape7, ModtranByHeadingNames) {
     EXPECT_EQ(t.rows[2].line, 13);
 }
 
+TEST(Tape7, ModtranSolarIrradianceHeadingIsLowtransButItsEchoIsNot) {
+    // MODTRAN writes LOWTRAN 7's IEMSCT 3 heading; its card echo tells them apart.
+    const Tape7 t = parse_tape7(TextInput::from_string(
+        "TS  7    3    3    0    0    0    0    0    0    0    0    0    0   0.000   0.00\n"
+        "    FREQ   TRANS     SOL TR  SOLAR\n"
+        " 1000.   0.9000  9.00E-07  1.00E-06\n"
+        " 1005.   0.9000  9.09E-07  1.01E-06\n"
+        " -9999.\n",
+        "m.tp7"));
+    EXPECT_EQ(t.program, Tape7Program::Modtran);
+    EXPECT_EQ(t.iemsct, 3);
+    EXPECT_EQ(t.rows[1].solar_exo, 1.01e-6);
+    EXPECT_EQ(t.rows[1].solar_transmitted, 9.09e-7);
+}
+
 TEST(Tape7, PerMicrometreIsTheWavenumberJacobian) {
     // Hand calculation: 2.4e-6 W cm-2 sr-1 (cm-1)-1 at 1005 cm-1 (9.95 um) is
     // 2.4e-6 * 1005^2 / 1e4 = 2.424060e-4 W cm-2 sr-1 um-1, i.e. 2.424060 W m-2 sr-1
@@ -132,5 +147,5 @@ TEST(Tape7, Errors) {
               "t.tp7:9: expected a transmittance column (TOT_TRANS, COMBIN or TRANS) in the "
               "heading");
     EXPECT_EQ(error_of(with_line("modtran_iemsct2.tp7", 12, " 1005. 0.6")),
-              "t.tp7:12: expected 13 values (one per heading name), found 2");
+              "t.tp7:12: expected 6 values (up to the last heading name read), found 2");
 }
