@@ -116,7 +116,7 @@ std::vector<std::string> args(const po::variables_map& vm, const char* name);
 std::string output_path(const po::variables_map& vm);  // UsageError if -o is required and missing
 unsigned threads(const po::variables_map& vm);
 std::uint64_t seed(const po::variables_map& vm);
-bool strict(const po::variables_map& vm);                                // --strict given
+bool strict(const po::variables_map& vm);  // --strict given
 std::vector<std::string> creation_options(const po::variables_map& vm);  // --co, as given
 
 // The command line as outputs record it (cube(5), PROVENANCE): the tool's name and its
