@@ -50,19 +50,6 @@ std::vector<double> grid(double min, double increment, long count) {
     return v;
 }
 
-// The .snd's view angles, none within 0.5 deg of the horizon.
-std::vector<double> view_angles(const io::Snd& snd, const std::string& snd_path) {
-    const std::vector<double> views =
-        grid(snd.view_min_deg, snd.view_increment_deg, snd.view_angle_count());
-    for (double v : views)
-        if (std::abs(v) >= 89.5)
-            // The parsed .snd keeps no line numbers: the message names the view angle.
-            throw DataError({snd_path, 0}, "view angle " + format_number(v) +
-                                               " deg is within 0.5 deg of the horizon: no "
-                                               "ground range");
-    return views;
-}
-
 // The sun at the target (NREL SPA at ground altitude), recorded in `rep`.
 geo::SolarPosition target_sun(const io::Snd& snd, RadianceReport& rep) {
     const geo::SolarPosition sun = geo::solar_position(io::scene_site(snd), rep.ground_km * 1000);
@@ -111,30 +98,6 @@ std::vector<SampleResult> solve_samples(const SampleSetup& setup, const std::vec
     return results;
 }
 
-// A band's .rad without its samples: spectral range, views and their ranges.
-io::Rad rad_header(const io::SndBand& band, const io::Snd& snd, const std::vector<double>& views,
-                   double height_km) {
-    io::Rad rad;
-    const long n = band.sample_count();
-    const double max_nu = band.min_wavenumber_cm1 + (n - 1) * band.increment_cm1;
-    rad.sensor_altitude_km = snd.sensor_altitude_km;
-    rad.min_wavenumber_cm1 = band.min_wavenumber_cm1;
-    rad.max_wavenumber_cm1 = max_nu;
-    rad.min_wavelength_um = 1e4 / max_nu;
-    rad.max_wavelength_um = 1e4 / band.min_wavenumber_cm1;
-    rad.wavenumber_increment_cm1 = band.increment_cm1;
-    rad.min_view_angle_deg = views.front();
-    rad.max_view_angle_deg = views.back();
-    rad.view_angle_increment_deg = snd.view_increment_deg;
-    for (double v : views) {
-        io::RadView view;
-        view.view_angle_deg = v;
-        view.range_km = height_km / std::cos(v * kDeg);
-        rad.views.push_back(view);
-    }
-    return rad;
-}
-
 // The sky and upwelled grids without their samples.
 io::RadSky sky_header(const geo::SolarPosition& sun, const Directions& dirs, bool coupling) {
     io::RadSky sky;
@@ -180,6 +143,43 @@ void append_sample(io::Rad& rad, io::RadSky& sky, const SampleResult& r) {
 }
 
 }  // namespace
+
+// The .snd's view angles, none within 0.5 deg of the horizon.
+std::vector<double> view_angles(const io::Snd& snd, const std::string& snd_path) {
+    const std::vector<double> views =
+        grid(snd.view_min_deg, snd.view_increment_deg, snd.view_angle_count());
+    for (double v : views)
+        if (std::abs(v) >= 89.5)
+            // The parsed .snd keeps no line numbers: the message names the view angle.
+            throw DataError({snd_path, 0}, "view angle " + format_number(v) +
+                                               " deg is within 0.5 deg of the horizon: no "
+                                               "ground range");
+    return views;
+}
+
+// A band's .rad without its samples: spectral range, views and their ranges.
+io::Rad rad_header(const io::SndBand& band, const io::Snd& snd, const std::vector<double>& views,
+                   double height_km) {
+    io::Rad rad;
+    const long n = band.sample_count();
+    const double max_nu = band.min_wavenumber_cm1 + (n - 1) * band.increment_cm1;
+    rad.sensor_altitude_km = snd.sensor_altitude_km;
+    rad.min_wavenumber_cm1 = band.min_wavenumber_cm1;
+    rad.max_wavenumber_cm1 = max_nu;
+    rad.min_wavelength_um = 1e4 / max_nu;
+    rad.max_wavelength_um = 1e4 / band.min_wavenumber_cm1;
+    rad.wavenumber_increment_cm1 = band.increment_cm1;
+    rad.min_view_angle_deg = views.front();
+    rad.max_view_angle_deg = views.back();
+    rad.view_angle_increment_deg = snd.view_increment_deg;
+    for (double v : views) {
+        io::RadView view;
+        view.view_angle_deg = v;
+        view.range_km = height_km / std::cos(v * kDeg);
+        rad.views.push_back(view);
+    }
+    return rad;
+}
 
 std::string band_output_path(const std::string& pattern, int band, int band_count) {
     std::string out;

@@ -42,6 +42,15 @@ struct RadianceReport {
 // only band; with several bands that is a UsageError, as is any other "%" sequence.
 std::string band_output_path(const std::string& pattern, int band, int band_count);
 
+// The .snd's view angles (min to max by the increment); DataError naming `snd_path` for
+// one within 0.5 deg of the horizon.
+std::vector<double> view_angles(const io::Snd& snd, const std::string& snd_path);
+
+// A band's .rad without its samples: spectral range, view angles and their ranges to
+// the ground (height_km / cos(view), height_km: sensor above the ground).
+io::Rad rad_header(const io::SndBand& band, const io::Snd& snd, const std::vector<double>& views,
+                   double height_km);
+
 // The tables of every band of `snd` (one io::Rad each, in the .snd's band order).
 // Uses the deck's first run. The spectral samples are solved on options.threads
 // threads, their progress shown on `reporter` ("spectral samples"); the tables do not

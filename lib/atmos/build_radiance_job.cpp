@@ -2,7 +2,9 @@
 #include "atmos/build_radiance_job.hpp"
 
 #include <chrono>
+#include <filesystem>
 
+#include "atmos/tape7_radiance.hpp"
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
@@ -10,6 +12,7 @@
 #include "io/cdk.hpp"
 #include "io/rad.hpp"
 #include "io/snd.hpp"
+#include "io/t7m.hpp"
 
 namespace sigchain::atmos {
 
@@ -27,9 +30,39 @@ void report_tables(const RadianceReport& report, const Reporter& reporter) {
     for (const auto& note : report.notes) reporter.info(note);
 }
 
+// --write-decks: every run's deck, then the run list (last, so that a list on disk
+// names decks that are all there).
+void write_decks(const BuildRadianceJob& job, const io::Cdk& deck, const io::Snd& snd,
+                 const RadianceOptions& o, const Reporter& reporter) {
+    const Tape7Decks decks = tape7_decks(deck, snd, o);
+    const std::filesystem::path dir(job.write_decks_dir);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw IoError("cannot create " + sigchain::quoted(dir.string()) + ": " + ec.message());
+    for (const auto& [name, cdk] : decks.decks) {
+        AtomicOutput out((dir / name).string());
+        io::write_cdk(out.stream(), cdk);
+        out.commit();
+    }
+    AtomicOutput list((dir / "runs.t7m").string());
+    io::write_t7m(list.stream(), decks.list);
+    list.commit();
+    reporter.info("wrote " + std::to_string(decks.decks.size()) + " LOWTRAN 7 decks and " +
+                  (dir / "runs.t7m").string());
+}
+
+// The run list of --from-tape7: the file, or runs.t7m in the directory.
+std::string t7m_path(const std::string& given) {
+    return std::filesystem::is_directory(given)
+               ? (std::filesystem::path(given) / "runs.t7m").string()
+               : given;
+}
+
 }  // namespace
 
 void check_job(const BuildRadianceJob& job) {
+    if (!job.write_decks_dir.empty() && !job.from_tape7.empty())
+        throw UsageError("--write-decks and --from-tape7 cannot be given together");
     if (job.cdk_path == "-" && job.snd_path == "-")
         throw UsageError("only one input can be standard input");
     if (!(job.options.top_km > 0)) throw UsageError("--top must be > 0 km");
@@ -52,20 +85,30 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     check_job(job);
     const auto deck = io::read_cdk_file(job.cdk_path);
     const auto snd = io::read_snd_file(job.snd_path);
-    const std::vector<std::string> paths = band_output_paths(job.output_pattern, snd);
+    const std::vector<std::string> paths = job.write_decks_dir.empty()
+                                               ? band_output_paths(job.output_pattern, snd)
+                                               : std::vector<std::string>{};
     RadianceOptions o = job.options;
     o.data_dir = data_dir(job.data_dir);
     o.snd_path = job.snd_path;
     o.cdk_path = job.cdk_path;
 
+    if (!job.write_decks_dir.empty()) return write_decks(job, deck, snd, o, reporter);
     long total = 0;
     for (const auto& b : snd.bands) total += b.sample_count();
     const auto start = std::chrono::steady_clock::now();
-    RadianceReport report;
-    const auto rads = build_radiance(deck, snd, o, &report, reporter);
+    std::vector<io::Rad> rads;
+    if (!job.from_tape7.empty()) {
+        const std::string list = t7m_path(job.from_tape7);
+        rads = tape7_radiance(io::read_t7m_file(list), list, deck, snd, o);
+        reporter.info("tables from the TAPE7s of " + list);
+    } else {
+        RadianceReport report;
+        rads = build_radiance(deck, snd, o, &report, reporter);
+        report_tables(report, reporter);
+    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    report_tables(report, reporter);
     for (std::size_t b = 0; b < paths.size(); ++b) {
         AtomicOutput out(paths[b]);
         io::write_rad(out.stream(), rads[b]);

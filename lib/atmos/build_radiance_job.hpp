@@ -17,6 +17,11 @@ struct BuildRadianceJob {
     std::string output_pattern;  // band N is written to the pattern with %d -> N
     std::string data_dir;        // reference data; empty: core/data_dir's default
     RadianceOptions options;     // its data_dir, snd_path and cdk_path are set by run
+    // --write-decks DIR: write a LOWTRAN 7 deck per path and DIR/runs.t7m instead of
+    // tables (tape7_decks); --from-tape7 LIST: assemble the tables from the TAPE7s a
+    // run list (.t7m, or a directory holding runs.t7m) names (tape7_radiance).
+    std::string write_decks_dir;
+    std::string from_tape7;
 };
 
 // Throws UsageError for a job that cannot run: both inputs on standard input, --top or

@@ -128,6 +128,8 @@ void Cli::add_creation_option() {
         "GDAL creation option of GeoTIFF outputs (repeatable), e.g. COMPRESS=DEFLATE");
 }
 
+void Cli::add_strict_option(const char* help) { m_options.add_options()("strict", help); }
+
 void Cli::print_help() const {
     std::cout << "Usage: " << m_info.name << ' ' << m_info.usage << "\n"
               << m_info.purpose << "\n\n";
@@ -193,6 +195,8 @@ std::string output_path(const po::variables_map& vm) {
 unsigned threads(const po::variables_map& vm) { return vm["threads"].as<unsigned>(); }
 
 std::uint64_t seed(const po::variables_map& vm) { return vm["seed"].as<std::uint64_t>(); }
+
+bool strict(const po::variables_map& vm) { return vm.count("strict") > 0; }
 
 std::vector<std::string> creation_options(const po::variables_map& vm) { return args(vm, "co"); }
 

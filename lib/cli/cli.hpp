@@ -94,6 +94,9 @@ public:
     // --material-map FILE, --material-id N, --landuse FILE, --landuse-map FILE: the
     // materials of a mesh or DEM raster given as the scene itself (odb(5), SCENE ARGUMENT).
     void add_scene_input_options();
+    // --strict: what a tool otherwise only warns about (its man page lists what) is an
+    // error (exit status 1).
+    void add_strict_option(const char* help = "make warnings about the inputs errors");
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
@@ -126,6 +129,7 @@ std::vector<std::string> args(const po::variables_map& vm, const char* name);
 std::string output_path(const po::variables_map& vm);  // UsageError if -o is required and missing
 unsigned threads(const po::variables_map& vm);
 std::uint64_t seed(const po::variables_map& vm);
+bool strict(const po::variables_map& vm);  // --strict given
 std::vector<std::string> creation_options(const po::variables_map& vm);  // --co, as given
 
 // The command line as outputs record it (cube(5), PROVENANCE): the tool's name and its

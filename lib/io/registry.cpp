@@ -18,6 +18,7 @@
 #include "io/sen.hpp"
 #include "io/shd.hpp"
 #include "io/snd.hpp"
+#include "io/t7m.hpp"
 #include "io/tmp.hpp"
 #include "io/wth.hpp"
 
@@ -42,6 +43,7 @@ const std::vector<FormatHandler>& formats() {
             sen_format(),
             shd_format(),
             snd_format(),
+            t7m_format(),
             tmp_format(),
             wth_format(),
         };

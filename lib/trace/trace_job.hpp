@@ -26,6 +26,8 @@ struct TraceJob {
     std::string output_path;             // .img/.hdr (ENVI) or .tif (GeoTIFF)
     std::string truth_path;              // empty: no truth cube
     std::string tmp_path;                // empty: no emission
+    bool strict = false;                 // --strict: .tmp keys that match no facet, or
+                                         // facets without one, are an error
     Sampling sampling = Sampling::Golfball;
     std::optional<long> samples_per_pixel;   // default: the .adv's samples_per_pixel
     std::optional<long> hemisphere_samples;  // default: RenderOptions's

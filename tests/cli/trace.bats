@@ -612,3 +612,18 @@ coupled_inputs() {
     [[ "$stderr" == *"--co applies to GeoTIFF (.tif) outputs only"* ]] || fail "stderr: $stderr"
     [ ! -e e2.img ]
 }
+
+@test "trace warns when .tmp keys match no facet or facets have no temperature; --strict fails" {
+    # box.tmp with facet 2-1-5 renamed to a key of no facet of box_on_plane.gdb.
+    sed 's/^2-1-5 .*/9-9-9   298/' "$DATA/box.tmp" > odd.tmp
+    run -0 --separate-stderr trace $(inputs) --tmp odd.tmp -o odd.img
+    assert_equal "$stderr" "trace: warning: odd.tmp: 5 of 6 facet key(s) match a facet of the scene, 1 match none (the first: 9-9-9); 1 of 6 facet(s) have no temperature (0 take the .gdb TEMPERATURE, 1 emit nothing)"
+    trace_bad 1 "odd.tmp:10: 5 of 6 facet key(s) match" $(inputs) --tmp odd.tmp --strict -o out.img
+    [[ "$stderr" == *"(--strict)" ]] || fail "stderr: $stderr"
+    # A .tmp that names every facet, and only those, passes --strict silently.
+    trace_ok $(inputs) --tmp "$DATA/box.tmp" --strict -o all.img
+    # Keys that match no facet at all: the error names the first, at its line.
+    printf '# sigchain-tmp 1\n7-7-7 300\n' > none.tmp
+    trace_bad 1 "none.tmp:2: 0 of 1 facet key(s) match" $(inputs) --tmp none.tmp --strict -o out.img
+    trace_bad 2 "--strict" --shadow-history --strict "$DATA/box.snd" "$GDB" "$DATA/box.mat" -o out.shd
+}

@@ -11,7 +11,9 @@ int main(int argc, char** argv) {
     cli::Cli tool({"build_radiance",
                    "Compute atmosphere radiance tables (.rad), one per sensor band, from a\n"
                    "LOWTRAN 7 card deck and a scene node.",
-                   "[OPTIONS] CDK SND -o PATTERN"});
+                   "[OPTIONS] CDK SND -o PATTERN\n"
+                   "   or: build_radiance --write-decks DIR [OPTIONS] CDK SND\n"
+                   "   or: build_radiance --from-tape7 LIST [OPTIONS] CDK SND -o PATTERN"});
     tool.add_positional("input", -1, "card deck (.cdk) and scene node (.snd); one may be '-'");
     tool.add_required_output_option(
         "PATTERN", "write band N to PATTERN with %d replaced by N (e.g. scene-%d.rad); required");
@@ -33,6 +35,11 @@ int main(int argc, char** argv) {
         "solver merges thin layers up to this optical depth (0: never)")(
         "thermal-from", cli::po::value<double>()->default_value(2.5)->value_name("UM"),
         "solve layer emission at wavelengths from UM up")(
+        "write-decks", cli::po::value<std::string>()->value_name("DIR"),
+        "write a LOWTRAN 7 deck per path the tables need and DIR/runs.t7m, no tables")(
+        "from-tape7", cli::po::value<std::string>()->value_name("LIST"),
+        "assemble the tables from the TAPE7s of the run list LIST (.t7m, or a\n"
+        "                    directory holding runs.t7m) instead of solving")(
         "data-dir", cli::po::value<std::string>()->value_name("DIR"),
         "reference data (default: $SIGCHAIN_DATA, else the build's data/)");
     tool.add_threads_option();
@@ -42,7 +49,9 @@ int main(int argc, char** argv) {
         atmos::BuildRadianceJob job;
         job.cdk_path = inputs[0];
         job.snd_path = inputs[1];
-        job.output_pattern = cli::output_path(vm);
+        if (vm.count("write-decks")) job.write_decks_dir = vm["write-decks"].as<std::string>();
+        if (vm.count("from-tape7")) job.from_tape7 = vm["from-tape7"].as<std::string>();
+        if (job.write_decks_dir.empty()) job.output_pattern = cli::output_path(vm);
         if (vm.count("data-dir")) job.data_dir = vm["data-dir"].as<std::string>();
         atmos::RadianceOptions& o = job.options;
         o.streams = vm["streams"].as<int>();

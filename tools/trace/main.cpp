@@ -15,7 +15,7 @@ namespace {
 // trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
-                          "background", "rows", "truth", "tmp", "no-adjacency",
+                          "background", "rows", "truth", "tmp", "strict", "no-adjacency",
                           "adjacency-radius", "co"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
@@ -75,6 +75,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
     if (vm.count("truth")) job.truth_path = vm["truth"].as<std::string>();
     if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
+    job.strict = cli::strict(vm);
     job.allow_degenerate = vm.count("allow-degenerate") > 0;
     job.golfball_jitter = vm.count("golfball-jitter") > 0;
     job.adjacency = vm.count("no-adjacency") == 0;
@@ -101,6 +102,8 @@ int main(int argc, char** argv) {
     tool.add_threads_option();
     tool.add_creation_option();
     tool.add_scene_input_options();
+    tool.add_strict_option(
+        "--tmp keys that match no facet, or facets without a temperature, are an error");
     tool.add_options()("sampling",
                        cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
                        "hemisphere sampling: dirsig, golfball or montecarlo")(
