@@ -93,7 +93,7 @@ assert_tmp_near() {
 
 @test "therm writes to standard output by default and reruns identically, on any threads" {
     run -0 --separate-stderr therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND"
-    assert_line --index 0 "# sigchain-tmp 1"
+    assert_line --index 0 "# sigchain-tmp 1.1"
     echo "$output" > first.tmp
     therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o second.tmp
     run -0 cmp first.tmp second.tmp
