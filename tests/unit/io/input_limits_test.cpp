@@ -58,7 +58,7 @@ TEST(InputLimits, GdbDuplicateFacetIdNamesBothLines) {
 
 TEST(InputLimits, GdbVertexRange) {
     EXPECT_EQ(test::data_error_of([&] { parse_gdb(text(gdb(facet("1-1-1", "1e300 0 0")), "v.gdb")); }),
-              "v.gdb:21: expected vertex coordinates within +-100000000, found 1e+300");
+              "v.gdb:21: expected vertex coordinates within +-1e+08, found 1e+300");
     EXPECT_NO_THROW(parse_gdb(text(gdb(facet("1-1-1", "1e8 -1e8 0")), "ok.gdb")));
 }
 
@@ -75,16 +75,16 @@ TEST(InputLimits, OdbTransformRanges) {
         return test::data_error_of([&] { parse_odb(text(odb(inst), "o.odb")); });
     };
     EXPECT_EQ(err("0,0,0, 1e300,1,1, 0,0,0\n"),
-              "o.odb:5: expected scale factors sx,sy,sz of magnitude 1e-06 to 1000000, found "
+              "o.odb:5: expected scale factors sx,sy,sz of magnitude 1e-06 to 1e+06, found "
               "1e+300");
     EXPECT_EQ(err("0,0,0, 1e-7,1,1, 0,0,0\n").substr(0, 45),
               "o.odb:5: expected scale factors sx,sy,sz of m");
     EXPECT_EQ(err("1e9,0,0, 1,1,1, 0,0,0\n"),
-              "o.odb:5: expected translations x,y,z within +-100000000, found 1000000000");
+              "o.odb:5: expected translations x,y,z within +-1e+08, found 1e+09");
     EXPECT_EQ(err("0,0,0, 1,1,1, 0,0,4000\n"),
               "o.odb:5: expected rotations rx,ry,rz (deg) within +-3600, found 4000");
     EXPECT_EQ(err("MATRIX 1e7 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n"),
-              "o.odb:5: expected MATRIX 3x3 elements within +-1000000, found 10000000");
+              "o.odb:5: expected MATRIX 3x3 elements within +-1e+06, found 1e+07");
     EXPECT_NO_THROW(parse_odb(text(odb("0,0,0, 1e6,1e-6,-1, 0,0,-3600\n"), "ok.odb")));
 }
 
