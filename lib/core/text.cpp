@@ -14,6 +14,10 @@
 #include <iterator>
 #include <sstream>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace sigchain {
 
 TextInput::TextInput(std::string text, std::string name)
@@ -25,21 +29,121 @@ TextInput::TextInput(std::string text, std::string name)
     }
 }
 
-TextInput TextInput::from_file(const std::string& path) {
-    if (path == "-") return from_stream(std::cin, "-");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path + ": cannot open: " + std::strerror(errno));
-    return from_stream(in, path);
+namespace {
+
+// Accumulates a text file chunk by chunk and refuses it at the first NUL byte, the first
+// over-long line or the first byte past the size limit, before reading any further.
+class TextAccumulator {
+public:
+    TextAccumulator(const std::string& name, const TextLimits& limits)
+        : m_name(name), m_limits(limits) {}
+
+    void add(const char* data, std::size_t size) {
+        if (m_text.size() + size > m_limits.max_bytes)
+            throw DataError({m_name, m_line},
+                            "file larger than " + std::to_string(m_limits.max_bytes) +
+                                " bytes (the limit of a text file, sigchain(7)); expected a "
+                                "text file");
+        const char* end = data + size;
+        const char* p = data;
+        while (p < end) {
+            const void* nul = std::memchr(p, '\0', static_cast<std::size_t>(end - p));
+            const char* stop = nul ? static_cast<const char*>(nul) : end;
+            scan_lines(p, stop);
+            if (nul)
+                throw DataError({m_name, m_line}, "binary data (NUL byte); expected a text file");
+            p = stop;
+        }
+        m_text.append(data, size);
+    }
+
+    std::string take() { return std::move(m_text); }
+
+private:
+    // Counts lines and measures the current one over [p, end) (no NUL inside).
+    void scan_lines(const char* p, const char* end) {
+        while (p < end) {
+            const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+            const char* stop = nl ? static_cast<const char*>(nl) : end;
+            m_line_length += static_cast<std::size_t>(stop - p);
+            if (m_line_length > m_limits.max_line)
+                throw DataError({m_name, m_line},
+                                "line longer than " + std::to_string(m_limits.max_line) +
+                                    " bytes (the limit of a text line, sigchain(7)); expected "
+                                    "a text file");
+            if (!nl) return;
+            ++m_line;
+            m_line_length = 0;
+            p = stop + 1;
+        }
+    }
+
+    const std::string& m_name;
+    const TextLimits& m_limits;
+    std::string m_text;
+    int m_line = 1;
+    std::size_t m_line_length = 0;
+};
+
+constexpr std::size_t kChunk = 1 << 16;
+
+// Reads `fd` to its end through `acc`.
+void read_fd(int fd, const std::string& name, TextAccumulator& acc) {
+    std::vector<char> buffer(kChunk);
+    while (true) {
+        ssize_t n = ::read(fd, buffer.data(), buffer.size());
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0)
+            throw IoError(SourceLocation{name, 0}.str() + ": read error: " + std::strerror(errno));
+        if (n == 0) return;
+        acc.add(buffer.data(), static_cast<std::size_t>(n));
+    }
+}
+
+// Closes a file descriptor on every path out.
+struct FdCloser {
+    int fd;
+    ~FdCloser() { ::close(fd); }
+};
+
+}  // namespace
+
+TextInput TextInput::from_file(const std::string& path, const TextLimits& limits) {
+    if (path == "-") {
+        std::string name = "-";
+        TextAccumulator acc(name, limits);
+        read_fd(STDIN_FILENO, name, acc);
+        return TextInput(acc.take(), name);
+    }
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw IoError(path + ": cannot open: " + std::strerror(errno));
+    FdCloser closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) throw IoError(path + ": cannot open: " + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw IoError(path + ": is a directory; expected a file");
+    if (S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) > limits.max_bytes)
+        throw DataError({path, 0}, "file of " + std::to_string(st.st_size) +
+                                       " bytes, larger than " + std::to_string(limits.max_bytes) +
+                                       " (the limit of a text file, sigchain(7))");
+    TextAccumulator acc(path, limits);
+    read_fd(fd, path, acc);
+    return TextInput(acc.take(), path);
 }
 
 TextInput TextInput::from_string(std::string text, std::string name) {
     return TextInput(std::move(text), std::move(name));
 }
 
-TextInput TextInput::from_stream(std::istream& in, std::string name) {
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+TextInput TextInput::from_stream(std::istream& in, std::string name, const TextLimits& limits) {
+    TextAccumulator acc(name, limits);
+    std::vector<char> buffer(kChunk);
+    while (in) {
+        in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+        auto n = in.gcount();
+        if (n > 0) acc.add(buffer.data(), static_cast<std::size_t>(n));
+    }
     if (in.bad()) throw IoError(SourceLocation{name, 0}.str() + ": read error");
-    return TextInput(std::move(text), std::move(name));
+    return TextInput(acc.take(), std::move(name));
 }
 
 std::string_view trim(std::string_view text) {

@@ -23,15 +23,29 @@ struct Line {
     std::string_view text;  // view into the owning TextInput
 };
 
+// What any text file may hold (sigchain(7), Text files). Reading stops at the first
+// byte past a limit, so an endless or huge input (/dev/zero, a runaway pipe) is
+// refused without being read whole.
+struct TextLimits {
+    std::size_t max_bytes = std::size_t{1} << 30;  // 1 GiB: the whole file
+    std::size_t max_line = std::size_t{1} << 20;   // 1 MiB: one line, without its '\n'
+};
+
 // A whole text file held in memory. Construction checks for binary content (NUL
 // bytes) and reports it as a DataError. Not thread-safe for mutation; const use is.
 class TextInput {
 public:
-    // Reads a file; "-" reads standard input. Throws IoError if it cannot be read.
-    static TextInput from_file(const std::string& path);
+    // Reads a file; "-" reads standard input. Reads incrementally and throws a
+    // DataError at the first NUL byte, the first line longer than limits.max_line or
+    // past limits.max_bytes ("FILE:LINE: ..."); an IoError ("FILE: is a directory",
+    // "FILE: cannot open: ...") for what is not a readable file. A FIFO or pipe is read
+    // to its end, like standard input (it waits for its writer, as cat(1) does).
+    static TextInput from_file(const std::string& path, const TextLimits& limits = {});
     // Wraps text already in memory; `name` is used in messages.
     static TextInput from_string(std::string text, std::string name);
-    static TextInput from_stream(std::istream& in, std::string name);
+    // Reads a stream to its end with the same checks as from_file.
+    static TextInput from_stream(std::istream& in, std::string name,
+                                 const TextLimits& limits = {});
 
     const std::string& name() const { return m_name; }
     const std::string& text() const { return m_text; }

@@ -15,7 +15,7 @@ FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file) {
     Vec3 los{adv.target[0] - adv.camera[0], adv.target[1] - adv.camera[1],
              adv.target[2] - adv.camera[2]};
     if (geo::dot(los, los) == 0)
-        throw DataError({adv_file, 2}, "camera point equals target point: no line of sight");
+        throw DataError({adv_file, adv.lines.camera}, "camera point equals target point: no line of sight");
     cam.forward = geo::unit(los);
     double a = adv.azimuth_deg * kDeg;
     Vec3 h{-std::sin(a), std::cos(a), 0.0};
@@ -23,7 +23,7 @@ FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file) {
     Vec3 r{h[0] - along * cam.forward[0], h[1] - along * cam.forward[1],
            h[2] - along * cam.forward[2]};
     if (geo::norm(r) < 1e-6)
-        throw DataError({adv_file, 3}, "camera azimuth " + std::to_string(adv.azimuth_deg) +
+        throw DataError({adv_file, adv.lines.angles}, "camera azimuth " + std::to_string(adv.azimuth_deg) +
                                            " deg points along the line of sight; cannot orient "
                                            "the image");
     r = geo::unit(r);

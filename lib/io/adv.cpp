@@ -37,18 +37,23 @@ long parse_side(std::string_view token, const SourceLocation& at, const char* wh
 // The five legacy lines.
 void parse_legacy(LineCursor& cur, Adv& adv) {
     adv.target = parse_point(cur, "target point");
+    adv.lines.target = cur.where().line;
     adv.camera = parse_point(cur, "camera point");
+    adv.lines.camera = cur.where().line;
     if (adv.camera == adv.target)
         throw DataError(cur.where(),
                         "expected a camera point different from the target point, "
                         "found the same point");
     parse_angles(cur, adv);
+    adv.lines.angles = cur.where().line;
     auto f = cur.fields(1, "focal length (mm)");
+    adv.lines.focal_length = cur.where().line;
     adv.focal_length_mm = parse_double(f[0], cur.where(), "focal length (mm)");
     if (adv.focal_length_mm <= 0)
         throw DataError(cur.where(),
                         "expected focal length (mm) greater than 0, found " + quoted(f[0]));
     f = cur.fields(2, "image size: rows columns");
+    adv.lines.size = cur.where().line;
     adv.rows = parse_side(f[0], cur.where(), "image rows");
     adv.columns = parse_side(f[1], cur.where(), "image columns");
 }

@@ -33,6 +33,12 @@ struct Adv {
     long samples_per_pixel = 1;
     // Which optional keys were present (so a rewrite keeps a legacy file legacy).
     bool has_units = false, has_pixel_pitch = false, has_sensor = false, has_samples = false;
+    // The file lines of the legacy records, for messages after reading (comments and
+    // blank lines may precede them). Not part of the value: always compare equal.
+    struct Lines {
+        int target = 1, camera = 2, angles = 3, focal_length = 4, size = 5;
+        bool operator==(const Lines&) const { return true; }
+    } lines;
 
     bool operator==(const Adv&) const = default;
 };

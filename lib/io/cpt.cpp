@@ -80,12 +80,13 @@ Cpt parse_cpt(const TextInput& in) {
                    (text.back() == '\n' ? 0 : 1);
         throw DataError(in.at(last), "unexpected end of file, expected a control point line");
     }
+    require_end_marker(in, "cpt", cpt.minor_version, cpt.points.size());
     return cpt;
 }
 
 void write_cpt(std::ostream& out, const Cpt& cpt) {
     for (const auto& p : cpt.points) check_writable(p);
-    out << "# sigchain-cpt 1\n"
+    out << "# sigchain-cpt 1.1\n"
         << "# name synthetic_row synthetic_column reference_row reference_column radius_px "
            "description\n";
     for (const auto& p : cpt.points) {
@@ -95,6 +96,7 @@ void write_cpt(std::ostream& out, const Cpt& cpt) {
         if (!p.description.empty()) out << ' ' << p.description;
         out << '\n';
     }
+    out << end_marker_line(cpt.points.size());
 }
 
 FormatHandler cpt_format() {

@@ -28,15 +28,17 @@ struct ControlPoint {
 };
 
 struct Cpt {
-    int minor_version = 0;             // read from the magic line; the writer writes version 1
+    int minor_version = 0;             // read from the magic line; the writer writes version 1.1
     std::vector<ControlPoint> points;  // at least 1, in file order
 
     friend bool operator==(const Cpt& a, const Cpt& b) { return a.points == b.points; }
 };
 
+// Reads version 1.0 and 1.1; a 1.1 file must end with "# sigchain-end N" (N points).
 Cpt parse_cpt(const TextInput& in);
-// `# sigchain-cpt 1`, a column comment, one line per point. Throws std::invalid_argument
-// for a name with white space or '#', or a description with '#' or a line break.
+// `# sigchain-cpt 1.1`, a column comment, one line per point, "# sigchain-end N".
+// Throws std::invalid_argument for a name with white space or '#', or a description
+// with '#' or a line break.
 void write_cpt(std::ostream& out, const Cpt& cpt);
 inline Cpt read_cpt_file(const std::string& path) { return parse_cpt(TextInput::from_file(path)); }
 FormatHandler cpt_format();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <unordered_map>
 
 #include "core/error.hpp"
 
@@ -64,10 +65,25 @@ Vec3 read_vec3(LineCursor& c, std::string_view what) {
     return v;
 }
 
+// A vertex: finite (parse_double) and within kGdbMaxCoordinate on each axis (gdb(5)).
+Vec3 read_vertex(LineCursor& c) {
+    Vec3 v = read_vec3(c, "vertex x y z");
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(v[i]) > kGdbMaxCoordinate)
+            throw DataError(c.where(), "expected vertex coordinates within +-" +
+                                           format_number(kGdbMaxCoordinate) + ", found " +
+                                           format_number(v[i]));
+    return v;
+}
+
 void read_facet_attributes(LineCursor& c, GdbFacet& f) {
     f.material_name = read_text(c, "material name");
     auto id = c.fields(1, "material id");
     f.material_id = parse_count(id[0], c.where(), "material id");
+    if (f.material_id > kMaxMaterialId)
+        throw DataError(c.where(), "expected material id from 0 to " +
+                                       std::to_string(kMaxMaterialId) + ", found " +
+                                       sigchain::quoted(id[0]));
     f.legacy_name = read_text(c, "legacy name");
     f.temperature_c = read_number(c, "temperature (C, -1 = from therm)");
     if (f.temperature_c != -1 && f.temperature_c < -273.15)
@@ -87,7 +103,7 @@ void read_facet_geometry(LineCursor& c, GdbFacet& f) {
     long count = parse_long(n[0], c.where(), "vertex count (3 or 4)");
     if (count != 3 && count != 4)
         throw DataError(c.where(), "expected vertex count 3 or 4, found " + sigchain::quoted(n[0]));
-    for (long i = 0; i < count; ++i) f.vertices.push_back(read_vec3(c, "vertex x y z"));
+    for (long i = 0; i < count; ++i) f.vertices.push_back(read_vertex(c));
     f.normal = read_vec3(c, "normal nx ny nz");
     if (f.normal[0] == 0 && f.normal[1] == 0 && f.normal[2] == 0)
         throw DataError(c.where(), "expected a non-zero normal, found 0 0 0");
@@ -98,11 +114,17 @@ void read_facet_geometry(LineCursor& c, GdbFacet& f) {
     f.spare = read_text(c, "facet spare field");
 }
 
-GdbFacet read_facet(LineCursor& c, int keyword_line) {
+// `ids`: facet id -> the line it was first read on (a key of .shd, .tmp and trace must
+// name one facet).
+GdbFacet read_facet(LineCursor& c, int keyword_line, std::unordered_map<std::string, int>& ids) {
     GdbFacet f;
     f.line = keyword_line;
     f.name = read_text(c, "facet name");
     f.id = read_id(c, "facet id");
+    auto [it, fresh] = ids.emplace(f.id, c.where().line);
+    if (!fresh)
+        throw DataError(c.where(), "facet id " + f.id + " already used at line " +
+                                       std::to_string(it->second));
     read_facet_attributes(c, f);
     read_facet_geometry(c, f);
     return f;
@@ -115,6 +137,7 @@ Gdb parse_gdb(const TextInput& in) {
     gdb.file = in.name();
     LineCursor c(in);
     c.require_not_empty("OBJECT or END");
+    std::unordered_map<std::string, int> facet_ids;
     while (true) {
         const Line& line = c.next(kEndWhat);
         if (line.text == "END") break;
@@ -138,7 +161,7 @@ Gdb parse_gdb(const TextInput& in) {
                 throw DataError(c.where(line),
                                 "expected PART before FACE, found FACE outside a PART");
             int number = line.number;
-            gdb.objects.back().parts.back().facets.push_back(read_facet(c, number));
+            gdb.objects.back().parts.back().facets.push_back(read_facet(c, number, facet_ids));
         } else {
             throw DataError(c.where(line), "expected " + std::string(kEndWhat) + ", found " +
                                                sigchain::quoted(line.text));

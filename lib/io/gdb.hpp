@@ -9,6 +9,7 @@
 
 #include "core/text.hpp"
 #include "geo/vec3.hpp"
+#include "io/mat.hpp"
 #include "io/registry.hpp"
 
 namespace sigchain::io {
@@ -55,6 +56,14 @@ struct Gdb {
     std::vector<GdbObject> objects;
 };
 
+// Limits the reader enforces (gdb(5) ERRORS): the largest |x|, |y| or |z| of a vertex
+// (scene units: 1e8 m is eight times the Earth's diameter, so only a corrupt file goes
+// beyond it), and the largest material id (the .mat's MATERIAL_ID limit, mat(5)).
+inline constexpr double kGdbMaxCoordinate = 1e8;
+
+// Parses a whole .gdb; throws DataError ("FILE:LINE: ...") for bad input, a facet id
+// used twice ("facet id X already used at line M"), a vertex beyond kGdbMaxCoordinate
+// or a material id beyond kMaxMaterialId.
 Gdb parse_gdb(const TextInput& in);
 void write_gdb(std::ostream& out, const Gdb& gdb);
 inline Gdb read_gdb_file(const std::string& path) { return parse_gdb(TextInput::from_file(path)); }

@@ -1,6 +1,7 @@
 // Magic/version lines and `key = value` lines of sigchain's own text formats.
 #include "io/header_lines.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace sigchain::io {
@@ -39,6 +40,37 @@ int require_magic_line(const TextInput& in, std::string_view name, int major) {
                                       " or " + std::to_string(major) + ".N, found " +
                                       quoted(fields[1]));
     return static_cast<int>(version->second);
+}
+
+std::string end_marker_line(std::size_t rows) {
+    return "# sigchain-end " + std::to_string(rows) + "\n";
+}
+
+void require_end_marker(const TextInput& in, std::string_view name, int minor, std::size_t rows) {
+    if (minor < kEndMarkerMinor) return;
+    std::string_view text = in.text();
+    // The last non-blank physical line and its number.
+    std::size_t end = text.find_last_not_of(" \t\r\n");
+    std::string_view last;
+    int line = 0;
+    if (end != std::string_view::npos) {
+        std::size_t begin = text.rfind('\n', end);
+        begin = begin == std::string_view::npos ? 0 : begin + 1;
+        last = trim(text.substr(begin, end + 1 - begin));
+        line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + begin, '\n'));
+    }
+    std::string expected = "'# sigchain-end " + std::to_string(rows) + "'";
+    std::string version = "sigchain-" + std::string(name) + " 1." + std::to_string(minor);
+    auto fields = split_fields(last.empty() ? last : last.substr(1));
+    if (last.empty() || last.front() != '#' || fields.size() != 2 ||
+        fields[0] != "sigchain-end")
+        throw DataError(in.at(line), "expected " + expected + " as the last line of a " +
+                                         version + " file (a truncated file?), found " +
+                                         quoted(last));
+    if (fields[1] != std::to_string(rows))
+        throw DataError(in.at(line), "expected " + expected + " (" +
+                                         std::to_string(rows) + " rows read; a truncated file?), found " +
+                                         quoted(last));
 }
 
 std::optional<KeyValue> split_key_value(std::string_view text, const SourceLocation& where) {

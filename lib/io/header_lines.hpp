@@ -3,6 +3,8 @@
 #pragma once
 
 #include <optional>
+#include <cstddef>
+#include <string>
 #include <string_view>
 
 #include "core/text.hpp"
@@ -15,6 +17,16 @@ namespace sigchain::io {
 // missing or malformed magic line or another major version, and at line 0 for an empty
 // file.
 int require_magic_line(const TextInput& in, std::string_view name, int major);
+
+// Version MAJOR.1 of sigchain's row formats (tmp(5), cpt(5)) ends with a comment line
+// "# sigchain-end N", N the number of data rows, so that a truncated file is refused;
+// a version MAJOR.0 reader skips it as a comment.
+inline constexpr int kEndMarkerMinor = 1;
+std::string end_marker_line(std::size_t rows);  // "# sigchain-end N\n"
+// For a file of minor version >= kEndMarkerMinor: the last non-blank line of `in` must
+// be "# sigchain-end N" with N == `rows`. Throws DataError at that line otherwise;
+// does nothing for older minor versions.
+void require_end_marker(const TextInput& in, std::string_view name, int minor, std::size_t rows);
 
 // A `key = value` line split at its first `=`, both sides trimmed.
 struct KeyValue {

@@ -106,7 +106,13 @@ const std::array<TagSpec, 24> kTags = {{
     {"MATERIAL_NAME", true, [](Material& m, const Value& v) { m.name = v.text; },
      [](const Material& m) { return Text(m.name); }},
     {"MATERIAL_ID", true,
-     [](Material& m, const Value& v) { m.id = parse_count(v.text, v.where, v.tag); },
+     [](Material& m, const Value& v) {
+         m.id = parse_count(v.text, v.where, v.tag);
+         if (m.id > kMaxMaterialId)
+             throw DataError(v.where, "expected " + std::string(v.tag) + " from 0 to " +
+                                          std::to_string(kMaxMaterialId) + ", found " +
+                                          quoted(v.text));
+     },
      [](const Material& m) { return Text(std::to_string(m.id)); }},
     {"SPECIFIC_HEAT", true,
      [](Material& m, const Value& v) { m.specific_heat_cal_g_c = number_at_least_zero(v); },

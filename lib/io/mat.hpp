@@ -70,6 +70,10 @@ struct Mat {
 ReflectanceModel effective_model(const Material& m);
 
 // W m-1 K-1 per DCS conductivity unit (1e-4 cal cm-1 s-1 C-1; see mat(5) UNITS).
+// The largest MATERIAL_ID (mat(5)): trace indexes materials by id in a table of
+// kMaxMaterialId + 1 slots.
+inline constexpr long kMaxMaterialId = 1L << 24;
+
 inline constexpr double kWattsPerMeterKelvinPerDcsConductivity = 0.04184;
 
 Mat parse_mat(const TextInput& in);

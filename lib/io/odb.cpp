@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.hpp"
 
@@ -54,10 +55,43 @@ void check_matrix(const Matrix4& m, const SourceLocation& at) {
         throw DataError(at, "expected MATRIX last row 0 0 0 1, found " + format_number(m[12]) +
                                 " " + format_number(m[13]) + " " + format_number(m[14]) + " " +
                                 format_number(m[15]));
+    for (int i : {3, 7, 11})
+        if (std::abs(m[i]) > kOdbMaxTranslation)
+            throw DataError(at, "expected MATRIX translations within +-" +
+                                    format_number(kOdbMaxTranslation) + ", found " +
+                                    format_number(m[i]));
     double biggest = 0;
-    for (int i : {0, 1, 2, 4, 5, 6, 8, 9, 10}) biggest = std::max(biggest, std::abs(m[i]));
+    for (int i : {0, 1, 2, 4, 5, 6, 8, 9, 10}) {
+        if (std::abs(m[i]) > kOdbMaxScale)
+            throw DataError(at, "expected MATRIX 3x3 elements within +-" +
+                                    format_number(kOdbMaxScale) + ", found " +
+                                    format_number(m[i]));
+        biggest = std::max(biggest, std::abs(m[i]));
+    }
     if (std::abs(det3(m)) <= 1e-12 * biggest * biggest * biggest)
         throw DataError(at, "expected an invertible MATRIX, found a singular 3x3 part");
+}
+
+// The documented ranges of an instance's components (odb(5)): translations within
+// kOdbMaxTranslation, |scale| in [1/kOdbMaxScale, kOdbMaxScale], rotations within
+// +-kOdbMaxRotation_deg. Within them the 3x3 part is finite and invertible.
+void check_components(const OdbInstance& inst, const SourceLocation& at) {
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(inst.translation[i]) > kOdbMaxTranslation)
+            throw DataError(at, "expected translations x,y,z within +-" +
+                                    format_number(kOdbMaxTranslation) + ", found " +
+                                    format_number(inst.translation[i]));
+        double s = std::abs(inst.scale[i]);
+        if (s > kOdbMaxScale || s < 1 / kOdbMaxScale)
+            throw DataError(at, "expected scale factors sx,sy,sz of magnitude " +
+                                    format_number(1 / kOdbMaxScale) + " to " +
+                                    format_number(kOdbMaxScale) + ", found " +
+                                    format_number(inst.scale[i]));
+        if (std::abs(inst.rotation_deg[i]) > kOdbMaxRotation_deg)
+            throw DataError(at, "expected rotations rx,ry,rz (deg) within +-" +
+                                    format_number(kOdbMaxRotation_deg) + ", found " +
+                                    format_number(inst.rotation_deg[i]));
+    }
 }
 
 // MATRIX and 16 numbers, row-major, on this line and the lines that follow.
@@ -101,6 +135,7 @@ OdbInstance read_components(const LineCursor& c, const Line& line) {
                                            sigchain::quoted(tokens[3]) + "," +
                                            sigchain::quoted(tokens[4]) + "," +
                                            sigchain::quoted(tokens[5]));
+    check_components(inst, c.where(line));
     return inst;
 }
 
@@ -224,7 +259,13 @@ void apply_keys(const Keys& keys, OdbObject& obj, const SourceLocation& close) {
     obj.landuse_file = get("LANDUSE_FILENAME");
     obj.landuse_map = get("LANDUSE_MAP");
     if (auto it = keys.find("MATERIAL_ID"); it != keys.end())
+    {
         obj.material_id = parse_count(it->second.text, it->second.where, "MATERIAL_ID");
+        if (*obj.material_id > kMaxMaterialId)
+            throw DataError(it->second.where, "expected MATERIAL_ID from 0 to " +
+                                                  std::to_string(kMaxMaterialId) + ", found " +
+                                                  sigchain::quoted(it->second.text));
+    }
     auto u = keys.find("UNITS");
     if (u == keys.end())
         throw DataError(close, "expected key UNITS (m or ft) in the OBJECT begun at line " +
@@ -383,6 +424,38 @@ std::vector<Matrix4> placements(const OdbObject& object) {
     if (object.instances.empty()) return {instance_matrix(OdbInstance{})};
     std::vector<Matrix4> out;
     for (const auto& inst : object.instances) out.push_back(instance_matrix(inst));
+    return out;
+}
+
+std::vector<std::string> odb_coincident_instances(const Odb& odb) {
+    // Same geometry (source, file, units, maps, material) and the same matrix, exactly.
+    using Key = std::tuple<int, std::string, int, std::string, std::string, long, Matrix4>;
+    std::map<Key, std::vector<int>> lines;  // -> the lines of its instances, in file order
+    std::vector<const std::vector<int>*> order;
+    for (const auto& obj : odb.objects) {
+        auto placed = placements(obj);
+        for (std::size_t i = 0; i < placed.size(); ++i) {
+            Key key{static_cast<int>(obj.source), obj.path, static_cast<int>(obj.units),
+                    obj.material_map, obj.landuse_file + "\n" + obj.landuse_map,
+                    obj.material_id.value_or(-1), placed[i]};
+            auto [it, fresh] = lines.try_emplace(std::move(key));
+            if (fresh) order.push_back(&it->second);
+            it->second.push_back(obj.instances.empty() ? obj.line : obj.instances[i].line);
+        }
+    }
+    std::vector<std::string> out;
+    for (const auto* group : order) {
+        if (group->size() < 2) continue;
+        std::string others;
+        for (std::size_t k = 1; k < group->size() && k <= 5; ++k)
+            others += (k > 1 ? ", " : "") + std::to_string((*group)[k]);
+        if (group->size() > 6) others += ", ...";
+        out.push_back(SourceLocation{odb.file, group->front()}.str() + ": " +
+                      std::to_string(group->size() - 1) +
+                      " more instance(s) of the same object with the same placement (line" +
+                      (group->size() > 2 ? "s " : " ") + others +
+                      "): coincident copies render the same surfaces again");
+    }
     return out;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/text.hpp"
+#include "io/mat.hpp"
 #include "io/registry.hpp"
 
 namespace sigchain::io {
@@ -49,6 +50,15 @@ struct Odb {
     std::vector<OdbObject> objects;
 };
 
+// Ranges the reader enforces on each instance (odb(5) ERRORS), so that every placement
+// is finite and invertible: translations (object units) and MATRIX translations within
+// +-kOdbMaxTranslation (1e8: eight Earth diameters in metres); scale factors of
+// magnitude 1e-6 to 1e6 and MATRIX 3x3 elements within +-1e6 (with the singularity
+// test of odb(5)); rotations within +-3600 deg (ten turns).
+inline constexpr double kOdbMaxTranslation = 1e8;
+inline constexpr double kOdbMaxScale = 1e6;
+inline constexpr double kOdbMaxRotation_deg = 3600;
+
 Odb parse_odb(const TextInput& in);
 void write_odb(std::ostream& out, const Odb& odb);
 inline Odb read_odb_file(const std::string& path) { return parse_odb(TextInput::from_file(path)); }
@@ -57,6 +67,11 @@ inline Odb read_odb_file(const std::string& path) { return parse_odb(TextInput::
 Matrix4 instance_matrix(const OdbInstance& instance);
 // The placements of an object: one per instance, or the identity when it has none.
 std::vector<Matrix4> placements(const OdbObject& object);
+
+// Coincident instances: placements of the same object (same file, units and maps)
+// with exactly the same matrix, legal but rendered twice over. One warning per group,
+// "FILE:LINE: N more instance(s) ... (lines A, B, ...)", LINE that of the first.
+std::vector<std::string> odb_coincident_instances(const Odb& odb);
 
 // Metres per unit.
 double meters_per_odb_unit(OdbUnits units);

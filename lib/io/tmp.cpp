@@ -98,15 +98,17 @@ Tmp parse_tmp(const TextInput& in) {
                                     " again (first on line " + std::to_string(it->second) + ")");
         tmp.facets.push_back(std::move(row));
     }
+    require_end_marker(in, "tmp", tmp.minor_version, tmp.facets.size());
     return tmp;
 }
 
 void write_tmp(std::ostream& out, const Tmp& tmp) {
-    out << "# sigchain-tmp 1\n";
+    out << "# sigchain-tmp 1.1\n";
     if (tmp.time_hours) out << "time_hours = " << format_number(*tmp.time_hours) << '\n';
     out << "# facet_id temperature_K\n";
     for (const auto& f : tmp.facets)
         out << f.facet_id << ' ' << format_number(f.temperature_k) << '\n';
+    out << end_marker_line(tmp.facets.size());
 }
 
 FormatHandler tmp_format() {

@@ -25,7 +25,7 @@ struct FacetTemperature {
 };
 
 struct Tmp {
-    int minor_version = 0;  // read from the magic line; the writer writes version 1
+    int minor_version = 0;  // read from the magic line; the writer writes version 1.1
     // `time_hours = H`: the simulation time, hours from midnight of the day before the
     // scene's day (the .wth clock), >= 0. Absent when the file has no such line.
     std::optional<double> time_hours;
@@ -38,8 +38,10 @@ struct Tmp {
 
 inline constexpr double kTmpMaxTemperature_k = 10000;
 
+// Reads version 1.0 and 1.1; a 1.1 file must end with "# sigchain-end N" (N rows).
 Tmp parse_tmp(const TextInput& in);
-// `# sigchain-tmp 1`, `time_hours = H` when set, a column comment, one row per facet.
+// `# sigchain-tmp 1.1`, `time_hours = H` when set, a column comment, one row per facet,
+// then "# sigchain-end N".
 void write_tmp(std::ostream& out, const Tmp& tmp);
 inline Tmp read_tmp_file(const std::string& path) { return parse_tmp(TextInput::from_file(path)); }
 FormatHandler tmp_format();

@@ -18,7 +18,7 @@ namespace sigchain::radiometry {
 namespace {
 
 // Ids above this are refused: the id -> material index is a plain vector (constant time).
-constexpr long kMaxMaterialId = 1L << 24;
+using io::kMaxMaterialId;  // mat(5); the reader enforces it
 constexpr double kKmPerCm = 1e-5;
 
 std::string resolve(const std::string& mat_path, const std::string& file) {

@@ -128,6 +128,8 @@ ObjectMesh object_mesh(const io::Odb& odb, const io::OdbObject& obj) {
 void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink& sink,
                   std::vector<std::string>* warnings) {
     io::Odb odb = io::read_odb_file(path);
+    if (warnings)  // coincident copies (odb(5)): legal, but each is rendered again
+        for (auto& w : io::odb_coincident_instances(odb)) warnings->push_back(std::move(w));
     std::map<std::string, std::size_t> meshes;  // ObjectMesh::key -> mesh
     for (std::size_t k = 0; k < odb.objects.size(); ++k) {
         const io::OdbObject& obj = odb.objects[k];

@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <set>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include "geo/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -214,6 +217,33 @@ Setup read_setup(const TraceJob& job) {
     return st;
 }
 
+// The memory this process may use (bytes): the physical memory, or the address-space
+// limit (ulimit -v) when it is lower.
+double usable_memory_bytes() {
+    double bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                   static_cast<double>(sysconf(_SC_PAGESIZE));
+    struct rlimit limit {};
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+        bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
+    return bytes;
+}
+
+// Refuses, before anything is read or allocated, a radiance cube (4-byte floats, one
+// band per spectral sample) larger than the memory this process may use (trace(1)).
+void check_cube_size(const TraceJob& job, const Setup& st, std::size_t samples) {
+    double bytes = 4.0 * static_cast<double>(st.row_end - st.row_begin) *
+                   static_cast<double>(st.adv.columns) * static_cast<double>(samples);
+    double usable = usable_memory_bytes();
+    if (bytes <= usable) return;
+    constexpr double kMiB = 1024.0 * 1024.0;
+    throw DataError({job.adv_path, st.adv.lines.size},
+                    "a " + std::to_string(st.row_end - st.row_begin) + " x " +
+                        std::to_string(st.adv.columns) + " image of " + std::to_string(samples) +
+                        " spectral samples needs a " + format("%.0f", bytes / kMiB) +
+                        " MiB radiance cube, more than the " + format("%.0f", usable / kMiB) +
+                        " MiB of memory this process may use");
+}
+
 // One sigchain .rad per band, merged on one spectral grid.
 radiometry::Atmosphere read_atmosphere(const TraceJob& job, const io::Snd& snd,
                                        const Reporter& reporter) {
@@ -417,6 +447,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     const radiometry::SpectralGrid& grid = atmosphere.grid();
     report.spectral_samples = grid.size();
     report.bands = grid.band_count();
+    check_cube_size(job, st, grid.size());
     const radiometry::MaterialLibrary materials =
         radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path, grid);
     report.materials = materials.materials().size();

@@ -93,7 +93,7 @@ assert_tmp_near() {
 
 @test "therm writes to standard output by default and reruns identically, on any threads" {
     run -0 --separate-stderr therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND"
-    assert_line --index 0 "# sigchain-tmp 1"
+    assert_line --index 0 "# sigchain-tmp 1.1"
     echo "$output" > first.tmp
     therm "$SHD" "$WTH" "$MAT" "$GDB" "$SND" -o second.tmp
     run -0 cmp first.tmp second.tmp
@@ -187,7 +187,10 @@ assert_tmp_near() {
     run -0 sigchain-check out.tmp
     # The unturned copies (same normals, same histories) match the lone .gdb's golden.
     for copy in 1.1 1.3; do
-        { grep -v '^[0-9]' out.tmp; grep "^$copy/" out.tmp | sed "s|^$copy/||"; } > copy.tmp
+        # The copy's rows, with its own end line (.tmp 1.1, tmp(5)).
+        { grep -v '^[0-9]' out.tmp | grep -v '^# sigchain-end'
+          grep "^$copy/" out.tmp | sed "s|^$copy/||"
+          echo "# sigchain-end $(grep -c "^$copy/" out.tmp)"; } > copy.tmp
         assert_tmp_near copy.tmp "$GOLDEN/therm/box_on_plane.tmp"
     done
     # Turned a quarter turn counter-clockwise, the east wall (2-1-3) faces north: no

@@ -42,8 +42,8 @@ TEST(Tmp, TimeIsOptionalAndRowsMayBeAbsent) {
     Tmp t = parse(kMagic);
     EXPECT_FALSE(t.time_hours);
     EXPECT_TRUE(t.facets.empty());
-    EXPECT_EQ(written(t), kMagic + "# facet_id temperature_K\n");
-    EXPECT_EQ(parse("# sigchain-tmp 1.1\n1-0-10 300\n").minor_version, 1);
+    EXPECT_EQ(written(t), "# sigchain-tmp 1.1\n# facet_id temperature_K\n# sigchain-end 0\n");
+    EXPECT_EQ(parse("# sigchain-tmp 1.1\n1-0-10 300\n# sigchain-end 1\n").minor_version, 1);
 }
 
 TEST(Tmp, RoundTripIsExactAndIdempotent) {
