@@ -2,6 +2,7 @@
 #include "atmos/build_radiance_job.hpp"
 
 #include <chrono>
+#include <memory>
 
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
@@ -53,6 +54,7 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     const auto deck = io::read_cdk_file(job.cdk_path);
     const auto snd = io::read_snd_file(job.snd_path);
     const std::vector<std::string> paths = band_output_paths(job.output_pattern, snd);
+    require_outputs_distinct(paths, {job.cdk_path, job.snd_path});
     RadianceOptions o = job.options;
     o.data_dir = data_dir(job.data_dir);
     o.snd_path = job.snd_path;
@@ -66,12 +68,16 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     report_tables(report, reporter);
+    // The bands appear together or not at all (commit_together, sigchain(7) OUTPUTS).
+    std::vector<std::unique_ptr<AtomicOutput>> outs;
+    std::vector<AtomicOutput*> order;
     for (std::size_t b = 0; b < paths.size(); ++b) {
-        AtomicOutput out(paths[b]);
-        io::write_rad(out.stream(), rads[b]);
-        out.commit();
-        reporter.info("wrote " + paths[b]);
+        outs.push_back(std::make_unique<AtomicOutput>(paths[b]));
+        io::write_rad(outs.back()->stream(), rads[b]);
+        order.push_back(outs.back().get());
     }
+    commit_together(order);
+    for (const auto& p : paths) reporter.info("wrote " + p);
     reporter.info(std::to_string(total) + " spectral samples in " + format_number(seconds) + " s");
 }
 

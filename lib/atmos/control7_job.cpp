@@ -49,6 +49,7 @@ void run(const Control7Job& job, const Reporter& reporter) {
     io::write_cdk(deck, result.cdk);
     io::parse_cdk(TextInput::from_string(deck.str(), "<deck>"));
     const std::string path = job.output_path.empty() ? result.deck_path : job.output_path;
+    require_outputs_distinct({path}, {job.answers_path});
     AtomicOutput out(path);
     out.stream() << deck.str();
     out.commit();

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/output.hpp"
 
 namespace sigchain::compare {
 
@@ -54,17 +55,12 @@ void write_histogram_plot(const std::string& path, const BandComparison& band) {
     }
     OIIO::ImageBufAlgo::render_box(buf, kMargin, base + 1, width - kMargin - 1, base + 1, black,
                                    true);
-    std::string temp = path + ".tmp." + std::to_string(::getpid());
-    if (!buf.write(temp, OIIO::TypeDesc::UINT8, "png")) {
-        std::remove(temp.c_str());
+    // OpenImageIO opens its file itself: it goes into a private folder beside the target.
+    const TempDir folder(path);
+    const std::string temp = folder.file(std::filesystem::path(path).filename().string());
+    if (!buf.write(temp, OIIO::TypeDesc::UINT8, "png"))
         throw IoError(path + ": cannot write: " + buf.geterror());
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        throw IoError(path + ": cannot write: " + ec.message());
-    }
+    commit_moves({{temp, path}});
 }
 
 void write_histogram_plots(const std::string& dir, const PointComparison& cmp) {
