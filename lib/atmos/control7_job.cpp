@@ -27,6 +27,8 @@ namespace {
 
 // The answers of a job: typed on its terminal, or its answers file read line by line.
 Control7Result ask(const Control7Job& job) {
+    // -o naming the answers file: refused before anything is read.
+    require_outputs_distinct({job.output_path}, {job.answers_path});
     if (job.terminal && job.prompts) {
         TerminalAnswers source(*job.terminal, *job.prompts);
         return run_control7(source, job.overrides);
