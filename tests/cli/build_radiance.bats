@@ -54,8 +54,11 @@ line_of() { sed -n "${2}p" "$1"; }
     [[ "$stderr" == *"streams must be even, 4 to 64; found 5"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance --sky-zenith-step 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"sky zenith step must divide 90"* ]] || fail "stderr: $stderr"
-    run -2 --separate-stderr build_radiance --sky-azimuth-step 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    run -2 --separate-stderr build_radiance --sky-azimuth-step 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"sky azimuth step must divide 360"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --sky-azimuth-step 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == "build_radiance: --sky-azimuth-step: 0: must be a number > 0 and <= 360"* ]] ||
+        fail "stderr: $stderr"
 }
 
 @test "the Hawkeye deck gives one valid .rad per band with the scene node's grids" {
