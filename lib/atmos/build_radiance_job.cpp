@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <memory>
 
 #include "atmos/tape7_radiance.hpp"
 #include "core/data_dir.hpp"
@@ -88,6 +89,9 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     const std::vector<std::string> paths = job.write_decks_dir.empty()
                                                ? band_output_paths(job.output_pattern, snd)
                                                : std::vector<std::string>{};
+    std::vector<std::string> inputs{job.cdk_path, job.snd_path};
+    if (!job.from_tape7.empty()) inputs.push_back(t7m_path(job.from_tape7));
+    require_outputs_distinct(paths, inputs);
     RadianceOptions o = job.options;
     o.data_dir = data_dir(job.data_dir);
     o.snd_path = job.snd_path;
@@ -109,12 +113,16 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The bands appear together or not at all (commit_together, sigchain(7) OUTPUTS).
+    std::vector<std::unique_ptr<AtomicOutput>> outs;
+    std::vector<AtomicOutput*> order;
     for (std::size_t b = 0; b < paths.size(); ++b) {
-        AtomicOutput out(paths[b]);
-        io::write_rad(out.stream(), rads[b]);
-        out.commit();
-        reporter.info("wrote " + paths[b]);
+        outs.push_back(std::make_unique<AtomicOutput>(paths[b]));
+        io::write_rad(outs.back()->stream(), rads[b]);
+        order.push_back(outs.back().get());
     }
+    commit_together(order);
+    for (const auto& p : paths) reporter.info("wrote " + p);
     reporter.info(std::to_string(total) + " spectral samples in " + format_number(seconds) + " s");
 }
 

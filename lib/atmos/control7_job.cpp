@@ -27,6 +27,8 @@ namespace {
 
 // The answers of a job: typed on its terminal, or its answers file read line by line.
 Control7Result ask(const Control7Job& job) {
+    // -o naming the answers file: refused before anything is read.
+    require_outputs_distinct({job.output_path}, {job.answers_path});
     if (job.terminal && job.prompts) {
         TerminalAnswers source(*job.terminal, *job.prompts);
         return run_control7(source, job.overrides);
@@ -49,6 +51,7 @@ void run(const Control7Job& job, const Reporter& reporter) {
     io::write_cdk(deck, result.cdk);
     io::parse_cdk(TextInput::from_string(deck.str(), "<deck>"));
     const std::string path = job.output_path.empty() ? result.deck_path : job.output_path;
+    require_outputs_distinct({path}, {job.answers_path});
     AtomicOutput out(path);
     out.stream() << deck.str();
     out.commit();

@@ -4,11 +4,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <new>
 
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "sigchain/version.hpp"
 
 namespace sigchain::cli {
@@ -102,13 +105,114 @@ void Cli::add_required_output_option(const char* value_name, const char* help) {
 }
 
 void Cli::add_threads_option() {
-    m_options.add_options()("threads", po::value<unsigned>()->default_value(0)->value_name("N"),
-                            "worker threads (0: all cores); outputs do not depend on it");
+    add_number("threads", "N", threads_range(),
+               "worker threads, 0 to 4096 (0: all cores); outputs do not depend on it", "0");
 }
 
 void Cli::add_seed_option(const char* help, std::uint64_t default_value) {
-    m_options.add_options()(
-        "seed", po::value<std::uint64_t>()->default_value(default_value)->value_name("N"), help);
+    const std::string text = std::to_string(default_value);
+    add_number("seed", "N", seed_range(), help, text.c_str());
+}
+
+void Cli::add_number(const char* name, const char* value_name, const Range& range,
+                     const char* help, const char* default_value, bool hidden) {
+    const std::string long_name(name);  // "bits,b": --bits
+    const std::string option = "--" + long_name.substr(0, long_name.find(','));
+    auto* value = po::value<std::string>()->value_name(value_name)->notifier(
+        [option, range](const std::string& text) { parse_number(option, text, range); });
+    if (default_value) value->default_value(default_value);
+    (hidden ? m_hidden : m_options).add_options()(name, value, help);
+}
+
+namespace {
+
+// A range end as text: integers in full, other numbers as %Lg.
+std::string end_text(long double v) {
+    if (v == std::floor(v) && std::fabs(v) < 1e20L) {
+        if (v < 0) return std::to_string(static_cast<long long>(v));
+        return std::to_string(static_cast<unsigned long long>(v));
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%Lg", v);
+    return buf;
+}
+
+}  // namespace
+
+std::string Range::describe() const {
+    const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
+    const std::string kind = integer ? "an integer" : has_min || has_max ? "a number"
+                                                                          : "a finite number";
+    if (has_min && has_max && !min_open && !max_open)
+        return kind + " from " + end_text(min) + " to " + end_text(max);
+    std::string text = kind;
+    if (has_min) text += (min_open ? " > " : " >= ") + end_text(min);
+    if (has_min && has_max) text += " and";
+    if (has_max) text += (max_open ? " < " : " <= ") + end_text(max);
+    return text;
+}
+
+Range integers(long double min, long double max) {
+    Range r;
+    r.integer = true;
+    r.min = min;
+    r.max = max;
+    return r;
+}
+
+Range reals(long double min, long double max, bool min_open) {
+    Range r;
+    r.min = min;
+    r.max = max;
+    r.min_open = min_open;
+    return r;
+}
+
+Range positive(long double max) { return reals(0, max, true); }
+
+Range threads_range() { return integers(0, 4096); }
+
+Range seed_range() { return integers(0, 18446744073709551615.0L); }
+
+long double parse_number(const std::string& option, const std::string& text, const Range& range) {
+    const auto fail = [&] {
+        throw UsageError(option + ": " + text + ": must be " + range.describe());
+    };
+    // One optional sign, then the number and nothing else (from_chars takes no '+').
+    std::string_view body(text);
+    const bool negative = !body.empty() && body[0] == '-';
+    if (!body.empty() && (body[0] == '+' || body[0] == '-')) body.remove_prefix(1);
+    if (body.empty() || body[0] == '+' || body[0] == '-') fail();
+    long double value = 0;
+    if (range.integer) {
+        unsigned long long magnitude = 0;
+        const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), magnitude);
+        if (ec != std::errc() || end != body.data() + body.size()) fail();
+        value = static_cast<long double>(magnitude);
+    } else {
+        double parsed = 0;
+        const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), parsed,
+                                               std::chars_format::general);
+        if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(parsed))
+            fail();
+        value = parsed;
+    }
+    if (negative) value = -value;
+    if (value < range.min || value > range.max || (range.min_open && value == range.min) ||
+        (range.max_open && value == range.max))
+        fail();
+    return value;
+}
+
+double real(const po::variables_map& vm, const char* name) {
+    return static_cast<double>(
+        parse_number(std::string("--") + name, vm[name].as<std::string>(), Range{}));
+}
+
+long long integer(const po::variables_map& vm, const char* name) {
+    return static_cast<long long>(parse_number(std::string("--") + name,
+                                               vm[name].as<std::string>(),
+                                               integers(-9.2e18L, 9.2e18L)));
 }
 
 void Cli::add_scene_input_options() {
@@ -158,6 +262,8 @@ int Cli::run(int argc, char** argv,
             if (verbosity > 0) std::cout << "Boost " << BOOST_LIB_VERSION << '\n';
             return 0;
         }
+        // Temporaries of the run are removed on SIGTERM, SIGINT and SIGHUP (exit 128 + N).
+        install_output_signal_handlers();
         Context ctx(tool, verbosity, vm.count("progress") > 0 || stderr_is_terminal());
         ctx.set_command(provenance_command(argc, argv));
         return body(vm, ctx);
@@ -192,9 +298,15 @@ std::string output_path(const po::variables_map& vm) {
     return vm["output"].as<std::string>();
 }
 
-unsigned threads(const po::variables_map& vm) { return vm["threads"].as<unsigned>(); }
+unsigned threads(const po::variables_map& vm) {
+    return static_cast<unsigned>(parse_number("--threads", vm["threads"].as<std::string>(),
+                                              threads_range()));
+}
 
-std::uint64_t seed(const po::variables_map& vm) { return vm["seed"].as<std::uint64_t>(); }
+std::uint64_t seed(const po::variables_map& vm) {
+    return static_cast<std::uint64_t>(
+        parse_number("--seed", vm["seed"].as<std::string>(), seed_range()));
+}
 
 bool strict(const po::variables_map& vm) { return vm.count("strict") > 0; }
 

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -61,6 +62,35 @@ private:
 // "M:SS" or "H:MM:SS" for a duration in seconds (progress bars).
 std::string format_duration(double seconds);
 
+// The documented range of a numeric option. Every number of every tool's command line
+// is read by parse_number against one: finite, whole where `integer`, and within
+// [min, max] (an end excluded when open), else a usage error (exit 2)
+// "TOOL: --OPTION: VALUE: must be DESCRIPTION".
+struct Range {
+    bool integer = false;
+    long double min = -std::numeric_limits<long double>::infinity();
+    long double max = std::numeric_limits<long double>::infinity();
+    bool min_open = false;  // min itself excluded
+    bool max_open = false;  // max itself excluded
+    // "an integer from 4 to 64", "a number > 0 and <= 3600", "a finite number", ...
+    std::string describe() const;
+};
+// Whole numbers in [min, max].
+Range integers(long double min, long double max);
+// Finite real numbers in [min, max]; with `min_open`, min itself excluded.
+Range reals(long double min, long double max, bool min_open = false);
+// Finite real numbers > 0 (up to `max`).
+Range positive(long double max = std::numeric_limits<long double>::infinity());
+// The shared options' ranges: --threads 0 to 4096, --seed 0 to 2^64 - 1.
+Range threads_range();
+Range seed_range();
+
+// Reads `text` as the value of `option` (e.g. "--top"): decimal digits with an optional
+// sign (integers) or a decimal number as strtod reads it in the C locale, nothing
+// before or after; NaN, infinities and values outside `range` are rejected.
+// Exact for integers up to 2^64 - 1. Throws UsageError "--top: inf: must be ...".
+long double parse_number(const std::string& option, const std::string& text, const Range& range);
+
 struct ToolInfo {
     std::string name;     // binary name
     std::string purpose;  // one line, for --help
@@ -97,6 +127,11 @@ public:
     // --strict: what a tool otherwise only warns about (its man page lists what) is an
     // error (exit status 1).
     void add_strict_option(const char* help = "make warnings about the inputs errors");
+    // A numeric option --NAME VALUE_NAME checked against `range` (parse_number) when the
+    // command line is parsed, its default (if any) included; read it with real() or
+    // integer(). `help` should state the range as the man page does.
+    void add_number(const char* name, const char* value_name, const Range& range,
+                    const char* help, const char* default_value = nullptr, bool hidden = false);
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
@@ -124,6 +159,10 @@ SceneInputOptions scene_input(const po::variables_map& vm);
 
 // The values of a positional argument (empty if absent).
 std::vector<std::string> args(const po::variables_map& vm, const char* name);
+
+// The value of a numeric option added with add_number (checked when parsed).
+double real(const po::variables_map& vm, const char* name);
+long long integer(const po::variables_map& vm, const char* name);
 
 // The shared options' values (the options must have been added).
 std::string output_path(const po::variables_map& vm);  // UsageError if -o is required and missing

@@ -4,7 +4,6 @@
 #include <cpl_error.h>
 #include <cpl_string.h>
 #include <gdal_priv.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
 #include "image/image.hpp"
@@ -25,14 +25,6 @@ using geo::gdal_init;
 using geo::gdal_message;
 
 namespace {
-
-// Removes the listed files unless released (a failed write leaves nothing behind).
-struct TempFiles {
-    std::vector<std::string> files;
-    ~TempFiles() {
-        for (const auto& f : files) std::remove(f.c_str());
-    }
-};
 
 bool all_finite(const std::vector<double>& values) {
     return !values.empty() &&
@@ -123,14 +115,6 @@ CPLStringList creation_options(const std::string& path, CubeFormat format,
     return list;
 }
 
-// FILE.tmp.PID; ENVI names its header by replacing the extension, so its data file is
-// FILE.tmp.PID.img (header FILE.tmp.PID.hdr).
-std::string temp_for(const std::string& target, CubeFormat format) {
-    if (format != CubeFormat::Envi) return detail::temp_name(target);
-    return std::filesystem::path(target).replace_extension().string() + ".tmp." +
-           std::to_string(::getpid()) + ".img";
-}
-
 void write_planes(GDALDataset& ds, const Image& image, const std::string& path) {
     for (int c = 0; c < image.channels; ++c) {
         float* plane = const_cast<float*>(image.data.data() + c * image.plane_size());
@@ -142,22 +126,16 @@ void write_planes(GDALDataset& ds, const Image& image, const std::string& path) 
     }
 }
 
-// Renames the written files into place: the data file to `target`, an ENVI header
-// beside it; any other side file is removed.
-void rename_outputs(TempFiles& temps, const std::string& temp, const std::string& target) {
-    for (const std::string& f : temps.files) {
-        std::string final_name = target;
-        if (f != temp) {
-            if (file_extension(f) != "hdr") {
-                std::remove(f.c_str());
-                continue;
-            }
-            final_name = std::filesystem::path(target).replace_extension(".hdr").string();
-        }
-        if (std::rename(f.c_str(), final_name.c_str()) != 0)
-            throw IoError(final_name + ": cannot rename from " + f);
-    }
-    temps.files.clear();
+// The written files' moves into place, the data file first and an ENVI header last
+// (the header makes the pair readable: commit_moves, cube(5)); other side files stay
+// in the temporary folder and go with it.
+std::vector<Move> output_moves(const std::vector<std::string>& files, const std::string& temp,
+                               const std::string& target) {
+    std::vector<Move> moves{{temp, target}};
+    for (const std::string& f : files)
+        if (f != temp && file_extension(f) == "hdr")
+            moves.push_back({f, std::filesystem::path(target).replace_extension(".hdr").string()});
+    return moves;
 }
 
 // Writes `image` with GDAL as `type` samples, atomically (cube(5)).
@@ -172,24 +150,25 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
     const char* driver_name = format == CubeFormat::GeoTiff ? "GTiff" : "ENVI";
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
     if (!driver) throw IoError(path + ": GDAL has no " + driver_name + " driver");
-    const std::string temp = temp_for(target, format);
-    TempFiles temps;
+    // GDAL opens its files itself: they go into a private folder beside the target.
+    const TempDir folder(target);
+    const std::string temp = folder.file(std::filesystem::path(target).filename().string());
+    std::vector<std::string> files;
     std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(image.columns),
                                                    static_cast<int>(image.rows), image.channels,
                                                    type, co.List()));
     if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
     if (char** list = ds->GetFileList()) {
-        for (char** f = list; *f; ++f) temps.files.emplace_back(*f);
+        for (char** f = list; *f; ++f) files.emplace_back(*f);
         CSLDestroy(list);
     }
-    if (temps.files.empty()) temps.files.push_back(temp);
     set_metadata(*ds, image, format, options);
     write_planes(*ds, image, path);
     CPLErrorReset();
     ds.reset();  // GDALClose: flushes data and writes the ENVI header
     if (CPLGetLastErrorType() >= CE_Failure)
         throw IoError(path + ": write error: " + gdal_message());
-    rename_outputs(temps, temp, target);
+    commit_moves(output_moves(files, temp, target));
 }
 
 }  // namespace

@@ -60,10 +60,6 @@ Image read_image(const std::string& path) {
 
 namespace detail {
 
-std::string temp_name(const std::string& path) {
-    return path + ".tmp." + std::to_string(::getpid());
-}
-
 void require_readable(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))

@@ -10,8 +10,6 @@
 namespace sigchain::image::detail {
 
 // The lower-case extension of `path` without the dot ("" if none).
-// The temporary name used for atomic output: FILE.tmp.PID.
-std::string temp_name(const std::string& path);
 // Throws IoError "PATH: cannot open: No such file or directory" when `path` is absent.
 void require_readable(const std::string& path);
 

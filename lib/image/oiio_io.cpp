@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 
@@ -46,8 +48,8 @@ void read_as(ImageInput& in, TypeDesc type, const std::string& path, Image& imag
     deinterleave(buffer, image);
 }
 
-// Writes `pixels` (interleaved, of `type`) to FILE.tmp.PID with the plugin chosen by
-// the final name's extension, then renames into place.
+// Writes `pixels` (interleaved, of `type`) into a private temporary folder with the
+// plugin chosen by the final name's extension, then renames into place.
 void write_oiio(const std::string& path, const Image& image, TypeDesc type, const void* pixels) {
     auto out = ImageOutput::create(path);
     if (!out) throw IoError(path + ": cannot write this image format: " + OIIO::geterror());
@@ -69,17 +71,12 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
             throw DataError({path, 0}, "PGM/PPM output holds 8-bit counts only");
         spec.attribute("pnm:binary", 0);  // plain (text) Netpbm: readable and diffable
     }
-    const std::string temp = detail::temp_name(path);
+    // OpenImageIO opens its file itself: it goes into a private folder beside the target.
+    const TempDir folder(path);
+    const std::string temp = folder.file(std::filesystem::path(path).filename().string());
     bool ok = out->open(temp, spec) && out->write_image(type, pixels) && out->close();
-    if (!ok) {
-        std::string message = out->geterror();
-        std::remove(temp.c_str());
-        throw IoError(path + ": cannot write: " + message);
-    }
-    if (std::rename(temp.c_str(), path.c_str()) != 0) {
-        std::remove(temp.c_str());
-        throw IoError(path + ": cannot rename from " + temp);
-    }
+    if (!ok) throw IoError(path + ": cannot write: " + out->geterror());
+    commit_moves({{temp, path}});
 }
 
 }  // namespace

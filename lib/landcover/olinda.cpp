@@ -13,6 +13,7 @@
 
 #include "compare/compare.hpp"
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "geo/raster.hpp"
 #include "image/image.hpp"
 #include "io/cpt.hpp"
@@ -67,9 +68,7 @@ void write_points(const std::string& path, const std::vector<ClassPoint>& pts, b
         cpt.points.push_back({name, double(p.row), double(p.column), double(p.row),
                               double(p.column), 0.0, fit ? "fit half" : "held-out half", 0});
     }
-    std::ofstream out(path);
-    io::write_cpt(out, cpt);
-    if (!out) throw IoError(path + ": cannot write");
+    write_atomically(path, [&](std::ostream& out) { io::write_cpt(out, cpt); });
 }
 
 // Values of one band at the control points of one class (class = name before '_').
@@ -179,7 +178,8 @@ void write_ems_curves(const std::string& reflectance_path, const std::string& sc
     const auto scales = scales_path == "-" ? decltype(refl){} : read_table(scales_path);
     for (const auto& [name, rho] : refl) {
         const std::string path = outdir + "/" + name + ".ems";
-        std::ofstream out(path);
+        AtomicOutput file(path);
+        std::ostream& out = file.stream();
         out << "# " << name << ": reflectance per ETM+ band, flat inside each band's half-power "
             << "edges (from " << reflectance_path << (scales.empty() ? "" : " x " + scales_path)
             << "); emissivity = 1 - reflectance\n1\n";
@@ -191,7 +191,7 @@ void write_ems_curves(const std::string& reflectance_path, const std::string& sc
             out << kEdges[b][0] << " " << e << "\n" << kEdges[b][1] << " " << e << "\n";
         }
         out << "CURVE_END\n";
-        if (!out) throw IoError(path + ": cannot write");
+        file.commit();
     }
 }
 

@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/output.hpp"
 
 namespace sigchain::landcover {
 
@@ -28,7 +30,9 @@ void write_class_raster(const std::string& path, long rows, long columns,
     if (classes.size() != static_cast<std::size_t>(rows * columns))
         throw std::invalid_argument("write_class_raster: size mismatch");
     GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GTiff");
-    const std::string tmp = path + ".tmp." + std::to_string(getpid());
+    // GDAL opens its file itself: it goes into a private folder beside the target.
+    const TempDir folder(path);
+    const std::string tmp = folder.file(std::filesystem::path(path).filename().string());
     {
         Dataset ds(drv->Create(tmp.c_str(), static_cast<int>(columns), static_cast<int>(rows), 1,
                                GDT_Byte, nullptr));
@@ -42,7 +46,7 @@ void write_class_raster(const std::string& path, long rows, long columns,
                 static_cast<int>(columns), static_cast<int>(rows), GDT_Byte, 0, 0) != CE_None)
             throw IoError(path + ": " + geo::gdal_message());
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) throw IoError(path + ": cannot rename");
+    commit_moves({{tmp, path}});
 }
 
 }  // namespace sigchain::landcover

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/output.hpp"
 #include "scenegen/hawkeye_meshes.hpp"
@@ -459,16 +460,21 @@ void write_hawkeye_scene(const HawkeyeScene& scene, const std::string& outdir) {
                                ": see data/scenes/hawkeye/README.md.\n"
                                "# Local frame: x east, y north, z up (m) about the scene's "
                                "centre; z = 0 the base of the hills.\n";
+    // The files appear together, the .odb that places the .gdb files last (commit_together).
+    std::vector<std::unique_ptr<AtomicOutput>> outs;
+    std::vector<AtomicOutput*> order;
     auto write = [&](const std::string& name, const auto& write_body) {
-        AtomicOutput out(outdir + "/" + name);
-        out.stream().precision(10);
-        out.stream() << header;
-        write_body(out.stream());
-        out.commit();
+        outs.push_back(std::make_unique<AtomicOutput>(outdir + "/" + name));
+        std::ostream& out = outs.back()->stream();
+        out.precision(10);
+        out << header;
+        write_body(out);
+        order.push_back(outs.back().get());
     };
     for (const auto& [name, gdb] : scene.files)
         write(name, [&gdb](std::ostream& o) { io::write_gdb(o, gdb); });
     write("hawkeye.odb", [&scene](std::ostream& o) { io::write_odb(o, scene.odb); });
+    commit_together(order);
 }
 
 }  // namespace sigchain::scenegen

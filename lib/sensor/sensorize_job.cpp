@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <memory>
 #include <set>
 
 #include "core/error.hpp"
@@ -46,13 +47,18 @@ void calibrate_band(const SensorizeJob& job, std::size_t b, const std::vector<fl
 
 void write_calibrated_sens(const std::vector<io::Sen>& sens, const SensorizeReport& report) {
     // All bands are solved before any file is written: a failure leaves no partial set.
+    // The bands' files appear together (commit_together, sigchain(7) OUTPUTS).
+    std::vector<std::unique_ptr<AtomicOutput>> outs;
+    std::vector<AtomicOutput*> order;
     for (std::size_t b = 0; b < sens.size(); ++b) {
         io::Sen updated = sens[b];
         updated.gain = report.calibration[b].solved.gain;
         updated.bias = report.calibration[b].solved.bias;
-        write_atomically(report.calibration[b].output_path,
-                         [&](std::ostream& out) { io::write_sen(out, updated); });
+        outs.push_back(std::make_unique<AtomicOutput>(report.calibration[b].output_path));
+        io::write_sen(outs.back()->stream(), updated);
+        order.push_back(outs.back().get());
     }
+    commit_together(order);
 }
 
 }  // namespace
@@ -76,6 +82,18 @@ void check_job(const SensorizeJob& job) {
         (job.calibrate || file_extension(job.preview_path) != "png"))
         throw UsageError("--preview " + job.preview_path +
                          ": the preview is a .png file, not made with --calibrate");
+    std::vector<std::string> inputs = job.sen_paths;
+    inputs.push_back(job.cube_path);
+    inputs.push_back(job.psf_path);
+    if (job.calibrate) {
+        std::vector<std::string> outputs;
+        for (const auto& path : job.sen_paths)
+            outputs.push_back(
+                (std::filesystem::path(job.output_path) / (stem_of(path) + ".sen")).string());
+        require_outputs_distinct(outputs, inputs);
+    } else {
+        require_outputs_distinct({job.output_path, job.preview_path}, inputs);
+    }
     if (job.calibrate) {
         if (job.float_output) throw UsageError("give --calibrate or --float, not both");
         const auto& c = job.calibration;

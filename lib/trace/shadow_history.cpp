@@ -294,6 +294,7 @@ radiometry::SpectralGrid snd_grid(const io::Snd& snd) {
 
 void check_options(const ShadowJob& job) {
     if (job.output_path.empty()) throw UsageError("no output: give -o FILE.shd");
+    require_outputs_distinct({job.output_path}, {job.snd_path, job.scene_path, job.mat_path});
     history_steps(job.options.history_hours, job.options.step_minutes);
     if (job.options.points_per_facet < 1 || job.options.points_per_facet > 1000000)
         throw UsageError("--points-per-facet: expected 1 to 1000000");

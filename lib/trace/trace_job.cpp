@@ -13,6 +13,7 @@
 
 #include "geo/solar_position.hpp"
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "core/text.hpp"
 #include "geom/camera.hpp"
 #include "geom/view_angle.hpp"
@@ -167,6 +168,19 @@ void check_job(const TraceJob& job) {
         if (written_name(job.truth_path) == written_name(job.output_path))
             throw UsageError("--truth: " + job.truth_path + " would overwrite the output " +
                              job.output_path);
+    }
+    {
+        // The cube and the truth, each with the ENVI header beside it, against the inputs.
+        std::vector<std::string> outputs;
+        for (const std::string& out : {job.output_path, job.truth_path}) {
+            if (out.empty()) continue;
+            outputs.push_back(written_name(out));
+            outputs.push_back(std::filesystem::path(written_name(out)).replace_extension(".hdr"));
+        }
+        std::vector<std::string> inputs{job.adv_path, job.snd_path, job.scene_path, job.mat_path,
+                                        job.tmp_path};
+        inputs.insert(inputs.end(), job.rad_paths.begin(), job.rad_paths.end());
+        require_outputs_distinct(outputs, inputs);
     }
     if (job.samples_per_pixel &&
         (*job.samples_per_pixel < 1 || *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))

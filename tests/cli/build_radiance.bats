@@ -54,8 +54,11 @@ line_of() { sed -n "${2}p" "$1"; }
     [[ "$stderr" == *"streams must be even, 4 to 64; found 5"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance --sky-zenith-step 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"sky zenith step must divide 90"* ]] || fail "stderr: $stderr"
-    run -2 --separate-stderr build_radiance --sky-azimuth-step 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    run -2 --separate-stderr build_radiance --sky-azimuth-step 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"sky azimuth step must divide 360"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --sky-azimuth-step 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == "build_radiance: --sky-azimuth-step: 0: must be a number > 0 and <= 360"* ]] ||
+        fail "stderr: $stderr"
 }
 
 @test "the Hawkeye deck gives one valid .rad per band with the scene node's grids" {
@@ -205,11 +208,11 @@ line_of() { sed -n "${2}p" "$1"; }
     run -2 --separate-stderr build_radiance --upwelled-azimuth-step 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"upwelled azimuth step must divide 360"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance --merge-tau 2 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"--merge-tau must be in [0, 1]"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"--merge-tau: 2: must be a number from 0 to 1"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance --top 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"--top must be > 0 km"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"--top: 0: must be a number > 0 and <= 1000"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr build_radiance --sky-subsamples 9 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"sky subsamples must be 1 to 8"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"--sky-subsamples: 9: must be an integer from 1 to 8"* ]] || fail "stderr: $stderr"
 }
 
 @test "the tables carry the coupling terms (SIGCHAIN_RAD 1.2), physically bounded" {

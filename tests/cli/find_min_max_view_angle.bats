@@ -100,7 +100,7 @@ SCENE="$SIGCHAIN_SOURCE_DIR/tests/data/scene"
     # 4 corners + 4 x 100 border pixels + 2 x 2 interior rays all hit the square.
     assert_output --regexp 'field-of-view +-0\.7292 +0\.7292 +0\.10 +408'
     run -2 --separate-stderr find_min_max_view_angle --grid 0 "$GEOM/nadir.adv" "$GEOM/plane_100m.gdb"
-    [[ "$stderr" == *"--grid must be at least 1"* ]]
+    [[ "$stderr" == *"--grid: 0: must be an integer from 1 to 100000"* ]]
 }
 
 @test "an .odb with an OBJ object is read (its material map too)" {

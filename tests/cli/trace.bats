@@ -321,11 +321,11 @@ band_bytes() {
 
 @test "trace: bad --sampling and counts are usage errors" {
     trace_bad 2 "--sampling: unknown strategy 'mcmc'" $(inputs) --sampling mcmc -o out.img
-    trace_bad 2 "--samples-per-pixel: expected 1 to" $(inputs) --samples-per-pixel 0 -o out.img
-    trace_bad 2 "--hemisphere-samples: expected at least 1" $(inputs) \
+    trace_bad 2 "--samples-per-pixel: 0: must be an integer from 1 to 65536" $(inputs) --samples-per-pixel 0 -o out.img
+    trace_bad 2 "--hemisphere-samples: 0: must be an integer from 1 to 1000000" $(inputs) \
         --hemisphere-samples 0 -o out.img
-    trace_bad 2 "--max-transmissions: expected 0 or more" $(inputs) \
-        --max-transmissions -1 -o out.img
+    trace_bad 2 "--max-transmissions: -1: must be an integer from 0 to 1000" $(inputs) \
+        --max-transmissions=-1 -o out.img
 }
 
 @test "trace refuses standard output, a missing -o and unknown cube extensions" {
@@ -466,12 +466,12 @@ therm_materials() {
     }
     shadow_bad 2 "--history-step-minutes: 7 min does not divide" --shadow-history \
         --history-step-minutes 7 "${args[@]}" -o out.shd
-    shadow_bad 2 "--history-hours: expected a positive" --shadow-history --history-hours 0 \
+    shadow_bad 2 "--history-hours: 0: must be a number > 0" --shadow-history --history-hours 0 \
         "${args[@]}" -o out.shd
     shadow_bad 2 "--shadow-history: expected SND SCENE MAT" --shadow-history \
         "$SEED/hawkeye.snd" "$GDB" -o out.shd
     shadow_bad 2 "no output: give -o" --shadow-history "${args[@]}"
-    shadow_bad 2 "--points-per-facet: expected 1 to" --shadow-history --points-per-facet 0 \
+    shadow_bad 2 "--points-per-facet: 0: must be an integer from 1 to 1000000" --shadow-history --points-per-facet 0 \
         "${args[@]}" -o out.shd
     shadow_bad 2 "--truth does not apply to --shadow-history" --shadow-history --truth t.img \
         "${args[@]}" -o out.shd
@@ -584,9 +584,9 @@ coupled_inputs() {
 }
 
 @test "trace: bad --adjacency-radius values and misplaced adjacency options are usage errors" {
-    trace_bad 2 "--adjacency-radius: expected a positive number of metres" \
+    trace_bad 2 "--adjacency-radius: 0: must be a number > 0" \
         --adjacency-radius 0 $(inputs) -o out.img
-    trace_bad 2 "--adjacency-radius: expected a positive number of metres" \
+    trace_bad 2 "--adjacency-radius: -5: must be a number > 0" \
         --adjacency-radius=-5 $(inputs) -o out.img
     trace_bad 2 "--adjacency-radius does not apply with --no-adjacency" \
         --no-adjacency --adjacency-radius 10 $(inputs) -o out.img

@@ -17,31 +17,32 @@ int main(int argc, char** argv) {
     tool.add_positional("input", -1, "card deck (.cdk) and scene node (.snd); one may be '-'");
     tool.add_required_output_option(
         "PATTERN", "write band N to PATTERN with %d replaced by N (e.g. scene-%d.rad); required");
-    tool.add_options()("streams", cli::po::value<int>()->default_value(16)->value_name("N"),
-                       "discrete ordinates of the solver (even, 4-64)")(
-        "sky-zenith-step", cli::po::value<double>()->default_value(5)->value_name("DEG"),
-        "downwelled hemisphere: ring width (divides 90)")(
-        "sky-azimuth-step", cli::po::value<double>()->default_value(10)->value_name("DEG"),
-        "downwelled hemisphere: cell width in azimuth (divides 360)")(
-        "sky-subsamples", cli::po::value<int>()->default_value(2)->value_name("N"),
-        "directions per cell and axis averaged into each sky cell (1-8)")(
-        "upwelled-azimuth-step", cli::po::value<double>()->default_value(10)->value_name("DEG"),
-        "upwelled path-radiance grid: azimuth step (divides 360)")(
-        "view-azimuth", cli::po::value<double>()->value_name("DEG"),
-        "azimuth of positive view angles, clockwise from north (default: the deck's PSIPO)")(
-        "top", cli::po::value<double>()->default_value(100)->value_name("KM"),
-        "top of the modelled atmosphere")(
-        "merge-tau", cli::po::value<double>()->default_value(0.01)->value_name("TAU"),
-        "solver merges thin layers up to this optical depth (0: never)")(
-        "thermal-from", cli::po::value<double>()->default_value(2.5)->value_name("UM"),
-        "solve layer emission at wavelengths from UM up")(
-        "write-decks", cli::po::value<std::string>()->value_name("DIR"),
-        "write a LOWTRAN 7 deck per path the tables need and DIR/runs.t7m, no tables")(
+    tool.add_number("streams", "N", cli::integers(4, 64),
+                    "discrete ordinates of the solver (even, 4-64)", "16");
+    tool.add_number("sky-zenith-step", "DEG", cli::reals(0, 90, true),
+                    "downwelled hemisphere: ring width (divides 90)", "5");
+    tool.add_number("sky-azimuth-step", "DEG", cli::reals(0, 360, true),
+                    "downwelled hemisphere: cell width in azimuth (divides 360)", "10");
+    tool.add_number("sky-subsamples", "N", cli::integers(1, 8),
+                    "directions per cell and axis averaged into each sky cell (1-8)", "2");
+    tool.add_number("upwelled-azimuth-step", "DEG", cli::reals(0, 360, true),
+                    "upwelled path-radiance grid: azimuth step (divides 360)", "10");
+    tool.add_number("view-azimuth", "DEG", cli::reals(-360, 360),
+                    "azimuth of positive view angles, clockwise from north, -360 to 360\n"
+                    "                    (default: the deck's PSIPO)");
+    tool.add_number("top", "KM", cli::positive(1000),
+                    "top of the modelled atmosphere (> 0, <= 1000)", "100");
+    tool.add_number("merge-tau", "TAU", cli::reals(0, 1),
+                    "solver merges thin layers up to this optical depth (0-1; 0: never)", "0.01");
+    tool.add_number("thermal-from", "UM", cli::reals(0, 1000),
+                    "solve layer emission at wavelengths from UM up (0-1000)", "2.5");
+    tool.add_options()("write-decks", cli::po::value<std::string>()->value_name("DIR"),
+                       "write a LOWTRAN 7 deck per path the tables need and DIR/runs.t7m, no tables")(
         "from-tape7", cli::po::value<std::string>()->value_name("LIST"),
         "assemble the tables from the TAPE7s of the run list LIST (.t7m, or a\n"
         "                    directory holding runs.t7m) instead of solving")(
         "data-dir", cli::po::value<std::string>()->value_name("DIR"),
-        "reference data (default: $SIGCHAIN_DATA, else the build's data/)");
+                       "reference data (default: $SIGCHAIN_DATA, else the build's data/)");
     tool.add_threads_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         const auto inputs = cli::args(vm, "input");
@@ -54,15 +55,15 @@ int main(int argc, char** argv) {
         if (job.write_decks_dir.empty()) job.output_pattern = cli::output_path(vm);
         if (vm.count("data-dir")) job.data_dir = vm["data-dir"].as<std::string>();
         atmos::RadianceOptions& o = job.options;
-        o.streams = vm["streams"].as<int>();
-        o.sky_zenith_step_deg = vm["sky-zenith-step"].as<double>();
-        o.sky_azimuth_step_deg = vm["sky-azimuth-step"].as<double>();
-        o.sky_subsamples = vm["sky-subsamples"].as<int>();
-        o.upwelled_azimuth_step_deg = vm["upwelled-azimuth-step"].as<double>();
-        if (vm.count("view-azimuth")) o.view_azimuth_deg = vm["view-azimuth"].as<double>();
-        o.top_km = vm["top"].as<double>();
-        o.thermal_min_wavelength_um = vm["thermal-from"].as<double>();
-        o.merge_tau = vm["merge-tau"].as<double>();
+        o.streams = static_cast<int>(cli::integer(vm, "streams"));
+        o.sky_zenith_step_deg = cli::real(vm, "sky-zenith-step");
+        o.sky_azimuth_step_deg = cli::real(vm, "sky-azimuth-step");
+        o.sky_subsamples = static_cast<int>(cli::integer(vm, "sky-subsamples"));
+        o.upwelled_azimuth_step_deg = cli::real(vm, "upwelled-azimuth-step");
+        if (vm.count("view-azimuth")) o.view_azimuth_deg = cli::real(vm, "view-azimuth");
+        o.top_km = cli::real(vm, "top");
+        o.thermal_min_wavelength_um = cli::real(vm, "thermal-from");
+        o.merge_tau = cli::real(vm, "merge-tau");
         o.threads = cli::threads(vm);
         atmos::run(job, ctx);
         return 0;

@@ -25,15 +25,15 @@ cmp::CompareJob job_from(const cli::po::variables_map& vm) {
     job.reference_path = inputs[1];
     if (!job.pixelwise) job.cpt_path = inputs[2];
     if (vm.count("bands")) job.band_map = cmp::parse_band_map(vm["bands"].as<std::string>());
-    job.histogram_bins = vm["bins"].as<int>();
-    if (job.histogram_bins < 1 || job.histogram_bins > 4096)
-        throw sigchain::UsageError("--bins must be from 1 to 4096");
+    job.histogram_bins = static_cast<int>(cli::integer(vm, "bins"));
     job.json = vm.count("json") > 0;
     if (vm.count("plot")) job.plot_dir = vm["plot"].as<std::string>();
     if (vm.count("error-map")) job.error_map_path = vm["error-map"].as<std::string>();
-    if (vm.count("fail-rms")) job.fail_rms = vm["fail-rms"].as<double>();
-    if (vm.count("fail-roc")) job.fail_roc = vm["fail-roc"].as<double>();
-    if (vm.count("fail-max")) job.fail_max = vm["fail-max"].as<double>();
+    if (vm.count("fail-rms")) job.fail_rms = cli::real(vm, "fail-rms");
+    if (vm.count("fail-roc")) job.fail_roc = cli::real(vm, "fail-roc");
+    if (vm.count("fail-max")) job.fail_max = cli::real(vm, "fail-max");
+    std::vector<std::string> outputs{cli::output_path(vm), job.error_map_path};
+    sigchain::require_outputs_distinct(outputs, inputs);
     return job;
 }
 
@@ -49,18 +49,18 @@ int main(int argc, char** argv) {
     tool.add_positional("input", -1, "synthetic image, reference image, control points (.cpt)");
     tool.add_options()("bands", cli::po::value<std::string>()->value_name("LIST"),
                        "reference band per synthetic band, e.g. 3,2,1")(
-        "bins", cli::po::value<int>()->default_value(16)->value_name("N"), "histogram bins")(
         "json", "write the report as JSON")(
         "plot", cli::po::value<std::string>()->value_name("DIR"), "write PNG histograms into DIR")(
         "pixelwise", "compare co-registered images pixel by pixel")(
         "error-map", cli::po::value<std::string>()->value_name("FILE"),
-        "with --pixelwise: write synthetic - reference as a float TIFF")(
-        "fail-rms", cli::po::value<double>()->value_name("X"),
-        "exit 1 when an RMS difference exceeds X")(
-        "fail-roc", cli::po::value<double>()->value_name("X"),
-        "exit 1 when a rank-order correlation is below X")(
-        "fail-max", cli::po::value<double>()->value_name("X"),
-        "with --pixelwise: exit 1 when a pixel differs by more than X");
+        "with --pixelwise: write synthetic - reference as a float TIFF");
+    tool.add_number("bins", "N", cli::integers(1, 4096), "histogram bins (1-4096)", "16");
+    tool.add_number("fail-rms", "X", cli::reals(0, 1e300),
+                    "exit 1 when an RMS difference exceeds X (>= 0)");
+    tool.add_number("fail-roc", "X", cli::reals(-1, 1),
+                    "exit 1 when a rank-order correlation is below X (-1 to 1)");
+    tool.add_number("fail-max", "X", cli::reals(0, 1e300),
+                    "with --pixelwise: exit 1 when a pixel differs by more than X (>= 0)");
     tool.add_output_option();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         auto job = job_from(vm);

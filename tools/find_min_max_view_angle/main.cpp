@@ -21,10 +21,10 @@ int main(int argc, char** argv) {
         "method,m",
         cli::po::value<std::string>()->default_value("field-of-view")->value_name("NAME"),
         "method for --snd: field-of-view or scene-bounding-box")(
-        "grid", cli::po::value<int>()->default_value(256)->value_name("N"),
-        "interior rays per image axis for the field-of-view method (>= 1)")(
         "origin", cli::po::value<std::string>()->value_name("LAT,LON[,H]"),
         "geodetic scene origin for DEMs (deg N, deg E, m above the ellipsoid)");
+    tool.add_number("grid", "N", cli::integers(1, 100000),
+                    "interior rays per image axis for the field-of-view method (1-100000)", "256");
     tool.add_output_option();
     tool.add_scene_input_options();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
@@ -42,10 +42,10 @@ int main(int argc, char** argv) {
         else if (method != "field-of-view")
             throw sigchain::UsageError("unknown method '" + method +
                                        "' (field-of-view or scene-bounding-box)");
-        job.grid = vm["grid"].as<int>();
-        if (job.grid < 1) throw sigchain::UsageError("--grid must be at least 1");
+        job.grid = static_cast<int>(cli::integer(vm, "grid"));
         if (vm.count("origin"))
             job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
+        sigchain::require_outputs_distinct({cli::output_path(vm)}, inputs);
         sigchain::AtomicOutput out(cli::output_path(vm));
         geom::run_view_angle_job(job, out.stream());
         out.commit();

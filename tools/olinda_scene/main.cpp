@@ -8,6 +8,7 @@
 
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "landcover/olinda.hpp"
 
 namespace cli = sigchain::cli;
@@ -66,6 +67,7 @@ int run(const std::vector<std::string>& a) {
         lc::write_ems_curves(a[1], a[2], a[3]);
     } else if (command == "preview") {
         need(3);
+        sigchain::require_outputs_distinct({a[3]}, {a[1], a[2]});
         lc::write_preview(a[1], a[2], a[3]);
     } else {
         throw sigchain::UsageError(command.empty() ? "expected a COMMAND"

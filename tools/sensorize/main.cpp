@@ -1,6 +1,7 @@
 // sensorize: turn a radiance cube into the digital counts of a sensor (White (1996), section 4.2.3.10, 4.2.4).
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "cli/cli.hpp"
 #include "core/error.hpp"
@@ -12,16 +13,14 @@ namespace sensor = sigchain::sensor;
 
 namespace {
 
+constexpr long double kInfinity = std::numeric_limits<long double>::infinity();
+
 // "N" or "N,N,..." as numbers, for --target1/--target2.
 std::vector<double> parse_targets(const std::string& text, const std::string& option) {
     std::vector<double> values;
-    for (auto field : sigchain::split_fields(text, true)) {
-        try {
-            values.push_back(sigchain::parse_double(field, {option, 0}, "a count"));
-        } catch (const sigchain::DataError&) {
-            throw sigchain::UsageError(option + ": expected counts, found '" + text + "'");
-        }
-    }
+    for (auto field : sigchain::split_fields(text, true))
+        values.push_back(static_cast<double>(
+            cli::parse_number(option, std::string(field), cli::reals(0, kInfinity))));
     if (values.empty()) throw sigchain::UsageError(option + ": expected counts");
     return values;
 }
@@ -125,7 +124,8 @@ std::uint64_t noise_seed(const cli::po::variables_map& vm, const cli::Context& c
     if (!vm["seed"].defaulted())
         throw sigchain::UsageError("give --seed or --noise-seed, not both");
     ctx.warn("--noise-seed is deprecated: use --seed");
-    return vm["noise-seed"].as<std::uint64_t>();
+    return static_cast<std::uint64_t>(
+        cli::parse_number("--noise-seed", vm["noise-seed"].as<std::string>(), cli::seed_range()));
 }
 
 // The job from the options (usage errors for missing or contradictory ones).
@@ -137,17 +137,12 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
     job.sen_paths.assign(inputs.begin() + 1, inputs.end());
     // Missing -o: check_job's usage error says what -o must name (image or directory).
     job.output_path = vm.count("output") ? cli::output_path(vm) : std::string();
-    job.bits = vm["bits"].as<int>();
+    job.bits = static_cast<int>(cli::integer(vm, "bits"));
     job.float_output = vm.count("float") > 0;
     job.noise.seed = noise_seed(vm, ctx);
-    if (vm.count("shot-noise")) job.noise.electrons_per_count = vm["shot-noise"].as<double>();
-    if (vm.count("shot-noise") && job.noise.electrons_per_count <= 0)
-        throw sigchain::UsageError("--shot-noise must be positive");
-    if (vm.count("read-noise")) job.noise.read_noise_counts = vm["read-noise"].as<double>();
-    if (vm.count("psf-sigma")) {
-        job.psf_sigma_px = vm["psf-sigma"].as<double>();
-        if (!(job.psf_sigma_px > 0)) throw sigchain::UsageError("--psf-sigma must be positive");
-    }
+    if (vm.count("shot-noise")) job.noise.electrons_per_count = cli::real(vm, "shot-noise");
+    if (vm.count("read-noise")) job.noise.read_noise_counts = cli::real(vm, "read-noise");
+    if (vm.count("psf-sigma")) job.psf_sigma_px = cli::real(vm, "psf-sigma");
     if (vm.count("psf")) job.psf_path = vm["psf"].as<std::string>();
     job.mtf = mtf_from(vm);
     job.write_options = {cli::creation_options(vm), ctx.command()};
@@ -173,15 +168,14 @@ int main(int argc, char** argv) {
                    "[OPTIONS] CUBE SEN... -o IMAGE"});
     tool.add_positional("input", -1, "radiance cube (ENVI or GeoTIFF) and one .sen per band");
     using cli::po::value;
-    tool.add_options()("bits,b", value<int>()->default_value(8)->value_name("BITS"),
-                       "bits per count: 8, 12 or 16")(
-        "float", "write band radiance unquantised (float TIFF) instead of counts")(
-        "shot-noise", value<double>()->value_name("E"),
-        "photo-electrons per count E (adds shot noise)")(
-        "read-noise", value<double>()->value_name("SIGMA"),
-        "read noise standard deviation, counts")(
-        "psf-sigma", value<double>()->value_name("PX"),
-        "Gaussian point-spread function, sigma in pixels")(
+    tool.add_number("bits,b", "BITS", cli::integers(8, 16), "bits per count: 8, 12 or 16", "8");
+    tool.add_number("shot-noise", "E", cli::positive(),
+                    "photo-electrons per count E, > 0 (adds shot noise)");
+    tool.add_number("read-noise", "SIGMA", cli::reals(0, kInfinity),
+                    "read noise standard deviation, counts (>= 0)");
+    tool.add_number("psf-sigma", "PX", cli::positive(),
+                    "Gaussian point-spread function, sigma in pixels (> 0)");
+    tool.add_options()("float", "write band radiance unquantised (float TIFF) instead of counts")(
         "psf", value<std::string>()->value_name("FILE"), "point-spread function kernel file")(
         "mtf-fnumber", value<double>()->value_name("N"),
         "MTF: diffraction of a circular aperture of f-number N (needs --mtf-pitch)")(
@@ -207,7 +201,7 @@ int main(int argc, char** argv) {
     // Default 0, as --noise-seed had: an image with noise and no seed stays the same.
     tool.add_seed_option("seed of the noise (default 0)", 0);
     // The former name of --seed, still accepted (sensorize(1), DEPRECATED OPTIONS).
-    tool.add_hidden_options()("noise-seed", cli::po::value<std::uint64_t>(), "use --seed");
+    tool.add_number("noise-seed", "N", cli::seed_range(), "use --seed", nullptr, true);
     tool.add_required_output_option(
         "IMAGE",
         "the image to write (required); with --calibrate, the directory for the .sen files");

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
         const auto& format = vm["format"].as<std::string>();
         if (vm.count("rewrite")) {
             if (files.size() != 1) throw sigchain::UsageError("--rewrite takes exactly one FILE");
+            sigchain::require_outputs_distinct({cli::output_path(vm)}, files);
             sigchain::AtomicOutput out(cli::output_path(vm));
             sigchain::io::check_file(files[0], format, &out.stream());
             out.commit();

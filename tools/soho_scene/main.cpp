@@ -1,6 +1,7 @@
 // soho_scene: the Soho scene's geometry from building footprints (lib/scenegen/soho.hpp).
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "scenegen/footprints.hpp"
 #include "scenegen/soho.hpp"
 
@@ -15,13 +16,13 @@ int main(int argc, char** argv) {
     tool.add_positional("footprints", -1, "polygons in a projected CRS in metres");
     tool.add_required_output_option("GDB", "write the .gdb to GDB ('-' is standard output)");
     // The scene's own default (7), not add_seed_option's 1: the Soho scene is seed 7.
-    tool.add_options()("seed", cli::po::value<std::uint64_t>()->default_value(7)->value_name("N"),
-                       "seed of the storey rule (default 7)");
+    tool.add_seed_option("seed of the storey rule (default 7)", 7);
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         const auto inputs = cli::args(vm, "footprints");
         if (inputs.size() != 1) throw sigchain::UsageError("expected one FOOTPRINTS file");
         const std::string output = cli::output_path(vm);
-        const std::uint64_t seed = vm["seed"].as<std::uint64_t>();
+        sigchain::require_outputs_distinct({output}, inputs);
+        const std::uint64_t seed = cli::seed(vm);
         const sg::Footprints fp = sg::read_footprints(inputs[0]);
         sg::SohoCounts c;
         const auto gdb = sg::soho_gdb(fp, seed, c);

@@ -1,6 +1,7 @@
 // therm: compute facet temperatures (.tmp) from weather and sun/shadow history (White (1996), section 3.4).
 #include "cli/cli.hpp"
 #include "core/error.hpp"
+#include "core/output.hpp"
 #include "thermal/therm_job.hpp"
 
 namespace cli = sigchain::cli;
@@ -21,7 +22,8 @@ thermal::ThermJob job_of(const cli::po::variables_map& vm) {
     job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
     job.snd_path = inputs[4];
     job.output_path = cli::output_path(vm);
-    job.time_step_s = vm["time-step"].as<double>();
+    sigchain::require_outputs_distinct({job.output_path}, inputs);
+    job.time_step_s = cli::real(vm, "time-step");
     job.threads = cli::threads(vm);
     return job;
 }
@@ -37,8 +39,8 @@ int main(int argc, char** argv) {
                         "                    scene (.gdb, .odb, a mesh or a DEM raster: odb(5)\n"
                         "                    SCENE ARGUMENT), scene node (.snd)");
     tool.add_output_option();  // "-" (standard output) by default, therm(1)
-    tool.add_options()("time-step", cli::po::value<double>()->default_value(60)->value_name("S"),
-                       "time step of the thermal model, seconds (0 < S <= 3600)");
+    tool.add_number("time-step", "S", cli::positive(3600),
+                    "time step of the thermal model, seconds (0 < S <= 3600)", "60");
     tool.add_threads_option();
     tool.add_scene_input_options();
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {

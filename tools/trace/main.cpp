@@ -4,6 +4,7 @@
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "image/image.hpp"
+#include "io/adv.hpp"
 #include "trace/shadow_history.hpp"
 #include "trace/trace_job.hpp"
 
@@ -32,14 +33,14 @@ trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
     job.mat_path = inputs[2];
     if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
-    if (vm.count("history-hours")) job.options.history_hours = vm["history-hours"].as<double>();
+    if (vm.count("history-hours")) job.options.history_hours = cli::real(vm, "history-hours");
     if (vm.count("history-step-minutes"))
-        job.options.step_minutes = vm["history-step-minutes"].as<double>();
+        job.options.step_minutes = cli::real(vm, "history-step-minutes");
     if (vm.count("points-per-facet"))
-        job.options.points_per_facet = vm["points-per-facet"].as<long>();
-    if (vm.count("sky-rays")) job.options.sky_rays = vm["sky-rays"].as<long>();
+        job.options.points_per_facet = cli::integer(vm, "points-per-facet");
+    if (vm.count("sky-rays")) job.options.sky_rays = cli::integer(vm, "sky-rays");
     if (vm.count("max-transmissions"))
-        job.options.max_transmissions = vm["max-transmissions"].as<int>();
+        job.options.max_transmissions = static_cast<int>(cli::integer(vm, "max-transmissions"));
     job.options.seed = cli::seed(vm);
     job.options.threads = cli::threads(vm);
     job.allow_degenerate = vm.count("allow-degenerate") > 0;
@@ -64,10 +65,10 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.rad_paths.assign(inputs.begin() + 4, inputs.end());
     if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
     job.sampling = trace::parse_sampling(vm["sampling"].as<std::string>());
-    if (vm.count("samples-per-pixel")) job.samples_per_pixel = vm["samples-per-pixel"].as<long>();
+    if (vm.count("samples-per-pixel")) job.samples_per_pixel = cli::integer(vm, "samples-per-pixel");
     if (vm.count("hemisphere-samples"))
-        job.hemisphere_samples = vm["hemisphere-samples"].as<long>();
-    if (vm.count("max-transmissions")) job.max_transmissions = vm["max-transmissions"].as<int>();
+        job.hemisphere_samples = cli::integer(vm, "hemisphere-samples");
+    if (vm.count("max-transmissions")) job.max_transmissions = static_cast<int>(cli::integer(vm, "max-transmissions"));
     if (vm.count("bounces")) job.bounces = trace::parse_bounces(vm["bounces"].as<std::string>());
     if (vm.count("background")) job.background = vm["background"].as<std::string>();
     job.seed = cli::seed(vm);
@@ -79,7 +80,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.allow_degenerate = vm.count("allow-degenerate") > 0;
     job.golfball_jitter = vm.count("golfball-jitter") > 0;
     job.adjacency = vm.count("no-adjacency") == 0;
-    if (vm.count("adjacency-radius")) job.adjacency_radius_m = vm["adjacency-radius"].as<double>();
+    if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
     return job;
 }
 
@@ -107,12 +108,6 @@ int main(int argc, char** argv) {
     tool.add_options()("sampling",
                        cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
                        "hemisphere sampling: dirsig, golfball or montecarlo")(
-        "samples-per-pixel", cli::po::value<long>()->value_name("N"),
-        "primary rays per pixel (default: the .adv's samples_per_pixel)")(
-        "hemisphere-samples", cli::po::value<long>()->value_name("N"),
-        "montecarlo: rays per hit; dirsig: diffuse pattern size (default 64)")(
-        "max-transmissions", cli::po::value<int>()->value_name("N"),
-        "transmissive facets followed per ray (default 8)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<std::string>()->value_name("N|auto"),
         "secondary hits followed (default auto: as deep as an estimate says the\n"
@@ -128,17 +123,28 @@ int main(int argc, char** argv) {
                                                "facet temperatures (.tmp): add emission")(
         "allow-degenerate", "skip degenerate facets with a warning instead of failing")(
         "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
-        "adjacency-radius", cli::po::value<double>()->value_name("M"),
-        "radius of the environment whose mean reflectance couples (default 1000 m)")(
-        "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
-        "history-hours", cli::po::value<double>()->value_name("H"),
-        "--shadow-history: hours of history before the scene time (default 24)")(
-        "history-step-minutes", cli::po::value<double>()->value_name("M"),
-        "--shadow-history: time step, dividing the history (default 15)")(
-        "points-per-facet", cli::po::value<long>()->value_name("N"),
-        "--shadow-history: sample points per facet (default 1: its centroid)")(
-        "sky-rays", cli::po::value<long>()->value_name("N"),
-        "--shadow-history: sky-view rays per point (default 256)");
+        "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead");
+    tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
+                    "primary rays per pixel (default: the .adv's samples_per_pixel)");
+    tool.add_number("hemisphere-samples", "N", cli::integers(1, 1000000),
+                    "montecarlo: rays per hit; dirsig: diffuse pattern size (1-1000000;\n"
+                    "                    default 64)");
+    tool.add_number("max-transmissions", "N", cli::integers(0, 1000),
+                    "transmissive facets followed per ray (0-1000; default 8)");
+    tool.add_number("adjacency-radius", "M", cli::positive(1e7),
+                    "radius of the environment whose mean reflectance couples (> 0;\n"
+                    "                    default 1000 m)");
+    tool.add_number("history-hours", "H", cli::positive(8760),
+                    "--shadow-history: hours of history before the scene time (> 0, <= 8760;\n"
+                    "                    default 24)");
+    tool.add_number("history-step-minutes", "M", cli::positive(1440),
+                    "--shadow-history: time step, dividing the history (> 0, <= 1440;\n"
+                    "                    default 15)");
+    tool.add_number("points-per-facet", "N", cli::integers(1, 1000000),
+                    "--shadow-history: sample points per facet (1-1000000; default 1: its\n"
+                    "                    centroid)");
+    tool.add_number("sky-rays", "N", cli::integers(1, 1000000),
+                    "--shadow-history: sky-view rays per point (1-1000000; default 256)");
     // -o is read as given (not cli::output_path) so that the jobs name what is missing:
     // a radiance cube, or the .shd of --shadow-history.
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {

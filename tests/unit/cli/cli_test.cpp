@@ -167,3 +167,90 @@ TEST(Cli, ProvenanceCommandDropsPathsAndThreads) {
                        "COMPRESS=DEFLATE", "--psf=a.psf", "-o", "out.tif"};
     EXPECT_EQ(cli::provenance_command(10, b), cli::provenance_command(14, a));
 }
+
+// ---- The checked number parser (parse_number, add_number) ----
+
+TEST(ParseNumber, ReadsFiniteNumbersInRange) {
+    EXPECT_EQ(cli::parse_number("--top", "100", cli::positive(1000)), 100.0L);
+    EXPECT_EQ(cli::parse_number("--top", "+2.5e1", cli::positive(1000)), 25.0L);
+    EXPECT_EQ(cli::parse_number("--top", "1000", cli::positive(1000)), 1000.0L);
+    EXPECT_EQ(cli::parse_number("--roc", "-1", cli::reals(-1, 1)), -1.0L);
+    EXPECT_EQ(cli::parse_number("--n", "-3", cli::integers(-5, 5)), -3.0L);
+    EXPECT_EQ(cli::parse_number("--n", "0", cli::threads_range()), 0.0L);
+}
+
+TEST(ParseNumber, SeedsAreExactUpTo2To64) {
+    // 2^64 - 1 is not a double; the parser keeps every integer of a seed exact.
+    const long double v =
+        cli::parse_number("--seed", "18446744073709551615", cli::seed_range());
+    EXPECT_EQ(static_cast<std::uint64_t>(v), UINT64_MAX);
+    EXPECT_THROW(cli::parse_number("--seed", "18446744073709551616", cli::seed_range()),
+                 UsageError);
+    EXPECT_THROW(cli::parse_number("--seed", "-1", cli::seed_range()), UsageError);
+}
+
+// The message of each rejected value: "--OPTION: VALUE: must be RANGE".
+std::string rejection(const std::string& text, const cli::Range& range) {
+    try {
+        cli::parse_number("--x", text, range);
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(ParseNumber, RejectsNanInfinityAndJunk) {
+    const cli::Range r = cli::reals(0, 10);
+    for (const char* bad : {"nan", "NaN", "-nan", "inf", "-inf", "infinity", "1e999", "", "+",
+                            "-", "1x", " 1", "1 ", "0x10", "1,5", "--1", "+-1", "e5"})
+        EXPECT_EQ(rejection(bad, r), std::string("--x: ") + bad + ": must be a number from 0 to 10")
+            << bad;
+}
+
+TEST(ParseNumber, RejectsOutOfRangeAndFractionsOfIntegers) {
+    EXPECT_EQ(rejection("-1", cli::threads_range()), "--x: -1: must be an integer from 0 to 4096");
+    EXPECT_EQ(rejection("1.5", cli::integers(1, 8)), "--x: 1.5: must be an integer from 1 to 8");
+    EXPECT_EQ(rejection("1e3", cli::integers(1, 8)), "--x: 1e3: must be an integer from 1 to 8");
+    EXPECT_EQ(rejection("0", cli::positive(3600)), "--x: 0: must be a number > 0 and <= 3600");
+    EXPECT_EQ(rejection("3600.5", cli::positive(3600)),
+              "--x: 3600.5: must be a number > 0 and <= 3600");
+    EXPECT_EQ(rejection("-0.1", cli::reals(0, 1e300)), "--x: -0.1: must be a number from 0 to 1e+300");
+    EXPECT_EQ(rejection("nan", cli::Range{}), "--x: nan: must be a finite number");
+    cli::Range only_min = cli::integers(1, 0);
+    only_min.max = std::numeric_limits<long double>::infinity();
+    EXPECT_EQ(rejection("0", only_min), "--x: 0: must be an integer >= 1");
+}
+
+TEST(ParseNumber, OptionsAreCheckedWhenParsedDefaultsIncluded) {
+    auto configure = [](cli::Cli& c) {
+        c.add_number("top", "KM", cli::positive(1000), "top", "100");
+        c.add_number("bits,b", "N", cli::integers(8, 16), "bits", "8");
+        c.add_threads_option();
+    };
+    double top = 0;
+    long long bits = 0;
+    unsigned threads = 99;
+    auto body = [&](const po::variables_map& vm, cli::Context&) {
+        top = cli::real(vm, "top");
+        bits = cli::integer(vm, "bits");
+        threads = cli::threads(vm);
+        return 0;
+    };
+    EXPECT_EQ(run({}, body, configure).status, 0);
+    EXPECT_EQ(top, 100);
+    EXPECT_EQ(bits, 8);
+    EXPECT_EQ(threads, 0u);
+    EXPECT_EQ(run({"--top", "2.5", "-b", "12", "--threads", "3"}, body, configure).status, 0);
+    EXPECT_EQ(top, 2.5);
+    EXPECT_EQ(bits, 12);
+    EXPECT_EQ(threads, 3u);
+    Result r = run({"--top", "inf"}, body, configure);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "tool: --top: inf: must be a number > 0 and <= 1000\nTry 'tool --help'.\n");
+    r = run({"-b", "nan"}, body, configure);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "tool: --bits: nan: must be an integer from 8 to 16\nTry 'tool --help'.\n");
+    r = run({"--threads", "-1"}, body, configure);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "tool: --threads: -1: must be an integer from 0 to 4096\nTry 'tool --help'.\n");
+}
