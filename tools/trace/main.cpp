@@ -16,7 +16,7 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "truth", "tmp", "no-adjacency",
-                          "adjacency-radius", "co"})
+                          "adjacency-radius", "co", "crs"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -75,6 +75,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.golfball_jitter = vm.count("golfball-jitter") > 0;
     job.adjacency = vm.count("no-adjacency") == 0;
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = vm["adjacency-radius"].as<double>();
+    if (vm.count("crs")) job.crs = vm["crs"].as<std::string>();
     return job;
 }
 
@@ -121,6 +122,9 @@ int main(int argc, char** argv) {
         "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
         "adjacency-radius", cli::po::value<double>()->value_name("M"),
         "radius of the environment whose mean reflectance couples (default 1000 m)")(
+        "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
+        "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT\n"
+        "                    FILE; none: write no georeferencing)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
         "history-hours", cli::po::value<double>()->value_name("H"),
         "--shadow-history: hours of history before the scene time (default 24)")(
