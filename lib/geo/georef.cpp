@@ -1,10 +1,10 @@
 // Scene ENU -> WGS84 (GeographicLib) -> map CRS (GDAL/OGR), and the geotransform fit.
 #include "geo/georef.hpp"
 
-#include <GeographicLib/LocalCartesian.hpp>
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -55,9 +55,8 @@ struct MapProjector::Impl {
     SourceLocation where;
 };
 
-MapProjector::MapProjector(const Crs& map, double origin_latitude_deg,
-                           double origin_longitude_deg, double origin_height_m,
-                           const SourceLocation& where)
+MapProjector::MapProjector(const Crs& map, double origin_latitude_deg, double origin_longitude_deg,
+                           double origin_height_m, const SourceLocation& where)
     : m_impl(std::make_unique<Impl>()) {
     gdal_init();
     m_impl->enu.Reset(origin_latitude_deg, origin_longitude_deg, origin_height_m);
@@ -65,7 +64,7 @@ MapProjector::MapProjector(const Crs& map, double origin_latitude_deg,
     if (map.empty()) throw DataError(where, "no map coordinate reference system");
     OGRSpatialReference wgs84, target(*map.ogr());
     wgs84.SetWellKnownGeogCS("WGS84");
-    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = longitude
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);   // x = longitude
     target.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = easting or longitude
     m_impl->to_map.reset(OGRCreateCoordinateTransformation(&wgs84, &target));
     if (!m_impl->to_map)
@@ -84,8 +83,8 @@ std::array<double, 2> MapProjector::map_xy(const Vec3& enu_m) const {
     auto [x, y] = lon_lat(enu_m);
     int ok = 0;
     if (!m_impl->to_map->Transform(1, &x, &y, nullptr, &ok) || !ok)
-        throw DataError(m_impl->where, "cannot transform a point to the map CRS: " +
-                                           gdal_message());
+        throw DataError(m_impl->where,
+                        "cannot transform a point to the map CRS: " + gdal_message());
     return {x, y};
 }
 

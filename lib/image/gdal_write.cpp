@@ -93,7 +93,8 @@ void set_georeference(GDALDataset& ds, const Image& image, CubeFormat format,
     const Georeference& g = image.georef;
     if (g.geotransform) {
         std::array<double, 6> gt = *g.geotransform;
-        if (ds.SetGeoTransform(gt.data()) != CE_None || ds.SetProjection(g.crs_wkt.c_str()) != CE_None)
+        if (ds.SetGeoTransform(gt.data()) != CE_None ||
+            ds.SetProjection(g.crs_wkt.c_str()) != CE_None)
             throw IoError(path + ": cannot write the georeferencing: " + gdal_message());
     }
     if (g.geolocation_path.empty()) return;

@@ -70,8 +70,8 @@ std::vector<geo::Vec3> pixel_ground_points(const Sensor& sensor, const scene::Sc
             sensor.ray(r + 0.5, c + 0.5, origin, dir);
             if (const auto hit = scene.intersect(origin, dir)) {
                 const double t = hit->distance;
-                points.push_back({origin[0] + t * dir[0], origin[1] + t * dir[1],
-                                  origin[2] + t * dir[2]});
+                points.push_back(
+                    {origin[0] + t * dir[0], origin[1] + t * dir[1], origin[2] + t * dir[2]});
                 continue;
             }
             std::optional<geo::Vec3> p;

@@ -430,10 +430,9 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     report_stats(result.stats, reporter);
     image::Georeference georef;
     if (place) {
-        const std::optional<double> plane =
-            options.background == BackgroundChoice::None
-                ? std::nullopt
-                : std::optional<double>(scene.bounds().lower[2]);
+        const std::optional<double> plane = options.background == BackgroundChoice::None
+                                                ? std::nullopt
+                                                : std::optional<double>(scene.bounds().lower[2]);
         std::string note;
         georef = georeference_outputs(camera, scene, *place, plane, st.row_begin, st.row_end,
                                       image::geolocation_name(job.output_path), note);

@@ -14,9 +14,9 @@ namespace {
 
 // trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
-    for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
-                          "background", "rows", "truth", "tmp", "no-adjacency",
-                          "adjacency-radius", "co", "crs"})
+    for (const char* o :
+         {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces", "background",
+          "rows", "truth", "tmp", "no-adjacency", "adjacency-radius", "co", "crs"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");

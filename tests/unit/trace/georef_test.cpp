@@ -78,8 +78,7 @@ TEST(Georef, RowSliceShiftsTheOrigin) {
     const auto whole = trace::fit_map_grid(camera(1000, 90), place, 0, 48);
     const auto slice = trace::fit_map_grid(camera(1000, 90), place, 10, 20);
     ASSERT_TRUE(whole && slice);
-    EXPECT_NEAR(slice->geotransform[3], whole->geotransform[3] + 10 * whole->geotransform[5],
-                1e-6);
+    EXPECT_NEAR(slice->geotransform[3], whole->geotransform[3] + 10 * whole->geotransform[5], 1e-6);
 }
 
 // A twisted nadir view is still an affine map (rotation terms); a tilted one is not.
