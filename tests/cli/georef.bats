@@ -171,6 +171,14 @@ EOF
     run -0 trace -q --crs utm18.wkt tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
         "$DATA/band1.rad" "$DATA/band2.rad" -o cube.tif
     [ -f cube.geoloc.tif ]
+    # An ENVI cube names its arrays in its header; sensorize follows it.
+    run -0 trace -q --crs EPSG:32618 tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o envi.img
+    run -0 grep -Fx "sigchain geolocation = $PWD/envi.geoloc.tif" envi.hdr
+    flat_sen b.sen
+    run -0 sensorize -q envi.img b.sen b.sen -o envi_counts.tif
+    run -0 gdalinfo envi_counts.tif
+    assert_output --partial "X_DATASET=$PWD/envi_counts.geoloc.tif"
     run -0 trace -q tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" \
         "$DATA/band2.rad" -o plain.tif
     [ ! -f plain.geoloc.tif ]
