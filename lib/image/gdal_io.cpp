@@ -6,6 +6,7 @@
 #include <gdal_priv.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -108,6 +109,20 @@ void read_units(GDALDataset& ds, Image& image) {
         image.units = ds.GetRasterBand(1)->GetUnitType();
 }
 
+// The CRS and geotransform, and the geolocation arrays' file (cube(5), Georeferencing).
+void read_georeference(GDALDataset& ds, Image& image) {
+    std::array<double, 6> gt{};
+    const char* wkt = ds.GetProjectionRef();
+    if (ds.GetGeoTransform(gt.data()) == CE_None && wkt && *wkt) {
+        image.georef.geotransform = gt;
+        image.georef.crs_wkt = wkt;
+    }
+    if (const char* x = ds.GetMetadataItem("X_DATASET", "GEOLOCATION"))
+        image.georef.geolocation_path = x;
+    else if (const char* e = ds.GetMetadataItem("sigchain_geolocation", "ENVI"))
+        image.georef.geolocation_path = e;
+}
+
 }  // namespace
 
 namespace detail {
@@ -132,6 +147,7 @@ Image read_gdal(const std::string& path) {
     }
     read_wavelengths(*ds, path, image);
     read_units(*ds, image);
+    read_georeference(*ds, image);
     return image;
 }
 

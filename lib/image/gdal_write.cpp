@@ -15,6 +15,7 @@
 #include "core/output.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
+#include "geo/georef.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 #include "sigchain/version.hpp"
@@ -77,6 +78,39 @@ void set_band_metadata(GDALDataset& ds, const Image& image) {
     }
 }
 
+// The CRS and geotransform, and the GEOLOCATION domain naming the arrays (cube(5),
+// Georeferencing): nothing at all for an image that is not geo-placed.
+void set_georeference(GDALDataset& ds, const Image& image, CubeFormat format,
+                      const std::string& path) {
+    const Georeference& g = image.georef;
+    if (g.geotransform) {
+        std::array<double, 6> gt = *g.geotransform;
+        if (ds.SetGeoTransform(gt.data()) != CE_None ||
+            ds.SetProjection(g.crs_wkt.c_str()) != CE_None)
+            throw IoError(path + ": cannot write the georeferencing: " + gdal_message());
+    }
+    if (g.geolocation_path.empty()) return;
+    // GDAL 3.6 opens X_DATASET relative to the working directory, not to this file:
+    // the arrays are named by their absolute path.
+    const std::string arrays = std::filesystem::absolute(g.geolocation_path).lexically_normal();
+    if (format == CubeFormat::Envi) {
+        ds.SetMetadataItem("sigchain_geolocation", arrays.c_str(), "ENVI");
+        return;
+    }
+    CPLStringList items;
+    items.SetNameValue("X_DATASET", arrays.c_str());
+    items.SetNameValue("X_BAND", "1");
+    items.SetNameValue("Y_DATASET", arrays.c_str());
+    items.SetNameValue("Y_BAND", "2");
+    items.SetNameValue("PIXEL_OFFSET", "0");
+    items.SetNameValue("LINE_OFFSET", "0");
+    items.SetNameValue("PIXEL_STEP", "1");
+    items.SetNameValue("LINE_STEP", "1");
+    items.SetNameValue("GEOREFERENCING_CONVENTION", "PIXEL_CENTER");  // a ray per pixel centre
+    items.SetNameValue("SRS", geo::wgs84_lon_lat().wkt().c_str());
+    ds.SetMetadata(items.List(), "GEOLOCATION");
+}
+
 void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
                   const WriteOptions& options) {
     set_band_metadata(ds, image);
@@ -97,6 +131,8 @@ void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
     if (all_finite(image.fwhm_um))
         ds.SetMetadataItem("fwhm", number_list(image.fwhm_um).c_str(), "ENVI");
     if (!image.units.empty()) ds.SetMetadataItem("data_units", image.units.c_str(), "ENVI");
+    if (!image.sensor_type.empty())
+        ds.SetMetadataItem("sensor_type", image.sensor_type.c_str(), "ENVI");
 }
 
 // sigchain's creation options, then the user's (--co), which override them.
@@ -163,6 +199,7 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
         CSLDestroy(list);
     }
     set_metadata(*ds, image, format, options);
+    set_georeference(*ds, image, format, path);
     write_planes(*ds, image, path);
     CPLErrorReset();
     ds.reset();  // GDALClose: flushes data and writes the ENVI header
@@ -176,6 +213,71 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
 void write_cube(const std::string& path, const Image& cube, CubeFormat format,
                 const WriteOptions& options) {
     write_gdal(path, cube, GDT_Float32, format, options);
+}
+
+std::string geolocation_name(const std::string& output_path) {
+    return std::filesystem::path(output_path).replace_extension(".geoloc.tif").string();
+}
+
+void write_geolocation(const std::string& path, long rows, long columns,
+                       const std::vector<double>& x, const std::vector<double>& y,
+                       const std::string& srs_wkt, double nodata) {
+    gdal_init();
+    const std::size_t n = static_cast<std::size_t>(rows) * columns;
+    if (rows < 1 || columns < 1 || x.size() != n || y.size() != n)
+        throw DataError({path, 0}, "geolocation arrays do not match the image's size");
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+    if (!driver) throw IoError(path + ": GDAL has no GTiff driver");
+    const std::string temp = detail::temp_name(path);
+    TempFiles temps{{temp}};
+    CPLStringList co;
+    co.SetNameValue("INTERLEAVE", "BAND");
+    std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(columns),
+                                                   static_cast<int>(rows), 2, GDT_Float64,
+                                                   co.List()));
+    if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
+    // The arrays' own SRS: GDAL's SRC_GEOLOC_ARRAY transformer option reads it.
+    ds->SetProjection(srs_wkt.c_str());
+    const std::vector<double>* planes[2] = {&x, &y};
+    const char* names[2] = {"x (longitude)", "y (latitude)"};
+    for (int b = 0; b < 2; ++b) {
+        GDALRasterBand* band = ds->GetRasterBand(b + 1);
+        band->SetDescription(names[b]);
+        band->SetNoDataValue(nodata);
+        if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(columns), static_cast<int>(rows),
+                           const_cast<double*>(planes[b]->data()), static_cast<int>(columns),
+                           static_cast<int>(rows), GDT_Float64, 0, 0, nullptr) != CE_None)
+            throw IoError(path + ": write error: " + gdal_message());
+    }
+    CPLErrorReset();
+    ds.reset();
+    if (CPLGetLastErrorType() >= CE_Failure)
+        throw IoError(path + ": write error: " + gdal_message());
+    if (std::rename(temp.c_str(), path.c_str()) != 0)
+        throw IoError(path + ": cannot rename from " + temp);
+    temps.files.clear();
+}
+
+void copy_geolocation(const std::string& from, const std::string& path) {
+    gdal_init();
+    std::unique_ptr<GDALDataset> src(static_cast<GDALDataset*>(
+        GDALOpenEx(from.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    if (!src || src->GetRasterCount() != 2)
+        throw DataError({from, 0}, "not a geolocation array file (2 bands): " + gdal_message());
+    const long rows = src->GetRasterYSize(), columns = src->GetRasterXSize();
+    const std::size_t n = static_cast<std::size_t>(rows) * columns;
+    std::vector<double> planes[2] = {std::vector<double>(n), std::vector<double>(n)};
+    for (int b = 0; b < 2; ++b)
+        if (src->GetRasterBand(b + 1)->RasterIO(GF_Read, 0, 0, static_cast<int>(columns),
+                                                static_cast<int>(rows), planes[b].data(),
+                                                static_cast<int>(columns), static_cast<int>(rows),
+                                                GDT_Float64, 0, 0, nullptr) != CE_None)
+            throw IoError(from + ": read error: " + gdal_message());
+    int has_nodata = 0;
+    const double nodata = src->GetRasterBand(1)->GetNoDataValue(&has_nodata);
+    const char* wkt = src->GetProjectionRef();
+    write_geolocation(path, rows, columns, planes[0], planes[1], wkt ? wkt : "",
+                      has_nodata ? nodata : kGeolocationNodata);
 }
 
 namespace detail {

@@ -6,11 +6,26 @@
 // Thread-safety: plain value type.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace sigchain::image {
+
+// Where an image's pixels lie on the Earth (cube(5), Georeferencing); all empty for an
+// image that is not geo-placed, which is then written exactly as before.
+struct Georeference {
+    std::string crs_wkt;  // the CRS of `geotransform` (WKT); "" for none
+    // GDAL's geotransform (X = g0 + col g1 + row g2, Y = g3 + col g4 + row g5, from the
+    // top-left corner of the top-left pixel), in crs_wkt's units.
+    std::optional<std::array<double, 6>> geotransform;
+    // The geolocation arrays' GeoTIFF (write_geolocation), named in the GDAL GEOLOCATION
+    // metadata domain (ENVI: the header's `sigchain geolocation`); "" for none.
+    std::string geolocation_path;
+    bool empty() const { return !geotransform && geolocation_path.empty(); }
+};
 
 struct Image {
     long rows = 0;
@@ -21,6 +36,8 @@ struct Image {
     std::vector<double> fwhm_um;             // per channel band width (FWHM); may be empty
     std::vector<std::string> channel_names;  // per channel; may be empty
     std::string units;                       // "W cm-2 sr-1 um-1", "DC", or "" if unknown
+    std::string sensor_type;                 // ENVI `sensor type`; "" writes none
+    Georeference georef;                     // written by the GDAL writers (GeoTIFF, ENVI)
 
     Image() = default;
     Image(long rows, long columns, int channels, float fill = 0.0f);
@@ -73,6 +90,20 @@ void write_counts(const std::string& path, const Image& counts, int bits,
 // Writes float32 channels (unquantised band radiance, error maps) as a GeoTIFF through
 // GDAL (as write_counts), atomically.
 void write_float(const std::string& path, const Image& image, const WriteOptions& options = {});
+
+// Per-pixel geolocation arrays (GDAL's GEOLOCATION layout, cube(5)): a float64 GeoTIFF
+// of 2 bands, band 1 x (longitude) and band 2 y (latitude) in `srs_wkt`'s units at each
+// pixel's centre, `nodata` where the pixel's ray meets no ground; row-major `x` and `y`
+// of rows * columns values. Written atomically.
+void write_geolocation(const std::string& path, long rows, long columns,
+                       const std::vector<double>& x, const std::vector<double>& y,
+                       const std::string& srs_wkt, double nodata);
+// Copies geolocation arrays (a file write_geolocation made) to `path`, atomically.
+void copy_geolocation(const std::string& from, const std::string& path);
+// The geolocation arrays' name beside an output: NAME.geoloc.tif for NAME.EXT.
+std::string geolocation_name(const std::string& output_path);
+// The no-data value of the geolocation arrays (cube(5)).
+inline constexpr double kGeolocationNodata = -999999.0;
 
 // The channels of a true-colour preview, {red, green, blue}: of the bands whose centre
 // wavelength lies in the visible 0.38-0.78 um, red the longest, blue the shortest,

@@ -120,6 +120,23 @@ void check_job(const SensorizeJob& job) {
                          (job.float_output ? ".tif" : ".tif, .png, .pgm or .ppm") + " file");
 }
 
+namespace {
+
+// The cube's georeferencing on a GeoTIFF output (cube(5), Georeferencing): the CRS and
+// geotransform as they are (the image grid is the cube's); geolocation arrays copied
+// beside the output (NAME.geoloc.tif), which then names its own copy. PNG and Netpbm
+// outputs carry none.
+void carry_georeference(const SensorizeJob& job, const image::Image& cube, image::Image& out) {
+    const std::string ext = file_extension(job.output_path);
+    if (ext != "tif" && ext != "tiff") return;
+    out.georef = cube.georef;
+    if (cube.georef.geolocation_path.empty()) return;
+    out.georef.geolocation_path = image::geolocation_name(job.output_path);
+    image::copy_geolocation(cube.georef.geolocation_path, out.georef.geolocation_path);
+}
+
+}  // namespace
+
 SensorizeReport run_sensorize(const SensorizeJob& job) {
     check_job(job);
     std::vector<io::Sen> sens;
@@ -168,6 +185,7 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     const image::Image preview = job.preview_path.empty()
                                      ? image::Image()
                                      : image::true_colour_preview(out, job.preview_path);
+    if (!job.calibrate) carry_georeference(job, cube, out);
     if (job.calibrate)
         write_calibrated_sens(sens, report);
     else if (job.float_output)

@@ -19,18 +19,23 @@
 #include "geom/view_angle.hpp"
 #include "image/image.hpp"
 #include "io/adv.hpp"
+#include "geo/georef.hpp"
 #include "io/mat.hpp"
+#include "io/odb.hpp"
 #include "io/rad.hpp"
 #include "io/snd.hpp"
 #include "io/tmp.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "trace/georef.hpp"
 
 namespace sigchain::trace {
 
 namespace {
 
 constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
+// ENVI's `sensor type` of trace's cubes (cube(5)): the sensor model that made them.
+constexpr const char* kSensorType = "sigchain frame camera";
 
 std::string format(const char* fmt, double v) {
     char buf[64];
@@ -427,11 +432,33 @@ void report_stats(const RenderStats& s, const Reporter& reporter) {
     if (s.hits == 0) reporter.warn("no primary ray hit the scene: check the look angles");
 }
 
+// The CRS of the first DEM object of a .odb scene; empty for a .gdb or a scene without one.
+geo::Crs scene_dem_crs(const std::string& scene_path) {
+    if (file_extension(scene_path) != "odb") return {};
+    const io::Odb odb = io::read_odb_file(scene_path);
+    for (const io::OdbObject& object : odb.objects)
+        if (object.source == io::OdbSource::Dem)
+            return geo::raster_crs(io::resolve_odb_path(odb, object.path));
+    return {};
+}
+
+// Where the render lies on the Earth (cube(5), Georeferencing): none unless --crs names a
+// CRS or the scene holds a DEM with one.
+std::optional<GeoPlacement> geo_placement(const TraceJob& job, const Setup& st) {
+    if (job.crs == "none") return std::nullopt;
+    geo::Crs crs = job.crs.empty() ? scene_dem_crs(job.scene_path) : geo::crs_from_user(job.crs);
+    if (crs.empty()) return std::nullopt;
+    return GeoPlacement{st.snd.latitude_deg, st.snd.longitude_east_deg,
+                        io::meters_per_unit(st.adv.units), crs};
+}
+
 // The radiance cube (one band per spectral sample, wavelengths, units, band names)
 // and the truth cube, each written atomically.
 void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
-                   RenderResult& result) {
+                   const image::Georeference& georef, RenderResult& result) {
     image::Image& cube = result.radiance;
+    cube.georef = georef;
+    cube.sensor_type = kSensorType;
     cube.wavelength_um = grid.wavelength_um;
     cube.units = kRadianceUnits;
     if (cube.channel_names.size() != grid.size()) {
@@ -447,6 +474,8 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
     truth.channel_names = truth_layer_names(grid);
     truth.wavelength_um.clear();
     truth.units.clear();
+    truth.georef = georef;
+    truth.sensor_type = kSensorType;
     image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path),
                       job.write_options);
 }
@@ -470,6 +499,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     const FrameSensor camera(geom::frame_camera(st.adv, job.adv_path));
     check_view_angles(camera, atmosphere, reporter);
 
+    const std::optional<GeoPlacement> place = geo_placement(job, st);
     const RenderOptions options = render_options(job, st);
     RenderInputs inputs;
     inputs.scene = &scene;
@@ -491,7 +521,17 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     report.rows = result.radiance.rows;
     report.columns = result.radiance.columns;
     report_stats(result.stats, reporter);
-    write_outputs(job, grid, result);
+    image::Georeference georef;
+    if (place) {
+        const std::optional<double> plane = options.background == BackgroundChoice::None
+                                                ? std::nullopt
+                                                : std::optional<double>(scene.bounds().lower[2]);
+        std::string note;
+        georef = georeference_outputs(camera, scene, *place, plane, st.row_begin, st.row_end,
+                                      image::geolocation_name(job.output_path), note);
+        reporter.info(note);
+    }
+    write_outputs(job, grid, georef, result);
     return report;
 }
 

@@ -42,6 +42,9 @@ struct TraceJob {
     bool adjacency = true;                     // --no-adjacency turns it off
     std::optional<double> adjacency_radius_m;  // default: RenderOptions's (1000 m)
     image::WriteOptions write_options;         // --co and the provenance of the cubes
+    // --crs: the map CRS of a geo-placed render: "" the CRS of the scene's first DEM
+    // object (none: the render is not geo-placed), "none", "EPSG:N" or a WKT file.
+    std::string crs;
 };
 
 // What happened, for -v: the scene's counts, the render's statistics.

@@ -17,7 +17,7 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co"})
+                          "adjacency-radius", "co", "crs"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -81,6 +81,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.golfball_jitter = vm.count("golfball-jitter") > 0;
     job.adjacency = vm.count("no-adjacency") == 0;
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
+    if (vm.count("crs")) job.crs = vm["crs"].as<std::string>();
     return job;
 }
 
@@ -123,6 +124,9 @@ int main(int argc, char** argv) {
                                                "facet temperatures (.tmp): add emission")(
         "allow-degenerate", "skip degenerate facets with a warning instead of failing")(
         "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
+        "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
+        "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT\n"
+        "                    FILE; none: write no georeferencing)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead");
     tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");

@@ -1,0 +1,64 @@
+// Where a sensor's pixels see the ground of a geo-placed scene, and the georeferencing
+// of trace's outputs (cube(5), Georeferencing): a CRS and geotransform when the image
+// grid lies on a map grid, else per-pixel geolocation arrays. Written for any Sensor,
+// so the line scanner and pushbroom reuse it.
+// Thread-safety: free functions; the scene and sensor are only read.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geo/crs.hpp"
+#include "geo/georef.hpp"
+#include "image/image.hpp"
+#include "scene/scene.hpp"
+#include "trace/sensor.hpp"
+
+namespace sigchain::trace {
+
+// A scene placed on the Earth: its frame is east-north-up about the origin (the .snd's
+// latitude and longitude at height 0 on WGS84), and its map CRS.
+struct GeoPlacement {
+    double latitude_deg = 0;
+    double longitude_deg = 0;
+    double meters_per_unit = 1;  // scene units -> m
+    geo::Crs map_crs;
+};
+
+// The largest misfit (pixels) between an image grid projected on the ground and an
+// affine geotransform for which a geotransform is written: a hundredth of a pixel. A
+// thousandth would refuse the Olinda scene, whose grid (10 km wide, 200 km from the UTM
+// 25S central meridian) departs from any affine map by 0.0045 pixel through the change
+// of UTM's scale factor across the image; a hundredth stays below the relief
+// displacement of a frame render over terrain (0.02 pixel there), which no
+// geotransform can hold, and ten times below the 0.1 pixel of a registration check.
+inline constexpr double kGridAlignmentTolerancePx = 0.01;
+
+// The affine geotransform of rows [row_begin, row_end) of `sensor` (its row 0 = row_begin)
+// onto the map CRS, fitted to a 17 x 17 lattice of image positions (corners included)
+// whose rays are met with the scene's reference plane, z = 0 (height 0 above the
+// origin). Empty when a lattice ray does not reach the plane (at or above the horizon).
+// Terrain above or below the plane is displaced by its height times the ray's tangent of
+// nadir angle (relief displacement, not part of the fit).
+std::optional<geo::GeoTransformFit> fit_map_grid(const Sensor& sensor, const GeoPlacement& place,
+                                                 long row_begin, long row_end);
+
+// The scene point (scene units) seen along each pixel centre's ray, rows [row_begin,
+// row_end) row-major: the first scene hit, else the ground plane at `plane_height`
+// (scene units; none: no plane), else NaN in every coordinate.
+std::vector<geo::Vec3> pixel_ground_points(const Sensor& sensor, const scene::Scene& scene,
+                                           std::optional<double> plane_height, long row_begin,
+                                           long row_end);
+
+// What trace writes: with a geotransform within kGridAlignmentTolerancePx, the map CRS
+// and that geotransform; otherwise the ground points' WGS84 longitude and latitude
+// written as geolocation arrays to `arrays_path` (kGeolocationNodata where a pixel sees
+// no ground) and named in the result. `note` receives one line for -v.
+image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scene& scene,
+                                         const GeoPlacement& place,
+                                         std::optional<double> plane_height, long row_begin,
+                                         long row_end, const std::string& arrays_path,
+                                         std::string& note);
+
+}  // namespace sigchain::trace

@@ -1,0 +1,189 @@
+#!/usr/bin/env bats
+# Tests: trace and sensorize georeferencing (cube(5), GEOREFERENCING; trace(1) --crs)
+# Also requires: build_radiance, gdalinfo, gdalsrsinfo, gdalwarp, gdal_translate, awk
+# The Olinda render (a DEM in EPSG:31985, a nadir camera on the Landsat grid) carries
+# the CRS and the Landsat grid's geotransform; a tilted view of the box scene placed
+# with --crs carries geolocation arrays that gdalwarp -geoloc orthorectifies.
+
+load test_helper
+
+OLINDA="$SIGCHAIN_SOURCE_DIR/data/scenes/olinda"
+DATA="$SIGCHAIN_SOURCE_DIR/tests/data/trace"
+GDB="$SEED/box_on_plane.gdb"
+
+# The geotransform item K (0-5) of gdalinfo -json FILE, printed with 10 decimals.
+gt_item() {
+    gdalinfo -json "$1" | awk -v k="$2" '/"geoTransform"/ { on = 1; n = 0; next }
+        on && /\]/ { on = 0 } on { gsub(/[ ,]/, ""); if (n++ == k) printf "%.10f\n", $0 }'
+}
+
+# Olinda's four bands' .rad tables from the committed card deck (about 10 s).
+olinda_rads() {
+    [ -f olinda-4.rad ] && return 0
+    build_radiance -q --view-azimuth 0 "$OLINDA/olinda.cdk" "$OLINDA/olinda.snd" \
+        -o "olinda-%d.rad"
+}
+
+# A flat-response .sen of 3 samples (the box bands').
+flat_sen() {
+    printf '3\n1000\n0\n1\n1\n1\n' > "$1"
+}
+
+@test "georef: the Olinda render and its counts carry EPSG:31985 and the Landsat grid" {
+    olinda_rads
+    cp "$OLINDA/olinda.mat" "$OLINDA"/*.ems .
+    # The CRS the Olinda Makefile gives (the Landsat image's; the DEM's is the same
+    # projection on an unnamed datum, below).
+    run -0 --separate-stderr trace -v --crs EPSG:31985 --no-adjacency --rows 0:4 "$OLINDA/olinda.adv" \
+        "$OLINDA/olinda.snd" "$OLINDA/olinda.odb" olinda.mat olinda-1.rad olinda-2.rad \
+        olinda-3.rad olinda-4.rad -o cube.tif
+    [[ "$stderr" == *"georeferencing: a geotransform"* ]]
+    run -0 gdalinfo cube.tif
+    assert_output --partial 'ID["EPSG",31985]'
+    run -0 gdalsrsinfo -o epsg cube.tif
+    assert_output --partial "EPSG:31985"
+    # The render's grid against the Landsat image's: offsets in pixels of 28.5 m.
+    for k in 0 1 2 3 4 5; do
+        want=$(gt_item "$OLINDA/L7_ETMs.tif" $k)
+        got=$(gt_item cube.tif $k)
+        echo "geotransform[$k]: render $got, Landsat $want"
+        run -0 awk -v a="$got" -v b="$want" -v k=$k 'BEGIN {
+            d = (k == 0 || k == 3) ? (a - b) / 28.5 : (a - b) * 352 / 28.5
+            print "offset " d " pixel"; exit (d < 0.1 && d > -0.1) ? 0 : 1 }'
+    done
+    # sensorize carries the CRS and geotransform into the counts.
+    printf '9\n1000\n0\n1\n1\n1\n1\n1\n1\n1\n1\n1\n' > flat9.sen
+    run -0 sensorize -q cube.tif flat9.sen flat9.sen flat9.sen flat9.sen -o counts.tif
+    run -0 gdalsrsinfo -o epsg counts.tif
+    assert_output --partial "EPSG:31985"
+    [ "$(gt_item counts.tif 0)" = "$(gt_item cube.tif 0)" ]
+    [ "$(gt_item counts.tif 3)" = "$(gt_item cube.tif 3)" ]
+    # The ENVI header holds the same as map info and a coordinate system string.
+    run -0 trace -q --crs EPSG:31985 --no-adjacency --rows 0:2 "$OLINDA/olinda.adv" \
+        "$OLINDA/olinda.snd" "$OLINDA/olinda.odb" olinda.mat olinda-1.rad olinda-2.rad \
+        olinda-3.rad olinda-4.rad -o cube.img
+    # (within a metre of the Landsat corner; pixels of 28.5 m times UTM's scale factor)
+    run -0 grep -E '^map info = \{UTM, 1, 1, 28877[56]\.[0-9]*, 912076[01]\.[0-9]*, 28\.50[0-9]*, 28\.50[0-9]*, 25, South' cube.hdr
+    run -0 grep -c '^coordinate system string = ' cube.hdr
+    run -0 grep -c '^sensor type = sigchain frame camera$' cube.hdr
+    # gdalwarp onto the Landsat grid (nearest neighbour) gives back the render itself.
+    run -0 gdalwarp -q -overwrite -r near -te 288776.25 9120646.75 298722.75 9120760.75 \
+        -tr 28.5 28.5 cube.tif warped.tif
+    run -0 compare --pixelwise --fail-max 0 warped.tif cube.tif
+    # Without --crs: the DEM's own CRS, and the same grid.
+    run -0 trace -q --no-adjacency --rows 0:2 "$OLINDA/olinda.adv" "$OLINDA/olinda.snd" \
+        "$OLINDA/olinda.odb" olinda.mat olinda-1.rad olinda-2.rad olinda-3.rad olinda-4.rad \
+        -o dem.tif
+    run -0 gdalinfo dem.tif
+    assert_output --partial 'UTM Zone 25, Southern Hemisphere'
+    run -0 awk -v a="$(gt_item dem.tif 0)" -v b="$(gt_item cube.tif 0)" \
+        'BEGIN { exit (a - b < 0.285 && b - a < 0.285) ? 0 : 1 }'  # within 0.01 pixel
+    # --crs none: no georeferencing at all.
+    run -0 trace -q --crs none --no-adjacency --rows 0:2 "$OLINDA/olinda.adv" \
+        "$OLINDA/olinda.snd" "$OLINDA/olinda.odb" olinda.mat olinda-1.rad olinda-2.rad \
+        olinda-3.rad olinda-4.rad -o plain.tif
+    run -0 gdalinfo plain.tif
+    refute_output --partial "EPSG"
+    assert_no_temp_files
+}
+
+# The lawn of tests/data/white1996/box_on_plane.gdb with the box's top lowered to a flat
+# target 5 cm above it (x and y 8 to 12 m, facet 1): no wall hides ground behind it, so
+# the orthorectified target has its true shape. Placed at box.snd's site with --crs
+# EPSG:32618 (UTM 18N), seen from the south at 56 deg elevation.
+target_gdb() {
+    { sed -n '1,65p' "$GDB" | sed '44,65s/^\([0-9]* [0-9]*\) 3$/\1 0.05/'; echo END; } > target.gdb
+}
+tilted_adv() {
+    target_gdb
+    cat > tilt.adv <<'EOF'
+10 10 0	# target point (m)
+10 -10 30	# camera point (m)
+56.31 -90 0	# elevation, azimuth, twist (deg)
+32	# focal length (mm)
+32 32	# rows, columns
+units = m
+pixel_pitch_um = 500
+samples_per_pixel = 1
+EOF
+}
+
+@test "georef: a tilted view writes geolocation arrays that gdalwarp -geoloc follows" {
+    tilted_adv
+    run -0 --separate-stderr trace -v --crs EPSG:32618 --background none tilt.adv \
+        "$DATA/box.snd" target.gdb "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" \
+        --truth truth.tif -o cube.tif
+    [[ "$stderr" == *"georeferencing: geolocation arrays"* ]]
+    [ -f cube.geoloc.tif ]
+    run -0 gdalinfo cube.tif
+    assert_output --partial "X_DATASET=$PWD/cube.geoloc.tif"
+    assert_output --partial "GEOREFERENCING_CONVENTION=PIXEL_CENTER"
+    run -0 gdalinfo truth.tif
+    assert_output --partial "Y_DATASET=$PWD/cube.geoloc.tif"
+    # The top rows look past the 20 m lawn: with --background none they see no ground.
+    run -0 gdalinfo -stats cube.geoloc.tif
+    assert_output --partial "NoData Value=-999999"
+    run -0 gdal_translate -q -of XYZ -b 1 -srcwin 0 0 32 1 cube.geoloc.tif row0.xyz
+    run -0 awk '$3 == -999999 { n++ } END { print n + 0; exit n > 0 ? 0 : 1 }' row0.xyz
+    # Orthorectify the truth layers; band 4 is the facet each pixel centre sees (the
+    # target is facet 1 of the .gdb). Its centroid must be the target's centre, (10, 10)
+    # m east and north of the origin, within one output pixel.
+    run -0 gdalwarp -q -overwrite -geoloc -t_srs EPSG:4326 -r near truth.tif warped.tif
+    run -0 gdal_translate -q -of XYZ -b 4 warped.tif facets.xyz
+    px=$(gdalinfo warped.tif | sed -n 's/^Pixel Size = (\([^,]*\),\(.*\))$/\1 \2/p')
+    run -0 awk -v px="$px" '
+        BEGIN { split(px, p, " "); a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
+            lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
+            N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
+            want_lat = lat0 + 10 / M / r; want_lon = lon0 + 10 / (N * cos(lat0 * r)) / r }
+        $3 == 1 { n++; x += $1; y += $2 }
+        END { dx = (x / n - want_lon) / p[1]; dy = (y / n - want_lat) / p[2]
+            print n " pixels, offset " dx ", " dy " output pixels"
+            exit (n > 4 && dx < 1 && dx > -1 && dy < 1 && dy > -1) ? 0 : 1 }' facets.xyz
+    echo "$output"
+    # sensorize copies the arrays beside its counts, which name the copy.
+    flat_sen b.sen
+    run -0 sensorize -q cube.tif b.sen b.sen -o counts.tif
+    run -0 gdalinfo counts.tif
+    assert_output --partial "X_DATASET=$PWD/counts.geoloc.tif"
+    run -0 cmp <(gdal_translate -q -of XYZ -b 2 cube.geoloc.tif /vsistdout/) \
+        <(gdal_translate -q -of XYZ -b 2 counts.geoloc.tif /vsistdout/)
+    run -0 gdalwarp -q -overwrite -geoloc -t_srs EPSG:4326 counts.tif counts_warped.tif
+    assert_no_temp_files
+}
+
+@test "georef: --crs errors are usage errors; a scene without a DEM is not georeferenced" {
+    tilted_adv
+    run -2 --separate-stderr trace --crs EPSG:99999999 tilt.adv "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o cube.tif
+    [[ "$stderr" == "trace: --crs EPSG:99999999: unknown CRS"* ]]
+    run -2 --separate-stderr trace --crs nowhere.wkt tilt.adv "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o cube.tif
+    [[ "$stderr" == "trace: --crs nowhere.wkt: expected EPSG:N or a WKT file"* ]]
+    echo 'not a crs' > bad.wkt
+    run -1 --separate-stderr trace --crs bad.wkt tilt.adv "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o cube.tif
+    [[ "$stderr" == "trace: bad.wkt:1: not a coordinate reference system"* ]]
+    run -2 --separate-stderr trace --shadow-history --crs EPSG:32618 "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" -o x.shd
+    # A WKT file works as EPSG:N does; without --crs the .gdb scene is not geo-placed.
+    gdalsrsinfo -o wkt EPSG:32618 > utm18.wkt
+    run -0 trace -q --crs utm18.wkt tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o cube.tif
+    [ -f cube.geoloc.tif ]
+    # An ENVI cube names its arrays in its header; sensorize follows it.
+    run -0 trace -q --crs EPSG:32618 tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o envi.img
+    run -0 grep -Fx "sigchain geolocation = $PWD/envi.geoloc.tif" envi.hdr
+    flat_sen b.sen
+    run -0 sensorize -q envi.img b.sen b.sen -o envi_counts.tif
+    run -0 gdalinfo envi_counts.tif
+    assert_output --partial "X_DATASET=$PWD/envi_counts.geoloc.tif"
+    run -0 trace -q tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" \
+        "$DATA/band2.rad" -o plain.tif
+    [ ! -f plain.geoloc.tif ]
+    run -0 gdalinfo plain.tif
+    refute_output --partial "GEOLOCATION"
+    run -0 trace --help
+    assert_output --partial "--crs EPSG:N|FILE|none"
+}
