@@ -228,8 +228,9 @@ void write_geolocation(const std::string& path, long rows, long columns,
         throw DataError({path, 0}, "geolocation arrays do not match the image's size");
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
     if (!driver) throw IoError(path + ": GDAL has no GTiff driver");
-    const std::string temp = detail::temp_name(path);
-    TempFiles temps{{temp}};
+    // GDAL opens its file itself: it goes into a private folder beside the target.
+    const TempDir folder(path);
+    const std::string temp = folder.file(std::filesystem::path(path).filename().string());
     CPLStringList co;
     co.SetNameValue("INTERLEAVE", "BAND");
     std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(columns),
@@ -253,9 +254,7 @@ void write_geolocation(const std::string& path, long rows, long columns,
     ds.reset();
     if (CPLGetLastErrorType() >= CE_Failure)
         throw IoError(path + ": write error: " + gdal_message());
-    if (std::rename(temp.c_str(), path.c_str()) != 0)
-        throw IoError(path + ": cannot rename from " + temp);
-    temps.files.clear();
+    commit_moves({{temp, path}});
 }
 
 void copy_geolocation(const std::string& from, const std::string& path) {
