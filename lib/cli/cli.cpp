@@ -218,12 +218,14 @@ long long integer(const po::variables_map& vm, const char* name) {
 void Cli::add_scene_input_options() {
     m_options.add_options()("material-map", po::value<std::string>()->value_name("FILE"),
                             "a mesh scene's material names to .mat ids (odb(5) MAP FILES)")(
-        "material-id", po::value<long>()->value_name("N"),
-        "one .mat id for every face of a mesh scene, or for a DEM scene's terrain")(
         "landuse", po::value<std::string>()->value_name("FILE"),
         "a DEM scene's land-use raster (with --landuse-map)")(
         "landuse-map", po::value<std::string>()->value_name("FILE"),
         "the land-use classes to .mat ids (odb(5) MAP FILES)");
+    // 0 to 2^24, the range of MATERIAL_ID in every format (mat(5); io::kMaxMaterialId).
+    add_number("material-id", "N", integers(0, 16777216),
+               "one .mat id for every face of a mesh scene, or for a DEM scene's terrain\n"
+               "                    (0-16777216)");
 }
 
 void Cli::add_creation_option() {
@@ -320,10 +322,7 @@ SceneInputOptions scene_input(const po::variables_map& vm) {
     o.material_map = text("material-map");
     o.landuse = text("landuse");
     o.landuse_map = text("landuse-map");
-    if (vm.count("material-id")) {
-        o.material_id = vm["material-id"].as<long>();
-        if (*o.material_id < 0) throw UsageError("--material-id must be 0 or more");
-    }
+    if (vm.count("material-id")) o.material_id = static_cast<long>(integer(vm, "material-id"));
     return o;
 }
 

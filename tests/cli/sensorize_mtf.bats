@@ -49,14 +49,14 @@ SENS=("$CUBE/blue.sen" "$CUBE/green1.sen" "$CUBE/red1.sen")
 @test "bad MTF values exit 2 naming the option" {
     run -2 --separate-stderr sensorize --mtf-fnumber -2 --mtf-pitch 5 \
         "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.pgm
-    assert_equal "${stderr%%$'\n'*}" "sensorize: --mtf-fnumber must be a positive number"
+    assert_equal "${stderr%%$'\n'*}" "sensorize: --mtf-fnumber: -2: must be a number > 0 and <= 1000"
     run -2 --separate-stderr sensorize --mtf-fnumber nan --mtf-pitch 5 \
         "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.pgm
-    assert_equal "${stderr%%$'\n'*}" "sensorize: --mtf-fnumber must be a positive number"
+    assert_equal "${stderr%%$'\n'*}" "sensorize: --mtf-fnumber: nan: must be a number > 0 and <= 1000"
     run -2 --separate-stderr sensorize --mtf-fnumber 4 "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.pgm
     [[ "$stderr" == *"give --mtf-fnumber and --mtf-pitch together"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr sensorize --mtf-fill 0 "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.pgm
-    [[ "$stderr" == *"--mtf-fill must be greater than 0 and at most 1"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"--mtf-fill: 0: must be a number > 0 and <= 1"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr sensorize --mtf-smear 1,2,3 "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.pgm
     [[ "$stderr" == *"--mtf-smear: expected PX or PX,DEGREES, found '1,2,3'"* ]] || fail "stderr: $stderr"
     run -2 --separate-stderr sensorize --mtf-electronics 100 "$CUBE/tiny.img" "$CUBE/blue.sen" -o out.pgm

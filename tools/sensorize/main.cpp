@@ -45,7 +45,7 @@ sensor::MtfParams mtf_from(const cli::po::variables_map& vm) {
     sensor::MtfParams p;
     auto number = [&](const char* name, double& to) {
         if (!vm.count(name)) return;
-        to = vm[name].as<double>();
+        to = cli::real(vm, name);
         p.enabled = true;
     };
     number("mtf-fnumber", p.f_number);
@@ -75,11 +75,6 @@ sensor::MtfParams mtf_from(const cli::po::variables_map& vm) {
                 "--mtf-electronics: the cutoff and the dwell time must be positive numbers");
         p.enabled = true;
     }
-    // 0 would turn a term off silently: an f-number or pitch given must be positive.
-    if (vm.count("mtf-fnumber") && !(p.f_number > 0))
-        throw sigchain::UsageError("--mtf-fnumber must be a positive number");
-    if (vm.count("mtf-pitch") && !(p.pitch_um > 0))
-        throw sigchain::UsageError("--mtf-pitch must be a positive number");
     if (p.enabled) p.check();
     return p;
 }
@@ -175,15 +170,17 @@ int main(int argc, char** argv) {
                     "read noise standard deviation, counts (>= 0)");
     tool.add_number("psf-sigma", "PX", cli::positive(),
                     "Gaussian point-spread function, sigma in pixels (> 0)");
+    tool.add_number("mtf-fnumber", "N", cli::positive(1000),
+                    "MTF: diffraction of a circular aperture of f-number N, > 0, <= 1000\n"
+                    "                    (needs --mtf-pitch)");
+    tool.add_number("mtf-pitch", "UM", cli::positive(10000),
+                    "MTF: detector pitch, micrometres (> 0, <= 10000)");
+    tool.add_number("mtf-fill", "F", cli::reals(0, 1, true),
+                    "MTF: detector width / pitch, 0 < F <= 1 (default 1)");
+    tool.add_number("mtf-defocus", "PX", cli::reals(0, 10000),
+                    "MTF: Gaussian defocus/aberration, sigma in pixels (0-10000)");
     tool.add_options()("float", "write band radiance unquantised (float TIFF) instead of counts")(
         "psf", value<std::string>()->value_name("FILE"), "point-spread function kernel file")(
-        "mtf-fnumber", value<double>()->value_name("N"),
-        "MTF: diffraction of a circular aperture of f-number N (needs --mtf-pitch)")(
-        "mtf-pitch", value<double>()->value_name("UM"), "MTF: detector pitch, micrometres")(
-        "mtf-fill", value<double>()->value_name("F"),
-        "MTF: detector width / pitch, 0 < F <= 1 (default 1)")(
-        "mtf-defocus", value<double>()->value_name("PX"),
-        "MTF: Gaussian defocus/aberration, sigma in pixels")(
         "mtf-smear", value<std::string>()->value_name("PX[,DEG]"),
         "MTF: image motion of PX pixels during integration, DEG from +x toward +y")(
         "mtf-electronics", value<std::string>()->value_name("HZ,S[,POLES]"),
