@@ -21,9 +21,11 @@ std::string data_error_of(const std::function<void()>& f) {
         f();
     } catch (const DataError& e) {
         std::string m = e.what();
-        const std::string tmp = ::testing::TempDir();
+        // obj_of's files (TempDir()/t.obj, t.map) are named without their folder; other
+        // paths (the source tree's, wherever it is) are kept.
+        const std::string tmp = ::testing::TempDir() + "t.";
         for (auto at = m.find(tmp); at != std::string::npos; at = m.find(tmp))
-            m.erase(at, tmp.size());
+            m.erase(at, tmp.size() - 2);
         return m;
     }
     return "no error";
