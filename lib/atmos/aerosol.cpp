@@ -262,7 +262,8 @@ std::array<std::vector<double>, 3> boundary_layer_optics(
 }  // namespace
 
 AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& profile,
-                                     const std::string& data_dir) {
+                                     const std::string& data_dir,
+                                     std::optional<double> asymmetry_g) {
     check_card2(card2);
     AerosolModel m;
     const Table rural = read_table(table_path(data_dir, "aerosol_rural.txt"), 13, 47);
@@ -297,6 +298,8 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
     const Table strat = read_table(table_path(data_dir, "aerosol_stratospheric.txt"), 13, 47);
     m.m_optics[2] = optics(fixed_optics(strat, strat_optics_column(card2.ivulcn)));
     m.m_optics[3] = optics(fixed_optics(strat, 10));  // meteoric dust
+    if (asymmetry_g)  // IPH 0: Henyey-Greenstein with the deck's G for every aerosol
+        for (Optics& o : m.m_optics) std::fill(o.g.begin(), o.g.end(), *asymmetry_g);
     return m;
 }
 

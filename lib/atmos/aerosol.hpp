@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,11 @@ public:
     // CARD 2 of the deck and the profile (its relative humidity drives the
     // humidity-dependent models). IHAZE 0 gives no aerosol. Throws DataError naming
     // the card and field for a model that is not supported.
+    // asymmetry_g, when given (the deck's G with IPH 0, CARD 3A2), replaces every
+    // model's tabulated asymmetry parameter.
     static AerosolModel from_deck(const io::CdkCard2& card2, const Profile& profile,
-                                  const std::string& data_dir);
+                                  const std::string& data_dir,
+                                  std::optional<double> asymmetry_g = std::nullopt);
 
     // Extinction coefficient (km-1) at altitude z (km MSL) and wavelength (um).
     double extinction_km1(double z_km, double wavelength_um) const;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "atmos/deck_options.hpp"
 #include "atmos/radiance_directions.hpp"
 #include "atmos/radiance_sample.hpp"
 #include "atmos/solar_spectrum.hpp"
@@ -26,22 +27,58 @@ constexpr double kDeg = std::numbers::pi / 180;
 // g <= 0.7 (LOWTRAN's aerosols), so 32 moments represent the phase function.
 constexpr int kPhaseMoments = 32;
 
-// What the deck asks for that the atmosphere model does not cover: clouds, rain and
-// the army vertical structure algorithm (cdk(5) gives the columns).
-void check_deck(const io::CdkRun& run, const std::string& cdk_path) {
-    // The parsed deck keeps no line numbers: the messages name the card and its columns.
-    const SourceLocation at{cdk_path, 0};
-    if (run.card2.icld != 0)
-        throw DataError(at, "CARD 2 ICLD (columns 21-25) is " + std::to_string(run.card2.icld) +
-                                ": clouds and rain are not modelled by build_radiance (use 0)");
-    if (run.card2.rain_rate_mm_h > 0)
-        throw DataError(at, "CARD 2 RAINRT (columns 61-70) is " +
-                                format_number(run.card2.rain_rate_mm_h) +
-                                " mm/h: rain is not modelled by build_radiance (use 0)");
-    if (run.card2.ivsa != 0)
-        throw DataError(at,
-                        "CARD 2 IVSA (columns 26-30) is 1: the army vertical structure "
-                        "algorithm is not modelled by build_radiance (use 0)");
+// Which fields of CARD 3A1/3A2 give the deck's sun, for the messages.
+std::string deck_sun_fields(int iparm) {
+    switch (iparm) {
+        case 0:
+            return "CARD 3A2 PARM1-PARM4 (columns 1-40, observer and sub-solar point)";
+        case 1:
+            return "CARD 3A1 IDAY (columns 11-15) and CARD 3A2 PARM1-PARM2 (columns 1-20) and "
+                   "TIME (columns 41-50, Greenwich)";
+        default:
+            return "CARD 3A2 PARM1 (columns 1-10, azimuth from the line of sight) and PARM2 "
+                   "(columns 11-20, solar zenith)";
+    }
+}
+
+// The deck's sun (IEMSCT 2, CARD 3A1/3A2) against the scene node's, which build_radiance
+// uses: accepted when they agree within kSunAgreement_deg; with IPARM 1 a TIME equal to
+// the scene's local time (as White (1996), section 4.2.3.5, answered it) is accepted
+// with a warning; any other disagreement is a DataError naming the fields.
+void check_deck_sun(const io::CdkRun& run, const io::Snd& snd, const RadianceReport& rep,
+                    const std::string& cdk_path, const Reporter& reporter,
+                    std::vector<std::string>& notes) {
+    const auto deck = deck_sun(run, snd.year, rep.view_azimuth_deg);
+    if (!deck) return;
+    const DeckSun scene{rep.sun_zenith_deg, rep.sun_azimuth_deg};
+    const double off = sun_separation_deg(*deck, scene);
+    const int iparm = run.geometry.iparm;
+    const std::string fields = deck_sun_fields(iparm);
+    if (off <= kSunAgreement_deg) {
+        notes.push_back("sun from the scene node; the deck's (IPARM " + std::to_string(iparm) +
+                        ") agrees within " + format_number(off) + " deg");
+        return;
+    }
+    if (iparm == 1) {
+        io::CdkRun local = run;
+        local.geometry.time_h += snd.gmt_offset_hours;
+        const auto shifted = deck_sun(local, snd.year, rep.view_azimuth_deg);
+        if (shifted && sun_separation_deg(*shifted, scene) <= kSunAgreement_deg) {
+            reporter.warn(cdk_path + ": CARD 3A2 TIME (columns 41-50) " +
+                          format_number(run.geometry.time_h) +
+                          " h is the scene's local time, not Greenwich time (" +
+                          format_number(snd.time_gmt_hours) + " h): the scene node's sun is used");
+            notes.push_back("sun from the scene node; the deck's TIME is its local time");
+            return;
+        }
+    }
+    throw DataError({cdk_path, 0},
+                    fields + " put the sun at zenith " + format_number(deck->zenith_deg) +
+                        " deg, azimuth " + format_number(deck->azimuth_deg) +
+                        " deg, but the scene node's sun is at zenith " +
+                        format_number(scene.zenith_deg) + " deg, azimuth " +
+                        format_number(scene.azimuth_deg) + " deg (" + format_number(off) +
+                        " deg apart; at most " + format_number(kSunAgreement_deg) + " allowed)");
 }
 
 std::vector<double> grid(double min, double increment, long count) {
@@ -234,7 +271,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     check_radiance_options(o);
     if (deck.runs.empty()) throw Error("the card deck holds no run");
     const io::CdkRun& run = deck.runs.front();
-    check_deck(run, o.cdk_path);
+    check_deck(deck, o.cdk_path);
     RadianceReport rep;
     const ColumnModel column(run, snd.sensor_altitude_km, o);
     report_column(column, snd, rep);
@@ -242,6 +279,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const SolarSpectrum solar = SolarSpectrum::load(o.data_dir);
     rep.view_azimuth_deg =
         wrap_degrees(o.view_azimuth_deg ? *o.view_azimuth_deg : run.geometry.path_azimuth_deg);
+    check_deck_sun(run, snd, rep, o.cdk_path, reporter, rep.notes);
     const std::vector<double> views = view_angles(snd, o.snd_path);
     const Directions dirs = directions(views, rep.view_azimuth_deg, rep.sun_azimuth_deg, o);
     const double distance_factor = 1 / (sun.earth_sun_distance_au * sun.earth_sun_distance_au);
@@ -253,7 +291,13 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             std::cos(sun.zenith_deg * kDeg),
                             sun.zenith_deg < 90,
                             distance_factor,
-                            std::max(o.streams, kPhaseMoments)};
+                            std::max(o.streams, kPhaseMoments),
+                            deck_choices(run)};
+    if (run.card1.imult == 0)
+        rep.notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
+    if (run.card1.surface_albedo > 0)
+        rep.notes.push_back("SALB " + format_number(run.card1.surface_albedo) +
+                            ": the sky includes the ground's reflection");
     const std::vector<SampleResult> results =
         solve_samples(setup, sample_wavenumbers(snd), reporter);
 

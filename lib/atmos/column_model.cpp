@@ -35,7 +35,11 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     if (m_sensor_level >= m_profile.size() ||
         std::abs(m_profile.z_km[m_sensor_level] - sensor) > 1e-9)
         throw Error("internal: the sensor altitude is not a level of the resampled profile");
-    m_aerosol.emplace(AerosolModel::from_deck(run.card2, m_profile, o.data_dir));
+    // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
+    const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
+    m_aerosol.emplace(AerosolModel::from_deck(
+        run.card2, m_profile, o.data_dir,
+        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt));
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
 }

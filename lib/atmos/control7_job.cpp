@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "atmos/control7.hpp"
+#include "atmos/deck_options.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/text.hpp"
@@ -52,6 +53,9 @@ void run(const Control7Job& job, const Reporter& reporter) {
     io::parse_cdk(TextInput::from_string(deck.str(), "<deck>"));
     const std::string path = job.output_path.empty() ? result.deck_path : job.output_path;
     require_outputs_distinct({path}, {job.answers_path});
+    // A valid LOWTRAN 7 deck that build_radiance would refuse: said now, not later.
+    for (const std::string& why : deck_refusals(result.cdk))
+        reporter.warn("build_radiance will refuse this deck: " + why);
     AtomicOutput out(path);
     out.stream() << deck.str();
     out.commit();

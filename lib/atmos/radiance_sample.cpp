@@ -5,7 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "atmos/ground_albedo.hpp"
 #include "atmos/rayleigh.hpp"
+#include "atmos/single_scatter.hpp"
 #include "rt/coupling.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
@@ -146,7 +148,9 @@ rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& 
         th.planck_levels.push_back(rt::planck_radiance(wavelength, s.column.profile().t_k[k[i]]));
     th.planck_surface = 0;
     th.top_emission = 0;
-    return rt::solve(th);
+    rt::Result r = rt::solve(th);
+    add_ground_reflection(th, s.deck.surface_albedo, 1, r);
+    return r;
 }
 
 // The three solutions of a sample: solar scattering (level 0 the sensor, 1 the ground),
@@ -230,7 +234,8 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
     if (s.sun_up) {  // solar scattering: the beam only (no emission)
         prob.beam_flux = sample.solar_irradiance;
         prob.beam_mu0 = s.mu0;
-        sol.solar = rt::solve(prob);
+        sol.solar = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
+        add_ground_reflection(prob, s.deck.surface_albedo, 1, sol.solar);
     }
     res.thermal = wavelength >= s.options.thermal_min_wavelength_um;
     if (res.thermal) {

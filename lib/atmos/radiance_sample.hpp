@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "atmos/column_model.hpp"
+#include "atmos/deck_options.hpp"
 #include "atmos/radiance_directions.hpp"
 #include "atmos/radiance_options.hpp"
 #include "atmos/solar_spectrum.hpp"
@@ -25,6 +26,7 @@ struct SampleSetup {
     bool sun_up = false;
     double distance_factor = 1;  // (1 AU / Earth-Sun distance)^2
     int moments = 0;             // phase-function moments handed to the solver
+    DeckChoices deck;            // IMULT 0 (single scattering), SALB (ground in the sky)
 };
 
 // The table entries of one spectral sample (radiances W cm-2 sr-1 um-1).
@@ -39,7 +41,7 @@ struct SampleResult {
     // (0 with the sun down) and t_d_up per view (per unit isotropic ground radiance).
     double spherical_albedo = 0, diffuse_down = 0;
     std::vector<double> diffuse_up;
-    bool thermal = false;                 // layer emission solved
+    bool thermal = false;  // layer emission solved
 };
 
 // Solves the sample at wavenumber nu_cm1. Thread-safe for one setup.
