@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -101,6 +102,58 @@ std::pair<std::array<std::vector<double>, 3>, double> desert_optics(const Table&
     return {out, e055};
 }
 
+// Navy maritime model (IHAZE 3; Gathman 1983, Opt. Eng. 22, 57; LOWTRAN 7's MARINE, as
+// data/atmosphere/lowtran7/aerosol_navy_maritime_modes.txt states it): three lognormal
+// modes with amplitudes A1 = 2000 ICSTL^2 (air-mass character; outside 1-10 LOWTRAN's
+// default 3), A2 = max(5.866 (WHH - 2.2), 0.5), A3 = 10^(0.06 WSS - 2.8) (winds in m/s,
+// at most 20; WHH 0: the model atmosphere's default, WSS 0: WHH); each mode's log10
+// Q-integral linear in RH between 50, 85, 95 and 98 % (RH clamped there); ext(0.55 um)
+// = pi/1000 sum A_i 10^T_i / F km-1 with the growth factor
+// F = ((2 - RH/100) / (6 (1 - RH/100)))^(1/3), the spectrum normalised at 0.55 um. The
+// 40 wavelengths are the first 40 of the other tables' 47; beyond 40 um the 40-um values
+// hold. The tables give no asymmetry parameter: LOWTRAN 7 scatters IHAZE 3 with the
+// maritime model's phase functions (PHASEF: IHAZE 3 and 4 use models 5-8,
+// aerosol_phase_function_index.txt), whose first moment is the maritime model's
+// tabulated g, so g is the maritime table's at the same RH. Returns the optics on the
+// 47 wavelengths and the absolute ext(0.55) in km-1.
+std::pair<std::array<std::vector<double>, 3>, double> navy_optics(const Table& modes,
+                                                                  const Table& maritime,
+                                                                  const io::CdkCard2& c, int model,
+                                                                  double rh) {
+    // Default 24-hour winds by MODEL 0-7 (MARINE).
+    const double wind[8] = {6.9, 4.1, 4.1, 10.29, 6.69, 12.35, 7.2, 6.9};
+    const double wh = std::min(
+        c.wind_speed_24h_m_s > 0 ? c.wind_speed_24h_m_s : wind[std::clamp(model, 0, 7)], 20.0);
+    const double ws = c.wind_speed_m_s > 0 ? std::min(c.wind_speed_m_s, 20.0) : wh;
+    const double icstl = c.icstl >= 1 && c.icstl <= 10 ? c.icstl : 3;
+    const double amp[3] = {2000 * icstl * icstl, std::max(5.866 * (wh - 2.2), 0.5),
+                           std::pow(10.0, 0.06 * ws - 2.8)};
+    const double arel[4] = {50, 85, 95, 98};
+    const double r = std::clamp(rh, 50.0, 98.0);
+    int k = 0;
+    while (k < 2 && r > arel[k + 1]) ++k;
+    const double f = (r - arel[k]) / (arel[k + 1] - arel[k]);
+    std::array<std::vector<double>, 3> out;
+    for (const auto& row : modes) {
+        double ext = 0, abs = 0;
+        for (int m = 0; m < 3; ++m) {
+            const int e = 1 + 4 * m + k, a = 13 + 4 * m + k;
+            ext += amp[m] * std::pow(10.0, row[e] + f * (row[e + 1] - row[e]));
+            abs += amp[m] * std::pow(10.0, row[a] + f * (row[a + 1] - row[a]));
+        }
+        out[0].push_back(ext);
+        out[1].push_back(abs);
+    }
+    const double total055 = out[0][k055];
+    for (int q = 0; q < 2; ++q) {
+        for (double& v : out[q]) v /= total055;
+        while (out[q].size() < maritime.size()) out[q].push_back(out[q].back());
+    }
+    out[2] = humid_optics(maritime, rh)[2];
+    const double growth = std::cbrt((2 - r / 100) / (6 * (1 - r / 100)));
+    return {out, std::numbers::pi / 1000 * total055 / growth};
+}
+
 // Boundary-layer 0.55-um extinction for VIS, linear in 1/VIS between the bracketing
 // tabulated visibilities 50, 23, 10, 5, 2 km (extrapolated outside; AERPRF).
 double boundary_layer_beta(const std::vector<double>& row, double vis_km) {
@@ -141,10 +194,6 @@ int strat_optics_column(int ivulcn) {
 
 void check_card2(const io::CdkCard2& c) {
     if (c.ihaze < 0 || c.ihaze > 10) reject("IHAZE", "expected 0-10");
-    if (c.ihaze == 3)
-        reject("IHAZE",
-               "3 (Navy maritime) is not supported: the LOWTRAN tables give its "
-               "extinction and absorption but no asymmetry parameter");
     if (c.ihaze == 7) reject("IHAZE", "7 (user-defined aerosol, CARD 2D) is not supported");
     if (c.iseasn < 0 || c.iseasn > 2) reject("ISEASN", "expected 0-2");
     if (c.ivulcn < 0 || c.ivulcn > 8) reject("IVULCN", "expected 0-8");
@@ -188,17 +237,28 @@ double profile_rh(const Profile& p, double z) {
 }
 
 // The deck's visibility (km), its model's default for VIS 0; for the desert model
-// (IHAZE 10) also its wind-dependent boundary-layer optics, whose 0.55-um extinction
-// sets the visibility when VIS is 0.
-double deck_visibility(const io::CdkCard2& card2, const std::string& data_dir,
-                       std::array<std::vector<double>, 3>& desert_bl) {
+// (IHAZE 10) and the Navy maritime model (IHAZE 3, at the ground's RH and the profile's
+// model for its default winds) also their wind-dependent boundary-layer optics
+// (`own_bl`), whose 0.55-um extinction sets the visibility when VIS is 0.
+double deck_visibility(const io::CdkCard2& card2, const Profile& profile,
+                       const std::string& data_dir, std::array<std::vector<double>, 3>& own_bl) {
     double vis = card2.visibility_km;
+    double e055 = 0;
     if (card2.ihaze == 10) {
         const Table desert = read_table(table_path(data_dir, "aerosol_desert.txt"), 13, 47);
-        double e055 = 0;
-        std::tie(desert_bl, e055) = desert_optics(desert, card2.wind_speed_m_s);
-        if (vis == 0) vis = kKoschmieder / (e055 + kRayleighKoschmieder_km1);
+        std::tie(own_bl, e055) = desert_optics(desert, card2.wind_speed_m_s);
+    } else if (card2.ihaze == 3) {
+        const Table modes =
+            read_table(table_path(data_dir, "aerosol_navy_maritime_modes.txt"), 25, 40);
+        const Table maritime = read_table(table_path(data_dir, "aerosol_maritime.txt"), 13, 47);
+        // The ground's RH; without one MARINE's default for the model atmosphere.
+        const double rh_default[8] = {80, 75.63, 76.2, 77.13, 75.24, 80.53, 45.89, 80};
+        const double rh = profile.size() && profile.rh_percent.front() > 0
+                              ? profile.rh_percent.front()
+                              : rh_default[std::clamp(profile.model, 0, 7)];
+        std::tie(own_bl, e055) = navy_optics(modes, maritime, card2, profile.model, rh);
     }
+    if (vis == 0 && e055 > 0) vis = kKoschmieder / (e055 + kRayleighKoschmieder_km1);
     if (vis == 0) vis = default_visibility(card2.ihaze);
     return vis;
 }
@@ -236,8 +296,7 @@ RegionProfiles region_profiles(const io::CdkCard2& card2, bool fall_winter, doub
 // The boundary layer's optics for the deck's IHAZE at effective humidity rh_eff.
 std::array<std::vector<double>, 3> boundary_layer_optics(
     const io::CdkCard2& card2, const Table& rural, const Table& trop_table,
-    const std::array<std::vector<double>, 3>& desert_bl, double rh_eff,
-    const std::string& data_dir) {
+    const std::array<std::vector<double>, 3>& own_bl, double rh_eff, const std::string& data_dir) {
     switch (card2.ihaze) {
         case 1:
         case 2:
@@ -254,8 +313,8 @@ std::array<std::vector<double>, 3> boundary_layer_optics(
         case 9:
             return fixed_optics(read_table(table_path(data_dir, "aerosol_fog.txt"), 7, 47),
                                 card2.ihaze == 8 ? 1 : 4);
-        default:  // 10, desert; check_card2 admits no other value here
-            return desert_bl;
+        default:  // 3 Navy maritime and 10 desert; check_card2 admits no other value here
+            return own_bl;
     }
 }
 
@@ -278,8 +337,8 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
         }
         return m;
     }
-    std::array<std::vector<double>, 3> desert_bl;
-    m.m_vis_km = deck_visibility(card2, data_dir, desert_bl);
+    std::array<std::vector<double>, 3> own_bl;
+    m.m_vis_km = deck_visibility(card2, profile, data_dir, own_bl);
 
     const bool fall_winter =
         card2.iseasn == 2 || (card2.iseasn == 0 && (profile.model == 3 || profile.model == 5));
@@ -293,7 +352,7 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
     };
     const Table trop_table = read_table(table_path(data_dir, "aerosol_tropospheric.txt"), 13, 47);
     m.m_optics[0] =
-        optics(boundary_layer_optics(card2, rural, trop_table, desert_bl, m.m_rh_eff, data_dir));
+        optics(boundary_layer_optics(card2, rural, trop_table, own_bl, m.m_rh_eff, data_dir));
     m.m_optics[1] = optics(humid_optics(trop_table, 70.0));
     const Table strat = read_table(table_path(data_dir, "aerosol_stratospheric.txt"), 13, 47);
     m.m_optics[2] = optics(fixed_optics(strat, strat_optics_column(card2.ivulcn)));

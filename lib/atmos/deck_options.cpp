@@ -31,10 +31,6 @@ void run_refusals(const io::CdkRun& run, const std::string& pre, std::vector<std
         refuse("CARD 1 TBOUND (columns 66-73) is " + format_number(c1.boundary_temperature_k) +
                " K: the ground's temperature and emission come from the scene, rad(5) tables "
                "hold none (use 0)");
-    if (c2.ihaze == 3)
-        refuse(
-            "CARD 2 IHAZE (columns 1-5) is 3: the Navy maritime model is not supported (its "
-            "tables give extinction and absorption but no asymmetry parameter)");
     if (c2.icld != 0)
         refuse("CARD 2 ICLD (columns 21-25) is " + std::to_string(c2.icld) +
                ": clouds and rain are not modelled by build_radiance (use 0)");

@@ -95,3 +95,16 @@ sky_block() { sed -n '/SIGCHAIN_RAD/,/UPWELLED/p' "$1"; }
     run -0 --separate-stderr control7 --answers "$answers/hawkeye.answers" -o ok.cdk
     assert_equal "$stderr" ""
 }
+
+@test "the Navy maritime model (IHAZE 3) runs, its visibility set by the wind" {
+    # IHAZE 3, VIS 0: the visibility follows from the modes; WSS 15 m/s raises the sea salt.
+    sed -e '2s/^    1/    3/' -e '2s/    23.000/     0.000/' "$DATA/rural23.cdk" > navy.cdk
+    run -0 --separate-stderr build_radiance -v "${QUICK[@]}" navy.cdk "$DATA/small.snd" -o 'n-%d.rad'
+    calm=$(sed -n 's/.*visibility \([0-9.]*\) km.*/\1/p' <<< "$stderr")
+    sed '2s/^\(.\{40\}\)     0.000/\1    15.000/' navy.cdk > windy.cdk
+    run -0 --separate-stderr build_radiance -v "${QUICK[@]}" windy.cdk "$DATA/small.snd" -o 'w-%d.rad'
+    windy=$(sed -n 's/.*visibility \([0-9.]*\) km.*/\1/p' <<< "$stderr")
+    awk -v c="$calm" -v w="$windy" 'BEGIN { exit !(w < c && w > 0) }' || fail "calm $calm windy $windy"
+    sigchain-check n-1.rad w-1.rad
+    run ! cmp -s n-1.rad w-1.rad
+}

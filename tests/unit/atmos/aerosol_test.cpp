@@ -80,7 +80,7 @@ TEST(AtmosAerosol, TableOpticsAtTabulatedHumidity) {
 }
 
 TEST(AtmosAerosol, EveryModelGivesPhysicalOptics) {
-    for (int ihaze : {1, 2, 4, 5, 6, 8, 9, 10}) {
+    for (int ihaze : {1, 2, 3, 4, 5, 6, 8, 9, 10}) {
         for (int ivulcn : {0, 2, 3, 8}) {
             auto c = card2(ihaze, 0, 0, ivulcn);
             c.wind_speed_m_s = 7;
@@ -155,7 +155,7 @@ TEST(AtmosAerosol, LayersAddUp) {
 
 TEST(AtmosAerosol, RejectsUnsupportedModels) {
     const Profile p = uniform_rh(70);
-    for (int ihaze : {3, 7, 11}) {
+    for (int ihaze : {7, 11}) {
         try {
             AerosolModel::from_deck(card2(ihaze, 0), p, kData);
             FAIL() << "IHAZE " << ihaze << " accepted";
@@ -186,4 +186,39 @@ TEST(AtmosAerosol, SeedFlyoverDeck) {
     EXPECT_GT(tau, 1.1416 * 5.782 / 6 - 0.001);
     EXPECT_GT(m.boundary_layer_rh_percent(), 0);
     EXPECT_LT(m.boundary_layer_rh_percent(), 99);
+}
+
+// Navy maritime (IHAZE 3) against the mode table by hand (aerosol_navy_maritime_modes.txt,
+// the 0.55-um and 10-um rows at RH 85 %, a node, so no interpolation): ICSTL 3, WSS =
+// WHH = 10 m/s give A1 = 2000 * 9, A2 = 5.866 (10 - 2.2), A3 = 10^(0.6 - 2.8);
+// ext(0.55) = pi/1000 sum A_i 10^T_i / F (F the growth factor at 85 %); VIS 0 is
+// 3.912 / (ext(0.55) + 0.01159). The surface extinction then follows Koschmieder
+// (1 %, as for the other models), and ext(10 um) / ext(0.55) is the table's ratio to
+// 1e-9 (the model's wavelength interpolation hits the table's own 10-um node).
+TEST(AtmosAerosol, NavyMaritimeFollowsTheModeTable) {
+    io::CdkCard2 c = card2(3, 0);
+    c.icstl = 3;
+    c.wind_speed_m_s = c.wind_speed_24h_m_s = 10;
+    const double a1 = 2000 * 9, a2 = 5.866 * 7.8, a3 = std::pow(10.0, 0.6 - 2.8);
+    auto ext = [&](double t1, double t2, double t3) {
+        return a1 * std::pow(10.0, t1) + a2 * std::pow(10.0, t2) + a3 * std::pow(10.0, t3);
+    };
+    const double growth = std::cbrt((2 - 0.85) / (6 * (1 - 0.85)));
+    const double e055 = M_PI / 1000 * ext(-3.251, -0.1258, 2.5562) / growth;
+    const double e10 = M_PI / 1000 * ext(-5.0793, -1.0867, 2.6075) / growth;
+    const auto m = AerosolModel::from_deck(c, uniform_rh(85), kData);
+    EXPECT_NEAR(m.visibility_km(), 3.912 / (e055 + 0.01159), 1e-9 * m.visibility_km());
+    EXPECT_NEAR(m.extinction_km1(0, 0.55) + 0.01159, 3.912 / m.visibility_km(),
+                0.01 * 3.912 / m.visibility_km());
+    // At the ground only the boundary layer has aerosol (the troposphere starts above
+    // 2 km): a thin slab there has the boundary layer's own spectral ratio.
+    const auto l055 = m.layer(0, 1e-3, 0.55), l10 = m.layer(0, 1e-3, 10);
+    EXPECT_NEAR(l10.tau_ext / l055.tau_ext, e10 / e055, 1e-9 * e10 / e055);
+    // The asymmetry parameter is the maritime model's (IHAZE 4) at the same humidity.
+    io::CdkCard2 mar = card2(4, 0);
+    const auto m4 = AerosolModel::from_deck(mar, uniform_rh(85), kData);
+    EXPECT_NEAR(m.layer(0, 1e-3, 0.55).g, m4.layer(0, 1e-3, 0.55).g, 1e-12);
+    // More wind, more sea salt: a shorter visibility.
+    c.wind_speed_m_s = 20;
+    EXPECT_LT(AerosolModel::from_deck(c, uniform_rh(85), kData).visibility_km(), m.visibility_km());
 }

@@ -185,8 +185,8 @@ TEST(DeckRefusals, NameCardFieldAndColumns) {
     d.runs[0].geometry.isourc = 1;
     EXPECT_TRUE(any_contains(deck_refusals(d), "CARD 3A1 ISOURC (columns 16-20)"));
     d = rural23();
-    d.runs[0].card2.ihaze = 3;
-    EXPECT_TRUE(any_contains(deck_refusals(d), "CARD 2 IHAZE (columns 1-5) is 3"));
+    d.runs[0].card2.ihaze = 3;  // Navy maritime: modelled
+    EXPECT_TRUE(deck_refusals(d).empty());
     // A second run with another atmosphere; one that repeats only CARD 4 is accepted.
     d = rural23();
     d.runs[0].irpt = 1;
