@@ -1,0 +1,221 @@
+// LOWTRAN 7's Mie aerosol phase functions (see mie_phase.hpp).
+#include "atmos/mie_phase.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "rt/quadrature.hpp"
+
+namespace sigchain::atmos {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180;
+constexpr int kGaussPerInterval = 64;
+
+// Interpolates a to b at fraction f: in ln when both are positive (PHASEF).
+double log_lerp(double a, double b, double f) {
+    if (a > 0 && b > 0) return a * std::pow(b / a, f);
+    return a + f * (b - a);
+}
+
+// The rows of a whitespace table (comment lines skipped), each with `columns` fields.
+std::vector<std::vector<std::string>> read_rows(const std::string& path, std::size_t columns,
+                                                std::size_t rows) {
+    const TextInput in = TextInput::from_file(path);
+    LineCursor cur(in);
+    cur.require_not_empty("a table row");
+    std::vector<std::vector<std::string>> out;
+    while (!cur.at_end()) {
+        const auto f = cur.fields(columns, "a row of " + std::to_string(columns) + " fields");
+        std::vector<std::string> row;
+        for (auto x : f) row.emplace_back(x);
+        out.push_back(std::move(row));
+    }
+    if (out.size() != rows)
+        throw DataError(in.at(0), "expected " + std::to_string(rows) + " rows, found " +
+                                      std::to_string(out.size()));
+    return out;
+}
+
+// Legendre polynomials P_0..P_n at x into out.
+void legendre(double x, std::vector<double>& out) {
+    out[0] = 1;
+    if (out.size() > 1) out[1] = x;
+    for (std::size_t k = 2; k < out.size(); ++k)
+        out[k] = ((2 * k - 1) * x * out[k - 1] - (k - 1) * out[k - 2]) / k;
+}
+
+// Index of the interval [v[i], v[i+1]] holding x (clamped to the ends) and the fraction.
+std::pair<std::size_t, double> bracket(const std::vector<double>& v, double x) {
+    x = std::clamp(x, v.front(), v.back());
+    std::size_t hi = std::size_t(std::upper_bound(v.begin(), v.end(), x) - v.begin());
+    hi = std::clamp<std::size_t>(hi, 1, v.size() - 1);
+    return {hi - 1, (x - v[hi - 1]) / (v[hi] - v[hi - 1])};
+}
+
+// The value within interval i at fraction f for the moments: ln P linear in angle, but
+// in the intervals touching 0 and 180 deg ln P is quadratic in the distance from the
+// pole, flat there. A phase function is smooth on the sphere, so its slope in angle
+// vanishes at both poles; a kink there (ln-linear to the pole) would make a cusp whose
+// Legendre series converges only as N^-2.
+double moment_value(const TabulatedPhase& p, std::size_t i, double f) {
+    const double a = p.p_sr1[i], b = p.p_sr1[i + 1];
+    if (!(a > 0 && b > 0)) return a + f * (b - a);
+    if (i == 0) return a * std::pow(b / a, f * f);
+    if (i + 2 == p.p_sr1.size()) return b * std::pow(a / b, (1 - f) * (1 - f));
+    return a * std::pow(b / a, f);
+}
+
+}  // namespace
+
+double TabulatedPhase::at(double angle) const {
+    const auto [i, f] = bracket(angle_deg, angle);
+    return log_lerp(p_sr1[i], p_sr1[i + 1], f);
+}
+
+std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral) {
+    std::vector<double> nodes, weights;
+    rt::gauss_half_range(kGaussPerInterval, nodes, weights);
+    std::vector<double> chi(static_cast<std::size_t>(nmom) + 1, 0.0), pk(chi.size());
+    double norm = 0;
+    for (std::size_t i = 0; i + 1 < p.angle_deg.size(); ++i) {
+        const double a = p.angle_deg[i] * kDeg, b = p.angle_deg[i + 1] * kDeg;
+        for (std::size_t q = 0; q < nodes.size(); ++q) {
+            const double t = a + (b - a) * nodes[q];
+            const double w =
+                2 * kPi * (b - a) * weights[q] * std::sin(t) * moment_value(p, i, nodes[q]);
+            legendre(std::cos(t), pk);
+            norm += w;
+            for (std::size_t k = 0; k < chi.size(); ++k) chi[k] += w * pk[k];
+        }
+    }
+    for (double& c : chi) c /= norm;
+    chi[0] = 1;
+    if (integral) *integral = norm;
+    return chi;
+}
+
+TabulatedPhase truncate_forward_peak(const TabulatedPhase& p, double cone_deg, double& forward) {
+    double whole = 0;
+    phase_moments(p, 0, &whole);
+    const auto& a = p.angle_deg;
+    const std::size_t c = std::size_t(std::lower_bound(a.begin(), a.end(), cone_deg) - a.begin());
+    forward = 0;
+    TabulatedPhase t = p;
+    for (double& v : t.p_sr1) v /= whole;
+    if (c == 0 || c + 1 >= a.size()) return t;
+    // ln P inside the cone: quadratic in angle, flat at 0 and with the slope s of the
+    // interval beyond the cone at its edge: ln P(0) = ln P(cone) - s cone / 2.
+    const double v0 = t.p_sr1[c], v1 = t.p_sr1[c + 1];
+    const double s = v0 > 0 && v1 > 0 ? std::log(v1 / v0) / (a[c + 1] - a[c]) : 0.0;
+    TabulatedPhase out;
+    out.angle_deg.push_back(0);
+    out.p_sr1.push_back(v0 * std::exp(-s * a[c] / 2));
+    out.angle_deg.insert(out.angle_deg.end(), a.begin() + long(c), a.end());
+    out.p_sr1.insert(out.p_sr1.end(), t.p_sr1.begin() + long(c), t.p_sr1.end());
+    double kept = 0;
+    phase_moments(out, 0, &kept);
+    forward = std::clamp(1 - kept, 0.0, 1.0);
+    for (double& v : out.p_sr1) v /= kept;
+    return out;
+}
+
+double phase_from_moments(const std::vector<double>& chi, double angle_deg) {
+    std::vector<double> pk(chi.size());
+    legendre(std::cos(angle_deg * kDeg), pk);
+    double s = 0;
+    for (std::size_t k = 0; k < chi.size(); ++k) s += (2 * k + 1) * chi[k] * pk[k];
+    return s / (4 * kPi);
+}
+
+MiePhaseTable MiePhaseTable::load(const std::string& data_dir) {
+    const std::string dir = data_dir + "/atmosphere/lowtran7/";
+    MiePhaseTable t;
+    const auto phase = read_rows(dir + "aerosol_phase_functions_mie.txt", 71, 34);
+    t.m_functions.assign(70, {});
+    const SourceLocation at{dir + "aerosol_phase_functions_mie.txt", 0};
+    for (const auto& row : phase) {
+        t.m_angles.push_back(parse_double(row[0], at, "an angle"));
+        for (std::size_t n = 0; n < 70; ++n)
+            t.m_functions[n].push_back(parse_double(row[n + 1], at, "a phase function value"));
+    }
+    const auto index = read_rows(dir + "aerosol_phase_function_index.txt", 29, 26);
+    t
+        .m_wavelengths = {0.2, 0.3,   0.55, 0.6943, 1.06, 1.536, 2,    2.5, 2.7,
+                          3,   3.2,   3.39, 5,      6,    7.2,   7.9,  8.7, 9.2,
+                          10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,  40};  // PHASEF's WAVE
+    const SourceLocation ix{dir + "aerosol_phase_function_index.txt", 0};
+    for (const auto& row : index) {
+        std::vector<int> numbers;
+        for (std::size_t w = 2; w < row.size(); ++w) {
+            const double v = parse_double(row[w], ix, "a phase function number");
+            if (!(v >= 1 && v <= 70)) throw DataError(ix, "phase function number outside 1-70");
+            numbers.push_back(static_cast<int>(v));
+        }
+        t.m_index.push_back(std::move(numbers));
+    }
+    return t;
+}
+
+TabulatedPhase MiePhaseTable::function(int number) const {
+    return {m_angles, m_functions.at(static_cast<std::size_t>(number - 1))};
+}
+
+TabulatedPhase MiePhaseTable::model(int model, double wavelength_um) const {
+    const auto& row = m_index.at(static_cast<std::size_t>(model - 1));
+    const auto [i, f] = bracket(m_wavelengths, wavelength_um);
+    const auto& a = m_functions[static_cast<std::size_t>(row[i] - 1)];
+    const auto& b = m_functions[static_cast<std::size_t>(row[i + 1] - 1)];
+    TabulatedPhase out{m_angles, {}};
+    for (std::size_t k = 0; k < a.size(); ++k) out.p_sr1.push_back(log_lerp(a[k], b[k], f));
+    return out;
+}
+
+std::optional<TabulatedPhase> MiePhaseTable::region(int region, int ihaze, int ivulcn, double rh,
+                                                    double wavelength_um) const {
+    if (wavelength_um > m_wavelengths.back()) return std::nullopt;
+    if (region == 1) return model(18, wavelength_um);
+    if (region == 2) {
+        const int strat[9] = {21, 21, 22, 23, 22, 23, 21, 21, 23};
+        return model(strat[std::clamp(ivulcn, 0, 8)], wavelength_um);
+    }
+    if (region == 3) return model(26, wavelength_um);
+    int first = 0;  // the RH 0 % model of the boundary layer's type
+    switch (ihaze) {
+        case 1:
+        case 2:
+            first = 1;
+            break;
+        case 3:
+        case 4:
+            first = 5;
+            break;
+        case 5:
+            first = 9;
+            break;
+        case 6:
+            first = 17;
+            break;
+        case 8:
+            return model(24, wavelength_um);
+        case 9:
+            return model(25, wavelength_um);
+        default:  // 10 desert (and 0, no aerosol): Henyey-Greenstein
+            return std::nullopt;
+    }
+    const std::vector<double> rh_nodes = {0, 70, 80, 99};
+    const auto [j, f] = bracket(rh_nodes, rh);
+    const TabulatedPhase a = model(first + static_cast<int>(j), wavelength_um);
+    const TabulatedPhase b = model(first + static_cast<int>(j) + 1, wavelength_um);
+    TabulatedPhase out{m_angles, {}};
+    for (std::size_t k = 0; k < a.p_sr1.size(); ++k)
+        out.p_sr1.push_back(a.p_sr1[k] + f * (b.p_sr1[k] - a.p_sr1[k]));  // linear in RH
+    return out;
+}
+
+}  // namespace sigchain::atmos
