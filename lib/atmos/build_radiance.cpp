@@ -293,6 +293,10 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             distance_factor,
                             std::max(o.streams, kPhaseMoments),
                             deck_choices(run)};
+    if (run.card1.iemsct == 2 && run.geometry.iph == 2)
+        rep.notes.push_back(
+            "IPH 2: aerosol scattering by Henyey-Greenstein with the models' asymmetry "
+            "parameter (LOWTRAN 7's Mie phase functions are not used yet)");
     if (run.card1.imult == 0)
         rep.notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
     if (run.card1.surface_albedo > 0)
