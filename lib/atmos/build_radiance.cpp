@@ -27,6 +27,15 @@ constexpr double kDeg = std::numbers::pi / 180;
 // g <= 0.7 (LOWTRAN's aerosols), so 32 moments represent the phase function.
 constexpr int kPhaseMoments = 32;
 
+// The options the samples are solved with: the COUPLING terms (rad(5)) describe the
+// atmosphere over a black ground, for trace to add the scene's own ground to the sky;
+// with the deck's SALB the sky already holds a ground, so they are left out.
+RadianceOptions deck_solver_options(const io::CdkRun& run, const RadianceOptions& o) {
+    RadianceOptions solved = o;
+    if (run.card1.surface_albedo > 0) solved.coupling = false;
+    return solved;
+}
+
 // Which fields of CARD 3A1/3A2 give the deck's sun, for the messages.
 std::string deck_sun_fields(int iparm) {
     switch (iparm) {
@@ -283,10 +292,11 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const std::vector<double> views = view_angles(snd, o.snd_path);
     const Directions dirs = directions(views, rep.view_azimuth_deg, rep.sun_azimuth_deg, o);
     const double distance_factor = 1 / (sun.earth_sun_distance_au * sun.earth_sun_distance_au);
+    const RadianceOptions solved = deck_solver_options(run, o);
     const SampleSetup setup{column,
                             dirs,
                             solar,
-                            o,
+                            solved,
                             views,
                             std::cos(sun.zenith_deg * kDeg),
                             sun.zenith_deg < 90,
@@ -301,7 +311,8 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         rep.notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
     if (run.card1.surface_albedo > 0)
         rep.notes.push_back("SALB " + format_number(run.card1.surface_albedo) +
-                            ": the sky includes the ground's reflection");
+                            ": the sky includes the ground's reflection; no COUPLING terms "
+                            "(trace would add its own ground to the sky a second time)");
     const std::vector<SampleResult> results =
         solve_samples(setup, sample_wavenumbers(snd), reporter);
 
@@ -311,7 +322,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     std::size_t j = 0;
     for (const io::SndBand& band : snd.bands) {
         io::Rad rad = rad_header(band, snd, views, height_km);
-        io::RadSky sky = sky_header(sun, dirs, o.coupling);
+        io::RadSky sky = sky_header(sun, dirs, solved.coupling);
         std::vector<double> ground_irradiance;
         for (long s = 0; s < band.sample_count(); ++s, ++j) {
             append_sample(rad, sky, results[j]);

@@ -25,13 +25,16 @@ sky_block() { sed -n '/SIGCHAIN_RAD/,/UPWELLED/p' "$1"; }
     sigchain-check single-1.rad single-2.rad
 }
 
-@test "SALB brightens the sky and leaves the view table (a black ground's) as it was" {
+@test "SALB brightens the sky, leaves the view table (a black ground's) and drops COUPLING" {
     radiance "$DATA/rural23.cdk" black
     sed '1s/   0.00$/   0.50/' "$DATA/rural23.cdk" > salb.cdk
     run -0 --separate-stderr build_radiance -v "${QUICK[@]}" salb.cdk "$DATA/small.snd" -o 'salb-%d.rad'
     [[ "$stderr" == *"SALB 0.5: the sky includes the ground's reflection"* ]] || fail "stderr: $stderr"
     assert_equal "$(view_table salb-1.rad)" "$(view_table black-1.rad)"
     run ! cmp -s <(sky_block salb-1.rad) <(sky_block black-1.rad)
+    # The sky holds the ground: no COUPLING terms for trace to add it a second time.
+    grep -q '^COUPLING' black-1.rad
+    run ! grep -q '^COUPLING' salb-1.rad
     sigchain-check salb-1.rad
 }
 

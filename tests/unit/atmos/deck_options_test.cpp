@@ -292,6 +292,10 @@ TEST(BuildRadianceDeck, SalbBrightensTheSkyOnly) {
     // The path radiance and the upwelled grid are the atmosphere's (the ground is the scene's).
     EXPECT_EQ(black[0].views[0].path[0].scattered_radiance,
               bright[0].views[0].path[0].scattered_radiance);
+    // The sky holds the ground now: no COUPLING terms for trace to add it again.
+    EXPECT_TRUE(black[0].sky->coupling);
+    EXPECT_FALSE(bright[0].sky->coupling);
+    EXPECT_EQ(bright[0].sky->version_minor, 1);
     // Every sky cell gains, as L_g t_down(mu) > 0 says.
     for (std::size_t c = 0; c < black[0].sky->cells.size(); ++c)
         EXPECT_GT(bright[0].sky->cells[c].scattered_radiance[0],
