@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
@@ -158,6 +159,23 @@ std::pair<long, long> parse_rows(const std::string& text, const std::string& opt
     return {a, b};
 }
 
+namespace {
+
+// --convergence MIN,MAX,THRESHOLD: 2 <= MIN <= MAX <= the .adv's limit, 0 < THRESHOLD;
+// not with --samples-per-pixel (MIN and MAX set the count).
+void check_convergence(const Convergence& c, bool samples_per_pixel) {
+    if (samples_per_pixel)
+        throw UsageError("--convergence: not with --samples-per-pixel (MIN and MAX set the count)");
+    if (c.min < 2 || c.max < c.min || c.max > io::kAdvMaxSamplesPerPixel)
+        throw UsageError("--convergence: expected 2 <= MIN <= MAX <= " +
+                         std::to_string(io::kAdvMaxSamplesPerPixel) + ", found " +
+                         std::to_string(c.min) + "," + std::to_string(c.max));
+    if (!(c.threshold > 0) || !std::isfinite(c.threshold))
+        throw UsageError("--convergence: expected a THRESHOLD > 0");
+}
+
+}  // namespace
+
 void check_job(const TraceJob& job) {
     if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
     if (job.output_path.empty()) throw UsageError("no output cube: give -o CUBE");
@@ -191,6 +209,9 @@ void check_job(const TraceJob& job) {
         (*job.samples_per_pixel < 1 || *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
         throw UsageError("--samples-per-pixel: expected 1 to " +
                          std::to_string(io::kAdvMaxSamplesPerPixel));
+    if (job.standard_error && job.truth_path.empty())
+        throw UsageError("--standard-error: its layers are in the truth cube: give --truth FILE");
+    if (job.convergence) check_convergence(*job.convergence, job.samples_per_pixel.has_value());
     if (job.hemisphere_samples && *job.hemisphere_samples < 1)
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)
@@ -410,6 +431,12 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     options.row_begin = st.row_begin;
     options.row_end = st.row_end;
     options.truth = !job.truth_path.empty();
+    options.sampling_layers = options.truth && (job.standard_error || job.convergence);
+    if (job.convergence) {
+        options.convergence_min = job.convergence->min;
+        options.convergence_max = job.convergence->max;
+        options.convergence_threshold = job.convergence->threshold;
+    }
     options.meters_per_unit = io::meters_per_unit(st.adv.units);
     options.adjacency = job.adjacency;
     if (job.adjacency_radius_m) options.adjacency_radius_m = *job.adjacency_radius_m;
@@ -452,6 +479,13 @@ std::optional<GeoPlacement> geo_placement(const TraceJob& job, const Setup& st) 
                         io::meters_per_unit(st.adv.units), crs};
 }
 
+// What decides the truth cube's sampling layers (truth_layer_names).
+RenderOptions render_options_layers(const TraceJob& job) {
+    RenderOptions o;
+    o.sampling_layers = !job.truth_path.empty() && (job.standard_error || job.convergence);
+    return o;
+}
+
 // The radiance cube (one band per spectral sample, wavelengths, units, band names)
 // and the truth cube, each written atomically.
 void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
@@ -471,7 +505,7 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
                       job.write_options);
     if (job.truth_path.empty()) return;
     image::Image& truth = result.truth;
-    truth.channel_names = truth_layer_names(grid);
+    truth.channel_names = truth_layer_names(grid, render_options_layers(job));
     truth.wavelength_um.clear();
     truth.units.clear();
     truth.georef = georef;
@@ -510,8 +544,12 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
                   std::to_string(st.adv.columns) + " columns, " +
-                  std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
-                  sampling_name(job.sampling) + " sampling");
+                  (job.convergence ? "--convergence " + std::to_string(options.convergence_min) +
+                                         " to " + std::to_string(options.convergence_max) +
+                                         " sample(s) per pixel"
+                                   : std::to_string(options.samples_per_pixel) +
+                                         " sample(s) per pixel") +
+                  ", " + sampling_name(job.sampling) + " sampling");
     RenderResult result;
     {
         ProgressScope bar(reporter, "rendering");
