@@ -253,6 +253,57 @@ TEST_P(Chapter5, Case2bWithWhitesLobeAsStated) {
     EXPECT_NEAR(l, sun * kSolar + (kDiffuse + a_s) * kSky, 1e-5 + 4 * r.standard_error) << name(smp);
 }
 
+// White's own arithmetic, each formula of tables 5.1-5.4 as printed, against its printed
+// value (to half a unit of the last digit, the rounding of the print): the check of our
+// transcription, and the record of the two rows whose print does not follow from their
+// formula (table 5.1's diffuse row, case 4), and of cases 3b-3d, which are not rendered.
+TEST(Chapter5Arithmetic, EveryPrintedFormulaGivesItsPrintedValue) {
+    struct Row {
+        const char* name;
+        double formula, printed;
+        bool agrees;
+    };
+    const double s = kSolar, d = kSky, h = 0.02096;  // h: White's "half" downwelled
+    const Row rows[] = {
+        {"base", 0.1 * s + 0.125 * 0.16335 * d + 0.875 * 0.1 * d, 0.05680, true},
+        {"1 diffuse reflectance 0.11", 0.11 * s + 0.125 * 0.16335 * d + 0.875 * 0.11 * d, 0.06420,
+         false},
+        {"1 solar radiance 0.57509", 0.1 * 0.57509 + 0.125 * 0.16335 * d + 0.875 * 0.1 * d, 0.06203,
+         true},
+        {"1 specular lobe percent 0.1375", 0.1 * s + 0.1375 * 0.16335 * d + 0.8625 * 0.1 * d,
+         0.05684, true},
+        {"1 average specular reflectance 0.17969", 0.1 * s + 0.125 * 0.17969 * d + 0.875 * 0.1 * d,
+         0.05689, true},
+        {"1 downwelled radiance 0.04611",
+         0.1 * s + 0.125 * 0.16335 * 0.04611 + 0.875 * 0.1 * 0.04611, 0.05726, true},
+        {"2a no specular reflectance", 0.1 * (s + d), 0.05647, true},
+        {"2b sun in the specular direction", 0.25 * s + 0.125 * 0.16335 * d + 0.875 * 0.1 * d,
+         0.13523, true},
+        {"3a no downwelled radiance", 0.1 * s, 0.05228, true},
+        {"3b shape factor 0.5, sun not on the object",
+         0.1 * s + 0.5 * 0.1 * h + 2.0 / 16 * 0.16335 * 0.1 * h + 6.0 / 16 * 0.1 * 0.1 * h,
+         0.05345, true},
+        {"3c shape factor 0.5, object 0.1 sunlit",
+         0.1 * s + 0.1 * 0.1 * s + 0.5 * 0.1 * h + 0.5 * 0.1 * 0.1 * h + 1.0 / 16 * 0.16335 * h +
+             1.0 / 16 * 0.16335 * 0.1 * h,
+         0.05890, true},
+        {"3d shape factor 0.5, object 0.4 sunlit",
+         0.1 * s + 0.1 * 0.4 * s + 0.5 * 0.1 * h + 0.5 * 0.1 * 0.4 * h + 1.0 / 16 * 0.16335 * h +
+             1.0 / 16 * 0.16335 * 0.4 * h,
+         0.07496, true},
+        {"3e no reflectance at high zenith angles",
+         0.1 * s + 0.75 * 0.1 * d + 0.125 * 0.16335 * d, 0.05628, true},
+        {"4 high oblique view", 0.02 * s + 0.125 * 0.02633 * d + 0.875 * 0.02 * d, 0.01793, false},
+    };
+    for (const Row& r : rows) {
+        RecordProperty(std::string(r.name) + "|formula", std::to_string(r.formula));
+        if (r.agrees)
+            EXPECT_NEAR(r.formula, r.printed, 0.5e-5 + 1e-12) << r.name;
+        else
+            EXPECT_GT(std::abs(r.formula - r.printed), 1e-3) << r.name;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Sampling, Chapter5,
                          ::testing::Values(Sampling::Dirsig, Sampling::Golfball,
                                            Sampling::MonteCarlo),
