@@ -304,6 +304,73 @@ TEST(Chapter5Arithmetic, EveryPrintedFormulaGivesItsPrintedValue) {
     }
 }
 
+// Cases 3b-3d as a scene: the plate at the foot of a 1000 m wall (reflectance 0.1, or
+// 0.4 in 3d; Lambertian) that hides half the hemisphere, the pixels 1-5 cm from it (the
+// wall's top at 89.997 deg elevation). One bounce: a hemisphere ray that meets the wall
+// sees it lit by the sun and by the sky over half its view, (1 + cos(tilt))/2 = 1/2
+// (trace(1) RADIOMETRY), no ground (--background none): L_w = r_w (L/2 + E cos(i)/pi).
+// The closed form, White's lobe split by the wall like the hemisphere (montecarlo,
+// jittered golfball), or seen along the mirror ray, the zenith (dirsig):
+//   L = 0.1 A + 0.1 (L/2) + 0.1 (L_w/2) + a_s (L/2 + L_w/2)   [dirsig: a_s L]
+// 3b: the sun along the wall (it lights the plate, not the wall); 3c, 3d: the sun at 45
+// deg facing the wall (E cos(i)/pi = A on the wall too).
+double wall_case(double wall_r, bool sunlit, Sampling smp, test::MeanError& out) {
+    test::Mesh m;
+    m.quad({{{0, -1000, 0}, {1000, -1000, 0}, {1000, 1000, 0}, {0, 1000, 0}}}, 1);
+    m.quad({{{0, -1000, 0}, {0, 1000, 0}, {0, 1000, 1000}, {0, -1000, 1000}}}, 2);
+    const scene::Scene s = test::single(m.data);
+    MaterialOptics wall = radiometry::grey_material(2, wall_r, kWl.size());
+    const auto mats =
+        MaterialLibrary::from_optics({white_map(kDiffuse, kLobeShare, kLobeMean), wall});
+    const double es = kSolar * kPi / std::cos(rad(45)) / kBandWidthUm;
+    // Azimuth 90: the sun in the east (+x), facing the wall's face; 0: along the wall.
+    const auto atm = radiometry::Atmosphere::from_rads(
+        {radiometry::uniform_rad(kWl, 45, sunlit ? 90 : 0, es, kSky / kBandWidthUm, 1, 0,
+                                 {-89, 0, 89})},
+        {"chapter5.rad"});
+    test::Ortho cam(8, 8, 0.005, 0.01, 0, {0, 0, -1}, 50);
+    RenderInputs in;
+    in.scene = &s;
+    in.materials = &mats;
+    in.atmosphere = &atm;
+    in.sensor = &cam;
+    RenderOptions o;
+    o.sampling = smp;
+    o.golfball_jitter = true;
+    o.samples_per_pixel = 4;
+    o.hemisphere_samples = smp == Sampling::Golfball ? 256 : 2048;
+    o.adjacency = false;
+    o.bounces = 1;
+    o.background = BackgroundChoice::None;
+    o.threads = 1;
+    const test::MeanError e = test::first_channel_mean(render(in, o).radiance);
+    out = {e.mean * kBandWidthUm, e.standard_error * kBandWidthUm};
+    const double lw = wall_r * (kSky / 2 + (sunlit ? kSolar : 0));
+    const double a_s = kLobeShare * (kLobeMean - kDiffuse);
+    const double lobe = smp == Sampling::Dirsig ? a_s * kSky : a_s * (kSky / 2 + lw / 2);
+    return kDiffuse * kSolar + kDiffuse * kSky / 2 + kDiffuse * lw / 2 + lobe;
+}
+
+TEST_P(Chapter5, ShapeFactorCasesAsAScene) {
+    const Sampling smp = GetParam();
+    struct Row {
+        const char* name;
+        double wall_r;
+        bool sunlit;
+    };
+    for (const Row& r : {Row{"3b shape factor 0.5, sun not on the object", 0.1, false},
+                         Row{"3c shape factor 0.5, object 0.1 sunlit", 0.1, true},
+                         Row{"3d shape factor 0.5, object 0.4 sunlit", 0.4, true}}) {
+        test::MeanError e;
+        const double expected = wall_case(r.wall_r, r.sunlit, smp, e);
+        RecordProperty(std::string(r.name) + "|L", std::to_string(e.mean));
+        RecordProperty(std::string(r.name) + "|closed form", std::to_string(expected));
+        // One unit of the fifth decimal, as for the other cases, and 4 standard errors
+        // of the pixels' mean (montecarlo, jittered golf ball).
+        EXPECT_NEAR(e.mean, expected, 1e-5 + 4 * e.standard_error) << r.name << " " << name(smp);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Sampling, Chapter5,
                          ::testing::Values(Sampling::Dirsig, Sampling::Golfball,
                                            Sampling::MonteCarlo),
