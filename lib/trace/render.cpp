@@ -49,6 +49,8 @@ struct RowWorker {
     std::vector<double> sample;  // the last primary sample's radiance at the sensor
     std::vector<double> truth_acc;
     std::uint64_t sky = 0, background = 0;  // primary samples that left the scene
+    std::uint64_t samples = 0;  // primary samples of the worker's pixels
+    long max_samples = 0;
     MaterialTally materials;  // material_fraction layers
 };
 
@@ -244,6 +246,8 @@ void render_row(const TraceContext& c, RowWorker& w, long row, long out_row, Ren
         std::fill(w.truth_acc.begin(), w.truth_acc.end(), 0.0);
         w.materials.clear();
         const auto [spp, hits] = sample_pixel(c, w, buffers, centre, stats, row, col);
+        w.samples += static_cast<std::uint64_t>(spp);
+        w.max_samples = std::max(w.max_samples, spp);
         for (std::size_t k = 0; k < c.n; ++k)
             res.radiance.at(static_cast<int>(k), out_row, col) =
                 static_cast<float>(w.pixel[k] / static_cast<double>(spp));
@@ -366,6 +370,8 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
         res.stats.hits += k.hits;
         res.stats.sky_samples += w.sky;
         res.stats.background_samples += w.background;
+        res.stats.pixel_samples += w.samples;
+        res.stats.max_pixel_samples = std::max(res.stats.max_pixel_samples, w.max_samples);
     });
     res.stats.skipped = skipped(c);
     res.stats.background = c.background.description;

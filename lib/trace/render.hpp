@@ -88,6 +88,8 @@ struct RenderStats {
     std::uint64_t primary_rays = 0, secondary_rays = 0, shadow_rays = 0;
     std::uint64_t hits = 0;
     std::uint64_t sky_samples = 0, background_samples = 0;  // primary samples that left the scene
+    std::uint64_t pixel_samples = 0;  // primary samples over all pixels (--convergence: varies)
+    long max_pixel_samples = 0;       // the most one pixel took
     double seconds = 0;
     std::vector<std::string> skipped;  // what was not modelled, for --verbose
     std::string background;            // how the background world was made (world.hpp)

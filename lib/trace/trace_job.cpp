@@ -443,7 +443,7 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     return options;
 }
 
-void report_stats(const RenderStats& s, const Reporter& reporter) {
+void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
     const double mrays = s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6 : 0.0;
     reporter.info(std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) + " primary, " +
@@ -453,6 +453,11 @@ void report_stats(const RenderStats& s, const Reporter& reporter) {
                   " Mrays/s");
     if (!s.background.empty()) reporter.info(s.background);
     if (!s.bounces.empty()) reporter.info(s.bounces);
+    if (pixels > 0)
+        reporter.info(format("%.2f", static_cast<double>(s.pixel_samples) /
+                                         static_cast<double>(pixels)) +
+                      " primary sample(s) per pixel on average, at most " +
+                      std::to_string(s.max_pixel_samples));
     reporter.info(std::to_string(s.sky_samples) + " primary sample(s) saw the sky, " +
                   std::to_string(s.background_samples) + " the background world");
     for (const auto& skipped : s.skipped) reporter.info("not modelled: " + skipped);
@@ -558,7 +563,9 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     report.stats = result.stats;
     report.rows = result.radiance.rows;
     report.columns = result.radiance.columns;
-    report_stats(result.stats, reporter);
+    // With --convergence, what the pixels took (-v).
+    report_stats(result.stats, job.convergence ? result.radiance.rows * result.radiance.columns : 0,
+                 reporter);
     image::Georeference georef;
     if (place) {
         const std::optional<double> plane = options.background == BackgroundChoice::None

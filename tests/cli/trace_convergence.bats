@@ -70,3 +70,11 @@ trace_bad() {
     trace_bad "--convergence does not apply to --shadow-history" --shadow-history \
         --convergence 4,32,0.1 "$DATA/box.snd" "$GDB" "$DATA/box.mat" -o out.shd
 }
+
+@test "trace -v --convergence reports the samples the pixels took" {
+    run -0 --separate-stderr trace -v $(inputs) --sampling montecarlo --hemisphere-samples 8 \
+        --convergence 4,32,0.02 -o out.img
+    [[ "$stderr" == *"--convergence 4 to 32 sample(s) per pixel"* ]] || fail "stderr: $stderr"
+    [[ "$stderr" =~ trace:\ [0-9.]+\ primary\ sample\(s\)\ per\ pixel\ on\ average,\ at\ most\ (4|8|12|16|20|24|28|32)$'\n' ]] ||
+        fail "stderr: $stderr"
+}
