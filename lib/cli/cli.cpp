@@ -204,6 +204,25 @@ long double parse_number(const std::string& option, const std::string& text, con
     return value;
 }
 
+std::vector<long double> parse_number_list(const std::string& option, const std::string& text,
+                                           const std::vector<Range>& ranges,
+                                           const std::string& form) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (parts.size() != ranges.size())
+        throw UsageError(option + ": " + text + ": expected " + form);
+    std::vector<long double> values;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        values.push_back(parse_number(option, parts[i], ranges[i]));
+    return values;
+}
+
 double real(const po::variables_map& vm, const char* name) {
     return static_cast<double>(
         parse_number(std::string("--") + name, vm[name].as<std::string>(), Range{}));

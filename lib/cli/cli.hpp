@@ -90,6 +90,12 @@ Range seed_range();
 // before or after; NaN, infinities and values outside `range` are rejected.
 // Exact for integers up to 2^64 - 1. Throws UsageError "--top: inf: must be ...".
 long double parse_number(const std::string& option, const std::string& text, const Range& range);
+// Reads `text` as comma-separated numbers, one per range, each through parse_number
+// (e.g. --convergence 4,64,0.01); `form` names them ("MIN,MAX,THRESHOLD") in the usage
+// error for a wrong count: "--convergence: 4,64: expected MIN,MAX,THRESHOLD".
+std::vector<long double> parse_number_list(const std::string& option, const std::string& text,
+                                           const std::vector<Range>& ranges,
+                                           const std::string& form);
 
 struct ToolInfo {
     std::string name;     // binary name

@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <limits>
+#include <utility>
 
 #include "core/parallel.hpp"
 #include "trace/adjacency.hpp"
@@ -40,11 +43,14 @@ constexpr int kPerBand = 5;  // reflectance, solar, downwelled, upwelled, transm
 // One worker's state: its tracer and pixel accumulators.
 struct RowWorker {
     RowWorker(const TraceContext& c, std::size_t truth_layers)
-        : tracer(c), pixel(c.n), truth_acc(truth_layers) {}
+        : tracer(c), pixel(c.n), sample(c.n), truth_acc(truth_layers) {}
     Tracer tracer;
     std::vector<double> pixel;
+    std::vector<double> sample;  // the last primary sample's radiance at the sensor
     std::vector<double> truth_acc;
     std::uint64_t sky = 0, background = 0;  // primary samples that left the scene
+    std::uint64_t samples = 0;  // primary samples of the worker's pixels
+    long max_samples = 0;
     MaterialTally materials;  // material_fraction layers
 };
 
@@ -65,28 +71,32 @@ void add_miss(const TraceContext& c, RowWorker& w, const SampleBuffers& b, const
     const std::size_t n = c.n;
     if (d[2] > 0) {
         effective_sky(c, *c.in.sensor, d, b.leave, b.tau2, b.lus, b.lue);
-        for (std::size_t k = 0; k < n; ++k) w.pixel[k] += b.leave[k];
+        for (std::size_t k = 0; k < n; ++k) w.pixel[k] += (w.sample[k] = b.leave[k]);
         ++w.sky;
         if (c.opt.truth) w.truth_acc[kSky] += 1;
         return;
     }
-    if (background_distance(c.background, o, d) < 0) return;
+    if (background_distance(c.background, o, d) < 0) {
+        std::fill(w.sample.begin(), w.sample.end(), 0.0);
+        return;
+    }
     c.in.atmosphere->path(d, c.in.sensor->view_angle_deg(d), {b.tau2, n}, {b.lus, n}, {b.lue, n});
     const auto& l = c.background.radiance;
     for (std::size_t k = 0; k < n; ++k)
-        w.pixel[k] += b.tau2[k] * l[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0);
+        w.pixel[k] += (w.sample[k] = b.tau2[k] * l[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0));
     ++w.background;
     if (c.opt.truth) w.truth_acc[kBackground] += 1;
 }
 
-// Adds primary sample i of pixel (row, col) to the worker's accumulators; true on a
-// hit.
+// Adds primary sample i of pixel (row, col) to the worker's accumulators (its radiance
+// at the sensor also in w.sample), placed in stratum `stratum` of `strata` over the
+// pixel; true on a hit.
 bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
-                const std::vector<std::size_t>& centre, long row, long col, long i) {
+                const std::vector<std::size_t>& centre, long row, long col, long i,
+                long stratum, long strata) {
     const Sensor& cam = *c.in.sensor;
     const std::size_t n = c.n;
-    const long spp = std::max(1L, c.opt.samples_per_pixel);
-    auto off = stratified_offset(i, spp, uniform01(c.opt.seed, row, col, i, ~0ULL),
+    auto off = stratified_offset(stratum, strata, uniform01(c.opt.seed, row, col, i, ~0ULL),
                                  uniform01(c.opt.seed, row, col, i, ~1ULL));
     Vec3 o, d;
     cam.ray(static_cast<double>(row) + off[0], static_cast<double>(col) + off[1], o, d);
@@ -103,7 +113,7 @@ bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
     c.adjacency->add_path(va, b.lus);  // the environment's light scattered toward the sensor
     for (std::size_t k = 0; k < n; ++k) {
         double l = b.tau2[k] * b.leave[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0);
-        w.pixel[k] += l;
+        w.pixel[k] += (w.sample[k] = l);
     }
     if (!c.opt.truth) return true;
     std::vector<double>& t_acc = w.truth_acc;
@@ -152,8 +162,75 @@ void put_truth(const TraceContext& c, const std::vector<double>& truth_acc, long
     if (hits == 0) put(kViewAngle, cam.view_angle_deg(d));
 }
 
+// Per-band running mean and sum of squared deviations (Welford, 1962) of a pixel's
+// primary samples at the band-centre spectral sample: the sampling truth layers
+// (trace(1) --standard-error) and --convergence's stopping rule.
+struct SampleStats {
+    long n = 0;
+    std::vector<double> mean, m2;
+    void reset(std::size_t bands) {
+        n = 0;
+        mean.assign(bands, 0.0);
+        m2.assign(bands, 0.0);
+    }
+    void add(const std::vector<double>& sample, const std::vector<std::size_t>& centre) {
+        ++n;
+        for (std::size_t b = 0; b < centre.size(); ++b) {
+            const double x = sample[centre[b]], d = x - mean[b];
+            mean[b] += d / static_cast<double>(n);
+            m2[b] += d * (x - mean[b]);
+        }
+    }
+    // Standard error of the mean, sqrt(s^2 / n) with s^2 = m2 / (n - 1); -1 below 2 samples.
+    double standard_error(std::size_t b) const {
+        if (n < 2) return -1;
+        return std::sqrt(m2[b] / static_cast<double>(n - 1) / static_cast<double>(n));
+    }
+    // max over bands of standard error / |mean| (0 / 0 counts as 0, x / 0 as infinite).
+    double relative_error() const {
+        double worst = 0;
+        for (std::size_t b = 0; b < mean.size(); ++b) {
+            const double se = standard_error(b);
+            if (se < 0) return std::numeric_limits<double>::infinity();
+            if (se == 0) continue;
+            worst = std::max(worst, mean[b] == 0 ? std::numeric_limits<double>::infinity()
+                                                 : se / std::abs(mean[b]));
+        }
+        return worst;
+    }
+};
+
+// Primary samples of pixel (row, col): samples_per_pixel stratified over the pixel, or
+// with --convergence batches of MIN (each stratified on its own, its random numbers
+// those of the sample's index) until the relative standard error is under the
+// threshold or MAX samples are taken. Returns (samples, hits).
+std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
+                                   const std::vector<std::size_t>& centre, SampleStats& stats,
+                                   long row, long col) {
+    const RenderOptions& o = c.opt;
+    const bool track = o.sampling_layers || o.convergence_min > 0;
+    stats.reset(centre.size());
+    long hits = 0;
+    auto take = [&](long i, long stratum, long strata) {
+        if (add_sample(c, w, b, centre, row, col, i, stratum, strata)) ++hits;
+        if (track) stats.add(w.sample, centre);
+    };
+    if (o.convergence_min <= 0) {
+        const long spp = std::max(1L, o.samples_per_pixel);
+        for (long i = 0; i < spp; ++i) take(i, i, spp);
+        return {spp, hits};
+    }
+    long n = 0;
+    while (true) {
+        const long batch = std::min(o.convergence_min, o.convergence_max - n);
+        for (long j = 0; j < batch; ++j) take(n + j, j, batch);
+        n += batch;
+        if (n >= o.convergence_max || stats.relative_error() < o.convergence_threshold) break;
+    }
+    return {n, hits};
+}
+
 void render_row(const TraceContext& c, RowWorker& w, long row, long out_row, RenderResult& res) {
-    const long spp = std::max(1L, c.opt.samples_per_pixel);
     Arena& arena = w.tracer.arena();
     ArenaScope scope(arena);
     const SampleBuffers buffers{arena.take(), arena.take(), arena.take(), arena.take()};
@@ -161,20 +238,28 @@ void render_row(const TraceContext& c, RowWorker& w, long row, long out_row, Ren
     std::vector<std::size_t> centre;  // per band; small, once per row
     for (int b = 0; b < static_cast<int>(grid.band_count()); ++b)
         centre.push_back(grid.band_centre_sample(b));
+    // The sampling layers follow the material fractions (truth_layer_names).
+    const int sampling_first = static_cast<int>(truth_layer_names(grid).size());
+    SampleStats stats;
     for (long col = 0; col < c.in.sensor->columns(); ++col) {
         std::fill(w.pixel.begin(), w.pixel.end(), 0.0);
         std::fill(w.truth_acc.begin(), w.truth_acc.end(), 0.0);
         w.materials.clear();
-        long hits = 0;
-        for (long i = 0; i < spp; ++i)
-            if (add_sample(c, w, buffers, centre, row, col, i)) ++hits;
+        const auto [spp, hits] = sample_pixel(c, w, buffers, centre, stats, row, col);
+        w.samples += static_cast<std::uint64_t>(spp);
+        w.max_samples = std::max(w.max_samples, spp);
         for (std::size_t k = 0; k < c.n; ++k)
             res.radiance.at(static_cast<int>(k), out_row, col) =
                 static_cast<float>(w.pixel[k] / static_cast<double>(spp));
         if (!c.opt.truth) continue;
         put_truth(c, w.truth_acc, hits, spp, row, col, out_row, res.truth);
-        w.materials.put(spp, res.truth.channels - 2 * kMaterialFractionSlots, out_row, col,
+        w.materials.put(spp, sampling_first - 2 * kMaterialFractionSlots, out_row, col,
                         res.truth);
+        if (!c.opt.sampling_layers) continue;
+        res.truth.at(sampling_first, out_row, col) = static_cast<float>(spp);
+        for (std::size_t b = 0; b < centre.size(); ++b)
+            res.truth.at(sampling_first + 1 + static_cast<int>(b), out_row, col) =
+                static_cast<float>(stats.standard_error(b));
     }
 }
 
@@ -221,7 +306,7 @@ RenderResult empty_result(const RenderInputs& inputs, const RenderOptions& optio
     res.radiance.wavelength_um = grid.wavelength_um;
     res.radiance.units = "W cm-2 sr-1 um-1";
     if (options.truth) {
-        std::vector<std::string> names = truth_layer_names(grid);
+        std::vector<std::string> names = truth_layer_names(grid, options);
         res.truth = image::Image(rows, cam.columns(), static_cast<int>(names.size()));
         res.truth.channel_names = names;
     }
@@ -247,6 +332,15 @@ std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid)
              {"reflectance_", "solar_", "downwelled_", "upwelled_", "transmission_"})
             names.push_back(q + band);
     for (const auto& name : material_fraction_layer_names()) names.push_back(name);
+    return names;
+}
+
+std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid,
+                                           const RenderOptions& options) {
+    std::vector<std::string> names = truth_layer_names(grid);
+    if (!options.sampling_layers) return names;
+    names.push_back("samples");
+    for (const auto& band : grid.band_names) names.push_back("standard_error_" + band);
     return names;
 }
 
@@ -276,6 +370,8 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
         res.stats.hits += k.hits;
         res.stats.sky_samples += w.sky;
         res.stats.background_samples += w.background;
+        res.stats.pixel_samples += w.samples;
+        res.stats.max_pixel_samples = std::max(res.stats.max_pixel_samples, w.max_samples);
     });
     res.stats.skipped = skipped(c);
     res.stats.background = c.background.description;

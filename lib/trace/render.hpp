@@ -45,6 +45,17 @@ struct RenderOptions {
     unsigned threads = 0;              // 0: all cores
     long row_begin = 0, row_end = -1;  // [begin, end); -1: to the last row
     bool truth = false;
+    // With truth: the sampling layers after the others, "samples" (primary samples the
+    // pixel took) and one "standard_error_BAND" per band: the standard error of the
+    // pixel's mean radiance at the sensor, sqrt(s^2 / n) over its n primary samples at
+    // the band-centre spectral sample (-1 below 2 samples; trace(1) --standard-error).
+    bool sampling_layers = false;
+    // --convergence MIN,MAX,THRESHOLD: primary samples in batches of convergence_min
+    // (each batch stratified over the pixel on its own) until the largest relative
+    // standard error over the bands is under convergence_threshold, or
+    // convergence_max samples are taken; samples_per_pixel is then unused. 0: off.
+    long convergence_min = 0, convergence_max = 0;
+    double convergence_threshold = 0;
     BackgroundChoice background = BackgroundChoice::Mean;
     long background_material = 0;  // MATERIAL_ID, with BackgroundChoice::Material
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)
@@ -69,11 +80,16 @@ struct RenderInputs {
 // Names of the truth layers, in channel order (trace(1) TRUTH LAYERS). Reflectance
 // is one layer per band ("reflectance_BAND").
 std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid);
+// The same, with the sampling layers when options.sampling_layers.
+std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid,
+                                           const RenderOptions& options);
 
 struct RenderStats {
     std::uint64_t primary_rays = 0, secondary_rays = 0, shadow_rays = 0;
     std::uint64_t hits = 0;
     std::uint64_t sky_samples = 0, background_samples = 0;  // primary samples that left the scene
+    std::uint64_t pixel_samples = 0;  // primary samples over all pixels (--convergence: varies)
+    long max_pixel_samples = 0;       // the most one pixel took
     double seconds = 0;
     std::vector<std::string> skipped;  // what was not modelled, for --verbose
     std::string background;            // how the background world was made (world.hpp)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
@@ -158,6 +159,23 @@ std::pair<long, long> parse_rows(const std::string& text, const std::string& opt
     return {a, b};
 }
 
+namespace {
+
+// --convergence MIN,MAX,THRESHOLD: 2 <= MIN <= MAX <= the .adv's limit, 0 < THRESHOLD;
+// not with --samples-per-pixel (MIN and MAX set the count).
+void check_convergence(const Convergence& c, bool samples_per_pixel) {
+    if (samples_per_pixel)
+        throw UsageError("--convergence: not with --samples-per-pixel (MIN and MAX set the count)");
+    if (c.min < 2 || c.max < c.min || c.max > io::kAdvMaxSamplesPerPixel)
+        throw UsageError("--convergence: expected 2 <= MIN <= MAX <= " +
+                         std::to_string(io::kAdvMaxSamplesPerPixel) + ", found " +
+                         std::to_string(c.min) + "," + std::to_string(c.max));
+    if (!(c.threshold > 0) || !std::isfinite(c.threshold))
+        throw UsageError("--convergence: expected a THRESHOLD > 0");
+}
+
+}  // namespace
+
 void check_job(const TraceJob& job) {
     if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
     if (job.output_path.empty()) throw UsageError("no output cube: give -o CUBE");
@@ -191,6 +209,9 @@ void check_job(const TraceJob& job) {
         (*job.samples_per_pixel < 1 || *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
         throw UsageError("--samples-per-pixel: expected 1 to " +
                          std::to_string(io::kAdvMaxSamplesPerPixel));
+    if (job.standard_error && job.truth_path.empty())
+        throw UsageError("--standard-error: its layers are in the truth cube: give --truth FILE");
+    if (job.convergence) check_convergence(*job.convergence, job.samples_per_pixel.has_value());
     if (job.hemisphere_samples && *job.hemisphere_samples < 1)
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)
@@ -410,13 +431,19 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     options.row_begin = st.row_begin;
     options.row_end = st.row_end;
     options.truth = !job.truth_path.empty();
+    options.sampling_layers = options.truth && (job.standard_error || job.convergence);
+    if (job.convergence) {
+        options.convergence_min = job.convergence->min;
+        options.convergence_max = job.convergence->max;
+        options.convergence_threshold = job.convergence->threshold;
+    }
     options.meters_per_unit = io::meters_per_unit(st.adv.units);
     options.adjacency = job.adjacency;
     if (job.adjacency_radius_m) options.adjacency_radius_m = *job.adjacency_radius_m;
     return options;
 }
 
-void report_stats(const RenderStats& s, const Reporter& reporter) {
+void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     const std::uint64_t rays = s.primary_rays + s.secondary_rays + s.shadow_rays;
     const double mrays = s.seconds > 0 ? static_cast<double>(rays) / s.seconds / 1e6 : 0.0;
     reporter.info(std::to_string(rays) + " rays (" + std::to_string(s.primary_rays) + " primary, " +
@@ -426,6 +453,11 @@ void report_stats(const RenderStats& s, const Reporter& reporter) {
                   " Mrays/s");
     if (!s.background.empty()) reporter.info(s.background);
     if (!s.bounces.empty()) reporter.info(s.bounces);
+    if (pixels > 0)
+        reporter.info(format("%.2f", static_cast<double>(s.pixel_samples) /
+                                         static_cast<double>(pixels)) +
+                      " primary sample(s) per pixel on average, at most " +
+                      std::to_string(s.max_pixel_samples));
     reporter.info(std::to_string(s.sky_samples) + " primary sample(s) saw the sky, " +
                   std::to_string(s.background_samples) + " the background world");
     for (const auto& skipped : s.skipped) reporter.info("not modelled: " + skipped);
@@ -452,6 +484,13 @@ std::optional<GeoPlacement> geo_placement(const TraceJob& job, const Setup& st) 
                         io::meters_per_unit(st.adv.units), crs};
 }
 
+// What decides the truth cube's sampling layers (truth_layer_names).
+RenderOptions render_options_layers(const TraceJob& job) {
+    RenderOptions o;
+    o.sampling_layers = !job.truth_path.empty() && (job.standard_error || job.convergence);
+    return o;
+}
+
 // The radiance cube (one band per spectral sample, wavelengths, units, band names)
 // and the truth cube, each written atomically.
 void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
@@ -471,7 +510,7 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
                       job.write_options);
     if (job.truth_path.empty()) return;
     image::Image& truth = result.truth;
-    truth.channel_names = truth_layer_names(grid);
+    truth.channel_names = truth_layer_names(grid, render_options_layers(job));
     truth.wavelength_um.clear();
     truth.units.clear();
     truth.georef = georef;
@@ -510,8 +549,12 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
                   std::to_string(st.adv.columns) + " columns, " +
-                  std::to_string(options.samples_per_pixel) + " sample(s) per pixel, " +
-                  sampling_name(job.sampling) + " sampling");
+                  (job.convergence ? "--convergence " + std::to_string(options.convergence_min) +
+                                         " to " + std::to_string(options.convergence_max) +
+                                         " sample(s) per pixel"
+                                   : std::to_string(options.samples_per_pixel) +
+                                         " sample(s) per pixel") +
+                  ", " + sampling_name(job.sampling) + " sampling");
     RenderResult result;
     {
         ProgressScope bar(reporter, "rendering");
@@ -520,7 +563,9 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     report.stats = result.stats;
     report.rows = result.radiance.rows;
     report.columns = result.radiance.columns;
-    report_stats(result.stats, reporter);
+    // With --convergence, what the pixels took (-v).
+    report_stats(result.stats, job.convergence ? result.radiance.rows * result.radiance.columns : 0,
+                 reporter);
     image::Georeference georef;
     if (place) {
         const std::optional<double> plane = options.background == BackgroundChoice::None

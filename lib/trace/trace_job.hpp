@@ -16,6 +16,12 @@
 
 namespace sigchain::trace {
 
+// --convergence MIN,MAX,THRESHOLD (RenderOptions::convergence_*).
+struct Convergence {
+    long min = 0, max = 0;
+    double threshold = 0;  // relative standard error, e.g. 0.01
+};
+
 struct TraceJob {
     std::string adv_path;
     std::string snd_path;
@@ -45,6 +51,9 @@ struct TraceJob {
     // --crs: the map CRS of a geo-placed render: "" the CRS of the scene's first DEM
     // object (none: the render is not geo-placed), "none", "EPSG:N" or a WKT file.
     std::string crs;
+    // --standard-error: the truth cube's sampling layers (samples, standard_error_BAND).
+    bool standard_error = false;
+    std::optional<Convergence> convergence;  // --convergence; implies the sampling layers
 };
 
 // What happened, for -v: the scene's counts, the render's statistics.

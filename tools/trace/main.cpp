@@ -17,7 +17,7 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs"})
+                          "adjacency-radius", "co", "crs", "standard-error", "convergence"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -82,6 +82,15 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.adjacency = vm.count("no-adjacency") == 0;
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
     if (vm.count("crs")) job.crs = vm["crs"].as<std::string>();
+    job.standard_error = vm.count("standard-error") > 0;
+    if (vm.count("convergence")) {
+        const auto count = cli::integers(2, sigchain::io::kAdvMaxSamplesPerPixel);
+        const auto v = cli::parse_number_list("--convergence", vm["convergence"].as<std::string>(),
+                                              {count, count, cli::reals(0, 1, true)},
+                                              "MIN,MAX,THRESHOLD");
+        job.convergence = trace::Convergence{static_cast<long>(v[0]), static_cast<long>(v[1]),
+                                             static_cast<double>(v[2])};
+    }
     return job;
 }
 
@@ -127,7 +136,11 @@ int main(int argc, char** argv) {
         "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
         "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT\n"
         "                    FILE; none: write no georeferencing)")(
-        "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead");
+        "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
+        "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
+        "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),
+        "primary samples in batches of MIN until the relative standard error\n"
+        "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)");
     tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
     tool.add_number("hemisphere-samples", "N", cli::integers(1, 1000000),

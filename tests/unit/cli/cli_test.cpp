@@ -189,6 +189,27 @@ TEST(ParseNumber, SeedsAreExactUpTo2To64) {
     EXPECT_THROW(cli::parse_number("--seed", "-1", cli::seed_range()), UsageError);
 }
 
+TEST(ParseNumber, ListsReadEachNumberAgainstItsRange) {
+    const std::vector<cli::Range> r{cli::integers(2, 64), cli::integers(2, 64),
+                                    cli::reals(0, 1, true)};
+    const auto v = cli::parse_number_list("--convergence", "4,32,0.01", r, "MIN,MAX,THRESHOLD");
+    ASSERT_EQ(v.size(), 3u);
+    EXPECT_EQ(v[1], 32.0L);
+    EXPECT_EQ(v[2], static_cast<long double>(0.01));
+    const auto message = [&](const std::string& text) -> std::string {
+        try {
+            cli::parse_number_list("--convergence", text, r, "MIN,MAX,THRESHOLD");
+        } catch (const UsageError& e) {
+            return e.what();
+        }
+        return "accepted";
+    };
+    EXPECT_EQ(message("4,32"), "--convergence: 4,32: expected MIN,MAX,THRESHOLD");
+    EXPECT_EQ(message("4,32,0.1,"), "--convergence: 4,32,0.1,: expected MIN,MAX,THRESHOLD");
+    EXPECT_EQ(message("4,,0.1"), "--convergence: : must be an integer from 2 to 64");
+    EXPECT_EQ(message("4,32,0"), "--convergence: 0: must be a number > 0 and <= 1");
+}
+
 // The message of each rejected value: "--OPTION: VALUE: must be RANGE".
 std::string rejection(const std::string& text, const cli::Range& range) {
     try {
