@@ -23,4 +23,10 @@ bool render_rows(const RenderInputs& inputs, const RenderOptions& options,
 // without SIGCHAIN_MPI.
 bool distributed_worker();
 
+// The tiles of a farm of `workers` workers over `rows` rows: about 4 per worker, so
+// that a slow tile is balanced by the others, more when a tile's floats would exceed
+// `max_tile_bytes` (one message), at most one per row (MPI builds; documented in
+// trace(1), MPI). `bytes_per_row`: the cube's and truth's floats of one row.
+long farm_tiles(long rows, long workers, double bytes_per_row, double max_tile_bytes);
+
 }  // namespace sigchain::trace

@@ -77,7 +77,8 @@ void check_job(const TraceJob& job);
 
 // Runs the job: reads every input, validates the scene against the materials,
 // renders and writes the cube (and the truth cube) atomically; a part (--rows, --tile)
-// records its rows, inputs and options (part.hpp). Throws UsageError
+// records its rows, inputs and options (part.hpp). Under mpirun (SIGCHAIN_MPI builds)
+// the rows are farmed out to the ranks (distributed.hpp) and rank 0 alone writes. Throws UsageError
 // (a --rows range outside the image, a .rad count that is not the .snd's band count),
 // DataError/IoError naming the file and line for bad inputs. Warnings and the -v
 // details go to `reporter`, the render's progress as "rendering".
