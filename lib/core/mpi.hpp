@@ -1,4 +1,4 @@
-// The message transport of trace's tile farm (lib/trace/distributed_mpi.cpp): MPI's
+// The message transport of the farm over MPI ranks (lib/core/farm_mpi.cpp): MPI's
 // set-up, byte messages between ranks, and the job's abort. Built only with
 // SIGCHAIN_MPI (CMake finds MPI: Open MPI on Debian 12); nothing else includes it.
 // Thread-safety: MPI is initialised with MPI_THREAD_FUNNELED, so only the thread that

@@ -1,10 +1,10 @@
 // The image loop over one process or many: in one process render() does the rows; a
 // trace built with SIGCHAIN_MPI and started by mpirun (or srun) farms row tiles out to
-// its ranks instead (trace(1), MPI). Rank 0 hands out tiles dynamically, one at a time
-// to whichever worker asks, and gathers them; each worker renders its tile with its own
-// threads. A tile's rows are exactly those rows of the whole image (render() depends
-// only on the seed and the options), so the gathered cube is bit-identical to a
-// one-process render for every rank and thread count.
+// its ranks instead (core/farm.hpp; trace(1), MPI). Rank 0 hands out tiles dynamically,
+// one at a time to whichever worker asks, and gathers them; each worker renders its
+// tile with its own threads. A tile's rows are exactly those rows of the whole image
+// (render() depends only on the seed and the options), so the gathered cube is
+// bit-identical to a one-process render for every rank and thread count.
 #pragma once
 
 #include "core/report.hpp"
@@ -18,15 +18,8 @@ namespace sigchain::trace {
 bool render_rows(const RenderInputs& inputs, const RenderOptions& options,
                  const Reporter& reporter, RenderResult& result);
 
-// Whether this process is an MPI worker (a rank other than 0 of a job of more than one
-// rank), known before MPI is set up (from the launcher's environment). Always false
-// without SIGCHAIN_MPI.
+// Whether this process is an MPI worker (farm_worker: a rank other than 0 of a job of
+// more than one rank), known before MPI is set up. Always false without SIGCHAIN_MPI.
 bool distributed_worker();
-
-// The tiles of a farm of `workers` workers over `rows` rows: about 4 per worker, so
-// that a slow tile is balanced by the others, more when a tile's floats would exceed
-// `max_tile_bytes` (one message), at most one per row (MPI builds; documented in
-// trace(1), MPI). `bytes_per_row`: the cube's and truth's floats of one row.
-long farm_tiles(long rows, long workers, double bytes_per_row, double max_tile_bytes);
 
 }  // namespace sigchain::trace

@@ -1,4 +1,4 @@
-# Tests: trace
+# Tests: trace therm
 # Also requires: mpirun (Open MPI), a build with SIGCHAIN_MPI
 #
 # trace under mpirun (trace(1), MPI): rank 0 hands out row tiles to the other ranks and
@@ -89,4 +89,22 @@ mpi_trace() {
     [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
     [[ "$stderr" == *"trace: "*"material 37 is not in the material file"* ]] || fail "$stderr"
     [ ! -e out.img ]
+}
+
+@test "therm under mpirun -np 3: the .tmp is byte for byte the one-process .tmp" {
+    local in=("$SEED/box_on_plane.shd" "$SEED/weather_30_Sep_95.wth"
+        "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/box_on_plane.gdb"
+        "$SEED/hawkeye.snd")
+    run -0 --separate-stderr therm -q "${in[@]}" -o one.tmp
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/therm" -q --threads 1 "${in[@]}" -o np3.tmp
+    assert_success
+    assert_equal "$stderr" ''
+    run -0 cmp np3.tmp one.tmp
+    # Standard input is read by rank 0 alone: refused.
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 2 \
+        "$SIGCHAIN_BIN/therm" -q - "${in[@]:1}" -o in.tmp < "${in[0]}"
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
+    [[ "$stderr" == *"therm: standard input cannot be read under mpirun"* ]] || fail "$stderr"
+    [ ! -e in.tmp ]
 }
