@@ -7,6 +7,7 @@
 
 #include "core/digest.hpp"
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/tile.hpp"
 
 namespace sigchain {
@@ -39,6 +40,21 @@ TEST(Tile, RoundingIsTheDocumentedFloor) {
     // No overflow for huge counts: K * R would overflow 64 bits.
     const long big = 4'000'000'000'000'000'000L;
     EXPECT_EQ(Tile({999999, 1000000}).range(big).second, big / 1000000 * 999999);
+}
+
+// The farm's part rule (trace(1), MPI): 4 parts per worker, more when a part's bytes
+// would pass the message limit, at most one per item, at least one.
+TEST(FarmParts, FourPerWorkerWithinTheItems) {
+    EXPECT_EQ(farm_parts(16, 2, 100), 8);      // the -np 3 case of tests/cli/mpi.bats
+    EXPECT_EQ(farm_parts(16, 5, 100), 16);     // 20 wanted, 16 rows
+    EXPECT_EQ(farm_parts(6, 2, 24), 6);        // therm: 6 facets
+    EXPECT_EQ(farm_parts(1000, 0, 100), 4);    // no worker counts as one
+    EXPECT_EQ(farm_parts(0, 3, 100), 1);
+    // 1000 rows of 10 MB: 10 GB in parts of at most 1 GiB -> 10 parts, not 4.
+    EXPECT_EQ(farm_parts(1000, 1, 1e7), 10);
+    EXPECT_EQ(farm_parts(1000, 1, 1e7, 1e8), 100);
+    // A single row above the limit still makes one part per row.
+    EXPECT_EQ(farm_parts(3, 1, 2e9), 3);
 }
 
 TEST(Digest, KnownSha256Values) {
