@@ -108,3 +108,15 @@ mpi_trace() {
     [[ "$stderr" == *"therm: standard input cannot be read under mpirun"* ]] || fail "$stderr"
     [ ! -e in.tmp ]
 }
+
+@test "trace --shadow-history under mpirun -np 3: the .shd is byte for byte the one-process .shd" {
+    # box_on_plane.mat of the therm tests beside the .ems it names.
+    cp "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/fall_grass.ems" .
+    local in=("$SEED/hawkeye.snd" "$SEED/box_on_plane.gdb" box_on_plane.mat)
+    run -0 --separate-stderr trace --shadow-history -q --points-per-facet 4 "${in[@]}" -o one.shd
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/trace" --shadow-history -q --threads 1 --points-per-facet 4 "${in[@]}" \
+        -o np3.shd
+    assert_success
+    run -0 cmp np3.shd one.shd
+}
