@@ -1,4 +1,4 @@
-# Tests: trace therm
+# Tests: trace therm build_radiance
 # Also requires: mpirun (Open MPI), a build with SIGCHAIN_MPI
 #
 # trace under mpirun (trace(1), MPI): rank 0 hands out row tiles to the other ranks and
@@ -119,4 +119,15 @@ mpi_trace() {
         -o np3.shd
     assert_success
     run -0 cmp np3.shd one.shd
+}
+
+@test "build_radiance under mpirun -np 3: the .rad tables are byte for byte one process's" {
+    local quick=(--streams 8 --sky-zenith-step 15 --sky-azimuth-step 30 --sky-subsamples 1)
+    local in=("$GOLDEN/control7/hawkeye.cdk" "$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance/small.snd")
+    run -0 --separate-stderr build_radiance -q "${quick[@]}" "${in[@]}" -o 'one-%d.rad'
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/build_radiance" -q --threads 1 "${quick[@]}" "${in[@]}" -o 'np3-%d.rad'
+    assert_success
+    run -0 cmp np3-1.rad one-1.rad
+    run -0 cmp np3-2.rad one-2.rad
 }
