@@ -64,7 +64,9 @@ struct WriteOptions {
     // More provenance items, KEY (lowercase words joined by '_') and VALUE: ENVI header
     // items "sigchain KEY" (underscores as spaces), GeoTIFF dataset metadata SIGCHAIN_KEY
     // (upper case); a part of a whole records its rows, inputs and options (cube(5), Parts).
-    std::vector<std::pair<std::string, std::string>> items;
+    // (A default member initializer: aggregate initializations that stop at `command`
+    // stay warning-free.)
+    std::vector<std::pair<std::string, std::string>> items{};
 };
 
 // What a cube records of how it was made (cube(5), Provenance and Parts), as read back.

@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         trace::TraceJob job = trace_job(vm);
-        job.write_options = {cli::creation_options(vm), ctx.command(), {}};
+        job.write_options = {cli::creation_options(vm), ctx.command()};
         job.part_options = cli::part_options(ctx.command_args(), {"--tile", "--rows", "--truth"});
         if (!job.output_path.empty())
             sigchain::image::check_write_options(job.output_path, job.write_options);
