@@ -44,15 +44,14 @@ Message take(const MPI_Status& probe) {
 
 }  // namespace
 
-// Open MPI: OMPI_COMM_WORLD_*; MPICH and Slurm's PMI: PMI_*; PMIx (srun --mpi=pmix): PMIX_RANK
-// with the size in OMPI_ or PMI_ variables.
+// Open MPI's mpirun: OMPI_COMM_WORLD_SIZE and _RANK; MPICH's Hydra: PMI_SIZE and PMI_RANK.
 int launched_size() {
-    const int n = env_int({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS"});
+    const int n = env_int({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"});
     return n > 0 ? n : 1;
 }
 
 int launched_rank() {
-    const int r = env_int({"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"});
+    const int r = env_int({"OMPI_COMM_WORLD_RANK", "PMI_RANK"});
     return r > 0 ? r : 0;
 }
 

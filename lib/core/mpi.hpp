@@ -11,9 +11,10 @@
 
 namespace sigchain::mpi {
 
-// Whether an MPI launcher started this process (mpirun/mpiexec of Open MPI, or a
-// PMI/PMIx launcher such as srun): its environment names the job's size. A process
-// started by hand is not, and runs as it would without MPI.
+// Whether an MPI launcher started this process: Open MPI's mpirun/mpiexec
+// (OMPI_COMM_WORLD_SIZE) or MPICH's Hydra (PMI_SIZE) name the job's size in its
+// environment. A process started by hand, or by a direct srun launch under PMIx
+// (which sets neither), is not, and runs as it would without MPI.
 bool launched();
 // This process's rank and the job's size as the launcher's environment gives them
 // (before MPI is set up; 0 and 1 when not launched).

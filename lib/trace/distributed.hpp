@@ -1,5 +1,5 @@
 // The image loop over one process or many: in one process render() does the rows; a
-// trace built with SIGCHAIN_MPI and started by mpirun (or srun) farms row tiles out to
+// trace built with SIGCHAIN_MPI and started by mpirun farms row tiles out to
 // its ranks instead (core/farm.hpp; trace(1), MPI). Rank 0 hands out tiles dynamically,
 // one at a time to whichever worker asks, and gathers them; each worker renders its
 // tile with its own threads. A tile's rows are exactly those rows of the whole image
