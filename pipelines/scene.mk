@@ -42,6 +42,7 @@ SHADOW         ?= $(SIGCHAIN_BIN)/trace --shadow-history
 THERM          ?= $(SIGCHAIN_BIN)/therm
 SENSORIZE      ?= $(SIGCHAIN_BIN)/sensorize
 COMPARE        ?= $(SIGCHAIN_BIN)/compare
+MERGE_TILES    ?= $(SIGCHAIN_BIN)/merge_tiles
 
 ## Options per stage (the tools' warnings show; -q in a FLAGS variable hides them) ---
 CONTROL7_FLAGS       ?=
@@ -241,20 +242,11 @@ $(OUT)/$(NAME).tile-%.img $(OUT)/$(NAME).tile-%.hdr: $(TRACE_INPUTS) $(MAT_FILES
   $(TRACE_TMP) $(call CMD_STAMP,trace)
 	$(call trace_cube,$(OUT)/$(NAME).tile-$*.img,--rows $$(($* * $(ROWS) / $(TILES))):$$((($* + 1) * $(ROWS) / $(TILES))))
 
-## Merge the tiles (trace(1), EXAMPLES): the cube is band-sequential float32, so for
-## each band in turn append that band's plane of every tile, in row order; the
-## header is tile 0's with all the rows, its recorded command (cube(5), Provenance)
-## that of an untiled render: without --rows, -o NAME.img (the pattern says --[r]ows so
-## that the echoed recipe is not counted as a render by tests/cli/pipeline.bats).
-$(CUBE) $(basename $(CUBE)).hdr &: $(TILE_IMGS)
-	set -e; hdr=$(OUT)/$(NAME).tile-0.hdr; \
-	cols=$$(sed -n 's/^samples *= *//p' $$hdr); nb=$$(sed -n 's/^bands *= *//p' $$hdr); \
-	: > $(CUBE).tmp.$$$$; b=0; while [ $$b -lt $$nb ]; do for t in $(TILE_IDS); do \
-	  r=$$(( (t + 1) * $(ROWS) / $(TILES) - t * $(ROWS) / $(TILES) )); \
-	  dd if=$(OUT)/$(NAME).tile-$$t.img bs=$$((cols * 4)) skip=$$((b * r)) count=$$r \
-	    status=none >> $(CUBE).tmp.$$$$; done; b=$$((b + 1)); done; \
-	sed -e 's/^lines *=.*/lines   = $(ROWS)/' -e 's/ --[r]ows [0-9]*:[0-9]*//' \
-	  -e 's/\.tile-0\.img}$$/.img}/' $$hdr > $(basename $(CUBE)).hdr; mv -f $(CUBE).tmp.$$$$ $(CUBE)
+## Merge the tiles with merge_tiles(1): it checks that they come from one render (the
+## same inputs, options and sigchain; every row once) and writes the cube bit-identical
+## to an untiled render, its recorded command that of an untiled render.
+$(CUBE) $(basename $(CUBE)).hdr &: $(TILE_IMGS) $(call CMD_STAMP,trace)
+	$(MERGE_TILES) -q $(TILE_IMGS) -o $(CUBE)
 endif
 
 ifneq ($(CARDS_GDB),)

@@ -5,13 +5,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
 #include <numbers>
+#include <type_traits>
 
 #include "atmos/deck_options.hpp"
 #include "atmos/radiance_directions.hpp"
 #include "atmos/radiance_sample.hpp"
 #include "atmos/solar_spectrum.hpp"
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/parallel.hpp"
 #include "core/text.hpp"
 #include "geo/solar_position.hpp"
@@ -131,17 +136,109 @@ std::vector<double> sample_wavenumbers(const io::Snd& snd) {
     return nus;
 }
 
-// Every sample is independent: solved on worker threads, each writing its own slot.
-std::vector<SampleResult> solve_samples(const SampleSetup& setup, const std::vector<double>& nus,
-                                        const Reporter& reporter) {
-    std::vector<SampleResult> results(nus.size());
+// A part of the samples' results as bytes (the farm's message): per sample its fixed
+// fields, then its series, each with its length.
+void put_bytes(FarmBytes& out, const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    out.insert(out.end(), p, p + n);
+}
+template <class T>
+void put_series(FarmBytes& out, const std::vector<T>& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto n = static_cast<std::uint64_t>(v.size());
+    put_bytes(out, &n, sizeof n);
+    put_bytes(out, v.data(), sizeof(T) * v.size());
+}
+struct Reader {
+    const FarmBytes& bytes;
+    std::size_t at = 0;
+    void take(void* to, std::size_t n) {
+        if (at + n > bytes.size()) throw IoError("MPI: a malformed part of spectral samples");
+        std::memcpy(to, bytes.data() + at, n);
+        at += n;
+    }
+    template <class T>
+    std::vector<T> series() {
+        std::uint64_t n = 0;
+        take(&n, sizeof n);
+        std::vector<T> v(static_cast<std::size_t>(n));
+        take(v.data(), sizeof(T) * v.size());
+        return v;
+    }
+};
+struct SampleScalars {
+    io::RadSample sample;
+    double ground_irradiance, spherical_albedo, diffuse_down;
+    std::uint8_t thermal;
+};
+
+FarmBytes pack(const SampleResult* r, long count) {
+    FarmBytes out;
+    for (long i = 0; i < count; ++i, ++r) {
+        const SampleScalars s{r->sample, r->ground_irradiance, r->spherical_albedo,
+                              r->diffuse_down, static_cast<std::uint8_t>(r->thermal)};
+        put_bytes(out, &s, sizeof s);
+        put_series(out, r->path);
+        for (const auto* v : {&r->ls, &r->le, &r->us, &r->ue, &r->diffuse_up}) put_series(out, *v);
+    }
+    return out;
+}
+
+void unpack(const FarmBytes& bytes, SampleResult* r, long count) {
+    Reader in{bytes};
+    for (long i = 0; i < count; ++i, ++r) {
+        SampleScalars s;
+        in.take(&s, sizeof s);
+        r->sample = s.sample;
+        r->ground_irradiance = s.ground_irradiance;
+        r->spherical_albedo = s.spherical_albedo;
+        r->diffuse_down = s.diffuse_down;
+        r->thermal = s.thermal != 0;
+        r->path = in.series<io::RadPathSample>();
+        for (auto* v : {&r->ls, &r->le, &r->us, &r->ue, &r->diffuse_up}) *v = in.series<double>();
+    }
+    if (in.at != bytes.size()) throw IoError("MPI: a malformed part of spectral samples");
+}
+
+// Every sample is independent: solved on worker threads, each writing its own slot;
+// under mpirun parts of the samples go to the ranks (core/farm.hpp), gathered on rank 0.
+// Returns false on an MPI worker, which has no results.
+bool solve_samples(const SampleSetup& setup, const std::vector<double>& nus,
+                   const Reporter& reporter, std::vector<SampleResult>& results) {
+    results.assign(nus.size(), {});
     const ProgressScope bar(reporter, "spectral samples");
-    parallel_for(static_cast<long>(nus.size()), {setup.options.threads, bar.callback()},
-                 [&](long i, unsigned) {
-                     const auto k = static_cast<std::size_t>(i);
-                     results[k] = solve_sample(setup, nus[k]);
-                 });
-    return results;
+    const auto solve = [&](long begin, long end, SampleResult* out,
+                           const std::function<void(long, long)>& progress) {
+        parallel_for(end - begin, {setup.options.threads, progress}, [&](long i, unsigned) {
+            out[i] = solve_sample(setup, nus[static_cast<std::size_t>(begin + i)]);
+        });
+    };
+    const long n = static_cast<long>(nus.size());
+    FarmJob job;
+    job.items = n;
+    job.parts = farm_parts(n, farm_workers(), 1e5);  // a sample's grids: kB, not GB
+    job.compute = [&](long begin, long end) {
+        std::vector<SampleResult> part(static_cast<std::size_t>(end - begin));
+        solve(begin, end, part.data(), {});
+        return pack(part.data(), end - begin);
+    };
+    const auto progress = bar.callback();
+    long done = 0;
+    job.gather = [&](long begin, long end, const FarmBytes& bytes) {
+        unpack(bytes, results.data() + begin, end - begin);
+        done += end - begin;
+        if (progress) progress(done, n);
+    };
+    switch (n > 0 ? run_farm(job) : FarmRole::Alone) {
+        case FarmRole::Alone:
+            solve(0, n, results.data(), progress);
+            return !farm_worker();
+        case FarmRole::Lead:
+            return true;
+        case FarmRole::Worker:
+            return false;
+    }
+    return true;
 }
 
 // The sky and upwelled grids without their samples.
@@ -313,8 +410,8 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         rep.notes.push_back("SALB " + format_number(run.card1.surface_albedo) +
                             ": the sky includes the ground's reflection; no COUPLING terms "
                             "(trace would add its own ground to the sky a second time)");
-    const std::vector<SampleResult> results =
-        solve_samples(setup, sample_wavenumbers(snd), reporter);
+    std::vector<SampleResult> results;
+    if (!solve_samples(setup, sample_wavenumbers(snd), reporter, results)) return {};
 
     const Profile& prof = column.profile();
     const double height_km = prof.z_km[column.sensor_level()] - prof.bottom_km();

@@ -8,6 +8,7 @@
 #include "atmos/tape7_radiance.hpp"
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/output.hpp"
 #include "core/text.hpp"
 #include "io/cdk.hpp"
@@ -82,8 +83,13 @@ std::vector<std::string> band_output_paths(const std::string& pattern, const io:
     return paths;
 }
 
-void run(const BuildRadianceJob& job, const Reporter& reporter) {
+void run(const BuildRadianceJob& job, const Reporter& job_reporter) {
     check_job(job);
+    // MPI ranks other than 0 read the same inputs: only rank 0 reports and writes.
+    const Reporter silent;
+    const Reporter& reporter = farm_worker() ? silent : job_reporter;
+    if (farm_available() && (job.cdk_path == "-" || job.snd_path == "-"))
+        throw UsageError("standard input cannot be read under mpirun: every rank reads the inputs");
     const auto deck = io::read_cdk_file(job.cdk_path);
     const auto snd = io::read_snd_file(job.snd_path);
     const std::vector<std::string> paths = job.write_decks_dir.empty()
@@ -97,7 +103,10 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     o.snd_path = job.snd_path;
     o.cdk_path = job.cdk_path;
 
-    if (!job.write_decks_dir.empty()) return write_decks(job, deck, snd, o, reporter);
+    if (!job.write_decks_dir.empty()) {
+        if (farm_worker()) return;  // under mpirun rank 0 alone writes the decks
+        return write_decks(job, deck, snd, o, reporter);
+    }
     long total = 0;
     for (const auto& b : snd.bands) total += b.sample_count();
     const auto start = std::chrono::steady_clock::now();
@@ -109,8 +118,10 @@ void run(const BuildRadianceJob& job, const Reporter& reporter) {
     } else {
         RadianceReport report;
         rads = build_radiance(deck, snd, o, &report, reporter);
+        if (farm_worker()) return;  // an MPI worker: rank 0 writes the tables
         report_tables(report, reporter);
     }
+    if (farm_worker()) return;  // an MPI worker (or a TAPE7 run under mpirun): rank 0 writes
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The bands appear together or not at all (commit_together, sigchain(7) OUTPUTS).

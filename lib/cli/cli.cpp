@@ -255,6 +255,10 @@ void Cli::add_creation_option() {
 
 void Cli::add_strict_option(const char* help) { m_options.add_options()("strict", help); }
 
+void Cli::add_tile_option(const char* help) {
+    m_options.add_options()("tile", po::value<std::string>()->value_name("K/N"), help);
+}
+
 void Cli::print_help() const {
     std::cout << "Usage: " << m_info.name << ' ' << m_info.usage << "\n"
               << m_info.purpose << "\n\n";
@@ -287,6 +291,7 @@ int Cli::run(int argc, char** argv,
         install_output_signal_handlers();
         Context ctx(tool, verbosity, vm.count("progress") > 0 || stderr_is_terminal());
         ctx.set_command(provenance_command(argc, argv));
+        ctx.set_command_args(provenance_args(argc, argv));
         return body(vm, ctx);
     } catch (const po::error& e) {
         std::cerr << tool << ": " << e.what() << "\nTry '" << tool << " --help'.\n";
@@ -333,6 +338,27 @@ bool strict(const po::variables_map& vm) { return vm.count("strict") > 0; }
 
 std::vector<std::string> creation_options(const po::variables_map& vm) { return args(vm, "co"); }
 
+Tile parse_tile(const std::string& text) {
+    const auto slash = text.find('/');
+    const std::string what = "--tile: expected K/N (part K of N, 1 <= K <= N), found '" + text + "'";
+    if (slash == std::string::npos) throw UsageError(what);
+    const Range counts = integers(1, 1000000);
+    Tile tile;
+    try {
+        tile.index = static_cast<long>(parse_number("--tile", text.substr(0, slash), counts));
+        tile.count = static_cast<long>(parse_number("--tile", text.substr(slash + 1), counts));
+    } catch (const UsageError&) {
+        throw UsageError(what);
+    }
+    if (tile.index > tile.count) throw UsageError(what);
+    return tile;
+}
+
+std::optional<Tile> tile(const po::variables_map& vm) {
+    if (!vm.count("tile")) return std::nullopt;
+    return parse_tile(vm["tile"].as<std::string>());
+}
+
 SceneInputOptions scene_input(const po::variables_map& vm) {
     SceneInputOptions o;
     auto text = [&](const char* name) {
@@ -355,8 +381,9 @@ std::string base_name(const std::string& arg) {
 
 }  // namespace
 
-std::string provenance_command(int argc, const char* const* argv) {
-    std::string command = argc > 0 ? base_name(argv[0]) : std::string();
+std::vector<std::string> provenance_args(int argc, const char* const* argv) {
+    std::vector<std::string> out;
+    if (argc > 0) out.push_back(base_name(argv[0]));
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--threads") {
@@ -367,12 +394,43 @@ std::string provenance_command(int argc, const char* const* argv) {
             arg == "--verbose" || arg == "--progress")
             continue;
         const auto eq = arg.find('=');
-        if (arg.rfind("--", 0) == 0 && eq != std::string::npos)
-            command += ' ' + arg.substr(0, eq + 1) + base_name(arg.substr(eq + 1));
+        // --tile K/N holds a '/' but no path.
+        if (arg.rfind("--tile=", 0) == 0 || (!out.empty() && out.back() == "--tile"))
+            out.push_back(arg);
+        else if (arg.rfind("--", 0) == 0 && eq != std::string::npos)
+            out.push_back(arg.substr(0, eq + 1) + base_name(arg.substr(eq + 1)));
         else
-            command += ' ' + base_name(arg);
+            out.push_back(base_name(arg));
     }
+    return out;
+}
+
+std::string provenance_command(int argc, const char* const* argv) {
+    std::string command;
+    for (const std::string& arg : provenance_args(argc, argv))
+        command += (command.empty() ? "" : " ") + arg;
     return command;
+}
+
+std::string part_options(const std::vector<std::string>& args,
+                         const std::vector<std::string>& part_options) {
+    std::vector<std::string> dropped = part_options;
+    dropped.insert(dropped.end(), {"-o", "--output"});
+    std::string out;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        bool drop = arg.rfind("-o", 0) == 0 && arg.size() > 2 && arg[1] == 'o';  // -oFILE
+        for (const std::string& o : dropped) {
+            if (arg == o) {
+                drop = true;
+                ++i;  // and its value
+            } else if (arg.rfind(o + "=", 0) == 0) {
+                drop = true;
+            }
+        }
+        if (!drop) out += (out.empty() ? "" : " ") + arg;
+    }
+    return out;
 }
 
 }  // namespace sigchain::cli

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/report.hpp"
+#include "core/tile.hpp"
 
 namespace sigchain::cli {
 
@@ -43,12 +44,16 @@ public:
     // The command line as outputs record it (provenance_command); set by Cli::run.
     const std::string& command() const { return m_command; }
     void set_command(std::string command) { m_command = std::move(command); }
+    // The same command's arguments one by one (provenance_args); set by Cli::run.
+    const std::vector<std::string>& command_args() const { return m_command_args; }
+    void set_command_args(std::vector<std::string> args) { m_command_args = std::move(args); }
     void progress_update(const std::string& label, long done, long total) const override;
     void progress_finish(const std::string& label) const override;
 
 private:
     std::string m_tool;
     std::string m_command;
+    std::vector<std::string> m_command_args;
     int m_verbosity;
     bool m_progress;
     // The bar being drawn (one at a time).
@@ -133,6 +138,9 @@ public:
     // --strict: what a tool otherwise only warns about (its man page lists what) is an
     // error (exit status 1).
     void add_strict_option(const char* help = "make warnings about the inputs errors");
+    // --tile K/N: compute only the K-th of N equal parts of the work (the tool's page says
+    // of what: trace's rows), rounded as sigchain::Tile::range; `help` names the parts.
+    void add_tile_option(const char* help);
     // A numeric option --NAME VALUE_NAME checked against `range` (parse_number) when the
     // command line is parsed, its default (if any) included; read it with real() or
     // integer(). `help` should state the range as the man page does.
@@ -176,12 +184,24 @@ unsigned threads(const po::variables_map& vm);
 std::uint64_t seed(const po::variables_map& vm);
 bool strict(const po::variables_map& vm);  // --strict given
 std::vector<std::string> creation_options(const po::variables_map& vm);  // --co, as given
+// --tile K/N (add_tile_option), when given; UsageError unless 1 <= K <= N (integers).
+std::optional<Tile> tile(const po::variables_map& vm);
+Tile parse_tile(const std::string& text);
 
 // The command line as outputs record it (cube(5), PROVENANCE): the tool's name and its
 // arguments, each path reduced to its base name (an argument, or an option's =VALUE,
-// holding a '/'), without the options that cannot change an output (--threads N, -q,
-// -v, --progress), so that a rerun elsewhere or with other threads is byte-identical.
+// holding a '/', but the K/N of --tile), without the options that cannot change an
+// output (--threads N, -q, -v, --progress), so that a rerun elsewhere or with other
+// threads is byte-identical.
 std::string provenance_command(int argc, const char* const* argv);
+// The same, argument by argument (the tool's name first).
+std::vector<std::string> provenance_args(int argc, const char* const* argv);
+// The options of a part of a whole (cube(5), Parts): the recorded arguments without the
+// tool's name, the output (-o, --output) and the options that choose the part
+// (`part_options`, e.g. --tile and --rows), each with its value; joined by spaces.
+// Parts of one whole record the same text, and the merge compares it.
+std::string part_options(const std::vector<std::string>& args,
+                         const std::vector<std::string>& part_options);
 
 // Whether standard error is a terminal (progress bars default on only then).
 bool stderr_is_terminal();

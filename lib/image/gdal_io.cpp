@@ -153,4 +153,80 @@ Image read_gdal(const std::string& path) {
 
 }  // namespace detail
 
+std::string Provenance::item(const std::string& key) const {
+    for (const auto& [k, v] : items)
+        if (k == key) return v;
+    return "";
+}
+
+// ENVI: the header's description "sigchain VERSION: COMMAND" and its "sigchain KEY"
+// items (GDAL's ENVI metadata domain, spaces as underscores); GeoTIFF: the dataset
+// metadata SIGCHAIN_VERSION, SIGCHAIN_COMMAND and SIGCHAIN_KEY (cube(5), Provenance).
+Provenance read_provenance(const std::string& path) {
+    gdal_init();
+    const std::string data_path = envi_data_file(path);
+    std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
+        data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
+    Provenance p;
+    const std::string prefix = "sigchain_";
+    if (char** envi = ds->GetMetadata("ENVI")) {
+        for (char** kv = envi; *kv; ++kv) {
+            const std::string item = *kv;
+            const auto eq = item.find('=');
+            if (eq == std::string::npos) continue;
+            const std::string key = ascii_lower(item.substr(0, eq)), value = item.substr(eq + 1);
+            if (key == "description") {
+                // "{sigchain VERSION: COMMAND}", as GDAL gives the item.
+                const std::string head = "sigchain ";
+                std::string d = value;
+                while (!d.empty() && (d.front() == ' ' || d.front() == '\n' || d.front() == '{'))
+                    d.erase(0, 1);
+                while (!d.empty() && (d.back() == ' ' || d.back() == '\n' || d.back() == '}'))
+                    d.pop_back();
+                if (d.rfind(head, 0) != 0) continue;
+                const auto colon = d.find(": ");
+                p.version = d.substr(head.size(), colon == std::string::npos
+                                                      ? std::string::npos
+                                                      : colon - head.size());
+                if (colon != std::string::npos) p.command = d.substr(colon + 2);
+            } else if (key == "sensor_type") {
+                p.sensor_type = value;
+            } else if (key == "band_names") {
+                // "{a,b,c}": GDAL's band descriptions add the wavelength to each name.
+                std::string list = value;
+                if (!list.empty() && list.front() == '{') list.erase(0, 1);
+                if (!list.empty() && list.back() == '}') list.pop_back();
+                std::size_t from = 0;
+                for (;;) {
+                    const auto comma = list.find(',', from);
+                    std::string name = list.substr(from, comma - from);
+                    while (!name.empty() && name.front() == ' ') name.erase(0, 1);
+                    p.band_names.push_back(name);
+                    if (comma == std::string::npos) break;
+                    from = comma + 1;
+                }
+            } else if (key.rfind(prefix, 0) == 0 && key != "sigchain_geolocation") {
+                p.items.emplace_back(key.substr(prefix.size()), value);
+            }
+        }
+        return p;
+    }
+    if (char** md = ds->GetMetadata()) {
+        for (char** kv = md; *kv; ++kv) {
+            const std::string item = *kv;
+            const auto eq = item.find('=');
+            if (eq == std::string::npos) continue;
+            const std::string key = ascii_lower(item.substr(0, eq)), value = item.substr(eq + 1);
+            if (key == "sigchain_version")
+                p.version = value;
+            else if (key == "sigchain_command")
+                p.command = value;
+            else if (key.rfind(prefix, 0) == 0)
+                p.items.emplace_back(key.substr(prefix.size()), value);
+        }
+    }
+    return p;
+}
+
 }  // namespace sigchain::image

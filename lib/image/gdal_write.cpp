@@ -27,6 +27,12 @@ using geo::gdal_message;
 
 namespace {
 
+std::string ascii_upper(std::string text) {
+    for (char& c : text)
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+    return text;
+}
+
 bool all_finite(const std::vector<double>& values) {
     return !values.empty() &&
            std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
@@ -119,6 +125,8 @@ void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
         ds.SetMetadataItem("SIGCHAIN_VERSION", kVersion);
         if (!options.command.empty())
             ds.SetMetadataItem("SIGCHAIN_COMMAND", options.command.c_str());
+        for (const auto& [key, value] : options.items)
+            ds.SetMetadataItem(("SIGCHAIN_" + ascii_upper(key)).c_str(), value.c_str());
         return;
     }
     // GDAL writes the dataset description (by default the temporary file name) as the
@@ -133,6 +141,12 @@ void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
     if (!image.units.empty()) ds.SetMetadataItem("data_units", image.units.c_str(), "ENVI");
     if (!image.sensor_type.empty())
         ds.SetMetadataItem("sensor_type", image.sensor_type.c_str(), "ENVI");
+    for (const auto& [key, value] : options.items) {
+        std::string v = value;  // braces would end the ENVI field, as in provenance()
+        std::replace(v.begin(), v.end(), '{', '(');
+        std::replace(v.begin(), v.end(), '}', ')');
+        ds.SetMetadataItem(("sigchain_" + key).c_str(), v.c_str(), "ENVI");
+    }
 }
 
 // sigchain's creation options, then the user's (--co), which override them.

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sigchain::image {
@@ -60,7 +61,28 @@ struct WriteOptions {
     // The command that made the output (cli::Context::command()): recorded with
     // sigchain's version; empty records the version alone.
     std::string command;
+    // More provenance items, KEY (lowercase words joined by '_') and VALUE: ENVI header
+    // items "sigchain KEY" (underscores as spaces), GeoTIFF dataset metadata SIGCHAIN_KEY
+    // (upper case); a part of a whole records its rows, inputs and options (cube(5), Parts).
+    // (A default member initializer: aggregate initializations that stop at `command`
+    // stay warning-free.)
+    std::vector<std::pair<std::string, std::string>> items{};
 };
+
+// What a cube records of how it was made (cube(5), Provenance and Parts), as read back.
+struct Provenance {
+    std::string version;  // sigchain's version ("" when the cube has none)
+    std::string command;  // the recorded command ("" when none)
+    std::string sensor_type;  // ENVI `sensor type` ("" when none)
+    std::vector<std::string> band_names;  // ENVI `band names` as written (empty: none)
+    // The items of WriteOptions::items, by KEY (lowercase, '_' between words).
+    std::vector<std::pair<std::string, std::string>> items;
+    // The value of item `key`, or "".
+    std::string item(const std::string& key) const;
+};
+// Reads a cube's provenance through GDAL (ENVI or GeoTIFF). DataError naming `path`
+// when it is not a readable raster.
+Provenance read_provenance(const std::string& path);
 
 // Throws UsageError when `options` carry creation options (--co) and `path` is not a
 // GeoTIFF (.tif/.tiff) or a creation option is not KEY=VALUE: jobs call it before any work.

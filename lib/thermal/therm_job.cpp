@@ -3,11 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/output.hpp"
 #include "core/parallel.hpp"
 #include "geo/scene_clock.hpp"
@@ -202,17 +205,51 @@ FacetAnswer solve_facet(const FacetTask& task, const io::Shd& shd,
     return answer;
 }
 
-// Solves every task on `threads` threads (0: all cores); answers in task order.
-std::vector<FacetAnswer> solve_all(const std::vector<FacetTask>& tasks, const io::Shd& shd,
-                                   const std::vector<EnvironmentStep>& env, std::size_t i24,
-                                   unsigned threads) {
-    std::vector<FacetAnswer> answers(tasks.size());
-    parallel_for(static_cast<long>(tasks.size()), ParallelOptions{threads, {}},
-                 [&](long i, unsigned) {
-                     const auto k = static_cast<std::size_t>(i);
-                     answers[k] = solve_facet(tasks[k], shd, env, i24);
-                 });
-    return answers;
+// Solves tasks [begin, end) on `threads` threads (0: all cores) into answers[begin, end).
+void solve_range(const std::vector<FacetTask>& tasks, const io::Shd& shd,
+                 const std::vector<EnvironmentStep>& env, std::size_t i24, unsigned threads,
+                 long begin, long end, FacetAnswer* answers) {
+    parallel_for(end - begin, ParallelOptions{threads, {}}, [&](long i, unsigned) {
+        answers[i] = solve_facet(tasks[static_cast<std::size_t>(begin + i)], shd, env, i24);
+    });
+}
+
+// Solves every task, in this process or farmed out to MPI ranks (core/farm.hpp; each
+// facet's answer depends on the facet alone, so the .tmp is the same); answers in task
+// order. Returns false on an MPI worker, which has no answers.
+bool solve_all(const std::vector<FacetTask>& tasks, const io::Shd& shd,
+               const std::vector<EnvironmentStep>& env, std::size_t i24, unsigned threads,
+               std::vector<FacetAnswer>& answers) {
+    static_assert(std::is_trivially_copyable_v<FacetAnswer>);
+    const long n = static_cast<long>(tasks.size());
+    answers.assign(tasks.size(), {});
+    FarmJob job;
+    job.items = n;
+    job.parts = farm_parts(n, farm_workers(), sizeof(FacetAnswer));
+    job.compute = [&](long begin, long end) {
+        FarmBytes bytes(static_cast<std::size_t>(end - begin) * sizeof(FacetAnswer));
+        std::vector<FacetAnswer> part(static_cast<std::size_t>(end - begin));
+        solve_range(tasks, shd, env, i24, threads, begin, end, part.data());
+        std::memcpy(bytes.data(), part.data(), bytes.size());
+        return bytes;
+    };
+    job.gather = [&](long begin, long end, const FarmBytes& bytes) {
+        if (bytes.size() != static_cast<std::size_t>(end - begin) * sizeof(FacetAnswer))
+            throw IoError("MPI: facets " + std::to_string(begin) + ":" + std::to_string(end) +
+                          " came back malformed");
+        std::memcpy(answers.data() + begin, bytes.data(), bytes.size());
+    };
+    if (n == 0) return !farm_worker();
+    switch (run_farm(job)) {
+        case FarmRole::Alone:
+            solve_range(tasks, shd, env, i24, threads, 0, n, answers.data());
+            return true;
+        case FarmRole::Lead:
+            return true;
+        case FarmRole::Worker:
+            return false;
+    }
+    return true;
 }
 
 void describe_model(const Inputs& in, double start, std::size_t steps, const ThermJob& job,
@@ -303,7 +340,11 @@ ThermResult compute_temperatures(const ThermJob& job, const Reporter& reporter) 
     ThermResult result;
     result.tmp.time_hours = in.shd.scene_time_hours;
     const std::vector<FacetTask> tasks = plan_facets(in, job, reporter, result);
-    const std::vector<FacetAnswer> answers = solve_all(tasks, in.shd, env, i24, job.threads);
+    std::vector<FacetAnswer> answers;
+    if (!solve_all(tasks, in.shd, env, i24, job.threads, answers)) {
+        result.worker = true;
+        return result;
+    }
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         result.tmp.facets[tasks[i].row].temperature_k = answers[i].temperature_k;
         if (answers[i].spinup_residual_k > result.spinup_residual_k ||
@@ -317,8 +358,16 @@ ThermResult compute_temperatures(const ThermJob& job, const Reporter& reporter) 
     return result;
 }
 
-void run_therm(const ThermJob& job, const Reporter& reporter) {
+void run_therm(const ThermJob& job, const Reporter& job_reporter) {
+    // MPI ranks other than 0 read the same inputs: only rank 0 reports and writes.
+    const Reporter silent;
+    const Reporter& reporter = farm_worker() ? silent : job_reporter;
+    const std::string inputs[] = {job.shd_path, job.wth_path, job.mat_path, job.scene_path,
+                                  job.snd_path};
+    if (farm_available() && std::count(std::begin(inputs), std::end(inputs), "-") > 0)
+        throw UsageError("standard input cannot be read under mpirun: every rank reads the inputs");
     ThermResult r = compute_temperatures(job, reporter);
+    if (r.worker) return;
     reporter.info(std::to_string(r.facets_solved) + " facets solved, " +
                   std::to_string(r.facets_fixed) + " fixed by the .gdb");
     if (!r.spinup_facet.empty())

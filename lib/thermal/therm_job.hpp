@@ -42,6 +42,7 @@ struct ThermResult {
     std::string spinup_facet;      // where it is largest
     int spinup_runs_max = 0;       // most runs any facet needed
     long facets_solved = 0, facets_fixed = 0;
+    bool worker = false;  // an MPI worker's (farm_worker): rank 0 holds the result
 };
 
 // Spin-up: runs over the whole weather window, each from the previous run's profile

@@ -13,11 +13,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 
 #include "geo/scene_clock.hpp"
 #include "geo/solar_position.hpp"
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/output.hpp"
 #include "core/parallel.hpp"
 #include "io/mat.hpp"
@@ -227,7 +230,8 @@ std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hou
 
 io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary& materials,
                        const std::vector<SunStep>& sun, double step_hours, const ShadowOptions& o,
-                       const std::function<void(long, long)>& progress, ShadowStats* stats) {
+                       const std::function<void(long, long)>& progress, ShadowStats* stats,
+                       long facet_begin, long facet_end) {
     const auto start = std::chrono::steady_clock::now();
     if (sun.empty()) throw Error("shadow_history: no time steps");
     if (o.points_per_facet < 1 || o.sky_rays < 1 || o.max_transmissions < 0)
@@ -240,12 +244,15 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
     shd.steps = static_cast<long>(sun.size());
     shd.step_hours = step_hours;
     const auto& facets = sc.facets();
-    shd.facets.resize(facets.size());
+    const long first = std::clamp(facet_begin, 0L, static_cast<long>(facets.size()));
+    const long end = facet_end < 0 ? static_cast<long>(facets.size())
+                                   : std::clamp(facet_end, first, static_cast<long>(facets.size()));
+    shd.facets.resize(static_cast<std::size_t>(end - first));
     std::size_t samples = 0;
     for (const auto& m : materials.materials())
         samples = std::max(samples, m.extinction_per_km.size());
     const double eps = scene_epsilon(sc.scene());
-    const long total = static_cast<long>(facets.size());
+    const long total = end - first;
 
     const ParallelOptions parallel{o.threads, progress};
     WorkerStates<SunRay> rays(parallel_workers(total, parallel));
@@ -258,8 +265,8 @@ io::Shd shadow_history(const ShadowScene& sc, const radiometry::MaterialLibrary&
                           std::vector<double>(samples),
                           std::vector<double>(samples)};
         });
-        const auto u = static_cast<std::size_t>(i);
-        shd.facets[u] = facet_history(facets[u], u, sun, o, ray);
+        const auto u = static_cast<std::size_t>(first + i);
+        shd.facets[static_cast<std::size_t>(i)] = facet_history(facets[u], u, sun, o, ray);
     });
     if (stats) {
         stats->rays = 0;
@@ -292,6 +299,102 @@ radiometry::SpectralGrid snd_grid(const io::Snd& snd) {
     return g;
 }
 
+// A part of the facets' records as bytes (the farm's message): the rays, then per
+// facet its id, sky view factor, points, line and the two series.
+struct Packer {
+    FarmBytes bytes;
+    template <class T>
+    void put(const T& v) {
+        const auto* p = reinterpret_cast<const unsigned char*>(&v);
+        bytes.insert(bytes.end(), p, p + sizeof v);
+    }
+    void put(const std::vector<double>& v) {
+        put(static_cast<std::uint64_t>(v.size()));
+        const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+        bytes.insert(bytes.end(), p, p + 8 * v.size());
+    }
+};
+struct Unpacker {
+    const FarmBytes& bytes;
+    std::size_t at = 0;
+    void take(void* to, std::size_t n) {
+        if (at + n > bytes.size()) throw IoError("MPI: a malformed shadow-history part");
+        std::memcpy(to, bytes.data() + at, n);
+        at += n;
+    }
+    template <class T>
+    T get() {
+        T v{};
+        take(&v, sizeof v);
+        return v;
+    }
+    std::vector<double> series() {
+        std::vector<double> v(static_cast<std::size_t>(get<std::uint64_t>()));
+        take(v.data(), 8 * v.size());
+        return v;
+    }
+};
+
+FarmBytes pack(const io::Shd& part, std::uint64_t rays) {
+    Packer p;
+    p.put(rays);
+    for (const io::ShdFacet& f : part.facets) {
+        p.put(static_cast<std::uint64_t>(f.id.size()));
+        p.bytes.insert(p.bytes.end(), f.id.begin(), f.id.end());
+        p.put(f.sky_view_factor);
+        p.put(static_cast<std::int64_t>(f.points));
+        p.put(static_cast<std::int32_t>(f.line));
+        p.put(f.sunlit_fraction);
+        p.put(f.transmittance);
+    }
+    return p.bytes;
+}
+
+std::uint64_t unpack(const FarmBytes& bytes, io::ShdFacet* facets, long count) {
+    Unpacker u{bytes};
+    const auto rays = u.get<std::uint64_t>();
+    for (long i = 0; i < count; ++i) {
+        io::ShdFacet& f = facets[i];
+        f.id.resize(static_cast<std::size_t>(u.get<std::uint64_t>()));
+        u.take(f.id.data(), f.id.size());
+        f.sky_view_factor = u.get<double>();
+        f.points = static_cast<long>(u.get<std::int64_t>());
+        f.line = u.get<std::int32_t>();
+        f.sunlit_fraction = u.series();
+        f.transmittance = u.series();
+    }
+    if (u.at != bytes.size()) throw IoError("MPI: a malformed shadow-history part");
+    return rays;
+}
+
+// The history over the farm's ranks (core/farm.hpp); false on a worker.
+bool farm_history(const ShadowScene& sc, const radiometry::MaterialLibrary& materials,
+                  const std::vector<SunStep>& sun, double step_hours, const ShadowOptions& o,
+                  io::Shd& shd, ShadowStats& stats) {
+    const auto start = std::chrono::steady_clock::now();
+    const long n = static_cast<long>(sc.facets().size());
+    FarmJob job;
+    job.items = n;
+    job.parts = farm_parts(n, farm_workers(),
+                           16.0 * static_cast<double>(sun.size() * o.points_per_facet) + 64);
+    job.compute = [&](long begin, long end) {
+        ShadowStats part_stats;
+        const io::Shd part =
+            shadow_history(sc, materials, sun, step_hours, o, {}, &part_stats, begin, end);
+        return pack(part, part_stats.rays);
+    };
+    job.meanwhile = [&] {
+        shd = shadow_history(sc, materials, sun, step_hours, o, {}, nullptr, 0, 0);
+        shd.facets.resize(static_cast<std::size_t>(n));
+    };
+    job.gather = [&](long begin, long end, const FarmBytes& bytes) {
+        stats.rays += unpack(bytes, shd.facets.data() + begin, end - begin);
+    };
+    if (run_farm(job) == FarmRole::Worker) return false;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return true;
+}
+
 void check_options(const ShadowJob& job) {
     if (job.output_path.empty()) throw UsageError("no output: give -o FILE.shd");
     require_outputs_distinct({job.output_path}, {job.snd_path, job.scene_path, job.mat_path});
@@ -306,8 +409,11 @@ void check_options(const ShadowJob& job) {
 
 }  // namespace
 
-io::Shd run_shadow_history(const ShadowJob& job, const Reporter& reporter) {
+io::Shd run_shadow_history(const ShadowJob& job, const Reporter& job_reporter) {
     check_options(job);
+    // MPI ranks other than 0 read the same inputs: only rank 0 reports and writes.
+    const Reporter silent;
+    const Reporter& reporter = farm_worker() ? silent : job_reporter;
     const long steps = history_steps(job.options.history_hours, job.options.step_minutes);
     const double step_hours = job.options.step_minutes / 60;
     const io::Snd snd = io::read_snd_file(job.snd_path);
@@ -332,7 +438,9 @@ io::Shd run_shadow_history(const ShadowJob& job, const Reporter& reporter) {
                   std::to_string(job.options.sky_rays) + " sky rays per point");
     ShadowStats stats;
     io::Shd shd;
-    {
+    if (farm_available()) {
+        if (!farm_history(sc, materials, sun, step_hours, job.options, shd, stats)) return {};
+    } else {
         ProgressScope bar(reporter, "shadow history");
         shd = shadow_history(sc, materials, sun, step_hours, job.options, bar.callback(), &stats);
     }

@@ -69,7 +69,9 @@ io::Shd shadow_history(const ShadowScene& scene, const radiometry::MaterialLibra
                        const std::vector<SunStep>& sun, double step_hours,
                        const ShadowOptions& options,
                        const std::function<void(long, long)>& progress = {},
-                       ShadowStats* stats = nullptr);
+                       ShadowStats* stats = nullptr, long facet_begin = 0, long facet_end = -1);
+// (facet_begin, facet_end: only the scene's facets [begin, end), -1 to the last; each
+// facet's record depends on the facet alone, so parts join into the whole .shd.)
 
 // trace --shadow-history as a job: .snd + scene + .mat -> .shd.
 struct ShadowJob {
@@ -81,7 +83,8 @@ struct ShadowJob {
 };
 
 // Checks the options (UsageError), reads the inputs, computes and writes the .shd
-// atomically. DataError/IoError name the file and line of a bad input. Warnings and
+// atomically; under mpirun (SIGCHAIN_MPI builds) the facets are farmed out to the
+// ranks (core/farm.hpp) and rank 0 alone writes (the others return an empty .shd). DataError/IoError name the file and line of a bad input. Warnings and
 // the -v details go to `reporter`, the progress as "shadow history".
 io::Shd run_shadow_history(const ShadowJob& job, const Reporter& reporter);
 

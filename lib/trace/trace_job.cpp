@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <tuple>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -28,7 +29,9 @@
 #include "io/tmp.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "trace/distributed.hpp"
 #include "trace/georef.hpp"
+#include "trace/part.hpp"
 
 namespace sigchain::trace {
 
@@ -222,6 +225,9 @@ void check_job(const TraceJob& job) {
         throw UsageError("--adjacency-radius does not apply with --no-adjacency");
     if (job.rows && (job.rows->first < 0 || job.rows->second <= job.rows->first))
         throw UsageError("--rows: expected 0 <= A < B");
+    if (job.rows && job.tile) throw UsageError("--rows and --tile cannot be given together");
+    if (job.tile && (job.tile->index < 1 || job.tile->index > job.tile->count))
+        throw UsageError("--tile: expected K/N with 1 <= K <= N");
 }
 
 namespace {
@@ -253,6 +259,13 @@ Setup read_setup(const TraceJob& job) {
                              std::to_string(st.adv.rows) + " rows (" + job.adv_path + ")");
         st.row_begin = job.rows->first;
         st.row_end = job.rows->second;
+    }
+    if (job.tile) {
+        std::tie(st.row_begin, st.row_end) = job.tile->range(st.adv.rows);
+        if (st.row_end == st.row_begin)
+            throw UsageError("--tile " + job.tile->text() + ": the image has only " +
+                             std::to_string(st.adv.rows) + " rows (" + job.adv_path +
+                             "), fewer than the tiles");
     }
     return st;
 }
@@ -493,8 +506,9 @@ RenderOptions render_options_layers(const TraceJob& job) {
 
 // The radiance cube (one band per spectral sample, wavelengths, units, band names)
 // and the truth cube, each written atomically.
-void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
-                   const image::Georeference& georef, RenderResult& result) {
+void write_outputs(const TraceJob& job, const image::WriteOptions& write_options,
+                   const radiometry::SpectralGrid& grid, const image::Georeference& georef,
+                   RenderResult& result) {
     image::Image& cube = result.radiance;
     cube.georef = georef;
     cube.sensor_type = kSensorType;
@@ -507,7 +521,7 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
                                          format("%.6g", grid.wavelength_um[k]) + " um");
     }
     image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path),
-                      job.write_options);
+                      write_options);
     if (job.truth_path.empty()) return;
     image::Image& truth = result.truth;
     truth.channel_names = truth_layer_names(grid, render_options_layers(job));
@@ -516,13 +530,16 @@ void write_outputs(const TraceJob& job, const radiometry::SpectralGrid& grid,
     truth.georef = georef;
     truth.sensor_type = kSensorType;
     image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path),
-                      job.write_options);
+                      write_options);
 }
 
 }  // namespace
 
-TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
+TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     check_job(job);
+    // MPI ranks other than 0 read the same inputs: only rank 0 reports on them.
+    const Reporter silent;
+    const Reporter& reporter = distributed_worker() ? silent : job_reporter;
     TraceReport report;
     const Setup st = read_setup(job);
     const radiometry::Atmosphere atmosphere = read_atmosphere(job, st.snd, reporter);
@@ -556,10 +573,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
                                          " sample(s) per pixel") +
                   ", " + sampling_name(job.sampling) + " sampling");
     RenderResult result;
-    {
-        ProgressScope bar(reporter, "rendering");
-        result = render(inputs, options, bar.callback());
-    }
+    if (!render_rows(inputs, options, reporter, result)) return report;  // an MPI worker
     report.stats = result.stats;
     report.rows = result.radiance.rows;
     report.columns = result.radiance.columns;
@@ -576,7 +590,8 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
                                       image::geolocation_name(job.output_path), note);
         reporter.info(note);
     }
-    write_outputs(job, grid, georef, result);
+    write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid,
+                  georef, result);
     return report;
 }
 

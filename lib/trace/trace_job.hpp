@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/report.hpp"
+#include "core/tile.hpp"
 #include "image/image.hpp"
 #include "scene/load.hpp"
 #include "trace/render.hpp"
@@ -44,6 +45,10 @@ struct TraceJob {
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores
     std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
+    std::optional<Tile> tile;  // --tile K/N: the rows Tile::range of the .adv's (not with rows)
+    // A part's recorded options (cli::part_options; cube(5), Parts): what merge_tiles
+    // compares between the parts of one render.
+    std::string part_options;
     bool allow_degenerate = false;
     bool adjacency = true;                     // --no-adjacency turns it off
     std::optional<double> adjacency_radius_m;  // default: RenderOptions's (1000 m)
@@ -80,7 +85,9 @@ std::pair<long, long> parse_rows(const std::string& text, const std::string& opt
 void check_job(const TraceJob& job);
 
 // Runs the job: reads every input, validates the scene against the materials,
-// renders and writes the cube (and the truth cube) atomically. Throws UsageError
+// renders and writes the cube (and the truth cube) atomically; a part (--rows, --tile)
+// records its rows, inputs and options (part.hpp). Under mpirun (SIGCHAIN_MPI builds)
+// the rows are farmed out to the ranks (distributed.hpp) and rank 0 alone writes. Throws UsageError
 // (a --rows range outside the image, a .rad count that is not the .snd's band count),
 // DataError/IoError naming the file and line for bad inputs. Warnings and the -v
 // details go to `reporter`, the render's progress as "rendering".

@@ -16,7 +16,7 @@ namespace {
 // trace --shadow-history SND SCENE MAT -o FILE.shd (trace(1) SHADOW HISTORY).
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
-                          "background", "rows", "truth", "tmp", "strict", "no-adjacency",
+                          "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
                           "adjacency-radius", "co", "crs", "standard-error", "convergence"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
@@ -74,6 +74,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.seed = cli::seed(vm);
     job.threads = cli::threads(vm);
     if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
+    job.tile = cli::tile(vm);
     if (vm.count("truth")) job.truth_path = vm["truth"].as<std::string>();
     if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
     job.strict = cli::strict(vm);
@@ -113,6 +114,8 @@ int main(int argc, char** argv) {
     tool.add_threads_option();
     tool.add_creation_option();
     tool.add_scene_input_options();
+    tool.add_tile_option("render the K-th of N equal parts of the rows (1 <= K <= N),\n"
+                         "                    for merge_tiles");
     tool.add_strict_option(
         "--tmp keys that match no facet, or facets without a temperature, are an error");
     tool.add_options()("sampling",
@@ -171,6 +174,7 @@ int main(int argc, char** argv) {
         }
         trace::TraceJob job = trace_job(vm);
         job.write_options = {cli::creation_options(vm), ctx.command()};
+        job.part_options = cli::part_options(ctx.command_args(), {"--tile", "--rows", "--truth"});
         if (!job.output_path.empty())
             sigchain::image::check_write_options(job.output_path, job.write_options);
         trace::run_trace(job, ctx);

@@ -168,6 +168,28 @@ TEST(Cli, ProvenanceCommandDropsPathsAndThreads) {
     EXPECT_EQ(cli::provenance_command(10, b), cli::provenance_command(14, a));
 }
 
+// A part's recorded options (cube(5), Parts): the output and the part's own options
+// left out with their values, in every spelling, so that the tiles of one render agree.
+TEST(Cli, PartOptionsDropTheOutputAndThePartOptions) {
+    const char* a[] = {"/b/trace", "-q", "--tile", "1/3", "x/box.adv", "--seed", "7",
+                       "-o", "/t/part1.img", "--truth", "t1.img"};
+    const char* b[] = {"trace", "--tile=3/3", "box.adv", "--seed", "7", "--truth=/u/t3.img",
+                       "--output=/t/part3.img"};
+    const std::vector<std::string> parts{"--tile", "--rows", "--truth"};
+    EXPECT_EQ(cli::part_options(cli::provenance_args(11, a), parts), "box.adv --seed 7");
+    EXPECT_EQ(cli::part_options(cli::provenance_args(7, b), parts), "box.adv --seed 7");
+    const char* c[] = {"trace", "box.adv", "-opart.img", "--rows", "0:4"};
+    EXPECT_EQ(cli::part_options(cli::provenance_args(5, c), parts), "box.adv");
+}
+
+TEST(Cli, ParseTileChecksKAndN) {
+    EXPECT_EQ(cli::parse_tile("2/3").index, 2);
+    EXPECT_EQ(cli::parse_tile("2/3").count, 3);
+    EXPECT_EQ(cli::parse_tile("1/1").count, 1);
+    for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0", "-1/2", "1/3/4", "1.5/3", "/3", "1/"})
+        EXPECT_THROW(cli::parse_tile(bad), UsageError) << bad;
+}
+
 // ---- The checked number parser (parse_number, add_number) ----
 
 TEST(ParseNumber, ReadsFiniteNumbersInRange) {

@@ -1,0 +1,18 @@
+// SHA-256 digests of files and text (OpenSSL's libcrypto): the inputs of a part of a
+// render, recorded so that a merge can refuse parts made from other inputs (cube(5), Parts).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sigchain {
+
+// The SHA-256 of a file's bytes, 64 lowercase hex digits. IoError naming `path` when it
+// cannot be read.
+std::string sha256_file(const std::string& path);
+// The SHA-256 of `text`'s bytes, 64 lowercase hex digits.
+std::string sha256_text(const std::string& text);
+// One digest of a list of files: the SHA-256 of their digests, one per line, in order.
+std::string sha256_files(const std::vector<std::string>& paths);
+
+}  // namespace sigchain

@@ -1,0 +1,133 @@
+# Tests: trace therm build_radiance
+# Also requires: mpirun (Open MPI), a build with SIGCHAIN_MPI
+#
+# trace under mpirun (trace(1), MPI): rank 0 hands out row tiles to the other ranks and
+# writes the one cube, bit-identical to a one-process render for any rank and thread
+# count; a worker that dies makes the run fail, with no output and no hang. Skipped
+# when the build has no MPI. The box scene of trace.bats (16 x 16 pixels, 6 bands).
+
+bats_require_minimum_version 1.5.0
+load test_helper
+
+DATA="$SIGCHAIN_SOURCE_DIR/tests/data/trace"
+
+inputs() {
+    echo "$DATA/box.adv" "$DATA/box.snd" "$SEED/box_on_plane.gdb" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad"
+}
+
+setup() {
+    cd "$BATS_TEST_TMPDIR" || return 1
+    : "${SIGCHAIN_MPI:=$(ldd "$SIGCHAIN_BIN/trace" | grep -q libmpi && echo ON || echo OFF)}"
+    [ "$SIGCHAIN_MPI" = ON ] || skip "the build has no MPI (SIGCHAIN_MPI is off)"
+    : "${SIGCHAIN_MPIEXEC:=mpirun}"
+    # CI runs as root, which Open MPI refuses unless told.
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    # No network probing on a single machine; quiet about missing fabrics.
+    export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
+}
+
+# mpi_trace NP ARGS...: trace under mpirun with NP ranks, at most 60 s.
+mpi_trace() {
+    local np="$1"
+    shift
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np "$np" \
+        "$SIGCHAIN_BIN/trace" "$@"
+}
+
+@test "mpirun -np 2 and -np 3: the cube is byte for byte the one-process render" {
+    run -0 --separate-stderr trace -q --threads 2 $(inputs) --truth truth.img -o one.img
+    mkdir np2 np3
+    mpi_trace 2 -q --threads 1 $(inputs) --truth np2/truth.img -o np2/one.img
+    assert_success
+    assert_equal "$stderr" ''
+    mpi_trace 3 -q --threads 2 $(inputs) --truth np3/truth.img -o np3/one.img
+    assert_success
+    for d in np2 np3; do
+        run -0 cmp "$d/one.img" one.img
+        run -0 cmp "$d/truth.img" truth.img
+        # The header too: the recorded command holds base names only.
+        run -0 cmp "$d/one.hdr" one.hdr
+    done
+    assert_no_temp_files np2
+}
+
+@test "mpirun -np 3 -v: 2 workers share 8 tiles (4 per worker); uneven tiles of 16 rows" {
+    mkdir np3
+    mpi_trace 3 -v --threads 1 $(inputs) -o np3/one.img
+    assert_success
+    [[ "$stderr" == *"trace: MPI: 2 worker(s), 8 tiles of about 2 rows"* ]] || fail "$stderr"
+    run -0 --separate-stderr trace -q $(inputs) -o one.img
+    run -0 cmp np3/one.img one.img
+}
+
+@test "mpirun with --tile: the part is farmed and records its rows" {
+    mkdir mpi
+    mpi_trace 2 -q $(inputs) --tile 2/3 -o mpi/part2.img
+    assert_success
+    run -0 --separate-stderr trace -q $(inputs) --tile 2/3 -o part2.img
+    run -0 cmp mpi/part2.img part2.img
+    run -0 cmp mpi/part2.hdr part2.hdr
+    run -0 grep -x 'sigchain rows = 5:10 of 16' mpi/part2.hdr
+}
+
+@test "a worker killed after its first tile fails the run: no output, no hang" {
+    local start=$SECONDS
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 2 \
+        -x SIGCHAIN_TEST_KILL_WORKER_AFTER_TILES=1 "$SIGCHAIN_BIN/trace" -q $(inputs) -o out.img
+    [ "$status" -ne 0 ] || fail "status 0"
+    [ "$status" -ne 124 ] || fail "mpirun hung (timeout)"
+    [ ! -e out.img ] && [ ! -e out.hdr ] || fail "an output was written"
+    assert_no_temp_files .
+    [ $((SECONDS - start)) -lt 60 ]
+}
+
+@test "an input error under mpirun exits 1 with the message, no output, no hang" {
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 2 \
+        "$SIGCHAIN_BIN/trace" -q "$DATA/box.adv" "$DATA/box.snd" "$SEED/box_on_plane.gdb" \
+        "$DATA/missing_wood.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o out.img
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
+    [[ "$stderr" == *"trace: "*"material 37 is not in the material file"* ]] || fail "$stderr"
+    [ ! -e out.img ]
+}
+
+@test "therm under mpirun -np 3: the .tmp is byte for byte the one-process .tmp" {
+    local in=("$SEED/box_on_plane.shd" "$SEED/weather_30_Sep_95.wth"
+        "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/box_on_plane.gdb"
+        "$SEED/hawkeye.snd")
+    run -0 --separate-stderr therm -q "${in[@]}" -o one.tmp
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/therm" -q --threads 1 "${in[@]}" -o np3.tmp
+    assert_success
+    assert_equal "$stderr" ''
+    run -0 cmp np3.tmp one.tmp
+    # Standard input is read by rank 0 alone: refused.
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 2 \
+        "$SIGCHAIN_BIN/therm" -q - "${in[@]:1}" -o in.tmp < "${in[0]}"
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
+    [[ "$stderr" == *"therm: standard input cannot be read under mpirun"* ]] || fail "$stderr"
+    [ ! -e in.tmp ]
+}
+
+@test "trace --shadow-history under mpirun -np 3: the .shd is byte for byte the one-process .shd" {
+    # box_on_plane.mat of the therm tests beside the .ems it names.
+    cp "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/fall_grass.ems" .
+    local in=("$SEED/hawkeye.snd" "$SEED/box_on_plane.gdb" box_on_plane.mat)
+    run -0 --separate-stderr trace --shadow-history -q --points-per-facet 4 "${in[@]}" -o one.shd
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/trace" --shadow-history -q --threads 1 --points-per-facet 4 "${in[@]}" \
+        -o np3.shd
+    assert_success
+    run -0 cmp np3.shd one.shd
+}
+
+@test "build_radiance under mpirun -np 3: the .rad tables are byte for byte one process's" {
+    local quick=(--streams 8 --sky-zenith-step 15 --sky-azimuth-step 30 --sky-subsamples 1)
+    local in=("$GOLDEN/control7/hawkeye.cdk" "$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance/small.snd")
+    run -0 --separate-stderr build_radiance -q "${quick[@]}" "${in[@]}" -o 'one-%d.rad'
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/build_radiance" -q --threads 1 "${quick[@]}" "${in[@]}" -o 'np3-%d.rad'
+    assert_success
+    run -0 cmp np3-1.rad one-1.rad
+    run -0 cmp np3-2.rad one-2.rad
+}
