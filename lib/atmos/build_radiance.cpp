@@ -224,6 +224,8 @@ void check_radiance_options(const RadianceOptions& o) {
     if (!divides(360, o.upwelled_azimuth_step_deg))
         throw UsageError("the upwelled azimuth step must divide 360 deg; found " +
                          format_number(o.upwelled_azimuth_step_deg));
+    if (o.max_gas_terms < 1 || o.max_gas_terms > 16)
+        throw UsageError("gas terms must be 1 to 16; found " + format_number(o.max_gas_terms));
     if (o.sky_subsamples < 1 || o.sky_subsamples > 8)
         throw UsageError("sky subsamples must be 1 to 8; found " + format_number(o.sky_subsamples));
 }
@@ -269,6 +271,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             append_sample(rad, sky, results[j]);
             ground_irradiance.push_back(results[j].ground_irradiance);
             if (results[j].thermal) ++rep.thermal_samples;
+            rep.gas_term_solves += results[j].terms;
         }
         rad.sky = std::move(sky);
         rep.ground_diffuse_irradiance.push_back(std::move(ground_irradiance));

@@ -40,6 +40,7 @@ struct SampleResult {
     double spherical_albedo = 0, diffuse_down = 0;
     std::vector<double> diffuse_up;
     bool thermal = false;                 // layer emission solved
+    int terms = 1;                        // exponential-sum terms solved (gas_terms)
 };
 
 // Solves the sample at wavenumber nu_cm1. Thread-safe for one setup.
