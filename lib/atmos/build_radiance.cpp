@@ -169,6 +169,7 @@ struct Reader {
 struct SampleScalars {
     io::RadSample sample;
     double ground_irradiance, spherical_albedo, diffuse_down;
+    std::int32_t terms;  // exponential-sum terms solved (the -v count)
     std::uint8_t thermal;
 };
 
@@ -176,7 +177,8 @@ FarmBytes pack(const SampleResult* r, long count) {
     FarmBytes out;
     for (long i = 0; i < count; ++i, ++r) {
         const SampleScalars s{r->sample, r->ground_irradiance, r->spherical_albedo,
-                              r->diffuse_down, static_cast<std::uint8_t>(r->thermal)};
+                              r->diffuse_down, r->terms,
+                              static_cast<std::uint8_t>(r->thermal)};
         put_bytes(out, &s, sizeof s);
         put_series(out, r->path);
         for (const auto* v : {&r->ls, &r->le, &r->us, &r->ue, &r->diffuse_up}) put_series(out, *v);
@@ -193,6 +195,7 @@ void unpack(const FarmBytes& bytes, SampleResult* r, long count) {
         r->ground_irradiance = s.ground_irradiance;
         r->spherical_albedo = s.spherical_albedo;
         r->diffuse_down = s.diffuse_down;
+        r->terms = s.terms;
         r->thermal = s.thermal != 0;
         r->path = in.series<io::RadPathSample>();
         for (auto* v : {&r->ls, &r->le, &r->us, &r->ue, &r->diffuse_up}) *v = in.series<double>();
@@ -367,6 +370,8 @@ void check_radiance_options(const RadianceOptions& o) {
     if (!divides(360, o.upwelled_azimuth_step_deg))
         throw UsageError("the upwelled azimuth step must divide 360 deg; found " +
                          format_number(o.upwelled_azimuth_step_deg));
+    if (o.max_gas_terms < 1 || o.max_gas_terms > 16)
+        throw UsageError("gas terms must be 1 to 16; found " + format_number(o.max_gas_terms));
     if (o.sky_subsamples < 1 || o.sky_subsamples > 8)
         throw UsageError("sky subsamples must be 1 to 8; found " + format_number(o.sky_subsamples));
 }
@@ -425,6 +430,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             append_sample(rad, sky, results[j]);
             ground_irradiance.push_back(results[j].ground_irradiance);
             if (results[j].thermal) ++rep.thermal_samples;
+            rep.gas_term_solves += results[j].terms;
         }
         rad.sky = std::move(sky);
         rep.ground_diffuse_irradiance.push_back(std::move(ground_irradiance));

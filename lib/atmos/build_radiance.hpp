@@ -30,6 +30,7 @@ struct RadianceReport {
     double visibility_km = 0;
     std::size_t layers = 0;
     long thermal_samples = 0;  // samples where layer emission was solved
+    long gas_term_solves = 0;  // columns solved: one per sample, or its exponential-sum terms
     // Per band and spectral sample (in the .rad's order): the diffuse downward
     // irradiance at the ground from the solver's fluxes (scattered + emitted),
     // W cm-2 um-1, to check the hemisphere against.

@@ -49,6 +49,22 @@ public:
     // pivot = 0 the emission reaching the ground (L_de), pivot = the sensor level the
     // emission reaching the sensor (L_ue).
     std::vector<double> gas_depths_from(double nu_cm1, std::size_t pivot) const;
+    // The exponential-sum terms of the gas absorption at nu (GasColumn::absorption_terms,
+    // depths bottom first, negative ones 0): a fit within `tol` (transmittance) over path
+    // amounts up to kGasPathFactor times the vertical column, at most max_terms terms per
+    // gas. Where every gas is weak enough for Beer's law: one term, weight 1, whose
+    // depths are layers()' tau_gas (`equivalent`). build_radiance asks kGasFitTolerance
+    // for scattered sunlight, and kGasThermalTolerance where layers emit: emission goes
+    // as the absorptance 1 - T, a few percent in the windows, so 0.005 in T is too
+    // coarse there (man build_radiance(1)).
+    static constexpr double kGasFitTolerance = 0.005;
+    static constexpr double kGasThermalTolerance = 0.001;
+    static constexpr double kGasPathFactor = 20;  // down and up at 84 deg from the zenith
+    GasColumn::Terms gas_terms(double nu_cm1, int max_terms, double tol) const;
+    // For layer emission: term t's depths with the gases not fitted exact from `pivot`.
+    std::vector<double> term_depths_from(double nu_cm1, const GasColumn::Terms& terms,
+                                         std::size_t t, std::size_t pivot) const;
+
     static std::vector<LayerOptics> with_gas_depths(std::vector<LayerOptics> layers,
                                                     const std::vector<double>& gas);
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "atmos/exp_sum.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 
@@ -413,23 +414,100 @@ double GasColumn::transmittance(double nu, std::size_t i, std::size_t j, double 
     return std::exp(-tau);
 }
 
-std::vector<double> GasColumn::layer_absorption_depth(double nu) const {
+// Adds one gas's band-model equivalent depths: the difference of -ln T of vertical
+// paths from the top (header comment).
+void GasColumn::add_equivalent_band_depth(int g, double nu, std::vector<double>& tau) const {
     const std::size_t top = m_levels - 1;
-    std::vector<double> tau(top, 0.0);
-    // Band model: difference of -ln T of vertical paths from the top (header comment).
-    for (int g = 0; g < kBandGases; ++g) {
-        double above = 0.0;  // -ln T(top..k+1)
-        for (std::size_t k = top; k-- > 0;) {
-            const double here = band_optical_depth(g, nu, k, top, 1.0);
-            tau[k] += here - above;
-            above = here;
-        }
+    double above = 0.0;  // -ln T(top..k+1)
+    for (std::size_t k = top; k-- > 0;) {
+        const double here = band_optical_depth(g, nu, k, top, 1.0);
+        tau[k] += here - above;
+        above = here;
     }
+}
+
+void GasColumn::add_continuum_depth(double nu, std::vector<double>& tau) const {
     const auto c = continuum_coefficients(*m_tables, nu);
-    for (std::size_t k = 0; k < top; ++k)
+    for (std::size_t k = 0; k + 1 < m_levels; ++k)
         for (std::size_t q = 0; q < c.size(); ++q)
             tau[k] += c[q] * amount(kBandCount + int(q), k, k + 1);
+}
+
+std::vector<double> GasColumn::layer_absorption_depth(double nu) const {
+    std::vector<double> tau(m_levels - 1, 0.0);
+    for (int g = 0; g < kBandGases; ++g) add_equivalent_band_depth(g, nu, tau);
+    add_continuum_depth(nu, tau);
     return tau;
+}
+
+GasColumn::Terms GasColumn::absorption_terms(double nu, double path_factor, double tol,
+                                             int max_terms) const {
+    const std::size_t layers = m_levels - 1;
+    // The band of every gas at nu, and the one to fit: the strongest over path_factor
+    // columns among those too strong for Beer's law (header comment).
+    struct Band {
+        int band = -1;
+        double c = 0, column = 0;
+    };
+    std::array<Band, kBandGases> bands;
+    int fit_gas = -1;
+    double strongest = 0;
+    for (int g = 0; g < kBandGases; ++g) {
+        const auto& grid = m_tables->grids[g];
+        const double i = std::round((nu - grid.nu0_cm1) / 5.0);
+        if (i < 0 || i >= static_cast<double>(grid.band.size())) continue;
+        Band& b = bands[g];
+        b.band = grid.band[static_cast<std::size_t>(i)];
+        if (b.band < 0) continue;
+        b.c = std::pow(10.0, grid.cprime[static_cast<std::size_t>(i)]);  // x = 10^C' W
+        b.column = amount(b.band, 0, layers);
+        const double depth = std::pow(path_factor * b.c * b.column, m_tables->a[b.band]);
+        // Beer's law is within tol on every path of at most path_factor columns when
+        // path_factor (C W)^a <= -ln(1 - tol): both then transmit between that and 1.
+        const double beer_bound = path_factor * std::pow(b.c * b.column, m_tables->a[b.band]);
+        if (max_terms > 1 && b.column > 0 && beer_bound > -std::log1p(-tol) && depth > strongest) {
+            strongest = depth;
+            fit_gas = g;
+        }
+    }
+    if (fit_gas < 0) return {{1.0}, {layer_absorption_depth(nu)}, true, -1, {}};
+    const Band& b = bands[fit_gas];
+    double thinnest = b.column;
+    for (std::size_t k = 0; k < layers; ++k)
+        if (amount(b.band, k, k + 1) > 0) thinnest = std::min(thinnest, amount(b.band, k, k + 1));
+    const ExpSum fit = fit_band_model(m_tables->a[b.band], b.c * thinnest,
+                                      b.c * b.column * path_factor, tol, max_terms);
+    // Every other gas and the continua: the equivalent depths, the same in every term.
+    std::vector<double> base(layers, 0.0);
+    for (int g = 0; g < kBandGases; ++g)
+        if (g != fit_gas) add_equivalent_band_depth(g, nu, base);
+    add_continuum_depth(nu, base);
+    Terms terms{fit.weight, {}, false, fit_gas, {}};
+    for (double k : fit.k) {
+        std::vector<double> g(layers);
+        for (std::size_t l = 0; l < layers; ++l) g[l] = k * b.c * amount(b.band, l, l + 1);
+        std::vector<double> d = base;
+        for (std::size_t l = 0; l < layers; ++l) d[l] += g[l];
+        terms.depth.push_back(std::move(d));
+        terms.fitted_depth.push_back(std::move(g));
+    }
+    return terms;
+}
+
+std::vector<double> GasColumn::depths_from(double nu, std::size_t pivot, int exclude) const {
+    const std::size_t layers = m_levels - 1;
+    auto depth = [&](std::size_t i, std::size_t j) {  // -ln T vertical without `exclude`
+        if (i == j) return 0.0;
+        double tau = continuum_optical_depth(nu, i, j, 1.0);
+        for (int g = 0; g < kBandGases; ++g)
+            if (g != exclude) tau += band_optical_depth(g, nu, i, j, 1.0);
+        return tau;
+    };
+    std::vector<double> out(layers, 0.0);
+    for (std::size_t k = 0; k < layers; ++k)
+        out[k] = std::max(0.0, k >= pivot ? depth(pivot, k + 1) - depth(pivot, k)
+                                          : depth(k, pivot) - depth(k + 1, pivot));
+    return out;
 }
 
 }  // namespace sigchain::atmos

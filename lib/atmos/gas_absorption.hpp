@@ -32,7 +32,9 @@
 // transmittance from the top to any level is then exact; slant and partial paths in
 // that Beer's-law medium are approximate. Direct-beam and line-of-sight paths must use
 // transmittance(), which applies the band model to the path's summed amounts exactly;
-// only the diffuse field uses the equivalent depths.
+// only the diffuse field uses the equivalent depths, and where a gas is too strong for
+// them the strongest one is carried as an exponential sum instead (absorption_terms,
+// exp_sum.hpp).
 //
 // Thread-safety: both classes are immutable after construction; const use from several
 // threads is safe. GasTables copies share their data; GasColumn keeps its tables alive.
@@ -82,6 +84,35 @@ public:
     // differenced in -ln T, plus the continua (documented in the implementation).
     std::vector<double> layer_absorption_depth(double nu_cm1) const;
 
+    // Exponential-sum (k-distribution) absorption at nu for a scattering solver
+    // (exp_sum.hpp). A gas so weak that path_factor (C W_column)^a <= -ln(1 - tol) is
+    // within tol of Beer's law on every path of at most path_factor columns. Of the
+    // others, the strongest (largest -ln T over path_factor columns) has its band model
+    // exp(-(C W)^a) fitted by a sum of exponentials in its scaled amount W over the path
+    // amounts of this column, from the thinnest layer's vertical amount to path_factor
+    // times the vertical column, within tol (transmittance) with at most max_terms
+    // terms; a term's k applies to every layer's amount (correlated-k). Every other gas
+    // keeps its equivalent depth of layer_absorption_depth, as do the continua (Beer's
+    // law), the same in every term: overlapping strong bands are carried exactly only
+    // for the strongest gas (multiplying the sums and merging the product was tried and
+    // erred more on partial paths than equivalent depths). With no gas to fit (or
+    // max_terms 1) the one term is layer_absorption_depth itself, weight 1,
+    // `equivalent` true.
+    struct Terms {
+        std::vector<double> weight;                     // sum 1
+        std::vector<std::vector<double>> depth;         // [term][layer], bottom first
+        bool equivalent = true;                         // the one term is layer_absorption_depth
+        int gas = -1;                                   // the fitted gas (int(Gas)), -1: none
+        std::vector<std::vector<double>> fitted_depth;  // [term][layer]: its part of depth
+    };
+    Terms absorption_terms(double nu_cm1, double path_factor, double tol, int max_terms) const;
+
+    // Equivalent depths of every layer (bottom first) of all gases but band-model gas
+    // `exclude` (-1: none) and the continua, exact on vertical paths from level `pivot`
+    // (ColumnModel::gas_depths_from says why): the others' part of a term's depths for
+    // the emission toward the ground or the sensor.
+    std::vector<double> depths_from(double nu_cm1, std::size_t pivot, int exclude) const;
+
     // (implementation-defined members follow)
 
     // Components of transmittance() (same arguments; i == j gives 1 / 0; the level
@@ -100,6 +131,8 @@ public:
     static constexpr int kQuantityCount = kBandCount + 11;
 
 private:
+    void add_equivalent_band_depth(int gas_index, double nu_cm1, std::vector<double>& tau) const;
+    void add_continuum_depth(double nu_cm1, std::vector<double>& tau) const;
     double band_optical_depth(int gas_index, double nu_cm1, std::size_t lo, std::size_t hi,
                               double mu) const;
     double amount(int quantity, std::size_t lo, std::size_t hi) const {

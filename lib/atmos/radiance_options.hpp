@@ -26,6 +26,8 @@ struct RadianceOptions {
     bool coupling = true;                    // solve and write the COUPLING terms (rad(5)):
                                              // one more solve per sample (benchmarks turn it
                                              // off to measure it)
+    int max_gas_terms = 12;                  // exponential-sum terms per gas in the solver
+                                             // (1: one equivalent Beer's-law depth per layer)
     unsigned threads = 0;                    // worker threads (0: every core); results do
                                              // not depend on it
 };

@@ -130,14 +130,12 @@ rt::Problem base_problem(const SampleSetup& s, const std::vector<LayerOptics>& c
     return prob;
 }
 
-// Layer emission: Planck at each level, no beam, no surface (the scene's) and no
-// emission from space, with the gas depths that make the absorption-only transmittance
-// exact toward level `pivot` (ColumnModel::gas_depths_from says why).
-rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& col,
-                          const rt::Problem& prob, double nu, std::size_t pivot) {
+// Layer emission of the column `c`: Planck at each level, no beam, no surface (the
+// scene's) and no emission from space.
+rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& c,
+                          const rt::Problem& prob, double nu) {
     const double wavelength = 1e4 / nu;
     const std::size_t sensor_level = s.column.sensor_level();
-    const auto c = ColumnModel::with_gas_depths(col, s.column.gas_depths_from(nu, pivot));
     const std::vector<std::size_t> k = kept_levels(c, sensor_level, s.options.merge_tau);
     rt::Problem th = prob;
     th.beam_flux = 0;
@@ -151,6 +149,15 @@ rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& 
     rt::Result r = rt::solve(th);
     add_ground_reflection(th, s.deck.surface_albedo, 1, r);
     return r;
+}
+
+// Layer emission with one equivalent depth per layer, chosen so that the
+// absorption-only transmittance is exact toward level `pivot`
+// (ColumnModel::gas_depths_from says why).
+rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& col,
+                          const rt::Problem& prob, double nu, std::size_t pivot) {
+    return solve_emission(s, ColumnModel::with_gas_depths(col, s.column.gas_depths_from(nu, pivot)),
+                          prob, nu);
 }
 
 // The three solutions of a sample: solar scattering (level 0 the sensor, 1 the ground),
@@ -213,19 +220,97 @@ void read_coupling(const SampleSetup& s, const rt::Problem& prob, const rt::Resu
         res.diffuse_down = std::clamp(solar.levels[1].diffuse_down / normal, 0.0, 1.0);
 }
 
+// One exponential-sum term (ColumnModel::gas_terms) of a sample: the column with the
+// term's gas depths for the sun and the coupling; for layer emission (`terms` given)
+// the fitted gas's term depths with the other gases' equivalent depths exact toward
+// the ground (L_de) and toward the sensor (L_ue), as a sample without terms has them.
+SampleResult solve_term(const SampleSetup& s, const std::vector<LayerOptics>& col,
+                        const io::RadSample& sample, double nu, const GasColumn::Terms* terms,
+                        std::size_t t) {
+    SampleResult res;
+    res.sample = sample;
+    const std::vector<std::size_t> kept =
+        kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
+    rt::Problem prob = base_problem(s, col, kept);
+    Solutions sol;
+    if (s.sun_up) {
+        prob.beam_flux = sample.solar_irradiance;
+        prob.beam_mu0 = s.mu0;
+        sol.solar = rt::solve(prob);
+    }
+    res.thermal = terms != nullptr;
+    if (terms) {  // toward the ground (L_de) and toward the sensor (L_ue)
+        for (auto [pivot, out] : {std::pair{std::size_t{0}, &sol.thermal},
+                                  std::pair{s.column.sensor_level(), &sol.thermal_up}})
+            *out = solve_emission(
+                s,
+                ColumnModel::with_gas_depths(col, s.column.term_depths_from(nu, *terms, t, pivot)),
+                prob, nu);
+    }
+    read_tables(s, sol, col, nu, res);
+    if (s.options.coupling) read_coupling(s, prob, sol.solar, res);
+    return res;
+}
+
+// acc += w * term, for every entry the solver computed (the transmissions are the band
+// model's, the same in every term, and kept from the first).
+void add_weighted(SampleResult& acc, const SampleResult& term, double w, bool first) {
+    auto add = [&](std::vector<double>& a, const std::vector<double>& t) {
+        if (first) a.assign(t.size(), 0.0);
+        for (std::size_t i = 0; i < t.size(); ++i) a[i] += w * t[i];
+    };
+    if (first) {
+        acc.sample = term.sample;
+        acc.path = term.path;
+        for (auto& p : acc.path) p.scattered_radiance = p.emitted_radiance = 0;
+        acc.thermal = term.thermal;
+    }
+    for (std::size_t v = 0; v < acc.path.size(); ++v) {
+        acc.path[v].scattered_radiance += w * term.path[v].scattered_radiance;
+        acc.path[v].emitted_radiance += w * term.path[v].emitted_radiance;
+    }
+    add(acc.ls, term.ls);
+    add(acc.le, term.le);
+    add(acc.us, term.us);
+    add(acc.ue, term.ue);
+    add(acc.diffuse_up, term.diffuse_up);
+    acc.ground_irradiance += w * term.ground_irradiance;
+    acc.spherical_albedo += w * term.spherical_albedo;
+    acc.diffuse_down += w * term.diffuse_down;
+}
+
 }  // namespace
 
 SampleResult solve_sample(const SampleSetup& s, double nu) {
     const double wavelength = 1e4 / nu;
     const std::vector<LayerOptics> col = s.column.layers(nu);
     const std::size_t top_level = s.column.profile().size() - 1;
-    SampleResult res;
-    io::RadSample& sample = res.sample;
+    io::RadSample sample;
     sample.wavelength_um = wavelength;
     sample.wavenumber_cm1 = nu;
     sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
     sample.sun_transmission =
         s.sun_up ? s.column.direct_transmittance(nu, col, 0, top_level, s.mu0) : 0.0;
+
+    // Exponential sums where a gas band needs them (ColumnModel::gas_terms): the solver
+    // per term, the results weighted and summed (correlated-k).
+    const bool thermal = wavelength >= s.options.thermal_min_wavelength_um;
+    const GasColumn::Terms terms = s.column.gas_terms(
+        nu, s.options.max_gas_terms,
+        thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance);
+    if (!terms.equivalent) {
+        SampleResult res;
+        for (std::size_t t = 0; t < terms.weight.size(); ++t)
+            add_weighted(res,
+                         solve_term(s, ColumnModel::with_gas_depths(col, terms.depth[t]), sample,
+                                    nu, thermal ? &terms : nullptr, t),
+                         terms.weight[t], t == 0);
+        res.terms = static_cast<int>(terms.weight.size());
+        return res;
+    }
+
+    SampleResult res;
+    res.sample = sample;
 
     const std::vector<std::size_t> kept =
         kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
@@ -237,7 +322,7 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
         sol.solar = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
         add_ground_reflection(prob, s.deck.surface_albedo, 1, sol.solar);
     }
-    res.thermal = wavelength >= s.options.thermal_min_wavelength_um;
+    res.thermal = thermal;
     if (res.thermal) {
         sol.thermal = solve_emission(s, col, prob, nu, 0);
         sol.thermal_up = solve_emission(s, col, prob, nu, s.column.sensor_level());

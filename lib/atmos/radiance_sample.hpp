@@ -41,7 +41,8 @@ struct SampleResult {
     // (0 with the sun down) and t_d_up per view (per unit isotropic ground radiance).
     double spherical_albedo = 0, diffuse_down = 0;
     std::vector<double> diffuse_up;
-    bool thermal = false;  // layer emission solved
+    bool thermal = false;                 // layer emission solved
+    int terms = 1;                        // exponential-sum terms solved (gas_terms)
 };
 
 // Solves the sample at wavenumber nu_cm1. Thread-safe for one setup.

@@ -1,0 +1,182 @@
+// Exponential sums fitted to LOWTRAN 7's band model (see exp_sum.hpp).
+#include "atmos/exp_sum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sigchain::atmos {
+
+namespace {
+
+constexpr int kPoints = 96;              // fit points, evenly spaced in log x
+constexpr double kSumRowWeight = 100.0;  // weight of the sum w_i = 1 row
+constexpr double kWiden = 2.5;           // see fit_band_model_terms
+constexpr double kOpaqueDepth = 20.0;
+constexpr double kClip = 0.1;  // clip where within kClip tol of 1 or 0
+
+// Least squares on the columns `cols` of A (row-major rows x n) by modified
+// Gram-Schmidt QR: returns z (size cols.size()) minimising |A_P z - b|.
+std::vector<double> least_squares(const std::vector<double>& a, const std::vector<double>& b,
+                                  std::size_t rows, std::size_t n,
+                                  const std::vector<std::size_t>& cols) {
+    const std::size_t p = cols.size();
+    std::vector<double> q(rows * p), r(p * p, 0.0);
+    for (std::size_t j = 0; j < p; ++j)
+        for (std::size_t i = 0; i < rows; ++i) q[i * p + j] = a[i * n + cols[j]];
+    for (std::size_t j = 0; j < p; ++j) {
+        // Two Gram-Schmidt passes ("twice is enough", Giraud et al. 2005): the
+        // exponentials are nearly collinear and one pass loses orthogonality.
+        for (int pass = 0; pass < 2; ++pass)
+            for (std::size_t l = 0; l < j; ++l) {
+                double d = 0;
+                for (std::size_t i = 0; i < rows; ++i) d += q[i * p + l] * q[i * p + j];
+                r[l * p + j] += d;
+                for (std::size_t i = 0; i < rows; ++i) q[i * p + j] -= d * q[i * p + l];
+            }
+        double norm = 0;
+        for (std::size_t i = 0; i < rows; ++i) norm += q[i * p + j] * q[i * p + j];
+        norm = std::sqrt(norm);
+        r[j * p + j] = norm;
+        if (norm > 0)
+            for (std::size_t i = 0; i < rows; ++i) q[i * p + j] /= norm;
+    }
+    std::vector<double> z(p, 0.0);
+    for (std::size_t j = 0; j < p; ++j)
+        for (std::size_t i = 0; i < rows; ++i) z[j] += q[i * p + j] * b[i];
+    for (std::size_t j = p; j-- > 0;) {  // back substitution R z = Q^T b
+        for (std::size_t l = j + 1; l < p; ++l) z[j] -= r[j * p + l] * z[l];
+        z[j] = r[j * p + j] > 0 ? z[j] / r[j * p + j] : 0.0;
+    }
+    return z;
+}
+
+// The band model exp(-x^a).
+double band_model(double a, double x) { return x > 0 ? std::exp(-std::pow(x, a)) : 1.0; }
+
+// One exponential matching the band model at x (the k of exp(-k x) = exp(-x^a)).
+ExpSum single_term(double a, double x) {
+    ExpSum s;
+    s.weight = {1.0};
+    s.k = {x > 0 ? std::pow(x, a) / x : 0.0};
+    return s;
+}
+
+}  // namespace
+
+double ExpSum::operator()(double x) const {
+    double t = 0;
+    for (std::size_t i = 0; i < k.size(); ++i) t += weight[i] * std::exp(-k[i] * x);
+    return t;
+}
+
+std::vector<double> nnls(const std::vector<double>& a, const std::vector<double>& b,
+                         std::size_t rows, std::size_t cols) {
+    if (a.size() != rows * cols || b.size() != rows || cols > 64)
+        throw std::invalid_argument("nnls: bad dimensions");
+    std::vector<double> x(cols, 0.0), w(cols);
+    std::vector<bool> passive(cols, false);
+    auto gradient = [&] {  // w = A^T (b - A x)
+        std::vector<double> res(b);
+        for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = 0; j < cols; ++j) res[i] -= a[i * cols + j] * x[j];
+        for (std::size_t j = 0; j < cols; ++j) {
+            w[j] = 0;
+            for (std::size_t i = 0; i < rows; ++i) w[j] += a[i * cols + j] * res[i];
+        }
+    };
+    double scale = 0;  // tolerance on the gradient, relative to A and b
+    for (double v : a) scale = std::max(scale, std::abs(v));
+    for (double v : b) scale = std::max(scale, std::abs(v));
+    const double eps = 1e-12 * scale * scale * static_cast<double>(rows);
+    gradient();
+    for (std::size_t iter = 0; iter < 3 * cols + 3; ++iter) {
+        std::size_t t = cols;
+        for (std::size_t j = 0; j < cols; ++j)
+            if (!passive[j] && w[j] > eps && (t == cols || w[j] > w[t])) t = j;
+        if (t == cols) break;
+        passive[t] = true;
+        for (std::size_t inner = 0; inner < 3 * cols + 3; ++inner) {
+            std::vector<std::size_t> p;
+            for (std::size_t j = 0; j < cols; ++j)
+                if (passive[j]) p.push_back(j);
+            const std::vector<double> z = least_squares(a, b, rows, cols, p);
+            double alpha = 2;  // step toward z, limited by the first x_j reaching 0
+            for (std::size_t l = 0; l < p.size(); ++l)
+                if (z[l] <= 0) alpha = std::min(alpha, x[p[l]] / (x[p[l]] - z[l]));
+            if (alpha >= 2) {
+                for (std::size_t l = 0; l < p.size(); ++l) x[p[l]] = z[l];
+                break;
+            }
+            for (std::size_t l = 0; l < p.size(); ++l) {
+                x[p[l]] += alpha * (z[l] - x[p[l]]);
+                if (x[p[l]] <= 1e-15) {
+                    x[p[l]] = 0;
+                    passive[p[l]] = false;
+                }
+            }
+        }
+        gradient();
+    }
+    return x;
+}
+
+ExpSum fit_band_model_terms(double a, double x_lo, double x_hi, double tol, int terms) {
+    if (!(a > 0 && a <= 1) || !(x_lo >= 0 && x_hi > x_lo) || !(tol > 0 && tol < 1) || terms < 1 ||
+        terms > 32)
+        throw std::invalid_argument("fit_band_model: bad arguments");
+    // Clip to where the band model is more than tol / 10 from 1 and from 0.
+    const double lo = std::max(x_lo, std::pow(-std::log1p(-kClip * tol), 1 / a));
+    const double hi = std::min(x_hi, std::pow(-std::log(kClip * tol), 1 / a));
+    if (band_model(a, x_hi) >= 1 - tol) return single_term(a, x_hi);  // transparent
+    if (band_model(a, x_lo) <= tol) return single_term(a, x_lo);      // opaque
+    if (!(hi > lo)) return single_term(a, lo);
+    // Where the range starts inside the band model's drop (x_lo above the clip), an
+    // opaque term (exp(-k x_lo) = exp(-20)) holds the weight that vanishes before x_lo,
+    // so the weights still sum to 1 (a Planck source must keep its full weight).
+    const bool opaque = lo == x_lo && x_lo > 0;
+    const auto n = static_cast<std::size_t>(terms);
+    std::vector<double> k(n);
+    // The k_i: from the slowest decay the tail at hi needs (exp(-k x) matches the band
+    // model at x for k = x^(a - 1)) to the fastest the drop at lo needs (k ~ 1 / lo),
+    // widened by kWiden at both ends; one term matches the middle of the range.
+    const double k_lo = std::pow(hi, a - 1) / kWiden, k_hi = kWiden / lo;
+    for (std::size_t i = 0; i < n; ++i)
+        k[i] = n == 1 ? std::pow(std::sqrt(lo * hi), a - 1)  // matched mid-range
+                      : k_lo * std::pow(k_hi / k_lo, static_cast<double>(i) / (n - 1));
+    if (opaque) k.push_back(kOpaqueDepth / x_lo);
+    const std::size_t n_all = k.size();
+    const std::size_t rows = kPoints + 1;
+    std::vector<double> xs(kPoints), mat(rows * n_all), rhs(rows);
+    for (int p = 0; p < kPoints; ++p) {
+        xs[p] = lo * std::pow(hi / lo, static_cast<double>(p) / (kPoints - 1));
+        rhs[p] = band_model(a, xs[p]);
+        for (std::size_t i = 0; i < n_all; ++i) mat[p * n_all + i] = std::exp(-k[i] * xs[p]);
+    }
+    for (std::size_t i = 0; i < n_all; ++i) mat[kPoints * n_all + i] = kSumRowWeight;
+    rhs[kPoints] = kSumRowWeight;
+    const std::vector<double> w = nnls(mat, rhs, rows, n_all);
+    ExpSum s;
+    double total = 0;
+    for (std::size_t i = 0; i < n_all; ++i)
+        if (w[i] > 0) {
+            s.weight.push_back(w[i]);
+            s.k.push_back(k[i]);
+            total += w[i];
+        }
+    for (double& v : s.weight) v /= total;  // exactly 1 (the row held it within ~1e-6)
+    for (double x : xs) s.max_error = std::max(s.max_error, std::abs(s(x) - band_model(a, x)));
+    return s;
+}
+
+ExpSum fit_band_model(double a, double x_lo, double x_hi, double tol, int max_terms) {
+    if (max_terms < 1) throw std::invalid_argument("fit_band_model: bad arguments");
+    ExpSum best;
+    for (int n = 1; n <= max_terms; ++n) {
+        best = fit_band_model_terms(a, x_lo, x_hi, tol, n);
+        if (best.max_error <= (1 - kClip) * tol) break;
+    }
+    return best;
+}
+
+}  // namespace sigchain::atmos
