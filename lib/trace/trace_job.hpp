@@ -45,6 +45,10 @@ struct TraceJob {
     // --crs: the map CRS of a geo-placed render: "" the CRS of the scene's first DEM
     // object (none: the render is not geo-placed), "none", "EPSG:N" or a WKT file.
     std::string crs;
+    // --igm, --glt: the ground-position layers and the geometry lookup table (GeoTIFFs,
+    // cube(5) GEOLOCATION LAYERS); "" for none.
+    std::string igm_path;
+    std::string glt_path;
 };
 
 // What happened, for -v: the scene's counts, the render's statistics.

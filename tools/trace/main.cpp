@@ -17,7 +17,7 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs"})
+                          "adjacency-radius", "co", "crs", "igm", "glt"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -82,6 +82,8 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.adjacency = vm.count("no-adjacency") == 0;
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
     if (vm.count("crs")) job.crs = vm["crs"].as<std::string>();
+    if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();
+    if (vm.count("glt")) job.glt_path = vm["glt"].as<std::string>();
     return job;
 }
 
@@ -127,6 +129,10 @@ int main(int argc, char** argv) {
         "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
         "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT\n"
         "                    FILE; none: write no georeferencing)")(
+        "igm", cli::po::value<std::string>()->value_name("FILE.tif"),
+        "write each pixel's ground position (IGM: map and scene coordinates)")(
+        "glt", cli::po::value<std::string>()->value_name("FILE.tif"),
+        "write the geometry lookup table (GLT: a map grid's source pixels)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead");
     tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
