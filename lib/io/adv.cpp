@@ -168,6 +168,12 @@ void parse_scan_direction(std::string_view v, const SourceLocation& at, Adv& adv
     adv.scan_bidirectional = v == "bidirectional";
 }
 
+void parse_slc(std::string_view v, const SourceLocation& at, Adv& adv) {
+    if (v != "on" && v != "off")
+        throw DataError(at, "expected scan_line_corrector on or off, found " + quoted(v));
+    adv.scan_line_corrector = v == "on";
+}
+
 using Setter = void (*)(std::string_view, const SourceLocation&, Adv&);
 const std::map<std::string_view, Setter>& key_setters() {
     static const std::map<std::string_view, Setter> setters = {
@@ -188,7 +194,8 @@ const std::map<std::string_view, Setter>& key_setters() {
         {"scan_half_angle_deg", parse_scan_angle},
         {"scan_period_s", parse_scan_period},
         {"detectors_per_scan", parse_detectors},
-        {"scan_direction", parse_scan_direction}};
+        {"scan_direction", parse_scan_direction},
+        {"scan_line_corrector", parse_slc}};
     return setters;
 }
 
@@ -261,6 +268,8 @@ void write_scanner_keys(std::ostream& out, const Adv& adv) {
     if (adv.scan_bidirectional)
         out << "scan_direction = " << (*adv.scan_bidirectional ? "bidirectional" : "oneway")
             << '\n';
+    if (adv.scan_line_corrector)
+        out << "scan_line_corrector = " << (*adv.scan_line_corrector ? "on" : "off") << '\n';
 }
 
 }  // namespace

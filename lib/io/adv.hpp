@@ -48,6 +48,7 @@ struct Adv {
     std::optional<double> scan_half_angle_deg, scan_period_s;  // line scanner
     std::optional<long> detectors_per_scan;
     std::optional<bool> scan_bidirectional;  // `scan_direction = bidirectional|oneway`
+    std::optional<bool> scan_line_corrector;  // `scan_line_corrector = on|off`
     // The file lines of the legacy records, for messages after reading (comments and
     // blank lines may precede them), and of each optional key. Not part of the value:
     // always compare equal.

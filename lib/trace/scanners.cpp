@@ -101,8 +101,13 @@ void LineScannerSensor::ray(double row, double column, geo::Vec3& origin,
                             geo::Vec3& direction) const {
     const auto [k, u] = split_row(row, rows());
     const long d = k % m_g.detectors;
-    const double alpha =
-        (static_cast<double>(d) + u - 0.5 * static_cast<double>(m_g.detectors)) * m_g.ifov_rad;
+    const double n = static_cast<double>(m_g.detectors);
+    double alpha = (static_cast<double>(d) + u - 0.5 * n) * m_g.ifov_rad;
+    if (m_g.scan_line_corrector) {
+        const double scan = static_cast<double>(k / m_g.detectors);
+        const double tf = (time_of(row, column) - m_g.start_time_s) / m_g.scan_period_s - scan;
+        alpha -= (tf - 0.5) * n * m_g.ifov_rad;
+    }
     const double theta = scan_angle_rad(column);
     const geom::Pose pose = m_trajectory.pose(time_of(row, column));
     origin = pose.position;
@@ -119,6 +124,7 @@ std::string LineScannerSensor::summary() const {
            std::to_string(m_g.detectors) + " detector(s) (" + std::to_string(rows()) +
            " lines) of " + std::to_string(m_g.samples) + " samples, " +
            (m_g.bidirectional ? "bidirectional, " : "one-way, ") +
+           (m_g.scan_line_corrector ? "scan-line corrector, " : "") +
            span(m_g.start_time_s, m_g.end_time_s());
 }
 

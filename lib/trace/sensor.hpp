@@ -82,12 +82,16 @@ struct PushbroomGeometry {
 // start + (s + c / samples) scan_period (bidirectional: odd scans run backward in time,
 // start + (s + 1 - c / samples) scan_period). Detector d, at along-track fraction u of
 // its row, looks at alpha = (d + u - detectors/2) ifov ahead: body direction
-// (sin alpha, cos alpha sin theta, cos alpha cos theta).
+// (sin alpha, cos alpha sin theta, cos alpha cos theta). With the scan-line corrector
+// (ETM+'s SLC) alpha also turns back by (tf - 1/2) detectors ifov, tf the time fraction
+// of the scan: the scan's footprint then advances with the platform instead of zigzagging
+// when speed x scan_period = detectors x ifov x height.
 struct LineScanGeometry {
     long scans = 0, samples = 0, detectors = 1;
     double half_angle_rad = 0, ifov_rad = 0;
     double scan_period_s = 0, start_time_s = 0;
     bool bidirectional = false;
+    bool scan_line_corrector = false;
     double end_time_s() const {
         return start_time_s + static_cast<double>(scans) * scan_period_s;
     }

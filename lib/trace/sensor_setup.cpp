@@ -82,7 +82,8 @@ geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, doubl
 
 std::unique_ptr<Sensor> make_pushbroom(const AdvAt& at) {
     const io::Adv& a = at.adv;
-    refuse_keys(at, {"scan_half_angle_deg", "scan_period_s", "detectors_per_scan", "scan_direction"},
+    refuse_keys(at, {"scan_half_angle_deg", "scan_period_s", "detectors_per_scan", "scan_direction",
+                     "scan_line_corrector"},
                 "pushbroom");
     PushbroomGeometry g;
     g.lines = a.rows;
@@ -117,6 +118,7 @@ std::unique_ptr<Sensor> make_line_scanner(const AdvAt& at) {
     // The detector's along-track angle: its pitch seen from the focal length.
     g.ifov_rad = a.pixel_pitch_um * 1e-3 / a.focal_length_mm;
     g.bidirectional = a.scan_bidirectional.value_or(false);
+    g.scan_line_corrector = a.scan_line_corrector.value_or(false);
     g.start_time_s = a.start_time_s.value_or(0);
     return std::make_unique<LineScannerSensor>(
         platform_of(at, "line", g.start_time_s, g.end_time_s()), g);
@@ -138,7 +140,7 @@ std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_p
                      "platform_roll_deg", "platform_pitch_deg", "jitter_amplitude_deg",
                      "jitter_frequency_hz", "start_time_s", "line_period_s",
                      "integration_time_s", "scan_half_angle_deg", "scan_period_s",
-                     "detectors_per_scan", "scan_direction"},
+                     "detectors_per_scan", "scan_direction", "scan_line_corrector"},
                 "frame");
     return std::make_unique<FrameSensor>(geom::frame_camera(adv, adv_path));
 }

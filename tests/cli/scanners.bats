@@ -1,7 +1,8 @@
 #!/usr/bin/env bats
 # Tests: trace's pushbroom and line scanners (adv(5) SCANNERS, trj(5)), their
 # geolocation layers (--igm, --glt; cube(5) GEOLOCATION LAYERS), and their errors
-# Also requires: sigchain-check, gdalinfo, gdalwarp, gdal_translate, awk
+# Also requires: sigchain-check, gdalinfo, gdalwarp, gdal_translate, awk, make,
+# olinda_scene, build_radiance, sensorize, compare (the Olinda ETM+ case)
 # The scanners fly north over the lawn of tests/data/white1996/box_on_plane.gdb, 30 m
 # up, its box lowered to a flat 4 x 4 m target (x and y 8 to 12 m) as in georef.bats.
 
@@ -188,4 +189,22 @@ EOF2
     run -2 --separate-stderr render push.adv --glt cube.tif -o cube.tif
     [[ "$stderr" == "trace: --glt: cube.tif would overwrite another output"* ]]
     [ ! -e cube.tif ]
+}
+
+# data/scenes/olinda `make etm`: Olinda as ETM+ scanned it (olinda_etm.adv: 16 detectors,
+# bidirectional, scan-line corrector, 30 m from 705 km at 6.8 km/s), with the frame
+# chain's fitted materials, resampled onto the reference grid. Held-out floors as
+# olinda.bats's (ROC 0.75 per band, RMS 25 DN); this chain gives ROC 0.800 (band 4) to
+# 0.938 (band 2), RMS 9.4-23.0 DN, and the frame camera's 0.800-0.927, 9.6-23.0 DN.
+@test "scanners: Olinda as ETM+ scanned it stays within the held-out floors" {
+    [ -x "$SIGCHAIN_BIN/olinda_scene" ] || skip "olinda_scene not built in $SIGCHAIN_BIN"
+    cp -r "$SIGCHAIN_SOURCE_DIR/data/scenes/olinda" scene
+    rm -rf scene/out
+    run -0 make -C scene -j2 etm SIGCHAIN_SOURCE_DIR="$SIGCHAIN_SOURCE_DIR" \
+        SIGCHAIN_BIN="$SIGCHAIN_BIN"
+    run -0 gdalinfo scene/out/etm/cube.tif
+    assert_output --partial "Size is 400, 400"
+    run -0 compare --fail-roc 0.75 --fail-rms 25 --bands 1,2,3,4 scene/out/etm/olinda.tif \
+        scene/L7_ETMs.tif scene/olinda_held.cpt
+    assert_output --partial "(352 rows, 349 columns)"
 }

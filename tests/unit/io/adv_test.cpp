@@ -155,7 +155,8 @@ TEST(Adv, ScannerKeysParseAndRoundTrip) {
                              "platform_pitch_deg = -0.5\njitter_amplitude_deg = 0.001 0 0.002\n"
                              "jitter_frequency_hz = 7 0 0.5\nstart_time_s = 12.5\n"
                              "scan_half_angle_deg = 7.5\nscan_period_s = 0.0714\n"
-                             "detectors_per_scan = 16\nscan_direction = bidirectional\n";
+                             "detectors_per_scan = 16\nscan_direction = bidirectional\n"
+                             "scan_line_corrector = on\n";
     const Adv a = parse_adv(TextInput::from_string(text, "t.adv"));
     EXPECT_EQ(a.sensor, SensorKind::Line);
     EXPECT_EQ(a.trajectory, "flight.trj");
@@ -163,6 +164,7 @@ TEST(Adv, ScannerKeysParseAndRoundTrip) {
     EXPECT_EQ(a.jitter_amplitude_deg, (geo::Vec3{0.001, 0, 0.002}));
     EXPECT_EQ(a.detectors_per_scan, 16);
     EXPECT_EQ(a.scan_bidirectional, true);
+    EXPECT_EQ(a.scan_line_corrector, true);
     EXPECT_EQ(a.lines.keys.at("scan_period_s"), 16);
     EXPECT_EQ(parse_adv(TextInput::from_string(written(a), "w.adv")), a);
     const Adv p = parse_adv(TextInput::from_string(

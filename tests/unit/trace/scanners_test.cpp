@@ -143,6 +143,37 @@ TEST(Scanners, LineScannerScanTiming) {
     EXPECT_NEAR(spacing / (kH * 10e-6 / 20e-3), 1.0, 1e-6);
 }
 
+// ETM+-like contiguous scans: 16 detectors of 30 m from 705 km (pitch 30 um, focal
+// 705 mm), 6800 m/s, scan period 16 x 30 / 6800 s, +-0.5 deg, bidirectional. Without the
+// scan-line corrector a detector's ground line runs one scan's advance (480 m) along
+// track from one end of the scan to the other (the zigzag); with it, the line is
+// straight across track to within the 1/cos(theta) of the slant range at 0.5 deg
+// (4e-5 of 240 m: 0.01 m, so 1e-3 of a 30 m pixel).
+TEST(Scanners, ScanLineCorrectorStraightensTheScans) {
+    io::Adv a = line_adv(true);
+    a.camera = {0, 0, 705000};
+    a.focal_length_mm = 705;
+    a.pixel_pitch_um = 30;
+    a.rows = 64;
+    a.detectors_per_scan = 16;
+    a.scan_half_angle_deg = 0.5;
+    a.platform_speed_mps = 6800;
+    a.scan_period_s = 16 * 30.0 / 6800;
+    for (bool slc : {false, true}) {
+        a.scan_line_corrector = slc;
+        const auto s = trace::make_sensor(a, "etm.adv");
+        for (double row : {5.5, 21.5}) {  // a forward scan and a backward one
+            const double dy = ground(*s, row, 400)[1] - ground(*s, row, 0)[1];
+            const double want = slc ? 0.0 : (row < 16 ? 480.0 : -480.0);
+            EXPECT_NEAR(dy / 30, want / 30, 1e-3) << "slc " << slc << " row " << row;
+        }
+        // Consecutive scans meet: the last detector of scan 0 and the first of scan 1,
+        // at nadir, are one pixel apart along track.
+        const double gap = ground(*s, 16.5, 200)[1] - ground(*s, 15.5, 200)[1];
+        EXPECT_NEAR(gap / 30, 1.0, 1e-3) << "slc " << slc;
+    }
+}
+
 // The ground points trace writes (pixel_ground_points) invert each pixel's ray: seen
 // back from the platform's analytic pose at the pixel's time (straight, level, north at
 // 50 m/s with a 2 deg roll), each projects onto its detector's centre. 1e-6 of the
