@@ -70,8 +70,8 @@ trace::PushbroomSensor pushbroom() {
     io::Trj trj;
     for (int k = 0; k <= 10; ++k) {
         const double t = 0.4 * k;
-        trj.records.push_back({t, {0, -200 + 100 * t, 1500}, 0.2 * std::sin(t), 0, 0,
-                               geo::Vec3{0, 100, 0}, k + 2});
+        trj.records.push_back(
+            {t, {0, -200 + 100 * t, 1500}, 0.2 * std::sin(t), 0, 0, geo::Vec3{0, 100, 0}, k + 2});
     }
     trace::PushbroomGeometry g;
     g.lines = 1000;
@@ -115,9 +115,10 @@ void print_row(const char* what, const std::vector<double>& frame,
     for (std::size_t k = 0; k < frame.size(); ++k) ratios.push_back(push[k] / frame[k]);
     const double f = *std::min_element(frame.begin(), frame.end());
     const double p = *std::min_element(push.begin(), push.end());
-    std::printf("%-16s frame %.3f CPU s, pushbroom %.3f CPU s: pushbroom/frame %.3f (best), "
-                "%.3f (median of rounds)\n",
-                what, f, p, p / f, median(ratios));
+    std::printf(
+        "%-16s frame %.3f CPU s, pushbroom %.3f CPU s: pushbroom/frame %.3f (best), "
+        "%.3f (median of rounds)\n",
+        what, f, p, p / f, median(ratios));
 }
 
 }  // namespace
@@ -143,9 +144,10 @@ int main(int argc, char** argv) {
     trace::RenderOptions opt;
     opt.sampling = trace::Sampling::Golfball;
     opt.threads = std::max(1u, std::thread::hardware_concurrency());
-    std::printf("bench_scanners: terrain %d x %d vertices, frame 1000 x 64 vs pushbroom "
-                "1000 x 64 pixels, golfball, 3 bands x 7 samples, %u threads, %d rounds\n",
-                n, n, opt.threads, rounds);
+    std::printf(
+        "bench_scanners: terrain %d x %d vertices, frame 1000 x 64 vs pushbroom "
+        "1000 x 64 pixels, golfball, 3 bands x 7 samples, %u threads, %d rounds\n",
+        n, n, opt.threads, rounds);
     render_cpu(in_frame, opt);  // warm-up (page faults, caches)
     std::vector<double> rf, rp, gf, gp;
     for (int k = 0; k < rounds; ++k) {

@@ -58,8 +58,8 @@ Quaternion slerp(Quaternion a, const Quaternion& b, double s) {
         d = -d;
     }
     if (d > 0.9999995)  // nearly equal: the normalized chord is slerp to ~1e-13
-        return normalized({a.w + s * (b.w - a.w), a.x + s * (b.x - a.x),
-                           a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)});
+        return normalized({a.w + s * (b.w - a.w), a.x + s * (b.x - a.x), a.y + s * (b.y - a.y),
+                           a.z + s * (b.z - a.z)});
     const double theta = std::acos(d), sn = std::sin(theta);
     const double ka = std::sin((1 - s) * theta) / sn, kb = std::sin(s * theta) / sn;
     return {ka * a.w + kb * b.w, ka * a.x + kb * b.x, ka * a.y + kb * b.y, ka * a.z + kb * b.z};
@@ -144,13 +144,13 @@ void Trajectory::require_covers(double t0, double t1, const std::string& what) c
         return format_number(a) + " to " + format_number(b) + " s";
     };
     if (t0 < t_begin())
-        throw DataError({m_file, m_records.front().line},
-                        "the trajectory starts at " + format_number(t_begin()) + " s but " + what +
-                            " spans " + span(t0, t1));
+        throw DataError({m_file, m_records.front().line}, "the trajectory starts at " +
+                                                              format_number(t_begin()) + " s but " +
+                                                              what + " spans " + span(t0, t1));
     if (t1 > t_end())
-        throw DataError({m_file, m_records.back().line},
-                        "the trajectory ends at " + format_number(t_end()) + " s but " + what +
-                            " spans " + span(t0, t1));
+        throw DataError({m_file, m_records.back().line}, "the trajectory ends at " +
+                                                             format_number(t_end()) + " s but " +
+                                                             what + " spans " + span(t0, t1));
 }
 
 }  // namespace sigchain::geom

@@ -59,9 +59,8 @@ public:
     // A straight flight from `start` (scene units) at `speed` (scene units per second)
     // toward `heading_deg` (clockwise from north), level at constant roll and pitch,
     // over times [t_begin, t_end].
-    static Trajectory straight(const Vec3& start, double speed, double heading_deg,
-                               double roll_deg, double pitch_deg, double t_begin, double t_end,
-                               Jitter jitter = {});
+    static Trajectory straight(const Vec3& start, double speed, double heading_deg, double roll_deg,
+                               double pitch_deg, double t_begin, double t_end, Jitter jitter = {});
 
     double t_begin() const { return m_records.front().time_s; }
     double t_end() const { return m_records.back().time_s; }

@@ -42,11 +42,10 @@ void write_layers(const std::string& path, const Layers& layers) {
         GDALRasterBand* band = ds->GetRasterBand(static_cast<int>(b) + 1);
         band->SetDescription(layers.names[b].c_str());
         if (layers.nodata) band->SetNoDataValue(*layers.nodata);
-        if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(layers.columns),
-                           static_cast<int>(layers.rows),
-                           const_cast<double*>(layers.planes[b].data()),
-                           static_cast<int>(layers.columns), static_cast<int>(layers.rows),
-                           GDT_Float64, 0, 0, nullptr) != CE_None)
+        if (band->RasterIO(
+                GF_Write, 0, 0, static_cast<int>(layers.columns), static_cast<int>(layers.rows),
+                const_cast<double*>(layers.planes[b].data()), static_cast<int>(layers.columns),
+                static_cast<int>(layers.rows), GDT_Float64, 0, 0, nullptr) != CE_None)
             throw IoError(path + ": write error: " + geo::gdal_message());
     }
     CPLErrorReset();

@@ -12,10 +12,10 @@ namespace sigchain::image {
 
 struct Layers {
     long rows = 0, columns = 0;
-    std::vector<std::string> names;           // one per band (the band description)
-    std::vector<std::vector<double>> planes;  // one per band, rows * columns, row-major
-    bool integer = false;                     // int32 bands (values must be integers)
-    std::string srs_wkt;                      // "" for none
+    std::vector<std::string> names;                     // one per band (the band description)
+    std::vector<std::vector<double>> planes;            // one per band, rows * columns, row-major
+    bool integer = false;                               // int32 bands (values must be integers)
+    std::string srs_wkt;                                // "" for none
     std::optional<std::array<double, 6>> geotransform;  // GDAL's; none for image geometry
     std::optional<double> nodata;
 };

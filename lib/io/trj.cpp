@@ -30,9 +30,9 @@ TrjRecord parse_record(const Line& line, const SourceLocation& at) {
 
 void check_sequence(const TrjRecord& prev, const TrjRecord& r, const SourceLocation& at) {
     if (!(r.time_s > prev.time_s))
-        throw DataError(at, "expected a time after " + format_number(prev.time_s) +
-                                " s (line " + std::to_string(prev.line) +
-                                "): times must increase, found " + format_number(r.time_s));
+        throw DataError(at, "expected a time after " + format_number(prev.time_s) + " s (line " +
+                                std::to_string(prev.line) + "): times must increase, found " +
+                                format_number(r.time_s));
     if (r.velocity.has_value() != prev.velocity.has_value())
         throw DataError(at, "expected velocities on every row or on none (line " +
                                 std::to_string(prev.line) + " differs)");

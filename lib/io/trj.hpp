@@ -18,11 +18,11 @@ namespace sigchain::io {
 // from north about the down axis), then pitch (nose up), then roll (right wing down)
 // of the body frame x forward, y right, z down.
 struct TrjRecord {
-    double time_s = 0;                    // seconds, strictly increasing
-    geo::Vec3 position{};                 // scene units
+    double time_s = 0;     // seconds, strictly increasing
+    geo::Vec3 position{};  // scene units
     double roll_deg = 0, pitch_deg = 0, yaw_deg = 0;
-    std::optional<geo::Vec3> velocity;    // scene units per second (all rows or none)
-    int line = 0;                         // line in the file (not compared)
+    std::optional<geo::Vec3> velocity;  // scene units per second (all rows or none)
+    int line = 0;                       // line in the file (not compared)
 
     friend bool operator==(const TrjRecord& a, const TrjRecord& b) {
         return a.time_s == b.time_s && a.position == b.position && a.roll_deg == b.roll_deg &&

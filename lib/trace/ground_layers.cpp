@@ -1,13 +1,13 @@
 // The IGM and GLT of a scanner image (ground_layers.hpp; cube(5), GEOLOCATION LAYERS).
 #include "trace/ground_layers.hpp"
 
+#include <cpl_conv.h>
+#include <ogr_spatialref.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-
-#include <cpl_conv.h>
-#include <ogr_spatialref.h>
 
 #include "core/error.hpp"
 #include "image/image.hpp"
@@ -35,7 +35,8 @@ double median_spacing(const GroundGrid& g, bool along_rows) {
         for (long c = 0; c + (along_rows ? 0 : 1) < g.columns; ++c) {
             const std::size_t i = static_cast<std::size_t>(r * g.columns + c);
             const std::size_t j = along_rows ? i + static_cast<std::size_t>(g.columns) : i + 1;
-            d.push_back(std::hypot(g.map_xy[j][0] - g.map_xy[i][0], g.map_xy[j][1] - g.map_xy[i][1]));
+            d.push_back(
+                std::hypot(g.map_xy[j][0] - g.map_xy[i][0], g.map_xy[j][1] - g.map_xy[i][1]));
         }
     return median(std::move(d));
 }
@@ -59,8 +60,9 @@ GroundGrid ground_grid(const Sensor& sensor, const scene::Scene& scene,
     g.scene = pixel_ground_points(sensor, scene, plane, row_begin, row_end);
     g.map_xy.assign(g.scene.size(), {kNan, kNan});
     std::optional<geo::MapProjector> map;
-    if (place) map.emplace(place->map_crs, place->latitude_deg, place->longitude_deg, 0.0,
-                           SourceLocation{"--crs", 0});
+    if (place)
+        map.emplace(place->map_crs, place->latitude_deg, place->longitude_deg, 0.0,
+                    SourceLocation{"--crs", 0});
     if (lon_lat_h) lon_lat_h->assign(g.scene.size(), {kNan, kNan, kNan});
     for (std::size_t i = 0; i < g.scene.size(); ++i) {
         const geo::Vec3& p = g.scene[i];
@@ -82,7 +84,8 @@ Glt make_glt(const GroundGrid& g, const std::string& where) {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (const auto& p : g.map_xy)
         if (std::isfinite(p[0]))
-            for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+            for (int k = 0; k < 2; ++k)
+                lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
     const double dr = median_spacing(g, true), dc = median_spacing(g, false);
     if (!(lo[0] <= hi[0]) || !(dr > 0) || !(dc > 0))
         throw DataError({where, 0}, "no pixel sees the ground: no geometry lookup table");
@@ -91,7 +94,8 @@ Glt make_glt(const GroundGrid& g, const std::string& where) {
     t.reach = std::max(dr, dc);
     t.x0 = std::floor(lo[0] / t.cell) * t.cell;
     t.y0 = std::ceil(hi[1] / t.cell) * t.cell;
-    const double cols = std::ceil((hi[0] - t.x0) / t.cell) + 1, rows = std::ceil((t.y0 - lo[1]) / t.cell) + 1;
+    const double cols = std::ceil((hi[0] - t.x0) / t.cell) + 1,
+                 rows = std::ceil((t.y0 - lo[1]) / t.cell) + 1;
     if (cols * rows > 64.0 * static_cast<double>(g.map_xy.size()) + 1e4)
         throw DataError({where, 0}, "the geometry lookup table would need " +
                                         std::to_string(static_cast<long>(cols * rows)) +

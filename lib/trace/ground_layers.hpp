@@ -21,8 +21,8 @@ namespace sigchain::trace {
 // sees no ground.
 struct GroundGrid {
     long rows = 0, columns = 0;
-    std::vector<geo::Vec3> scene;                // scene frame, scene units
-    std::vector<std::array<double, 2>> map_xy;   // the output frame's x and y
+    std::vector<geo::Vec3> scene;               // scene frame, scene units
+    std::vector<std::array<double, 2>> map_xy;  // the output frame's x and y
 };
 
 // A geometry lookup table: for a north-up grid of `cell` (the output frame's units)

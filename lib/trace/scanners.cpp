@@ -62,7 +62,8 @@ void PushbroomSensor::ray(double row, double column, geo::Vec3& origin,
 
 void PushbroomSensor::nominal_ray(double row, double column, geo::Vec3& origin,
                                   geo::Vec3& direction) const {
-    const double t = m_g.start_time_s + (row - 0.5) * m_g.line_period_s + 0.5 * m_g.integration_time_s;
+    const double t =
+        m_g.start_time_s + (row - 0.5) * m_g.line_period_s + 0.5 * m_g.integration_time_s;
     const geom::Pose pose = m_trajectory.pose(t);
     const double y = (column - 0.5 * static_cast<double>(m_g.detectors)) * m_g.pitch_mm;
     origin = pose.position;
@@ -111,8 +112,8 @@ void LineScannerSensor::ray(double row, double column, geo::Vec3& origin,
     const double theta = scan_angle_rad(column);
     const geom::Pose pose = m_trajectory.pose(time_of(row, column));
     origin = pose.position;
-    direction = geo::unit(pose.to_scene({std::sin(alpha), std::cos(alpha) * std::sin(theta),
-                                         std::cos(alpha) * std::cos(theta)}));
+    direction = geo::unit(pose.to_scene(
+        {std::sin(alpha), std::cos(alpha) * std::sin(theta), std::cos(alpha) * std::cos(theta)}));
 }
 
 double LineScannerSensor::view_angle_deg(const geo::Vec3& direction) const {

@@ -92,9 +92,7 @@ struct LineScanGeometry {
     double scan_period_s = 0, start_time_s = 0;
     bool bidirectional = false;
     bool scan_line_corrector = false;
-    double end_time_s() const {
-        return start_time_s + static_cast<double>(scans) * scan_period_s;
-    }
+    double end_time_s() const { return start_time_s + static_cast<double>(scans) * scan_period_s; }
 };
 
 class PushbroomSensor final : public Sensor {

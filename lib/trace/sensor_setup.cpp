@@ -47,9 +47,9 @@ T require(const AdvAt& at, const std::optional<T>& v, const char* name, const ch
 geom::Jitter jitter_of(const AdvAt& at) {
     const io::Adv& a = at.adv;
     if (a.jitter_amplitude_deg.has_value() != a.jitter_frequency_hz.has_value())
-        throw DataError(at.key(a.jitter_amplitude_deg ? "jitter_amplitude_deg"
-                                                      : "jitter_frequency_hz"),
-                        "expected jitter_amplitude_deg and jitter_frequency_hz together");
+        throw DataError(
+            at.key(a.jitter_amplitude_deg ? "jitter_amplitude_deg" : "jitter_frequency_hz"),
+            "expected jitter_amplitude_deg and jitter_frequency_hz together");
     geom::Jitter j;
     if (a.jitter_amplitude_deg) {
         j.amplitude_deg = *a.jitter_amplitude_deg;
@@ -65,15 +65,17 @@ geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, doubl
     const io::Adv& a = at.adv;
     const geom::Jitter jitter = jitter_of(at);
     if (!a.trajectory.empty()) {
-        refuse_keys(at, {"platform_speed_mps", "platform_heading_deg", "platform_roll_deg",
-                         "platform_pitch_deg"},
+        refuse_keys(at,
+                    {"platform_speed_mps", "platform_heading_deg", "platform_roll_deg",
+                     "platform_pitch_deg"},
                     "trajectory-carried");
         std::filesystem::path p(a.trajectory);
         if (p.is_relative()) p = std::filesystem::path(at.path).parent_path() / p;
         const std::string file = p.lexically_normal().string();
         return geom::Trajectory(io::read_trj_file(file), file, jitter);
     }
-    const double speed_mps = require(at, a.platform_speed_mps, "trajectory or platform_speed_mps", kind);
+    const double speed_mps =
+        require(at, a.platform_speed_mps, "trajectory or platform_speed_mps", kind);
     const double heading = require(at, a.platform_heading_deg, "platform_heading_deg", kind);
     return geom::Trajectory::straight(a.camera, speed_mps / io::meters_per_unit(a.units), heading,
                                       a.platform_roll_deg.value_or(0),
@@ -82,8 +84,9 @@ geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, doubl
 
 std::unique_ptr<Sensor> make_pushbroom(const AdvAt& at) {
     const io::Adv& a = at.adv;
-    refuse_keys(at, {"scan_half_angle_deg", "scan_period_s", "detectors_per_scan", "scan_direction",
-                     "scan_line_corrector"},
+    refuse_keys(at,
+                {"scan_half_angle_deg", "scan_period_s", "detectors_per_scan", "scan_direction",
+                 "scan_line_corrector"},
                 "pushbroom");
     PushbroomGeometry g;
     g.lines = a.rows;
@@ -136,11 +139,11 @@ std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_p
         case io::SensorKind::Frame:
             break;
     }
-    refuse_keys(at, {"trajectory", "platform_speed_mps", "platform_heading_deg",
-                     "platform_roll_deg", "platform_pitch_deg", "jitter_amplitude_deg",
-                     "jitter_frequency_hz", "start_time_s", "line_period_s",
-                     "integration_time_s", "scan_half_angle_deg", "scan_period_s",
-                     "detectors_per_scan", "scan_direction", "scan_line_corrector"},
+    refuse_keys(at,
+                {"trajectory", "platform_speed_mps", "platform_heading_deg", "platform_roll_deg",
+                 "platform_pitch_deg", "jitter_amplitude_deg", "jitter_frequency_hz",
+                 "start_time_s", "line_period_s", "integration_time_s", "scan_half_angle_deg",
+                 "scan_period_s", "detectors_per_scan", "scan_direction", "scan_line_corrector"},
                 "frame");
     return std::make_unique<FrameSensor>(geom::frame_camera(adv, adv_path));
 }

@@ -65,7 +65,8 @@ TEST(Trajectory, HermiteReproducesPolynomials) {
     const auto cubic = [](double t) { return Vec3{1 + 2 * t - t * t * t, 3 * t * t, 100 - 5 * t}; };
     const auto dcubic = [](double t) { return Vec3{2 - 3 * t * t, 6 * t, -5}; };
     io::Trj trj;
-    for (double t : {0.0, 0.7, 2.0, 3.5}) trj.records.push_back(record(t, cubic(t), 0, 0, 0, dcubic(t)));
+    for (double t : {0.0, 0.7, 2.0, 3.5})
+        trj.records.push_back(record(t, cubic(t), 0, 0, 0, dcubic(t)));
     const geom::Trajectory with_v(trj, "t.trj");
     for (double t = 0; t <= 3.5; t += 0.13) expect_near(with_v.pose(t).position, cubic(t), 1e-9);
     const auto quad = [](double t) { return Vec3{t * t, 2 * t, 7}; };
@@ -88,7 +89,8 @@ TEST(Trajectory, StraightFlightAndCoverage) {
         f.require_covers(0.5, 2, "the image");
         FAIL() << "no error";
     } catch (const DataError& e) {
-        EXPECT_STREQ(e.what(), "f.trj:3: the trajectory ends at 1 s but the image spans 0.5 to 2 s");
+        EXPECT_STREQ(e.what(),
+                     "f.trj:3: the trajectory ends at 1 s but the image spans 0.5 to 2 s");
     }
 }
 

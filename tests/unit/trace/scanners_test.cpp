@@ -10,9 +10,9 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "test_scene.hpp"
 #include "trace/georef.hpp"
 #include "trace/sensor.hpp"
-#include "test_scene.hpp"
 
 using namespace sigchain;
 using geo::Vec3;
@@ -122,7 +122,8 @@ TEST(Scanners, LineScannerPanoramicGrowth) {
         EXPECT_NEAR(dx / want, 1.0, 1e-6) << "column " << col;
     }
     const double at_nadir = (ground(*s, 5.5, 200 + h)[0] - ground(*s, 5.5, 200 - h)[0]) / (2 * h);
-    const double at_edge = (ground(*s, 5.5, 399.5 + h)[0] - ground(*s, 5.5, 399.5 - h)[0]) / (2 * h);
+    const double at_edge =
+        (ground(*s, 5.5, 399.5 + h)[0] - ground(*s, 5.5, 399.5 - h)[0]) / (2 * h);
     const double edge_theta = ls->scan_angle_rad(399.5);
     EXPECT_NEAR(at_edge / at_nadir * std::cos(edge_theta) * std::cos(edge_theta), 1.0, 1e-6);
 }
@@ -205,18 +206,22 @@ TEST(Scanners, KeysAreCheckedAgainstTheSensorKind) {
     io::Adv a = pushbroom_adv();
     a.lines.keys["sensor"] = 6;
     a.line_period_s.reset();
-    EXPECT_EQ(error_of(a), "s.adv:6: expected a line_period_s key for a pushbroom sensor (adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(a),
+              "s.adv:6: expected a line_period_s key for a pushbroom sensor (adv(5), SCANNERS)");
     a = pushbroom_adv();
     a.integration_time_s = 0.02;
     a.lines.keys["integration_time_s"] = 9;
-    EXPECT_EQ(error_of(a), "s.adv:9: expected integration_time_s at most line_period_s (0.01 s), found 0.02");
+    EXPECT_EQ(error_of(a),
+              "s.adv:9: expected integration_time_s at most line_period_s (0.01 s), found 0.02");
     a = line_adv(false);
     a.rows = 41;
-    EXPECT_EQ(error_of(a), "s.adv:5: expected image rows a multiple of detectors_per_scan (4), found 41");
+    EXPECT_EQ(error_of(a),
+              "s.adv:5: expected image rows a multiple of detectors_per_scan (4), found 41");
     a = line_adv(false);
     a.line_period_s = 1;
     a.lines.keys["line_period_s"] = 8;
-    EXPECT_EQ(error_of(a), "s.adv:8: expected no line_period_s for a line sensor (adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(a),
+              "s.adv:8: expected no line_period_s for a line sensor (adv(5), SCANNERS)");
 }
 
 // A trajectory that ends before the image does is refused at its last record.
@@ -232,8 +237,9 @@ TEST(Scanners, TrajectoryMustCoverTheImage) {
         FAIL() << "no error";
     } catch (const DataError& e) {
         const std::string trj = std::filesystem::path(dir + "/short.trj").lexically_normal();
-        EXPECT_EQ(std::string(e.what()),
-                  trj + ":3: the trajectory ends at 1 s but the pushbroom image spans 0 to 1.994 s");
+        EXPECT_EQ(
+            std::string(e.what()),
+            trj + ":3: the trajectory ends at 1 s but the pushbroom image spans 0 to 1.994 s");
     }
     a.rows = 100;  // 0 to 0.994 s: covered, and the .trj's motion is used
     const auto s = trace::make_sensor(a, dir + "/p.adv");
