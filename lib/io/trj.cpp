@@ -7,6 +7,32 @@ namespace sigchain::io {
 
 namespace {
 
+// The optional header line `position = scene|geodetic` (before the first record).
+void parse_header(LineCursor& cur, Trj& trj) {
+    if (cur.at_end()) return;
+    const Line& line = cur.peek("trajectory record");
+    const SourceLocation at = cur.where(line);
+    const auto kv = split_key_value(line.text, at);
+    if (!kv) return;
+    cur.next("position = scene|geodetic");
+    if (kv->key != "position")
+        throw DataError(at, "expected key position, found " + quoted(kv->key));
+    if (kv->value != "scene" && kv->value != "geodetic")
+        throw DataError(at, "expected position scene or geodetic, found " + quoted(kv->value));
+    trj.geodetic = kv->value == "geodetic";
+}
+
+// A geodetic row: latitude and longitude in range, no velocity.
+void check_geodetic(const TrjRecord& r, const SourceLocation& at, std::string_view text) {
+    const auto f = split_fields(text);
+    if (r.velocity)
+        throw DataError(at, "expected 7 fields in a geodetic trajectory (no velocity), found 10");
+    if (r.position[0] < -90 || r.position[0] > 90)
+        throw DataError(at, "expected latitude (deg) from -90 to 90, found " + quoted(f[1]));
+    if (r.position[1] < -360 || r.position[1] > 360)
+        throw DataError(at, "expected longitude (deg) from -360 to 360, found " + quoted(f[2]));
+}
+
 TrjRecord parse_record(const Line& line, const SourceLocation& at) {
     const auto f = split_fields(line.text);
     if (f.size() != 7 && f.size() != 10)
@@ -44,10 +70,12 @@ Trj parse_trj(const TextInput& in) {
     const int minor = require_magic_line(in, "trj", 1);
     LineCursor cur(in);
     Trj trj;
+    parse_header(cur, trj);
     while (!cur.at_end()) {
         const Line& line = cur.next("trajectory record");
         const SourceLocation at = cur.where(line);
         TrjRecord r = parse_record(line, at);
+        if (trj.geodetic) check_geodetic(r, at, line.text);
         if (!trj.records.empty()) check_sequence(trj.records.back(), r, at);
         trj.records.push_back(r);
     }
@@ -60,7 +88,12 @@ Trj parse_trj(const TextInput& in) {
 }
 
 void write_trj(std::ostream& out, const Trj& trj) {
-    out << "# sigchain-trj 1.1\n# time_s x y z roll_deg pitch_deg yaw_deg [vx vy vz]\n";
+    out << "# sigchain-trj 1.1\n";
+    if (trj.geodetic)
+        out << "position = geodetic\n# time_s latitude_deg longitude_deg height_m roll_deg "
+               "pitch_deg yaw_deg\n";
+    else
+        out << "# time_s x y z roll_deg pitch_deg yaw_deg [vx vy vz]\n";
     for (const TrjRecord& r : trj.records) {
         out << format_number(r.time_s);
         for (double v : r.position) out << ' ' << format_number(v);
@@ -80,6 +113,7 @@ FormatHandler trj_format() {
                 return std::to_string(t.records.size()) + " records, " +
                        format_number(t.records.front().time_s) + " to " +
                        format_number(t.records.back().time_s) + " s" +
+                       (t.geodetic ? ", geodetic" : "") +
                        (t.records.front().velocity ? ", with velocities" : "");
             },
             [](const TextInput& in, std::ostream& out) { write_trj(out, parse_trj(in)); }};

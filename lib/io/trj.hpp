@@ -31,13 +31,17 @@ struct TrjRecord {
 };
 
 struct Trj {
+    // `position = geodetic` (header line): x y z are WGS84 latitude, longitude (deg) and
+    // ellipsoidal height (m), and rows carry no velocity; else scene coordinates.
+    bool geodetic = false;
     std::vector<TrjRecord> records;  // at least kTrjMinRecords, times strictly increasing
     bool operator==(const Trj&) const = default;
 };
 
 inline constexpr std::size_t kTrjMinRecords = 2;
 
-// Reads version 1.x: "# sigchain-trj 1", rows of 7 or 10 numbers, "# sigchain-end N".
+// Reads version 1.x: "# sigchain-trj 1", an optional `position = scene|geodetic` line,
+// rows of 7 or 10 numbers (7 when geodetic), "# sigchain-end N".
 // Throws DataError at the offending line (bad number, wrong field count, a velocity
 // on some rows only, a time not after the previous one, too few records).
 Trj parse_trj(const TextInput& in);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "geo/vec3.hpp"
@@ -137,10 +138,18 @@ private:
     geo::Vec3 m_reference{};
 };
 
+// The geodetic origin of the scene frame (the .snd's latitude and longitude, height 0 on
+// WGS84), where a geodetic .trj (trj(5)) is placed.
+struct SceneOrigin {
+    double latitude_deg = 0, longitude_deg = 0;
+};
+
 // The sensor an .adv describes (adv(5)): its frame camera, or a pushbroom or line scanner
 // on the platform of its `trajectory` (a .trj beside the .adv) or straight-flight keys.
 // Throws DataError naming the .adv (or .trj) and line for missing, conflicting or
-// inapplicable keys and for a trajectory that does not cover the image's time span.
-std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_path);
+// inapplicable keys, a geodetic .trj without `origin`, and a trajectory that does not
+// cover the image's time span.
+std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_path,
+                                    std::optional<SceneOrigin> origin = std::nullopt);
 
 }  // namespace sigchain::trace

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "geo/crs.hpp"
 #include "io/trj.hpp"
 #include "trace/sensor.hpp"
 
@@ -20,6 +21,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 struct AdvAt {
     const io::Adv& adv;
     const std::string& path;
+    std::optional<SceneOrigin> origin;
     SourceLocation key(const std::string& name) const {
         const auto it = adv.lines.keys.find(name);
         return {path, it == adv.lines.keys.end() ? adv.lines.size : it->second};
@@ -58,6 +60,19 @@ geom::Jitter jitter_of(const AdvAt& at) {
     return j;
 }
 
+// A geodetic .trj's latitude, longitude and height in the scene frame: east-north-up
+// about the scene's origin (GeographicLib's LocalCartesian), in scene units.
+void place_geodetic(const AdvAt& at, const std::string& file, io::Trj& trj) {
+    if (!at.origin)
+        throw DataError({file, trj.records.front().line},
+                        "a geodetic trajectory needs the scene's geodetic origin (the .snd's)");
+    const geo::LocalEnu enu(at.origin->latitude_deg, at.origin->longitude_deg, 0.0);
+    const double mpu = io::meters_per_unit(at.adv.units);
+    for (io::TrjRecord& r : trj.records)
+        r.position = geo::scale(enu.forward(r.position[0], r.position[1], r.position[2]), 1 / mpu);
+    trj.geodetic = false;
+}
+
 // The platform: the .trj the `trajectory` key names (relative to the .adv's folder), or a
 // straight flight from the camera point (line 2) at platform_speed_mps toward
 // platform_heading_deg, over [t0, t1].
@@ -72,7 +87,9 @@ geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, doubl
         std::filesystem::path p(a.trajectory);
         if (p.is_relative()) p = std::filesystem::path(at.path).parent_path() / p;
         const std::string file = p.lexically_normal().string();
-        return geom::Trajectory(io::read_trj_file(file), file, jitter);
+        io::Trj trj = io::read_trj_file(file);
+        if (trj.geodetic) place_geodetic(at, file, trj);
+        return geom::Trajectory(trj, file, jitter);
     }
     const double speed_mps =
         require(at, a.platform_speed_mps, "trajectory or platform_speed_mps", kind);
@@ -129,8 +146,9 @@ std::unique_ptr<Sensor> make_line_scanner(const AdvAt& at) {
 
 }  // namespace
 
-std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_path) {
-    const AdvAt at{adv, adv_path};
+std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_path,
+                                    std::optional<SceneOrigin> origin) {
+    const AdvAt at{adv, adv_path, origin};
     switch (adv.sensor) {
         case io::SensorKind::Pushbroom:
             return make_pushbroom(at);

@@ -506,7 +506,8 @@ TraceReport run_trace(const TraceJob& job, const Reporter& reporter) {
     report.materials = materials.materials().size();
     const scene::Scene scene = read_scene(job, st, materials, report, reporter);
     const Temperatures temperatures = read_temperatures(job, grid, scene, reporter);
-    const std::unique_ptr<Sensor> sensor = make_sensor(st.adv, job.adv_path);
+    const std::unique_ptr<Sensor> sensor = make_sensor(
+        st.adv, job.adv_path, SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
     const Sensor& camera = *sensor;
     reporter.info("sensor: " + camera.summary());
     check_view_angles(camera, atmosphere, reporter);

@@ -120,6 +120,10 @@ render() {
         > flight.trj
     run -0 sigchain-check flight.trj
     assert_output "flight.trj: ok: 2 records, 0 to 10 s"
+    printf '# sigchain-trj 1\nposition = geodetic\n0 -8 -34.9 705000 0 0 191.6\n1 -8.06 -34.91 705000 0 0 191.6\n' \
+        > orbit.trj
+    run -0 sigchain-check orbit.trj
+    assert_output "orbit.trj: ok: 2 records, 0 to 1 s, geodetic"
     cat > line.adv <<'EOF2'
 10 10 0
 10 0 30

@@ -62,3 +62,23 @@ TEST(Trj, RejectsBadRecordsNamingTheLine) {
     EXPECT_EQ(error_of("# sigchain-trj 1.1\n0 0 0 1 0 0 0\n1 0 0 1 0 0 0\n").substr(0, 8),
               "t.trj:3:");  // a 1.1 file without its end line: truncated
 }
+
+TEST(Trj, GeodeticPositions) {
+    const std::string text =
+        "# sigchain-trj 1\nposition = geodetic\n0 -8.0 -34.9 705000 0 0 191.6\n"
+        "1 -8.06 -34.91 705000 0 0 191.6\n";
+    const Trj t = parse_trj(TextInput::from_string(text, "g.trj"));
+    EXPECT_TRUE(t.geodetic);
+    EXPECT_EQ(t.records[1].position, (geo::Vec3{-8.06, -34.91, 705000}));
+    std::ostringstream out;
+    write_trj(out, t);
+    EXPECT_EQ(parse_trj(TextInput::from_string(out.str(), "w.trj")), t);
+    EXPECT_EQ(error_of("# sigchain-trj 1\nposition = geodetic\n0 91 0 1 0 0 0\n1 0 0 1 0 0 0\n"),
+              "t.trj:3: expected latitude (deg) from -90 to 90, found '91'");
+    EXPECT_EQ(
+        error_of(
+            "# sigchain-trj 1\nposition = geodetic\n0 1 0 1 0 0 0 1 1 1\n1 1 0 1 0 0 0 1 1 1\n"),
+        "t.trj:3: expected 7 fields in a geodetic trajectory (no velocity), found 10");
+    EXPECT_EQ(error_of("# sigchain-trj 1\nposition = lla\n"),
+              "t.trj:2: expected position scene or geodetic, found 'lla'");
+}

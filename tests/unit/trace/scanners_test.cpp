@@ -5,6 +5,7 @@
 // altitude x scan step / cos^2(scan angle) (ground x = H tan theta).
 #include <gtest/gtest.h>
 
+#include <GeographicLib/LocalCartesian.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -244,4 +245,37 @@ TEST(Scanners, TrajectoryMustCoverTheImage) {
     a.rows = 100;  // 0 to 0.994 s: covered, and the .trj's motion is used
     const auto s = trace::make_sensor(a, dir + "/p.adv");
     EXPECT_NEAR(ground(*s, 50.5, 32)[1], 50 * 0.502, 1e-9);
+}
+
+// A geodetic .trj is placed east-north-up about the scene's origin: records written as
+// the latitude, longitude and height of scene points (0, -100, 1000) and (0, 100, 1000)
+// about (-8, -34.9) fly the pushbroom through (0, 0, 1000) halfway (1e-6 m: the
+// geodetic round trip, GeographicLib's, is exact to nanometres).
+TEST(Scanners, GeodeticTrajectoryIsPlacedAboutTheOrigin) {
+    const GeographicLib::LocalCartesian enu(-8, -34.9, 0);
+    double lat[2], lon[2], h[2];
+    enu.Reverse(0, -100, 1000, lat[0], lon[0], h[0]);
+    enu.Reverse(0, 100, 1000, lat[1], lon[1], h[1]);
+    const std::string dir = ::testing::TempDir();
+    {
+        std::ofstream f(dir + "/geo.trj");
+        f.precision(17);
+        f << "# sigchain-trj 1\nposition = geodetic\n";
+        for (int k = 0; k < 2; ++k)
+            f << 4 * k << ' ' << lat[k] << ' ' << lon[k] << ' ' << h[k] << " 0 0 0\n";
+    }
+    io::Adv a = pushbroom_adv();
+    a.platform_speed_mps.reset();
+    a.platform_heading_deg.reset();
+    a.trajectory = "geo.trj";
+    a.rows = 100;
+    a.line_period_s = 0.04;
+    a.integration_time_s = 0.04;
+    EXPECT_THROW(trace::make_sensor(a, dir + "/p.adv"), DataError);  // no origin given
+    const auto s = trace::make_sensor(a, dir + "/p.adv", trace::SceneOrigin{-8, -34.9});
+    Vec3 o{}, d{};
+    s->ray(50, 32, o, d);  // u = 0 of line 50: t = 2 s, halfway
+    EXPECT_NEAR(o[0], 0.0, 1e-6);
+    EXPECT_NEAR(o[1], 0.0, 1e-6);
+    EXPECT_NEAR(o[2], 1000.0, 1e-6);
 }
