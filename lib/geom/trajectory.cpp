@@ -91,7 +91,61 @@ Trajectory Trajectory::straight(const Vec3& start, double speed, double heading_
     return t;
 }
 
+namespace {
+
+// A standard normal number from (seed, step, axis): splitmix64 (Steele, Lea & Flood
+// 2014) of the counter, two uniforms, Box-Muller's cosine branch.
+double normal_of(std::uint64_t seed, std::uint64_t step, int axis) {
+    const auto mix = [](std::uint64_t x) {
+        x += 0x9e3779b97f4a7c15ULL;
+        x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+        return x ^ (x >> 31);
+    };
+    const std::uint64_t a = mix(mix(seed) ^ (3 * step + static_cast<std::uint64_t>(axis)));
+    const std::uint64_t b = mix(a);
+    const double u1 = (static_cast<double>(a >> 11) + 0.5) * 0x1.0p-53;  // (0, 1)
+    const double u2 = static_cast<double>(b >> 11) * 0x1.0p-53;
+    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
+}
+
+// At most this many walk steps (10^4 s of flight at kWalkStep_s; 240 MB).
+constexpr double kMaxWalkSteps = 1e7;
+
+}  // namespace
+
+void Trajectory::prepare_walk() {
+    m_walk.clear();
+    if (m_jitter.walk_deg == Vec3{}) return;
+    const double steps = std::ceil((t_end() - t_begin()) / kWalkStep_s) + 1;
+    if (steps > kMaxWalkSteps)
+        throw DataError({m_file, m_records.back().line},
+                        "a random-walk jitter over " + format_number(t_end() - t_begin()) +
+                            " s needs more than 10^7 steps of 1 ms");
+    m_walk.assign(static_cast<std::size_t>(steps) + 1, Vec3{});
+    const double sd = std::sqrt(kWalkStep_s) * kDeg;
+    for (std::size_t j = 1; j < m_walk.size(); ++j)
+        for (int k = 0; k < 3; ++k)
+            m_walk[j][k] =
+                m_walk[j - 1][k] + m_jitter.walk_deg[k] * sd * normal_of(m_jitter.seed, j, k);
+}
+
+Vec3 Trajectory::jitter_offset_rad(double t) const {
+    Vec3 off{};
+    for (int k = 0; k < 3; ++k)
+        off[k] = m_jitter.amplitude_deg[k] * kDeg *
+                 std::sin(2 * std::numbers::pi * m_jitter.frequency_hz[k] * t);
+    if (m_walk.empty()) return off;
+    const double x =
+        std::clamp((t - t_begin()) / kWalkStep_s, 0.0, static_cast<double>(m_walk.size() - 1));
+    const std::size_t j = std::min(static_cast<std::size_t>(x), m_walk.size() - 2);
+    const double f = x - static_cast<double>(j);
+    for (int k = 0; k < 3; ++k) off[k] += (1 - f) * m_walk[j][k] + f * m_walk[j + 1][k];
+    return off;
+}
+
 void Trajectory::prepare() {
+    prepare_walk();
     const std::size_t n = m_records.size();
     m_tangents.resize(n);
     m_attitudes.resize(n);
@@ -127,10 +181,7 @@ Pose Trajectory::pose(double t) const {
                         h11 * h * m_tangents[i + 1][k];
     Quaternion q = slerp(m_attitudes[i], m_attitudes[i + 1], s);
     if (m_jitter.active()) {
-        Vec3 off{};
-        for (int k = 0; k < 3; ++k)
-            off[k] = m_jitter.amplitude_deg[k] * kDeg *
-                     std::sin(2 * std::numbers::pi * m_jitter.frequency_hz[k] * t);
+        const Vec3 off = jitter_offset_rad(t);
         q = q * attitude_quaternion(off[0], off[1], off[2]);
     }
     p.forward = ned_to_enu(q.rotate({1, 0, 0}));

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,13 +43,20 @@ struct Pose {
     Vec3 to_scene(const Vec3& body) const;
 };
 
-// Sinusoidal attitude jitter (adv(5) jitter keys): the body is further turned by
-// roll, pitch and yaw offsets A_i sin(2 pi f_i t) (deg, Hz, t in s) about its own axes.
+// Attitude jitter (adv(5) jitter keys): the body is further turned about its own axes by
+// roll, pitch and yaw offsets A_i sin(2 pi f_i t) (deg, Hz, t in s) plus a seeded random
+// walk W_i(t): Gaussian steps of sigma_i sqrt(dt) every dt = kWalkStep_s from the
+// trajectory's start (sigma in deg per sqrt(s), so Var W_i(t) = sigma_i^2 t), linear
+// between steps; step k of axis i is a counter-based hash of (seed, k, i), so the same
+// seed gives the same walk whatever the order of the queries.
 struct Jitter {
     Vec3 amplitude_deg{};  // roll, pitch, yaw
     Vec3 frequency_hz{};
-    bool active() const { return amplitude_deg != Vec3{}; }
+    Vec3 walk_deg{};  // random-walk sigma per sqrt(s), roll, pitch, yaw
+    std::uint64_t seed = 1;
+    bool active() const { return amplitude_deg != Vec3{} || walk_deg != Vec3{}; }
 };
+inline constexpr double kWalkStep_s = 1e-3;
 
 class Trajectory {
 public:
@@ -75,11 +83,14 @@ public:
 private:
     Trajectory() = default;
     void prepare();
+    void prepare_walk();
     std::vector<io::TrjRecord> m_records;
     std::vector<Vec3> m_tangents;         // position derivative at each record
     std::vector<Quaternion> m_attitudes;  // body -> NED at each record
     std::string m_file;                   // "" for a straight flight
     Jitter m_jitter;
+    std::vector<Vec3> m_walk;  // the random walk (rad) at t_begin + k kWalkStep_s
+    Vec3 jitter_offset_rad(double t) const;
 };
 
 }  // namespace sigchain::geom

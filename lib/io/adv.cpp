@@ -140,6 +140,14 @@ void parse_jitter_amplitude(std::string_view v, const SourceLocation& at, Adv& a
 void parse_jitter_frequency(std::string_view v, const SourceLocation& at, Adv& adv) {
     adv.jitter_frequency_hz = key_triple(v, at, "jitter_frequency_hz", 0, 1e6);
 }
+void parse_jitter_walk(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.jitter_walk_deg = key_triple(v, at, "jitter_walk_deg", 0, 10);
+}
+void parse_jitter_seed(std::string_view v, const SourceLocation& at, Adv& adv) {
+    const long n = parse_long(v, at, "jitter_seed");
+    if (n < 0) throw DataError(at, "expected jitter_seed at or above 0, found " + quoted(v));
+    adv.jitter_seed = n;
+}
 void parse_start_time(std::string_view v, const SourceLocation& at, Adv& adv) {
     adv.start_time_s = key_number(v, at, "start_time_s", -kMaxSeconds, kMaxSeconds, false);
 }
@@ -188,6 +196,8 @@ const std::map<std::string_view, Setter>& key_setters() {
         {"platform_pitch_deg", parse_platform_pitch},
         {"jitter_amplitude_deg", parse_jitter_amplitude},
         {"jitter_frequency_hz", parse_jitter_frequency},
+        {"jitter_walk_deg", parse_jitter_walk},
+        {"jitter_seed", parse_jitter_seed},
         {"start_time_s", parse_start_time},
         {"line_period_s", parse_line_period},
         {"integration_time_s", parse_integration},
@@ -259,6 +269,8 @@ void write_scanner_keys(std::ostream& out, const Adv& adv) {
     write_key(out, "platform_pitch_deg", adv.platform_pitch_deg);
     write_key(out, "jitter_amplitude_deg", adv.jitter_amplitude_deg);
     write_key(out, "jitter_frequency_hz", adv.jitter_frequency_hz);
+    write_key(out, "jitter_walk_deg", adv.jitter_walk_deg);
+    if (adv.jitter_seed) out << "jitter_seed = " << *adv.jitter_seed << '\n';
     write_key(out, "start_time_s", adv.start_time_s);
     write_key(out, "line_period_s", adv.line_period_s);
     write_key(out, "integration_time_s", adv.integration_time_s);

@@ -43,6 +43,8 @@ struct Adv {
     std::optional<double> platform_roll_deg, platform_pitch_deg;
     std::optional<geo::Vec3> jitter_amplitude_deg;  // roll pitch yaw sine amplitudes
     std::optional<geo::Vec3> jitter_frequency_hz;   // roll pitch yaw sine frequencies
+    std::optional<geo::Vec3> jitter_walk_deg;  // random-walk sigma per sqrt(s), r p y
+    std::optional<long> jitter_seed;           // the walk's seed
     std::optional<double> start_time_s;
     std::optional<double> line_period_s, integration_time_s;  // pushbroom
     std::optional<double> scan_half_angle_deg, scan_period_s;  // line scanner

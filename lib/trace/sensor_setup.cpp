@@ -57,6 +57,8 @@ geom::Jitter jitter_of(const AdvAt& at) {
         j.amplitude_deg = *a.jitter_amplitude_deg;
         j.frequency_hz = *a.jitter_frequency_hz;
     }
+    if (a.jitter_walk_deg) j.walk_deg = *a.jitter_walk_deg;
+    if (a.jitter_seed) j.seed = static_cast<std::uint64_t>(*a.jitter_seed);
     return j;
 }
 
@@ -160,8 +162,9 @@ std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_p
     refuse_keys(at,
                 {"trajectory", "platform_speed_mps", "platform_heading_deg", "platform_roll_deg",
                  "platform_pitch_deg", "jitter_amplitude_deg", "jitter_frequency_hz",
-                 "start_time_s", "line_period_s", "integration_time_s", "scan_half_angle_deg",
-                 "scan_period_s", "detectors_per_scan", "scan_direction", "scan_line_corrector"},
+                 "jitter_walk_deg", "jitter_seed", "start_time_s", "line_period_s",
+                 "integration_time_s", "scan_half_angle_deg", "scan_period_s", "detectors_per_scan",
+                 "scan_direction", "scan_line_corrector"},
                 "frame");
     return std::make_unique<FrameSensor>(geom::frame_camera(adv, adv_path));
 }

@@ -102,3 +102,35 @@ TEST(Trajectory, SineJitter) {
     expect_near(t.pose(1).forward, {std::sin(2 * kDeg), std::cos(2 * kDeg), 0}, 1e-15);
     expect_near(t.pose(2).forward, {0, 1, 0}, 1e-14);
 }
+
+// The seeded random walk: the same seed gives the same attitude whatever the order of
+// the queries, another seed another; Var W(t) = sigma^2 t. Over 400 seeds the sample
+// variance of the roll at t = 1 s is sigma^2 to within 25 % (the estimate's relative
+// standard deviation is sqrt(2 / 400) = 7 %: 25 % is 3.5 of them) and at t = 0 it is 0.
+TEST(Trajectory, SeededRandomWalkJitter) {
+    const auto roll_deg = [](const geom::Trajectory& t, double time) {
+        return std::asin(-t.pose(time).right[2]) / kDeg;  // level, heading north
+    };
+    geom::Jitter j;
+    j.walk_deg = {0.5, 0, 0};
+    j.seed = 7;
+    const geom::Trajectory a = geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
+    const double late = roll_deg(a, 1.7), early = roll_deg(a, 0.3);
+    const geom::Trajectory b = geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
+    EXPECT_EQ(roll_deg(b, 0.3), early);
+    EXPECT_EQ(roll_deg(b, 1.7), late);
+    j.seed = 8;
+    EXPECT_NE(roll_deg(geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j), 1.7), late);
+    double sum = 0, sum2 = 0;
+    const int n = 400;
+    for (int seed = 0; seed < n; ++seed) {
+        j.seed = static_cast<std::uint64_t>(seed);
+        const geom::Trajectory t = geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
+        EXPECT_NEAR(roll_deg(t, 0), 0.0, 1e-12);
+        const double r = roll_deg(t, 1.0);
+        sum += r;
+        sum2 += r * r;
+    }
+    const double var = (sum2 - sum * sum / n) / (n - 1);
+    EXPECT_NEAR(var / (0.5 * 0.5 * 1.0), 1.0, 0.25);
+}

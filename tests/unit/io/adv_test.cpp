@@ -153,7 +153,8 @@ TEST(Adv, ScannerKeysParseAndRoundTrip) {
                              "sensor = line\ntrajectory = flight.trj\nplatform_speed_mps = 6800\n"
                              "platform_heading_deg = -8.2\nplatform_roll_deg = 1.5\n"
                              "platform_pitch_deg = -0.5\njitter_amplitude_deg = 0.001 0 0.002\n"
-                             "jitter_frequency_hz = 7 0 0.5\nstart_time_s = 12.5\n"
+                             "jitter_frequency_hz = 7 0 0.5\njitter_walk_deg = 0.01 0.02 0\n"
+                             "jitter_seed = 42\nstart_time_s = 12.5\n"
                              "scan_half_angle_deg = 7.5\nscan_period_s = 0.0714\n"
                              "detectors_per_scan = 16\nscan_direction = bidirectional\n"
                              "scan_line_corrector = on\n";
@@ -165,7 +166,9 @@ TEST(Adv, ScannerKeysParseAndRoundTrip) {
     EXPECT_EQ(a.detectors_per_scan, 16);
     EXPECT_EQ(a.scan_bidirectional, true);
     EXPECT_EQ(a.scan_line_corrector, true);
-    EXPECT_EQ(a.lines.keys.at("scan_period_s"), 16);
+    EXPECT_EQ(a.jitter_walk_deg, (geo::Vec3{0.01, 0.02, 0}));
+    EXPECT_EQ(a.jitter_seed, 42);
+    EXPECT_EQ(a.lines.keys.at("scan_period_s"), 18);
     EXPECT_EQ(parse_adv(TextInput::from_string(written(a), "w.adv")), a);
     const Adv p = parse_adv(TextInput::from_string(
         kLegacy + "sensor = pushbroom\nline_period_s = 0.01\nintegration_time_s = 0.005\n",
