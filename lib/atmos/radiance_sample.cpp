@@ -236,7 +236,8 @@ SampleResult solve_term(const SampleSetup& s, const std::vector<LayerOptics>& co
     if (s.sun_up) {
         prob.beam_flux = sample.solar_irradiance;
         prob.beam_mu0 = s.mu0;
-        sol.solar = rt::solve(prob);
+        sol.solar = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
+        add_ground_reflection(prob, s.deck.surface_albedo, 1, sol.solar);
     }
     res.thermal = terms != nullptr;
     if (terms) {  // toward the ground (L_de) and toward the sensor (L_ue)

@@ -79,6 +79,12 @@ std::array<double, 2> MapProjector::lon_lat(const Vec3& enu_m) const {
     return {lon, lat};
 }
 
+std::array<double, 3> MapProjector::lon_lat_height(const Vec3& enu_m) const {
+    double lat = 0, lon = 0, h = 0;
+    m_impl->enu.Reverse(enu_m[0], enu_m[1], enu_m[2], lat, lon, h);
+    return {lon, lat, h};
+}
+
 std::array<double, 2> MapProjector::map_xy(const Vec3& enu_m) const {
     auto [x, y] = lon_lat(enu_m);
     int ok = 0;

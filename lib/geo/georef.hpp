@@ -42,6 +42,8 @@ public:
 
     // WGS84 longitude and latitude (deg) of a scene point (m), {lon, lat}.
     std::array<double, 2> lon_lat(const Vec3& enu_m) const;
+    // WGS84 longitude, latitude (deg) and ellipsoidal height (m) of a scene point (m).
+    std::array<double, 3> lon_lat_height(const Vec3& enu_m) const;
     // Map coordinates (x easting or longitude, y northing or latitude) of a scene point
     // (m); throws DataError when the point cannot be transformed.
     std::array<double, 2> map_xy(const Vec3& enu_m) const;

@@ -95,15 +95,123 @@ void parse_samples(std::string_view v, const SourceLocation& at, Adv& adv) {
     adv.has_samples = true;
 }
 
-// The optional `key = value` lines after the legacy five.
-void parse_keys(LineCursor& cur, Adv& adv) {
-    using Setter = void (*)(std::string_view, const SourceLocation&, Adv&);
+// A number for a scanner or platform key, in [lo, hi] (or > lo when `open_low`).
+double key_number(std::string_view v, const SourceLocation& at, const char* key, double lo,
+                  double hi, bool open_low) {
+    const double x = parse_double(v, at, key);
+    if (x < lo || x > hi || (open_low && x == lo))
+        throw DataError(at, std::string("expected ") + key + (open_low ? " above " : " from ") +
+                                format_number(lo) + (open_low ? " and at most " : " to ") +
+                                format_number(hi) + ", found " + quoted(v));
+    return x;
+}
+
+geo::Vec3 key_triple(std::string_view v, const SourceLocation& at, const char* key, double lo,
+                     double hi) {
+    const auto f = split_fields(v);
+    if (f.size() != 3)
+        throw DataError(at, std::string("expected ") + key +
+                                " as three numbers (roll pitch yaw), found " + quoted(v));
+    geo::Vec3 out{};
+    for (int i = 0; i < 3; ++i) out[i] = key_number(f[i], at, key, lo, hi, false);
+    return out;
+}
+
+constexpr double kMaxSeconds = 1e9;  // keeps times finite and their sums exact enough
+
+void parse_trajectory(std::string_view v, const SourceLocation&, Adv& adv) {
+    adv.trajectory = std::string(v);
+}
+void parse_speed(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.platform_speed_mps = key_number(v, at, "platform_speed_mps", 0, 1e5, false);
+}
+void parse_heading(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.platform_heading_deg = key_number(v, at, "platform_heading_deg", -360, 360, false);
+}
+void parse_roll(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.platform_roll_deg = key_number(v, at, "platform_roll_deg", -80, 80, false);
+}
+void parse_platform_pitch(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.platform_pitch_deg = key_number(v, at, "platform_pitch_deg", -80, 80, false);
+}
+void parse_jitter_amplitude(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.jitter_amplitude_deg = key_triple(v, at, "jitter_amplitude_deg", 0, 10);
+}
+void parse_jitter_frequency(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.jitter_frequency_hz = key_triple(v, at, "jitter_frequency_hz", 0, 1e6);
+}
+void parse_jitter_walk(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.jitter_walk_deg = key_triple(v, at, "jitter_walk_deg", 0, 10);
+}
+void parse_jitter_seed(std::string_view v, const SourceLocation& at, Adv& adv) {
+    const long n = parse_long(v, at, "jitter_seed");
+    if (n < 0) throw DataError(at, "expected jitter_seed at or above 0, found " + quoted(v));
+    adv.jitter_seed = n;
+}
+void parse_start_time(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.start_time_s = key_number(v, at, "start_time_s", -kMaxSeconds, kMaxSeconds, false);
+}
+void parse_line_period(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.line_period_s = key_number(v, at, "line_period_s", 0, 1e3, true);
+}
+void parse_integration(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.integration_time_s = key_number(v, at, "integration_time_s", 0, 1e3, true);
+}
+void parse_scan_angle(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.scan_half_angle_deg = key_number(v, at, "scan_half_angle_deg", 0, 80, true);
+}
+void parse_scan_period(std::string_view v, const SourceLocation& at, Adv& adv) {
+    adv.scan_period_s = key_number(v, at, "scan_period_s", 0, 1e3, true);
+}
+void parse_detectors(std::string_view v, const SourceLocation& at, Adv& adv) {
+    const long n = parse_long(v, at, "detectors_per_scan");
+    if (n < 1 || n > kAdvMaxImageSide)
+        throw DataError(at, "expected detectors_per_scan (an integer from 1 to " +
+                                std::to_string(kAdvMaxImageSide) + "), found " + quoted(v));
+    adv.detectors_per_scan = n;
+}
+void parse_scan_direction(std::string_view v, const SourceLocation& at, Adv& adv) {
+    if (v != "oneway" && v != "bidirectional")
+        throw DataError(at, "expected scan_direction oneway or bidirectional, found " + quoted(v));
+    adv.scan_bidirectional = v == "bidirectional";
+}
+
+void parse_slc(std::string_view v, const SourceLocation& at, Adv& adv) {
+    if (v != "on" && v != "off")
+        throw DataError(at, "expected scan_line_corrector on or off, found " + quoted(v));
+    adv.scan_line_corrector = v == "on";
+}
+
+using Setter = void (*)(std::string_view, const SourceLocation&, Adv&);
+const std::map<std::string_view, Setter>& key_setters() {
     static const std::map<std::string_view, Setter> setters = {
         {"units", parse_units},
         {"pixel_pitch_um", parse_pitch},
         {"sensor", parse_sensor},
-        {"samples_per_pixel", parse_samples}};
-    std::map<std::string, int> seen;  // key -> line
+        {"samples_per_pixel", parse_samples},
+        {"trajectory", parse_trajectory},
+        {"platform_speed_mps", parse_speed},
+        {"platform_heading_deg", parse_heading},
+        {"platform_roll_deg", parse_roll},
+        {"platform_pitch_deg", parse_platform_pitch},
+        {"jitter_amplitude_deg", parse_jitter_amplitude},
+        {"jitter_frequency_hz", parse_jitter_frequency},
+        {"jitter_walk_deg", parse_jitter_walk},
+        {"jitter_seed", parse_jitter_seed},
+        {"start_time_s", parse_start_time},
+        {"line_period_s", parse_line_period},
+        {"integration_time_s", parse_integration},
+        {"scan_half_angle_deg", parse_scan_angle},
+        {"scan_period_s", parse_scan_period},
+        {"detectors_per_scan", parse_detectors},
+        {"scan_direction", parse_scan_direction},
+        {"scan_line_corrector", parse_slc}};
+    return setters;
+}
+
+// The optional `key = value` lines after the legacy five.
+void parse_keys(LineCursor& cur, Adv& adv) {
+    const auto& setters = key_setters();
     while (!cur.at_end()) {
         const Line& line = cur.next("key = value");
         SourceLocation at = cur.where(line);
@@ -114,10 +222,10 @@ void parse_keys(LineCursor& cur, Adv& adv) {
         auto setter = setters.find(kv->key);
         if (setter == setters.end())
             throw DataError(at,
-                            "expected a key units, pixel_pitch_um, sensor or "
-                            "samples_per_pixel, found " +
+                            "expected a key units, pixel_pitch_um, sensor, samples_per_pixel "
+                            "or a platform or scanner key of adv(5), found " +
                                 quoted(kv->key));
-        auto [it, fresh] = seen.emplace(std::string(kv->key), line.number);
+        auto [it, fresh] = adv.lines.keys.emplace(std::string(kv->key), line.number);
         if (!fresh)
             throw DataError(at, "expected each key once, found " + quoted(kv->key) +
                                     " again (first on line " + std::to_string(it->second) + ")");
@@ -141,6 +249,39 @@ const char* sensor_name(SensorKind s) {
 
 void write_triple(std::ostream& out, double a, double b, double c) {
     out << format_number(a) << ' ' << format_number(b) << ' ' << format_number(c) << '\n';
+}
+
+void write_key(std::ostream& out, const char* key, const std::optional<double>& v) {
+    if (v) out << key << " = " << format_number(*v) << '\n';
+}
+
+void write_key(std::ostream& out, const char* key, const std::optional<geo::Vec3>& v) {
+    if (v) out << key << " = ";
+    if (v) write_triple(out, (*v)[0], (*v)[1], (*v)[2]);
+}
+
+// The platform and scanner keys that were present, in adv(5)'s order.
+void write_scanner_keys(std::ostream& out, const Adv& adv) {
+    if (!adv.trajectory.empty()) out << "trajectory = " << adv.trajectory << '\n';
+    write_key(out, "platform_speed_mps", adv.platform_speed_mps);
+    write_key(out, "platform_heading_deg", adv.platform_heading_deg);
+    write_key(out, "platform_roll_deg", adv.platform_roll_deg);
+    write_key(out, "platform_pitch_deg", adv.platform_pitch_deg);
+    write_key(out, "jitter_amplitude_deg", adv.jitter_amplitude_deg);
+    write_key(out, "jitter_frequency_hz", adv.jitter_frequency_hz);
+    write_key(out, "jitter_walk_deg", adv.jitter_walk_deg);
+    if (adv.jitter_seed) out << "jitter_seed = " << *adv.jitter_seed << '\n';
+    write_key(out, "start_time_s", adv.start_time_s);
+    write_key(out, "line_period_s", adv.line_period_s);
+    write_key(out, "integration_time_s", adv.integration_time_s);
+    write_key(out, "scan_half_angle_deg", adv.scan_half_angle_deg);
+    write_key(out, "scan_period_s", adv.scan_period_s);
+    if (adv.detectors_per_scan) out << "detectors_per_scan = " << *adv.detectors_per_scan << '\n';
+    if (adv.scan_bidirectional)
+        out << "scan_direction = " << (*adv.scan_bidirectional ? "bidirectional" : "oneway")
+            << '\n';
+    if (adv.scan_line_corrector)
+        out << "scan_line_corrector = " << (*adv.scan_line_corrector ? "on" : "off") << '\n';
 }
 
 }  // namespace
@@ -168,6 +309,7 @@ void write_adv(std::ostream& out, const Adv& adv) {
         out << "sensor = " << sensor_name(adv.sensor) << '\n';
     if (adv.has_samples || adv.samples_per_pixel != 1)
         out << "samples_per_pixel = " << adv.samples_per_pixel << '\n';
+    write_scanner_keys(out, adv);
 }
 
 double meters_per_unit(LengthUnit unit) { return unit == LengthUnit::Feet ? 0.3048 : 1.0; }

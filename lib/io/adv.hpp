@@ -2,6 +2,8 @@
 // where it looks.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -33,10 +35,28 @@ struct Adv {
     long samples_per_pixel = 1;
     // Which optional keys were present (so a rewrite keeps a legacy file legacy).
     bool has_units = false, has_pixel_pitch = false, has_sensor = false, has_samples = false;
+    // The platform and scanner keys of line and pushbroom sensors (adv(5), SCANNERS);
+    // each is written back when present. Checked against the sensor kind by trace.
+    std::string trajectory;                     // a .trj, relative to the .adv's folder
+    std::optional<double> platform_speed_mps;   // straight flight from the camera point
+    std::optional<double> platform_heading_deg; // clockwise from north (+y)
+    std::optional<double> platform_roll_deg, platform_pitch_deg;
+    std::optional<geo::Vec3> jitter_amplitude_deg;  // roll pitch yaw sine amplitudes
+    std::optional<geo::Vec3> jitter_frequency_hz;   // roll pitch yaw sine frequencies
+    std::optional<geo::Vec3> jitter_walk_deg;  // random-walk sigma per sqrt(s), r p y
+    std::optional<long> jitter_seed;           // the walk's seed
+    std::optional<double> start_time_s;
+    std::optional<double> line_period_s, integration_time_s;  // pushbroom
+    std::optional<double> scan_half_angle_deg, scan_period_s;  // line scanner
+    std::optional<long> detectors_per_scan;
+    std::optional<bool> scan_bidirectional;  // `scan_direction = bidirectional|oneway`
+    std::optional<bool> scan_line_corrector;  // `scan_line_corrector = on|off`
     // The file lines of the legacy records, for messages after reading (comments and
-    // blank lines may precede them). Not part of the value: always compare equal.
+    // blank lines may precede them), and of each optional key. Not part of the value:
+    // always compare equal.
     struct Lines {
         int target = 1, camera = 2, angles = 3, focal_length = 4, size = 5;
+        std::map<std::string, int> keys;  // optional key -> its line
         bool operator==(const Lines&) const { return true; }
     } lines;
 

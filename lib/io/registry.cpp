@@ -20,6 +20,7 @@
 #include "io/snd.hpp"
 #include "io/t7m.hpp"
 #include "io/tmp.hpp"
+#include "io/trj.hpp"
 #include "io/wth.hpp"
 
 namespace sigchain::io {
@@ -45,6 +46,7 @@ const std::vector<FormatHandler>& formats() {
             snd_format(),
             t7m_format(),
             tmp_format(),
+            trj_format(),
             wth_format(),
         };
         // clang-format on

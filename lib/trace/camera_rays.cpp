@@ -25,4 +25,9 @@ double FrameSensor::view_angle_deg(const geo::Vec3& direction) const {
     return geom::signed_view_angle_deg(direction, {std::sin(a), std::cos(a), 0.0});
 }
 
+std::string FrameSensor::summary() const {
+    return "frame camera, " + std::to_string(m_camera.rows) + " x " +
+           std::to_string(m_camera.columns) + " pixels from one position";
+}
+
 }  // namespace sigchain::trace

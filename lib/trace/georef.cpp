@@ -49,7 +49,7 @@ std::optional<geo::GeoTransformFit> fit_map_grid(const Sensor& sensor, const Geo
         for (int j = 0; j <= kSteps; ++j) {
             const double row = rows * i / kSteps, column = columns * j / kSteps;
             geo::Vec3 origin{}, dir{};
-            sensor.ray(row + static_cast<double>(row_begin), column, origin, dir);
+            sensor.nominal_ray(row + static_cast<double>(row_begin), column, origin, dir);
             const auto p = plane_point(origin, dir, 0.0);
             if (!p) return std::nullopt;
             const auto xy = map.map_xy(metres(*p, place.meters_per_unit));

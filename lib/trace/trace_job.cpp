@@ -32,14 +32,16 @@
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
 #include "trace/part.hpp"
+#include "trace/ground_layers.hpp"
 
 namespace sigchain::trace {
 
 namespace {
 
 constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
-// ENVI's `sensor type` of trace's cubes (cube(5)): the sensor model that made them.
-constexpr const char* kSensorType = "sigchain frame camera";
+// ENVI's `sensor type` of trace's cubes (cube(5)): the sensor model that made them,
+// "sigchain " and Sensor::kind() ("sigchain frame camera").
+std::string sensor_type(const Sensor& sensor) { return "sigchain " + sensor.kind(); }
 
 std::string format(const char* fmt, double v) {
     char buf[64];
@@ -203,6 +205,17 @@ void check_job(const TraceJob& job) {
             outputs.push_back(written_name(out));
             outputs.push_back(std::filesystem::path(written_name(out)).replace_extension(".hdr"));
         }
+        for (const auto& [option, layers] : {std::pair{"--igm", job.igm_path},
+                                             std::pair{"--glt", job.glt_path}}) {
+            if (layers.empty()) continue;
+            if (file_extension(layers) != "tif")
+                throw UsageError(std::string(option) + ": expected a GeoTIFF FILE.tif, found '" +
+                                 layers + "'");
+            if (std::count(outputs.begin(), outputs.end(), written_name(layers)))
+                throw UsageError(std::string(option) + ": " + layers +
+                                 " would overwrite another output");
+            outputs.push_back(written_name(layers));
+        }
         std::vector<std::string> inputs{job.adv_path, job.snd_path, job.scene_path, job.mat_path,
                                         job.tmp_path};
         inputs.insert(inputs.end(), job.rad_paths.begin(), job.rad_paths.end());
@@ -242,10 +255,6 @@ struct Setup {
 Setup read_setup(const TraceJob& job) {
     Setup st;
     st.adv = io::read_adv_file(job.adv_path);
-    if (st.adv.sensor != io::SensorKind::Frame)
-        throw NotImplemented(job.adv_path +
-                             ": not implemented yet: line scanner and pushbroom sensors; "
-                             "trace renders frame cameras");
     st.snd = io::read_snd_file(job.snd_path);
     if (st.snd.bands.size() != job.rad_paths.size())
         throw UsageError(job.snd_path + " has " + std::to_string(st.snd.bands.size()) +
@@ -508,10 +517,11 @@ RenderOptions render_options_layers(const TraceJob& job) {
 // and the truth cube, each written atomically.
 void write_outputs(const TraceJob& job, const image::WriteOptions& write_options,
                    const radiometry::SpectralGrid& grid, const image::Georeference& georef,
+                   const std::string& type_name,
                    RenderResult& result) {
     image::Image& cube = result.radiance;
     cube.georef = georef;
-    cube.sensor_type = kSensorType;
+    cube.sensor_type = type_name;
     cube.wavelength_um = grid.wavelength_um;
     cube.units = kRadianceUnits;
     if (cube.channel_names.size() != grid.size()) {
@@ -528,7 +538,7 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
     truth.wavelength_um.clear();
     truth.units.clear();
     truth.georef = georef;
-    truth.sensor_type = kSensorType;
+    truth.sensor_type = type_name;
     image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path),
                       write_options);
 }
@@ -552,7 +562,10 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     report.materials = materials.materials().size();
     const scene::Scene scene = read_scene(job, st, materials, report, reporter);
     const Temperatures temperatures = read_temperatures(job, grid, scene, reporter);
-    const FrameSensor camera(geom::frame_camera(st.adv, job.adv_path));
+    const std::unique_ptr<Sensor> sensor = make_sensor(
+        st.adv, job.adv_path, SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
+    const Sensor& camera = *sensor;
+    reporter.info("sensor: " + camera.summary());
     check_view_angles(camera, atmosphere, reporter);
 
     const std::optional<GeoPlacement> place = geo_placement(job, st);
@@ -581,17 +594,23 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     report_stats(result.stats, job.convergence ? result.radiance.rows * result.radiance.columns : 0,
                  reporter);
     image::Georeference georef;
+    const std::optional<double> plane = options.background == BackgroundChoice::None
+                                            ? std::nullopt
+                                            : std::optional<double>(scene.bounds().lower[2]);
+    if (!job.igm_path.empty() || !job.glt_path.empty()) {
+        std::string note;
+        write_ground_layers(camera, scene, place, options.meters_per_unit, plane, st.row_begin,
+                            st.row_end, job.igm_path, job.glt_path, note);
+        reporter.info(note);
+    }
     if (place) {
-        const std::optional<double> plane = options.background == BackgroundChoice::None
-                                                ? std::nullopt
-                                                : std::optional<double>(scene.bounds().lower[2]);
         std::string note;
         georef = georeference_outputs(camera, scene, *place, plane, st.row_begin, st.row_end,
                                       image::geolocation_name(job.output_path), note);
         reporter.info(note);
     }
     write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid,
-                  georef, result);
+                  georef, sensor_type(camera), result);
     return report;
 }
 

@@ -59,6 +59,10 @@ struct TraceJob {
     // --standard-error: the truth cube's sampling layers (samples, standard_error_BAND).
     bool standard_error = false;
     std::optional<Convergence> convergence;  // --convergence; implies the sampling layers
+    // --igm, --glt: the ground-position layers and the geometry lookup table (GeoTIFFs,
+    // cube(5) GEOLOCATION LAYERS); "" for none.
+    std::string igm_path;
+    std::string glt_path;
 };
 
 // What happened, for -v: the scene's counts, the render's statistics.

@@ -24,7 +24,7 @@ bats_require_minimum_version 1.5.0
 @test "adv: elevation out of range" { check_bad adv elevation_range.adv 3 "expected camera elevation (deg) in [-90, 90], found '95'"; }
 @test "adv: zero rows" { check_bad adv zero_rows.adv 5 "expected image rows (an integer from 1 to 100000), found '0'"; }
 @test "adv: camera at the target" { check_bad adv camera_at_target.adv 2 "expected a camera point different from the target point"; }
-@test "adv: unknown key" { check_bad adv unknown_key.adv 6 "expected a key units, pixel_pitch_um, sensor or samples_per_pixel, found 'zoom'"; }
+@test "adv: unknown key" { check_bad adv unknown_key.adv 6 "expected a key units, pixel_pitch_um, sensor, samples_per_pixel or a platform or scanner key of adv(5), found 'zoom'"; }
 @test "adv: repeated key" { check_bad adv repeated_key.adv 7 "expected each key once, found 'units' again (first on line 6)"; }
 @test "adv: bad units" { check_bad adv bad_units.adv 6 "expected units ft or m, found 'yards'"; }
 @test "adv: extra line" { check_bad adv extra_line.adv 6 "expected 'key = value' after the image size, found '512 512'"; }

@@ -17,7 +17,8 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs", "standard-error", "convergence"})
+                          "adjacency-radius", "co", "crs", "standard-error", "convergence", "igm",
+                          "glt"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -92,6 +93,8 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
         job.convergence = trace::Convergence{static_cast<long>(v[0]), static_cast<long>(v[1]),
                                              static_cast<double>(v[2])};
     }
+    if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();
+    if (vm.count("glt")) job.glt_path = vm["glt"].as<std::string>();
     return job;
 }
 
@@ -139,6 +142,10 @@ int main(int argc, char** argv) {
         "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
         "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT\n"
         "                    FILE; none: write no georeferencing)")(
+        "igm", cli::po::value<std::string>()->value_name("FILE.tif"),
+        "write each pixel's ground position (IGM: map and scene coordinates)")(
+        "glt", cli::po::value<std::string>()->value_name("FILE.tif"),
+        "write the geometry lookup table (GLT: a map grid's source pixels)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
         "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
         "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),

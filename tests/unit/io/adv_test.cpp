@@ -127,8 +127,8 @@ TEST(Adv, CameraAtTarget) {
 
 TEST(Adv, BadKeys) {
     EXPECT_EQ(error_of(kLegacy + "colour = red\n"),
-              "t.adv:6: expected a key units, pixel_pitch_um, sensor or samples_per_pixel, "
-              "found 'colour'");
+              "t.adv:6: expected a key units, pixel_pitch_um, sensor, samples_per_pixel or a "
+              "platform or scanner key of adv(5), found 'colour'");
     EXPECT_EQ(error_of(kLegacy + "units = ft\n# again\nunits = m\n"),
               "t.adv:8: expected each key once, found 'units' again (first on line 6)");
     EXPECT_EQ(error_of(kLegacy + "units = feet\n"),
@@ -146,4 +146,46 @@ TEST(Adv, BadKeys) {
 TEST(Adv, ExtraLineAfterImageSize) {
     EXPECT_EQ(error_of(kLegacy + "512 512\n"),
               "t.adv:6: expected 'key = value' after the image size, found '512 512'");
+}
+
+TEST(Adv, ScannerKeysParseAndRoundTrip) {
+    const std::string text = kLegacy +
+                             "sensor = line\ntrajectory = flight.trj\nplatform_speed_mps = 6800\n"
+                             "platform_heading_deg = -8.2\nplatform_roll_deg = 1.5\n"
+                             "platform_pitch_deg = -0.5\njitter_amplitude_deg = 0.001 0 0.002\n"
+                             "jitter_frequency_hz = 7 0 0.5\njitter_walk_deg = 0.01 0.02 0\n"
+                             "jitter_seed = 42\nstart_time_s = 12.5\n"
+                             "scan_half_angle_deg = 7.5\nscan_period_s = 0.0714\n"
+                             "detectors_per_scan = 16\nscan_direction = bidirectional\n"
+                             "scan_line_corrector = on\n";
+    const Adv a = parse_adv(TextInput::from_string(text, "t.adv"));
+    EXPECT_EQ(a.sensor, SensorKind::Line);
+    EXPECT_EQ(a.trajectory, "flight.trj");
+    EXPECT_EQ(a.platform_speed_mps, 6800);
+    EXPECT_EQ(a.jitter_amplitude_deg, (geo::Vec3{0.001, 0, 0.002}));
+    EXPECT_EQ(a.detectors_per_scan, 16);
+    EXPECT_EQ(a.scan_bidirectional, true);
+    EXPECT_EQ(a.scan_line_corrector, true);
+    EXPECT_EQ(a.jitter_walk_deg, (geo::Vec3{0.01, 0.02, 0}));
+    EXPECT_EQ(a.jitter_seed, 42);
+    EXPECT_EQ(a.lines.keys.at("scan_period_s"), 18);
+    EXPECT_EQ(parse_adv(TextInput::from_string(written(a), "w.adv")), a);
+    const Adv p = parse_adv(TextInput::from_string(
+        kLegacy + "sensor = pushbroom\nline_period_s = 0.01\nintegration_time_s = 0.005\n",
+        "p.adv"));
+    EXPECT_EQ(p.line_period_s, 0.01);
+    EXPECT_EQ(written(p), kLegacy.substr(0, 0) + written(parse_adv(TextInput::from_string(
+                                                      written(p), "w.adv"))));
+}
+
+TEST(Adv, BadScannerKeys) {
+    EXPECT_EQ(error_of(kLegacy + "line_period_s = 0\n"),
+              "t.adv:6: expected line_period_s above 0 and at most 1000, found '0'");
+    EXPECT_EQ(error_of(kLegacy + "scan_direction = sideways\n"),
+              "t.adv:6: expected scan_direction oneway or bidirectional, found 'sideways'");
+    EXPECT_EQ(error_of(kLegacy + "jitter_amplitude_deg = 1 2\n"),
+              "t.adv:6: expected jitter_amplitude_deg as three numbers (roll pitch yaw), found "
+              "'1 2'");
+    EXPECT_EQ(error_of(kLegacy + "detectors_per_scan = 0\n"),
+              "t.adv:6: expected detectors_per_scan (an integer from 1 to 100000), found '0'");
 }

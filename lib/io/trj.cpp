@@ -1,0 +1,122 @@
+// Reading and writing .trj platform trajectories (man trj(5)).
+#include "io/trj.hpp"
+
+#include "io/header_lines.hpp"
+
+namespace sigchain::io {
+
+namespace {
+
+// The optional header line `position = scene|geodetic` (before the first record).
+void parse_header(LineCursor& cur, Trj& trj) {
+    if (cur.at_end()) return;
+    const Line& line = cur.peek("trajectory record");
+    const SourceLocation at = cur.where(line);
+    const auto kv = split_key_value(line.text, at);
+    if (!kv) return;
+    cur.next("position = scene|geodetic");
+    if (kv->key != "position")
+        throw DataError(at, "expected key position, found " + quoted(kv->key));
+    if (kv->value != "scene" && kv->value != "geodetic")
+        throw DataError(at, "expected position scene or geodetic, found " + quoted(kv->value));
+    trj.geodetic = kv->value == "geodetic";
+}
+
+// A geodetic row: latitude and longitude in range, no velocity.
+void check_geodetic(const TrjRecord& r, const SourceLocation& at, std::string_view text) {
+    const auto f = split_fields(text);
+    if (r.velocity)
+        throw DataError(at, "expected 7 fields in a geodetic trajectory (no velocity), found 10");
+    if (r.position[0] < -90 || r.position[0] > 90)
+        throw DataError(at, "expected latitude (deg) from -90 to 90, found " + quoted(f[1]));
+    if (r.position[1] < -360 || r.position[1] > 360)
+        throw DataError(at, "expected longitude (deg) from -360 to 360, found " + quoted(f[2]));
+}
+
+TrjRecord parse_record(const Line& line, const SourceLocation& at) {
+    const auto f = split_fields(line.text);
+    if (f.size() != 7 && f.size() != 10)
+        throw DataError(at,
+                        "expected 7 fields (time x y z roll pitch yaw) or 10 (and vx vy vz), "
+                        "found " +
+                            std::to_string(f.size()) + ": " + quoted(line.text));
+    TrjRecord r;
+    r.line = line.number;
+    r.time_s = parse_double(f[0], at, "time (s)");
+    r.position = {parse_double(f[1], at, "x"), parse_double(f[2], at, "y"),
+                  parse_double(f[3], at, "z")};
+    r.roll_deg = parse_in_range(f[4], at, "roll (deg)", -180, 180);
+    r.pitch_deg = parse_in_range(f[5], at, "pitch (deg)", -90, 90);
+    r.yaw_deg = parse_in_range(f[6], at, "yaw (deg)", -360, 360);
+    if (f.size() == 10)
+        r.velocity = geo::Vec3{parse_double(f[7], at, "vx"), parse_double(f[8], at, "vy"),
+                               parse_double(f[9], at, "vz")};
+    return r;
+}
+
+void check_sequence(const TrjRecord& prev, const TrjRecord& r, const SourceLocation& at) {
+    if (!(r.time_s > prev.time_s))
+        throw DataError(at, "expected a time after " + format_number(prev.time_s) + " s (line " +
+                                std::to_string(prev.line) + "): times must increase, found " +
+                                format_number(r.time_s));
+    if (r.velocity.has_value() != prev.velocity.has_value())
+        throw DataError(at, "expected velocities on every row or on none (line " +
+                                std::to_string(prev.line) + " differs)");
+}
+
+}  // namespace
+
+Trj parse_trj(const TextInput& in) {
+    const int minor = require_magic_line(in, "trj", 1);
+    LineCursor cur(in);
+    Trj trj;
+    parse_header(cur, trj);
+    while (!cur.at_end()) {
+        const Line& line = cur.next("trajectory record");
+        const SourceLocation at = cur.where(line);
+        TrjRecord r = parse_record(line, at);
+        if (trj.geodetic) check_geodetic(r, at, line.text);
+        if (!trj.records.empty()) check_sequence(trj.records.back(), r, at);
+        trj.records.push_back(r);
+    }
+    require_end_marker(in, "trj", minor, trj.records.size());
+    if (trj.records.size() < kTrjMinRecords)
+        throw DataError(cur.where(), "expected at least " + std::to_string(kTrjMinRecords) +
+                                         " trajectory records, found " +
+                                         std::to_string(trj.records.size()));
+    return trj;
+}
+
+void write_trj(std::ostream& out, const Trj& trj) {
+    out << "# sigchain-trj 1.1\n";
+    if (trj.geodetic)
+        out << "position = geodetic\n# time_s latitude_deg longitude_deg height_m roll_deg "
+               "pitch_deg yaw_deg\n";
+    else
+        out << "# time_s x y z roll_deg pitch_deg yaw_deg [vx vy vz]\n";
+    for (const TrjRecord& r : trj.records) {
+        out << format_number(r.time_s);
+        for (double v : r.position) out << ' ' << format_number(v);
+        out << ' ' << format_number(r.roll_deg) << ' ' << format_number(r.pitch_deg) << ' '
+            << format_number(r.yaw_deg);
+        if (r.velocity)
+            for (double v : *r.velocity) out << ' ' << format_number(v);
+        out << '\n';
+    }
+    out << end_marker_line(trj.records.size());
+}
+
+FormatHandler trj_format() {
+    return {"trj", "platform trajectory (sigchain)",
+            [](const TextInput& in) {
+                const Trj t = parse_trj(in);
+                return std::to_string(t.records.size()) + " records, " +
+                       format_number(t.records.front().time_s) + " to " +
+                       format_number(t.records.back().time_s) + " s" +
+                       (t.geodetic ? ", geodetic" : "") +
+                       (t.records.front().velocity ? ", with velocities" : "");
+            },
+            [](const TextInput& in, std::ostream& out) { write_trj(out, parse_trj(in)); }};
+}
+
+}  // namespace sigchain::io
