@@ -30,16 +30,23 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
                                              " km) must lie above the ground (GNDALT, CARD 2: " +
                                              format_number(ground) + " km)");
     const double sensor = std::min(sensor_km, top);
-    m_profile = resample(full, ground, top, {sensor});
+    // A cloud model adds its levels to the profile, as LOWTRAN 7's FLAYZ does.
+    std::vector<double> extra{sensor};
+    if (CloudModel::modelled(run.card2.icld))
+        for (double h : CloudModel::level_heights_km()) extra.push_back(ground + h);
+    m_profile = resample(full, ground, top, extra);
     m_sensor_level = index_of(m_profile.z_km, sensor);
     if (m_sensor_level >= m_profile.size() ||
         std::abs(m_profile.z_km[m_sensor_level] - sensor) > 1e-9)
         throw Error("internal: the sensor altitude is not a level of the resampled profile");
     // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
     const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
-    m_aerosol.emplace(AerosolModel::from_deck(
-        run.card2, m_profile, o.data_dir,
-        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt));
+    const std::optional<double> g =
+        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt;
+    io::CdkCard2 aerosol_card = run.card2;
+    aerosol_card.icld = 0;  // the cloud is m_cloud's
+    m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g));
+    m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g);
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
 }
@@ -52,8 +59,10 @@ std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
         LayerOptics& l = out[k];
         l.tau_rayleigh =
             rayleigh_optical_depth(wavelength_um, m_profile.p_mb[k + 1], m_profile.p_mb[k]);
-        const AerosolLayerOptics a =
+        AerosolLayerOptics a =
             m_aerosol->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um);
+        if (m_cloud)  // LOWTRAN 7 adds the cloud's coefficients to the aerosols'
+            a = combine(a, m_cloud->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um));
         l.tau_aerosol = a.tau_ext;
         l.ssa_aerosol = a.ssa;
         l.g_aerosol = a.g;
@@ -97,7 +106,7 @@ std::vector<LayerOptics> ColumnModel::with_gas_depths(std::vector<LayerOptics> l
 
 double ColumnModel::direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                          std::size_t i, std::size_t j, double mu) const {
-    double tau = 0;  // Rayleigh and aerosol follow Beer's law
+    double tau = 0;  // Rayleigh, aerosol and cloud follow Beer's law
     for (std::size_t k = i; k < j; ++k) tau += layers[k].tau_rayleigh + layers[k].tau_aerosol;
     return m_gas->transmittance(nu_cm1, i, j, mu) * std::exp(-tau / mu);
 }

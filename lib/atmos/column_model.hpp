@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "atmos/aerosol.hpp"
+#include "atmos/cloud.hpp"
 #include "atmos/gas_absorption.hpp"
 #include "atmos/profile.hpp"
 #include "atmos/radiance_options.hpp"
@@ -19,13 +20,13 @@ namespace sigchain::atmos {
 // The optical properties of one layer at one wavenumber.
 struct LayerOptics {
     double tau_rayleigh = 0;
-    double tau_aerosol = 0;  // extinction
+    double tau_aerosol = 0;  // extinction (aerosols and cloud, CARD 2 ICLD 1-5)
     double ssa_aerosol = 0;
     double g_aerosol = 0;
     double tau_gas = 0;  // equivalent Beer's-law absorption (GasColumn)
 };
 
-// The column between the ground and the top: levels, aerosols and gases. Const
+// The column between the ground and the top: levels, aerosols, cloud and gases. Const
 // methods may be called from several threads at once.
 class ColumnModel {
 public:
@@ -77,6 +78,7 @@ private:
     Profile m_profile;
     std::size_t m_sensor_level = 0;
     std::optional<AerosolModel> m_aerosol;
+    std::optional<CloudModel> m_cloud;  // ICLD 1-5
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
     std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
 };

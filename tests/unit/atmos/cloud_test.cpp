@@ -1,0 +1,140 @@
+// Tests for the LOWTRAN 7 water-cloud models (lib/atmos/cloud) and their place in the
+// column (lib/atmos/column_model).
+#include "atmos/cloud.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "atmos/column_model.hpp"
+#include "core/error.hpp"
+
+using namespace sigchain;
+using namespace sigchain::atmos;
+
+namespace {
+
+const std::string kSource = SIGCHAIN_SOURCE_DIR;
+const std::string kData = kSource + "/data";
+
+CloudModel cloud(int icld, double ground_km = 0) {
+    io::CdkCard2 c;
+    c.icld = icld;
+    return *CloudModel::from_deck(c, ground_km, kData);
+}
+
+// Pure arithmetic on single-precision table values: double rounding only.
+constexpr double kArith = 1e-12;
+
+// Stratus (ICLD 3) 0.55-um column (km-1 x km) from its levels, computed here by hand:
+// LWC 0, .15, .3, .15, 0 g m-3 at .16, .33, .66, 1.0, 1.5 km; exponential between two
+// positive values (integral h (b - a) / ln(b / a)), linear to zero; LWC_eq 5.272e-3.
+double stratus_column055() {
+    const double lwc = 0.5 * 0.15 * (0.33 - 0.16) + (0.66 - 0.33) * 0.15 / std::log(2.0) +
+                       (1.0 - 0.66) * 0.15 / std::log(2.0) + 0.5 * 0.15 * (1.5 - 1.0);
+    return lwc / 5.272e-3;
+}
+
+}  // namespace
+
+TEST(AtmosCloud, TabulatedExtinctionAtAWavelength) {
+    // cloud_models.txt, stratus columns: ext 1.0559 abs 0.00681 g 0.8328 at 1.536 um;
+    // ext 0.91743 at 10 um; ext 1.031 / 1.0559 at 1.06 / 1.536 um (midpoint 1.298).
+    const CloudModel s = cloud(3);
+    const double beta055 = 0.3 / 5.272e-3;  // LWC 0.3 g m-3 at .66 km
+    EXPECT_NEAR(s.extinction_km1(0.66, 0.55), beta055, kArith * beta055);
+    EXPECT_NEAR(s.extinction_km1(0.66, 1.536), beta055 * 1.0559, kArith * beta055);
+    EXPECT_NEAR(s.extinction_km1(0.66, 10.0), beta055 * 0.91743, kArith * beta055);
+    EXPECT_NEAR(s.extinction_km1(0.66, 1.298), beta055 * (1.031 + 1.0559) / 2, kArith * beta055);
+    const auto o = s.optics(1.536);
+    EXPECT_NEAR(o[1], 0.00681, kArith);
+    EXPECT_NEAR(o[2], 0.8328, kArith);
+    const AerosolLayerOptics l = s.layer(0.5, 0.8, 1.536);
+    EXPECT_NEAR(l.ssa, 1 - 0.00681 / 1.0559, kArith);
+    EXPECT_NEAR(l.g, 0.8328, kArith);
+    // Non-absorbing where the table's absorption is 0 (0.55 um).
+    EXPECT_EQ(s.layer(0.5, 0.8, 0.55).ssa, 1.0);
+    // Cumulus 0.55 um at 1.5 km (LWC 1.0): 1 / 7.683e-3 km-1.
+    EXPECT_NEAR(cloud(1).extinction_km1(1.5, 0.55), 1 / 7.683e-3, kArith / 7.683e-3);
+}
+
+TEST(AtmosCloud, ProfileHeightsAreLowtranCloudLevels) {
+    // The levels (km above ground) of LOWTRAN 7's FLAYZ; bases and tops as its cloud menu
+    // states them (cumulus: the LWC table ends at 3.0 km, the menu says 2.7 km top).
+    const auto& z = CloudModel::level_heights_km();
+    const double expected[12] = {0, .16, .33, .66, 1, 1.5, 2, 2.4, 2.7, 3, 3.5, 4};
+    for (int i = 0; i < 12; ++i) EXPECT_EQ(z[i], expected[i]);
+    const double base[5] = {0.66, 2.4, 0.33, 0.66, 0.16}, top[5] = {3.0, 3.0, 1.0, 2.0, 0.66};
+    const double ground = 0.25;  // the levels stand on the ground
+    for (int m = 1; m <= 5; ++m) {
+        const CloudModel c = cloud(m, ground);
+        double lo = 99, hi = -1;
+        for (double h : z)
+            if (c.lwc_g_m3(ground + h) > 0) lo = std::min(lo, h), hi = std::max(hi, h);
+        EXPECT_NEAR(lo, base[m - 1], 1e-12) << "ICLD " << m;
+        EXPECT_NEAR(hi, top[m - 1], 1e-12) << "ICLD " << m;
+    }
+    // Stratus values on its levels (cloud_rain_profiles.txt CLD3).
+    const CloudModel s = cloud(3, ground);
+    EXPECT_EQ(s.lwc_g_m3(ground + 0.33), 0.15);
+    EXPECT_EQ(s.lwc_g_m3(ground + 0.66), 0.3);
+    EXPECT_EQ(s.lwc_g_m3(ground + 1.0), 0.15);
+    EXPECT_EQ(s.lwc_g_m3(ground + 0.1), 0.0);
+    EXPECT_EQ(s.lwc_g_m3(ground + 5.0), 0.0);
+}
+
+TEST(AtmosCloud, ColumnIsTheExactIntegralOfTheLevels) {
+    const CloudModel s = cloud(3);
+    const double tau = s.layer(0, 20, 0.55).tau_ext;
+    EXPECT_NEAR(tau, stratus_column055(), kArith * tau);
+    // Splitting the slab anywhere gives the same column (the integral is exact).
+    const double split = s.layer(0, 0.5, 0.55).tau_ext + s.layer(0.5, 0.8, 0.55).tau_ext +
+                         s.layer(0.8, 20, 0.55).tau_ext;
+    EXPECT_NEAR(split, tau, kArith * tau);
+}
+
+TEST(AtmosCloud, RainAndCirrusAreNotModelled) {
+    for (int icld : {6, 10, 11, 18, 20}) {
+        io::CdkCard2 c;
+        c.icld = icld;
+        EXPECT_THROW(CloudModel::from_deck(c, 0, kData), DataError) << icld;
+        EXPECT_FALSE(CloudModel::modelled(icld));
+    }
+    io::CdkCard2 clear;
+    EXPECT_FALSE(CloudModel::from_deck(clear, 0, kData).has_value());
+}
+
+TEST(AtmosCloud, CombineWeightsSsaByExtinctionAndGByScattering) {
+    // tau 1, ssa .5, g .2 with tau 3, ssa 1, g .8: scattering .5 + 3 = 3.5.
+    const AerosolLayerOptics c = combine({1, 0.5, 0.2}, {3, 1, 0.8});
+    EXPECT_NEAR(c.tau_ext, 4, kArith);
+    EXPECT_NEAR(c.ssa, 3.5 / 4, kArith);
+    EXPECT_NEAR(c.g, (0.5 * 0.2 + 3 * 0.8) / 3.5, kArith);
+}
+
+// The overcast column darkens the direct beam by exp(-tau_cloud / mu0), tau_cloud from
+// the tables by hand (stratus column x ext(lambda), linear between 0.55 and 0.6943 um).
+TEST(AtmosCloud, OvercastDeckDarkensTheDirectBeam) {
+    auto deck = io::read_cdk_file(kSource + "/tests/data/build_radiance/rural23.cdk");
+    RadianceOptions o;
+    o.data_dir = kData;
+    const io::CdkRun clear = deck.runs[0];
+    io::CdkRun overcast = clear;
+    overcast.card2.icld = 3;
+    const ColumnModel a(clear, 1.0, o), b(overcast, 1.0, o);
+    EXPECT_GT(b.profile().size(), a.profile().size());  // the cloud levels are added
+    const double mu0 = 0.6;
+    for (double nu : {18000.0, 17000.0}) {
+        const double lambda = 1e4 / nu;
+        const double ext = 1 + (lambda - 0.55) / (0.6943 - 0.55) * (1.0089 - 1);
+        const double tau_cloud = stratus_column055() * ext;
+        const double ta =
+            a.direct_transmittance(nu, a.layers(nu), 0, a.profile().size() - 1, mu0);
+        const double tb =
+            b.direct_transmittance(nu, b.layers(nu), 0, b.profile().size() - 1, mu0);
+        // 1e-6 relative: the cloud levels re-layer the gas band-model path (measured
+        // 1.3e-8 at 17000 cm-1, ozone); Rayleigh and aerosol columns are exact integrals.
+        EXPECT_NEAR(std::log(tb / ta), -tau_cloud / mu0, 1e-6 * tau_cloud / mu0) << nu;
+    }
+}
