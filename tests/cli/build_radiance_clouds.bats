@@ -1,6 +1,7 @@
 #!/usr/bin/env bats
 # Tests: build_radiance (LOWTRAN 7 cloud models, CARD 2 ICLD)
 # Also requires: tests/data/build_radiance/{small.snd,rural23.cdk},
+# tests/data/control7/hawkeye.answers, tests/data/white1996/30Sep95800L.rsd,
 # data/atmosphere/lowtran7/cloud_*.txt (reference data)
 load test_helper
 
@@ -54,4 +55,16 @@ with_icld() { sed "2s/^\(.\{20\}\)    0/\1$(printf '%5d' "$1")/" "$DATA/rural23.
     [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 18: cirrus is not modelled"* ]] || fail "stderr: $stderr"
     [ ! -e o-1.rad ]
     assert_no_temp_files .
+}
+
+@test "control7 writes a cloud deck (ICLD 3) without a warning and build_radiance takes it" {
+    cp "$SEED/30Sep95800L.rsd" .
+    run -0 --separate-stderr control7 --answers "$SIGCHAIN_SOURCE_DIR/tests/data/control7/hawkeye.answers" \
+        -a icld=3 -o stratus.cdk
+    assert_equal "$stderr" ""
+    assert_equal "$(sed -n '2p' stratus.cdk | cut -c21-25)" "    3"
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" stratus.cdk "$DATA/small.snd" -o 'o-%d.rad'
+    run -0 sigchain-check o-1.rad o-2.rad
+    # control7 still warns about cirrus (ICLD 18): the unit test
+    # Control7Job.WarnsAboutAnOverrideWhoseQuestionIsNotAsked.
 }
