@@ -78,7 +78,7 @@ private:
     Profile m_profile;
     std::size_t m_sensor_level = 0;
     std::optional<AerosolModel> m_aerosol;
-    std::optional<CloudModel> m_cloud;  // ICLD 1-5
+    std::optional<CloudModel> m_cloud;        // ICLD 1-5
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
     std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
 };

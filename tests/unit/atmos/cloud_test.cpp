@@ -6,12 +6,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "atmos/column_model.hpp"
 #include "atmos/rayleigh.hpp"
-#include "rt/discrete_ordinates.hpp"
 #include "core/error.hpp"
+#include "rt/discrete_ordinates.hpp"
 
 using namespace sigchain;
 using namespace sigchain::atmos;
@@ -78,6 +82,25 @@ TEST(AtmosCloud, ProfileHeightsAreLowtranCloudLevels) {
         EXPECT_NEAR(lo, base[m - 1], 1e-12) << "ICLD " << m;
         EXPECT_NEAR(hi, top[m - 1], 1e-12) << "ICLD " << m;
     }
+    // The level numbers read as these heights agree with the rain menu White (1996),
+    // section 4.2.3.5 reproduces: ICLD 6 "2.0MM/HR AT 0KM TO .22MM/HR AT 1.5KM" (RR1,
+    // level 5), ICLD 9 "25.0MM/HR AT 0KM TO .2MM/HR AT 3.0KM" (RR4, level 9).
+    std::ifstream f(kData + "/atmosphere/lowtran7/cloud_rain_profiles.txt");
+    std::string line;
+    std::vector<std::vector<double>> rows;
+    while (std::getline(f, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream in(line);
+        rows.emplace_back(std::istream_iterator<double>(in), std::istream_iterator<double>());
+    }
+    ASSERT_EQ(rows.size(), 12u);
+    EXPECT_EQ(z[5], 1.5);
+    EXPECT_EQ(rows[0][6], 2.0);
+    EXPECT_EQ(rows[5][6], 0.22);
+    EXPECT_EQ(z[9], 3.0);
+    EXPECT_EQ(rows[0][9], 25.0);
+    EXPECT_EQ(rows[9][9], 0.2);
+    EXPECT_EQ(rows[10][9], 0.0);
     // Stratus values on its levels (cloud_rain_profiles.txt CLD3).
     const CloudModel s = cloud(3, ground);
     EXPECT_EQ(s.lwc_g_m3(ground + 0.33), 0.15);
@@ -132,10 +155,8 @@ TEST(AtmosCloud, OvercastDeckDarkensTheDirectBeam) {
         const double lambda = 1e4 / nu;
         const double ext = 1 + (lambda - 0.55) / (0.6943 - 0.55) * (1.0089 - 1);
         const double tau_cloud = stratus_column055() * ext;
-        const double ta =
-            a.direct_transmittance(nu, a.layers(nu), 0, a.profile().size() - 1, mu0);
-        const double tb =
-            b.direct_transmittance(nu, b.layers(nu), 0, b.profile().size() - 1, mu0);
+        const double ta = a.direct_transmittance(nu, a.layers(nu), 0, a.profile().size() - 1, mu0);
+        const double tb = b.direct_transmittance(nu, b.layers(nu), 0, b.profile().size() - 1, mu0);
         // 1e-6 relative: the cloud levels re-layer the gas band-model path (measured
         // 1.3e-8 at 17000 cm-1, ozone); Rayleigh and aerosol columns are exact integrals.
         EXPECT_NEAR(std::log(tb / ta), -tau_cloud / mu0, 1e-6 * tau_cloud / mu0) << nu;
@@ -184,8 +205,8 @@ TEST(AtmosCloud, NonAbsorbingOvercastColumnConservesEnergy) {
     const rt::Result r = rt::solve(p);
     const double up = r.levels[0].diffuse_up;
     const double down = r.levels[1].direct_down + r.levels[1].diffuse_down;
-    std::printf("overcast tau %.4g: reflected %.6f transmitted %.6f sum %.9f of mu0 %.1f\n",
-                total, up, down, up + down, p.beam_mu0);
+    std::printf("overcast tau %.4g: reflected %.6f transmitted %.6f sum %.9f of mu0 %.1f\n", total,
+                up, down, up + down, p.beam_mu0);
     // 1e-6: the solver computes ssa 1 as 1 - 1e-9 (DISORT's dither), absorbing about
     // 1e-9 per scattering over the few hundred scatterings in a tau-37 cloud (~1e-7;
     // measured 4e-8). A cloud ssa of 0.99999 would lose ~1e-3.
