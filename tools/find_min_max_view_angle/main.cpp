@@ -4,9 +4,11 @@
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "geom/view_angle_job.hpp"
+#include "trace/view_angle_job.hpp"
 
 namespace cli = sigchain::cli;
 namespace geom = sigchain::geom;
+namespace trace = sigchain::trace;
 
 int main(int argc, char** argv) {
     cli::Cli tool({"find_min_max_view_angle",
@@ -30,7 +32,7 @@ int main(int argc, char** argv) {
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
         auto inputs = cli::args(vm, "input");
         if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and SCENE");
-        geom::ViewAngleJob job;
+        trace::ViewAngleJob job;
         job.adv_path = inputs[0];
         job.scene_path = inputs[1];
         job.snd_line = vm.count("snd") > 0;
@@ -47,7 +49,7 @@ int main(int argc, char** argv) {
             job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
         sigchain::require_outputs_distinct({cli::output_path(vm)}, inputs);
         sigchain::AtomicOutput out(cli::output_path(vm));
-        geom::run_view_angle_job(job, out.stream());
+        trace::run_view_angle_job(job, out.stream());
         out.commit();
         return 0;
     });
