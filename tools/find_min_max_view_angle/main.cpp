@@ -13,8 +13,8 @@ namespace trace = sigchain::trace;
 int main(int argc, char** argv) {
     cli::Cli tool({"find_min_max_view_angle",
                    "Print the minimum, maximum and suggested increment of the view angle\n"
-                   "of a sensor over a scene, by the scene-bounding-box and field-of-view "
-                   "methods.",
+                   "of a sensor (frame camera, pushbroom or line scanner) over a scene, by\n"
+                   "the scene-bounding-box and field-of-view methods.",
                    "[OPTIONS] ADV SCENE"});
     tool.add_positional("input", -1,
                         "look-angle file (.adv) and scene (.gdb, .odb, a mesh or a DEM\n"
@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
         cli::po::value<std::string>()->default_value("field-of-view")->value_name("NAME"),
         "method for --snd: field-of-view or scene-bounding-box")(
         "origin", cli::po::value<std::string>()->value_name("LAT,LON[,H]"),
-        "geodetic scene origin for DEMs (deg N, deg E, m above the ellipsoid)");
+        "geodetic scene origin for DEMs and a geodetic .trj (deg N, deg E, m above "
+        "the ellipsoid)");
     tool.add_number("grid", "N", cli::integers(1, 100000),
                     "interior rays per image axis for the field-of-view method (1-100000)", "256");
     tool.add_output_option();

@@ -144,3 +144,36 @@ TEST(ScannerViewAngles, BoundingBoxFromThePlatformPositions) {
     EXPECT_LT(rep.bounding_box.min_deg, -(corner - 0.01));
     EXPECT_EQ(rep.bounding_box.samples, 8 * rep.unclipped_field_of_view.samples);
 }
+
+// A roll jitter J sin(2 pi f t) (adv(5) jitter keys; a further roll of the body, so on
+// a level platform a roll) turns each line by its own roll. The field-of-view method
+// samples the image's sides at pixel centres (y = +-31.5 pitch, x = 0, at the time
+// (r + 1/2) line_period of row r + 1/2) and its corners (y = +-32 pitch,
+// x = +-pitch / 2, at t = 0 and 1 s): the range is the extreme of these rays'
+// analytic angles at their times' roll. With f = 1 Hz over the 1 s image the roll
+// peaks near 0.25 and 0.75 s, widening the level range by about J less the
+// half-pixel step from the corner to the side centre.
+TEST(ScannerViewAngles, PushbroomJitterWidensTheRange) {
+    const double J = 0.3;
+    io::Adv a = pushbroom(0);
+    a.jitter_amplitude_deg = Vec3{J, 0, 0};
+    a.jitter_frequency_hz = Vec3{1, 0, 0};
+    const auto s = trace::make_sensor(a, "p.adv");
+    const geom::ViewAngleReport rep = trace::find_view_angles(*s, ground());
+    ASSERT_TRUE(rep.field_of_view);
+    const double pitch = 0.01, f = 20;  // mm
+    double hi = -90, lo = 90;
+    for (long r = 0; r < 100; ++r) {
+        const double roll = J * std::sin(2 * M_PI * (r + 0.5) * 0.01) * kDeg;
+        hi = std::max(hi, off_nadir_deg(0, 31.5 * pitch, f, roll));
+        lo = std::min(lo, -off_nadir_deg(0, -31.5 * pitch, f, roll));
+    }
+    for (double t : {0.0, 1.0}) {
+        const double roll = J * std::sin(2 * M_PI * t) * kDeg;
+        hi = std::max(hi, off_nadir_deg(pitch / 2, 32 * pitch, f, roll));
+        lo = std::min(lo, -off_nadir_deg(pitch / 2, -32 * pitch, f, roll));
+    }
+    EXPECT_NEAR(rep.field_of_view->max_deg, hi, kTolDeg);
+    EXPECT_NEAR(rep.field_of_view->min_deg, lo, kTolDeg);
+    EXPECT_GT(hi, off_nadir_deg(pitch / 2, 32 * pitch, f, 0) + 0.25);  // the jitter shows
+}
