@@ -204,3 +204,18 @@ render() {
     run -0 --separate-stderr render -o cube2.img
     [[ "$stderr" == *"path terms are clamped at the ends"* ]]
 }
+
+@test "a geodetic trajectory needs --origin; with it the scanner is placed about that point" {
+    scanner_adv
+    printf '# sigchain-trj 1\nposition = geodetic\n0 43.08333 -77.66667 30 5 0 0\n10 43.0837 -77.66667 30 5 0 0\n' \
+        > flight/geo.trj
+    sed -i 's#^trajectory = .*#trajectory = flight/geo.trj#' line.adv
+    run -1 --separate-stderr find_min_max_view_angle line.adv "$SEED/box_on_plane.gdb"
+    [[ "$stderr" == "find_min_max_view_angle: flight/geo.trj:3: a geodetic trajectory needs the scene's geodetic origin"* ]]
+    # Over the origin, flying north at 30 m with the same roll: the same range as the
+    # scene-frame trajectory's.
+    run -0 --separate-stderr find_min_max_view_angle --origin 43.08333,-77.66667 line.adv \
+        "$SEED/box_on_plane.gdb"
+    assert_line --index 0 --partial "positive toward azimuth 90.000 deg"
+    assert_line --index 4 --regexp '^unclipped-image +-25\.0599 +15\.1040 '
+}
