@@ -1,4 +1,5 @@
-// View-angle range by the scene-bounding-box and field-of-view methods (White (1996), section 4.2.3.3).
+// View-angle range by the scene-bounding-box and field-of-view methods (White (1996),
+// section 4.2.3.3).
 #include "geom/view_angle.hpp"
 
 #include <algorithm>
@@ -11,18 +12,15 @@ namespace sigchain::geom {
 
 namespace {
 constexpr double kRad = 180.0 / std::numbers::pi;
-
-struct Accumulator {
-    double lo = 1e300, hi = -1e300;
-    std::size_t n = 0;
-    void add(double v) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-        ++n;
-    }
-    AngleRange range() const { return {lo, hi, suggested_increment_deg(lo, hi), n}; }
-};
 }  // namespace
+
+void AngleAccumulator::add(double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    ++n;
+}
+
+AngleRange AngleAccumulator::range() const { return {lo, hi, suggested_increment_deg(lo, hi), n}; }
 
 double world_view_angle_deg(double view_angle_deg) {
     const double a = std::abs(view_angle_deg);
@@ -62,7 +60,7 @@ ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& sce
     Vec3 ref = reference_direction(cam);
     rep.reference_azimuth_deg = std::fmod(std::atan2(ref[0], ref[1]) * kRad + 360.0, 360.0);
 
-    Accumulator box;
+    AngleAccumulator box;
     for (int i = 0; i < 8; ++i) {
         Vec3 corner{(i & 1) ? b.upper[0] : b.lower[0], (i & 2) ? b.upper[1] : b.lower[1],
                     (i & 4) ? b.upper[2] : b.lower[2]};
@@ -72,7 +70,7 @@ ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& sce
     }
     rep.bounding_box = box.range();
 
-    Accumulator fov, border;
+    AngleAccumulator fov, border;
     std::size_t hits = 0;
     auto cast = [&](double row, double col, bool on_border) {
         Vec3 d = cam.direction(row, col);

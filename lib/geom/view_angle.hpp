@@ -23,6 +23,14 @@ struct AngleRange {
     std::size_t samples = 0;   // rays or corners that contributed
 };
 
+// The running minimum and maximum of the angles added.
+struct AngleAccumulator {
+    double lo = 1e300, hi = -1e300;
+    std::size_t n = 0;
+    void add(double v);
+    AngleRange range() const;  // with suggested_increment_deg's increment
+};
+
 struct ViewAngleReport {
     AngleRange bounding_box;                  // "scene-bounding-box"
     std::optional<AngleRange> field_of_view;  // "field-of-view"; none if no ray hits

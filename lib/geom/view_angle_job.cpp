@@ -1,4 +1,4 @@
-// The find_min_max_view_angle job: inputs, both methods, the report.
+// find_min_max_view_angle's report: the .snd line, the table of both methods.
 #include "geom/view_angle_job.hpp"
 
 #include <cmath>
@@ -7,8 +7,6 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geom/view_angle.hpp"
-#include "io/adv.hpp"
-#include "scene/load.hpp"
 
 namespace sigchain::geom {
 
@@ -64,27 +62,18 @@ scene::GeoOrigin parse_geo_origin(const std::string& text, const std::string& op
     return {v[0], v[1], v[2]};
 }
 
-void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
-    io::Adv adv = io::read_adv_file(job.adv_path);
-    FrameCamera cam = frame_camera(adv, job.adv_path);
-    scene::LoadOptions load;
-    load.scene_meters_per_unit = io::meters_per_unit(adv.units);
-    load.allow_degenerate = true;  // geometry only: a degenerate facet is never hit
-    load.origin = job.origin;
-    load.input = job.scene_input;
-    scene::Scene sc = scene::load_scene(job.scene_path, load);
-    // The scene as a whole and the whole field of view: conditions of no single line.
-    if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
-    ViewAngleReport rep = find_view_angles(cam, sc, job.grid);
-    if (job.method == ViewAngleMethod::FieldOfView && !rep.field_of_view)
-        throw DataError({job.adv_path, 0}, "no ray of the field of view hits the scene in " +
-                                               job.scene_path + "; check the look angles");
-    if (job.snd_line) {
+void write_view_angle_report(const ViewAngleReport& rep, ViewAngleMethod method, bool snd_line,
+                             const std::string& adv_path, const std::string& scene_path,
+                             std::ostream& out) {
+    if (method == ViewAngleMethod::FieldOfView && !rep.field_of_view)
+        throw DataError({adv_path, 0}, "no ray of the field of view hits the scene in " +
+                                           scene_path + "; check the look angles");
+    if (snd_line) {
         const AngleRange& r =
-            job.method == ViewAngleMethod::FieldOfView ? *rep.field_of_view : rep.bounding_box;
+            method == ViewAngleMethod::FieldOfView ? *rep.field_of_view : rep.bounding_box;
         out << snd_view_angle_line(r.min_deg, r.max_deg, r.increment_deg)
             << "\t# min, max and increment of the view angle (deg, "
-            << (job.method == ViewAngleMethod::FieldOfView ? "field-of-view" : "scene-bounding-box")
+            << (method == ViewAngleMethod::FieldOfView ? "field-of-view" : "scene-bounding-box")
             << ")\n";
         return;
     }

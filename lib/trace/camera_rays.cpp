@@ -21,8 +21,12 @@ void FrameSensor::ray(double row, double column, geo::Vec3& origin, geo::Vec3& d
 }
 
 double FrameSensor::view_angle_deg(const geo::Vec3& direction) const {
+    return geom::signed_view_angle_deg(direction, view_angle_reference());
+}
+
+geo::Vec3 FrameSensor::view_angle_reference() const {
     double a = m_reference_azimuth_deg * M_PI / 180.0;
-    return geom::signed_view_angle_deg(direction, {std::sin(a), std::cos(a), 0.0});
+    return {std::sin(a), std::cos(a), 0.0};
 }
 
 std::string FrameSensor::summary() const {

@@ -38,6 +38,9 @@ public:
     // Signed view angle (deg, the .rad's convention: find_min_max_view_angle(1)) of a
     // ray direction, for the path-term lookup.
     virtual double view_angle_deg(const geo::Vec3& direction) const = 0;
+    // The horizontal unit direction (z = 0) toward which view_angle_deg is positive, for
+    // find_min_max_view_angle's report. Default (test sensors): north.
+    virtual geo::Vec3 view_angle_reference() const { return {0, 1, 0}; }
     // The sensor model's name ("frame camera", "pushbroom scanner", "line scanner") and
     // a one-line description of its geometry for -v (defaults for test sensors).
     virtual std::string kind() const { return "sensor"; }
@@ -52,6 +55,7 @@ public:
     long columns() const override;
     void ray(double row, double column, geo::Vec3& origin, geo::Vec3& direction) const override;
     double view_angle_deg(const geo::Vec3& direction) const override;
+    geo::Vec3 view_angle_reference() const override;
     std::string kind() const override { return "frame camera"; }
     std::string summary() const override;
 
@@ -108,6 +112,7 @@ public:
     void nominal_ray(double row, double column, geo::Vec3& origin,
                      geo::Vec3& direction) const override;
     double view_angle_deg(const geo::Vec3& direction) const override;
+    geo::Vec3 view_angle_reference() const override { return m_reference; }
     std::string kind() const override { return "pushbroom scanner"; }
     std::string summary() const override;
     // The time (s) at which image position `row` is taken.
@@ -126,6 +131,7 @@ public:
     long columns() const override { return m_g.samples; }
     void ray(double row, double column, geo::Vec3& origin, geo::Vec3& direction) const override;
     double view_angle_deg(const geo::Vec3& direction) const override;
+    geo::Vec3 view_angle_reference() const override { return m_reference; }
     std::string kind() const override { return "line scanner"; }
     std::string summary() const override;
     double time_of(double row, double column) const;

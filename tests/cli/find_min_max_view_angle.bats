@@ -125,3 +125,97 @@ SCENE="$SIGCHAIN_SOURCE_DIR/tests/data/scene"
     run -2 --separate-stderr find_min_max_view_angle --origin 95,0 "$GEOM/nadir.adv" "$SCENE/flat.odb"
     [[ "$stderr" == *"latitude within -90..90 deg"* ]]
 }
+
+# A line scanner rolled 5 deg on a trajectory file in a folder of its own, named
+# relative to the .adv as trace finds it (adv(5) trajectory), 30 m over the lawn of
+# box_on_plane.gdb, sweeping +-20 deg.
+scanner_adv() {
+    mkdir -p flight
+    printf '# sigchain-trj 1\n0 10 0.5 30 5 0 0\n10 10 40.5 30 5 0 0\n' > flight/roll.trj
+    cat > line.adv <<'EOF2'
+10 10 0
+10 0 30
+90 -90 0
+32
+24 40	# 6 scans of 4 detectors, 40 samples
+units = m
+pixel_pitch_um = 500
+sensor = line
+trajectory = flight/roll.trj
+scan_half_angle_deg = 20
+scan_period_s = 0.5
+detectors_per_scan = 4
+EOF2
+}
+
+# band1.rad and band2.rad of tests/data/trace with their view-angle grid made LO to HI
+# by INC (the nadir block's terms at every angle): OUT1 and OUT2.
+narrow_rads() {
+    local lo="$1" hi="$2" inc="$3"
+    for b in 1 2; do
+        awk -v lo="$lo" -v hi="$hi" -v inc="$inc" '
+            FNR == NR { if (blk && n < 4) nadir[n++] = $0
+                if (!blk && $1 == "0" && NF == 2) { blk = 1; nadir[0] = $2; n = 1 } next }
+            /^# view angle \(deg\), range/ { print; skip = 1; m = int((hi - lo) / inc + 0.5)
+                for (k = 0; k <= m; ++k) { print lo + k * inc, nadir[0]
+                    for (i = 1; i < 4; ++i) print nadir[i] } next }
+            skip && /^SIGCHAIN_RAD/ { skip = 0 }
+            skip { next }
+            /# min view angle/ { print lo "\t# min view angle (deg)"; next }
+            /# max view angle/ { print hi "\t# max view angle (deg)"; next }
+            /# view angle increment/ { print inc "\t# view angle increment (deg)"; next }
+            /# view angles$/ { print int((hi - lo) / inc + 0.5) + 1 "\t# view angles"; next }
+            { print }' "$SIGCHAIN_SOURCE_DIR/tests/data/trace/band$b.rad" \
+            "$SIGCHAIN_SOURCE_DIR/tests/data/trace/band$b.rad" > "narrow$b.rad"
+    done
+}
+
+# trace of line.adv over box_on_plane.gdb with the narrowed tables.
+render() {
+    trace "$@" --background none line.adv "$SIGCHAIN_SOURCE_DIR/tests/data/trace/box.snd" \
+        "$SEED/box_on_plane.gdb" "$SIGCHAIN_SOURCE_DIR/tests/data/trace/box.mat" narrow1.rad narrow2.rad
+}
+
+@test "a line scanner's range: its scan angles shifted by its roll, tables trace accepts" {
+    scanner_adv
+    run -0 --separate-stderr find_min_max_view_angle line.adv "$SEED/box_on_plane.gdb"
+    # Positive toward the body's right, east for a platform flying north; the 5 deg
+    # roll (right wing down) turns the sweep of +-20 deg to -25 .. 15 deg across
+    # track, and the outer detectors' edges look alpha = 2 x 500 um / 32 mm rad along
+    # track: acos(cos(alpha) cos(25 deg)) and acos(cos(alpha) cos(15 deg)) off nadir
+    # (to the report's 4 decimals).
+    assert_line --index 0 --partial "positive toward azimuth 90.000 deg"
+    run -0 awk '$1 == "unclipped-image" || $1 == "field-of-view" {
+            r = atan2(0, -1) / 180; ca = cos(2 * 0.5 / 32)
+            c = ca * cos(25 * r); lo = -atan2(sqrt(1 - c * c), c) / r
+            c = ca * cos(15 * r); hi = atan2(sqrt(1 - c * c), c) / r
+            print $1, $2, $3, lo, hi
+            if ((($2 - lo) ^ 2) ^ 0.5 > 6e-5 || (($3 - hi) ^ 2) ^ 0.5 > 6e-5) bad = 1; n++ }
+        END { exit (n == 2 && !bad) ? 0 : 1 }' <<< "$output"
+    run -0 --separate-stderr find_min_max_view_angle --snd line.adv "$SEED/box_on_plane.gdb"
+    read -r lo hi inc _ <<< "$output"
+    narrow_rads "$lo" "$hi" "$inc"
+    run -0 sigchain-check narrow1.rad narrow2.rad
+    run -0 --separate-stderr render -v -o cube.img
+    [[ "$stderr" == *"sensor: line scanner"* ]]
+    [[ "$stderr" != *"path terms are clamped"* ]]
+    # The control: tables a degree short of the range raise trace's warning.
+    narrow_rads "$(awk -v v="$lo" 'BEGIN { print v + 1 }')" "$hi" "$inc"
+    run -0 --separate-stderr render -o cube2.img
+    [[ "$stderr" == *"path terms are clamped at the ends"* ]]
+}
+
+@test "a geodetic trajectory needs --origin; with it the scanner is placed about that point" {
+    scanner_adv
+    printf '# sigchain-trj 1\nposition = geodetic\n0 43.08333 -77.66667 30 5 0 0\n10 43.0837 -77.66667 30 5 0 0\n' \
+        > flight/geo.trj
+    sed -i 's#^trajectory = .*#trajectory = flight/geo.trj#' line.adv
+    run -1 --separate-stderr find_min_max_view_angle line.adv "$SEED/box_on_plane.gdb"
+    [[ "$stderr" == "find_min_max_view_angle: flight/geo.trj:3: a geodetic trajectory needs the scene's geodetic origin"* ]]
+    # Over the origin, flying north at 30 m with the same roll: the same range as the
+    # scene-frame trajectory's.
+    run -0 --separate-stderr find_min_max_view_angle --origin 43.08333,-77.66667 line.adv \
+        "$SEED/box_on_plane.gdb"
+    assert_line --index 0 --partial "positive toward azimuth 90.000 deg"
+    assert_line --index 4 --regexp '^unclipped-image +-25\.0599 +15\.1040 '
+}

@@ -4,15 +4,17 @@
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "geom/view_angle_job.hpp"
+#include "trace/view_angle_job.hpp"
 
 namespace cli = sigchain::cli;
 namespace geom = sigchain::geom;
+namespace trace = sigchain::trace;
 
 int main(int argc, char** argv) {
     cli::Cli tool({"find_min_max_view_angle",
                    "Print the minimum, maximum and suggested increment of the view angle\n"
-                   "of a sensor over a scene, by the scene-bounding-box and field-of-view "
-                   "methods.",
+                   "of a sensor (frame camera, pushbroom or line scanner) over a scene, by\n"
+                   "the scene-bounding-box and field-of-view methods.",
                    "[OPTIONS] ADV SCENE"});
     tool.add_positional("input", -1,
                         "look-angle file (.adv) and scene (.gdb, .odb, a mesh or a DEM\n"
@@ -22,7 +24,8 @@ int main(int argc, char** argv) {
         cli::po::value<std::string>()->default_value("field-of-view")->value_name("NAME"),
         "method for --snd: field-of-view or scene-bounding-box")(
         "origin", cli::po::value<std::string>()->value_name("LAT,LON[,H]"),
-        "geodetic scene origin for DEMs (deg N, deg E, m above the ellipsoid)");
+        "geodetic scene origin for DEMs and a geodetic .trj (deg N, deg E, m above "
+        "the ellipsoid)");
     tool.add_number("grid", "N", cli::integers(1, 100000),
                     "interior rays per image axis for the field-of-view method (1-100000)", "256");
     tool.add_output_option();
@@ -30,7 +33,7 @@ int main(int argc, char** argv) {
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
         auto inputs = cli::args(vm, "input");
         if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and SCENE");
-        geom::ViewAngleJob job;
+        trace::ViewAngleJob job;
         job.adv_path = inputs[0];
         job.scene_path = inputs[1];
         job.snd_line = vm.count("snd") > 0;
@@ -47,7 +50,7 @@ int main(int argc, char** argv) {
             job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
         sigchain::require_outputs_distinct({cli::output_path(vm)}, inputs);
         sigchain::AtomicOutput out(cli::output_path(vm));
-        geom::run_view_angle_job(job, out.stream());
+        trace::run_view_angle_job(job, out.stream());
         out.commit();
         return 0;
     });
