@@ -220,6 +220,16 @@ void read_coupling(const SampleSetup& s, const rt::Problem& prob, const rt::Resu
         res.diffuse_down = std::clamp(solar.levels[1].diffuse_down / normal, 0.0, 1.0);
 }
 
+// Solar scattering, the beam only (no emission): the deck's IMULT (single scattering
+// or the full solve) and SALB (the ground's reflection in the sky). Sets prob's beam.
+rt::Result solve_solar(const SampleSetup& s, const io::RadSample& sample, rt::Problem& prob) {
+    prob.beam_flux = sample.solar_irradiance;
+    prob.beam_mu0 = s.mu0;
+    rt::Result r = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
+    add_ground_reflection(prob, s.deck.surface_albedo, 1, r);
+    return r;
+}
+
 // One exponential-sum term (ColumnModel::gas_terms) of a sample: the column with the
 // term's gas depths for the sun and the coupling; for layer emission (`terms` given)
 // the fitted gas's term depths with the other gases' equivalent depths exact toward
@@ -233,12 +243,7 @@ SampleResult solve_term(const SampleSetup& s, const std::vector<LayerOptics>& co
         kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
     rt::Problem prob = base_problem(s, col, kept);
     Solutions sol;
-    if (s.sun_up) {
-        prob.beam_flux = sample.solar_irradiance;
-        prob.beam_mu0 = s.mu0;
-        sol.solar = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
-        add_ground_reflection(prob, s.deck.surface_albedo, 1, sol.solar);
-    }
+    if (s.sun_up) sol.solar = solve_solar(s, sample, prob);
     res.thermal = terms != nullptr;
     if (terms) {  // toward the ground (L_de) and toward the sensor (L_ue)
         for (auto [pivot, out] : {std::pair{std::size_t{0}, &sol.thermal},
@@ -317,12 +322,7 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
         kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
     rt::Problem prob = base_problem(s, col, kept);
     Solutions sol;
-    if (s.sun_up) {  // solar scattering: the beam only (no emission)
-        prob.beam_flux = sample.solar_irradiance;
-        prob.beam_mu0 = s.mu0;
-        sol.solar = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
-        add_ground_reflection(prob, s.deck.surface_albedo, 1, sol.solar);
-    }
+    if (s.sun_up) sol.solar = solve_solar(s, sample, prob);
     res.thermal = thermal;
     if (res.thermal) {
         sol.thermal = solve_emission(s, col, prob, nu, 0);

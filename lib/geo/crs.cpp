@@ -47,6 +47,16 @@ std::string Crs::wkt() const {
     return out;
 }
 
+std::string Crs::wkt2() const {
+    if (!m_srs) return "";
+    char* text = nullptr;
+    const char* options[] = {"FORMAT=WKT2_2019", nullptr};
+    m_srs->exportToWkt(&text, options);
+    std::string out = text ? text : "";
+    CPLFree(text);
+    return out;
+}
+
 bool Crs::same_as(const Crs& other) const {
     if (!m_srs || !other.m_srs) return !m_srs && !other.m_srs;
     return m_srs->IsSame(other.m_srs.get());

@@ -29,6 +29,10 @@ public:
     bool empty() const { return m_srs == nullptr; }
     // The CRS as WKT (GDAL's default WKT 1); "" when empty.
     std::string wkt() const;
+    // The CRS as WKT2 (2019); "" when empty. WKT1 adds the TOWGS84 of a datum such as
+    // SIRGAS 2000, which GDAL reads back as a BOUNDCRS that no longer names its EPSG code:
+    // georeferenced outputs carry this form.
+    std::string wkt2() const;
     // Whether both name the same CRS (OGR's IsSame); two empty ones are the same.
     bool same_as(const Crs& other) const;
     const OGRSpatialReference* ogr() const { return m_srs.get(); }

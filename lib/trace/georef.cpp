@@ -1,9 +1,6 @@
 // The georeferencing of trace's outputs: the map-grid fit and the geolocation arrays.
 #include "trace/georef.hpp"
 
-#include <cpl_conv.h>
-#include <ogr_spatialref.h>
-
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -18,17 +15,6 @@ std::optional<geo::Vec3> plane_point(const geo::Vec3& origin, const geo::Vec3& d
     const double t = (height - origin[2]) / dir[2];
     if (!(t > 0)) return std::nullopt;
     return geo::Vec3{origin[0] + t * dir[0], origin[1] + t * dir[1], height};
-}
-
-// The CRS as WKT2 (2019): WKT1 adds the TOWGS84 of a datum such as SIRGAS 2000, which
-// GDAL reads back as a BOUNDCRS that no longer names its EPSG code.
-std::string wkt2(const geo::Crs& crs) {
-    char* text = nullptr;
-    const char* options[] = {"FORMAT=WKT2_2019", nullptr};
-    crs.ogr()->exportToWkt(&text, options);
-    std::string out = text ? text : "";
-    CPLFree(text);
-    return out;
 }
 
 geo::Vec3 metres(const geo::Vec3& p, double meters_per_unit) {
@@ -91,7 +77,7 @@ image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scen
     char buf[160];
     if (fit && fit->max_residual_px < kGridAlignmentTolerancePx) {
         georef.geotransform = fit->geotransform;
-        georef.crs_wkt = wkt2(place.map_crs);
+        georef.crs_wkt = place.map_crs.wkt2();
         std::snprintf(buf, sizeof buf,
                       "georeferencing: a geotransform (the image grid is within %.2g pixel of "
                       "the map grid)",

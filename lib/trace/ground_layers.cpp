@@ -1,9 +1,6 @@
 // The IGM and GLT of a scanner image (ground_layers.hpp; cube(5), GEOLOCATION LAYERS).
 #include "trace/ground_layers.hpp"
 
-#include <cpl_conv.h>
-#include <ogr_spatialref.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -39,15 +36,6 @@ double median_spacing(const GroundGrid& g, bool along_rows) {
                 std::hypot(g.map_xy[j][0] - g.map_xy[i][0], g.map_xy[j][1] - g.map_xy[i][1]));
         }
     return median(std::move(d));
-}
-
-std::string wkt2(const geo::Crs& crs) {
-    char* text = nullptr;
-    const char* options[] = {"FORMAT=WKT2_2019", nullptr};
-    crs.ogr()->exportToWkt(&text, options);
-    std::string out = text ? text : "";
-    CPLFree(text);
-    return out;
 }
 
 GroundGrid ground_grid(const Sensor& sensor, const scene::Scene& scene,
@@ -146,7 +134,7 @@ void write_ground_layers(const Sensor& sensor, const scene::Scene& scene,
     std::vector<std::array<double, 3>> llh;
     const GroundGrid g =
         ground_grid(sensor, scene, place, mpu, plane, row_begin, row_end, place ? &llh : nullptr);
-    const std::string srs = place ? wkt2(place->map_crs) : "";
+    const std::string srs = place ? place->map_crs.wkt2() : "";
     const double nodata = image::kGeolocationNodata;
     const auto plane_of = [&](auto value) {
         std::vector<double> v(g.scene.size());
