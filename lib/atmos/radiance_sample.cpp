@@ -285,13 +285,12 @@ void add_weighted(SampleResult& acc, const SampleResult& term, double w, bool fi
 SampleResult solve_sample(const SampleSetup& s, double nu) {
     const double wavelength = 1e4 / nu;
     const std::vector<LayerOptics> col = s.column.layers(nu);
-    const std::size_t top_level = s.column.profile().size() - 1;
     io::RadSample sample;
     sample.wavelength_um = wavelength;
     sample.wavenumber_cm1 = nu;
     sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
     sample.sun_transmission =
-        s.sun_up ? s.column.direct_transmittance(nu, col, 0, top_level, s.mu0) : 0.0;
+        s.sun_up ? s.column.sun_transmittance(nu, col, 0, s.mu0) : 0.0;
 
     // Exponential sums where a gas band needs them (ColumnModel::gas_terms): the solver
     // per term, the results weighted and summed (correlated-k).
