@@ -122,7 +122,8 @@ const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
     const std::lock_guard lock(m_ray_mutex);
     auto it = m_rays.find(key);
     if (it == m_rays.end())
-        it = m_rays.emplace(key, trace_to_sun(m_shells, level, std::acos(std::clamp(mu0, -1.0, 1.0))))
+        it = m_rays
+                 .emplace(key, trace_to_sun(m_shells, level, std::acos(std::clamp(mu0, -1.0, 1.0))))
                  .first;
     return it->second;
 }

@@ -323,8 +323,7 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
     sample.wavelength_um = wavelength;
     sample.wavenumber_cm1 = nu;
     sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
-    sample.sun_transmission =
-        s.sun_up ? s.column.sun_transmittance(nu, col, 0, s.mu0) : 0.0;
+    sample.sun_transmission = s.sun_up ? s.column.sun_transmittance(nu, col, 0, s.mu0) : 0.0;
 
     // Exponential sums where a gas band needs them (ColumnModel::gas_terms): the solver
     // per term, the results weighted and summed (correlated-k).

@@ -31,9 +31,9 @@ Shells shells_from(const Profile& p, double radius_km = kEarthRadiusKm, bool ref
 // density-weighted slant path over the density-weighted vertical path (1 / mu in a flat,
 // unrefracting atmosphere; 0 for layers the ray does not cross).
 struct Ray {
-    bool reaches = true;          // false: the source lies below the refracted horizon
-    double zenith_rad = 0;        // local (apparent) zenith angle at the start level
-    double refraction_rad = 0;    // bending between the start level and the top
+    bool reaches = true;           // false: the source lies below the refracted horizon
+    double zenith_rad = 0;         // local (apparent) zenith angle at the start level
+    double refraction_rad = 0;     // bending between the start level and the top
     std::vector<double> air_mass;  // per layer
 };
 

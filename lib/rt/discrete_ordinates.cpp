@@ -191,11 +191,11 @@ void Solver::setup() {
     for (int n = 0; n <= m_L; ++n) {
         if (sph && n < m_L) m_beam_mu0[n] = 1 / m_p.beam_airmass[n];
         m_slant_s[n] = !sph ? m_s.tau_s_level[n] / m_p.beam_mu0
-                     : n == 0 ? 0.0
-                              : m_slant_s[n - 1] + m_p.beam_airmass[n - 1] * m_s.optics[n - 1].dtau;
+                       : n == 0
+                           ? 0.0
+                           : m_slant_s[n - 1] + m_p.beam_airmass[n - 1] * m_s.optics[n - 1].dtau;
     }
-    for (int n = 0; n < m_L; ++n)
-        m_s.optics[n].beam_top = m_p.beam_flux * std::exp(-m_slant_s[n]);
+    for (int n = 0; n < m_L; ++n) m_s.optics[n].beam_top = m_p.beam_flux * std::exp(-m_slant_s[n]);
     const std::size_t nu = m_p.umu.size();
     m_trans.assign(m_L * nu, 0.0);
     for (int n = 0; n < m_L; ++n)

@@ -356,8 +356,8 @@ void Solver::beam_path_integrals(std::size_t u, const Position& ps, std::vector<
         for (int n = np - 1; n >= 0; --n) {
             const double dt = m_s.optics[n].dtau;
             mu0 = m_beam_mu0[n];
-            tn[n] = atten * std::exp(-m_slant_s[n]) *
-                    exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) / -mu;
+            tn[n] = atten * std::exp(-m_slant_s[n]) * exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) /
+                    -mu;
             atten *= m_trans[n * nu + u];
         }
     }

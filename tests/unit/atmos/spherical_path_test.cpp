@@ -13,7 +13,7 @@ using namespace sigchain::atmos;
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
-constexpr double kH = 8.0;     // scale height of the test atmosphere, km
+constexpr double kH = 8.0;      // scale height of the test atmosphere, km
 constexpr double kTop = 120.0;  // its top, km (e^-15 of the column lies above)
 
 // An exponential, unrefracting atmosphere: density e^{-z/H} on levels every dz km.

@@ -87,8 +87,8 @@ TEST(PseudoSpherical, SingleScatteringUsesLayerAirMasses) {
                 return std::exp(base) * -std::expm1(-k * tau[n]) / k;
             };
             expect += omega / (4 * kPi) * std::exp(-s) * integral(a) / mu;
-            plane += omega / (4 * kPi) * std::exp(-top[n] / p.beam_mu0) *
-                     integral(1 / p.beam_mu0) / mu;
+            plane +=
+                omega / (4 * kPi) * std::exp(-top[n] / p.beam_mu0) * integral(1 / p.beam_mu0) / mu;
             s += a * tau[n];
         }
         const std::size_t level = p.umu[u] > 0 ? 0 : 1;
