@@ -40,8 +40,10 @@ double exp_between(double a, double b, double f) {
 }  // namespace
 
 double air_refractivity(double p_mb, double t_k) {
-    constexpr double inv_lambda2 = 1 / (0.55 * 0.55);  // um-2
-    return (77.46 + 0.459 * inv_lambda2) * p_mb / t_k * 1e-6;
+    constexpr double nu = 1e4 / 0.55;  // cm-1
+    constexpr double a = nu / 1.14e5, b = nu / 6.24e4;
+    return (83.42 + 185.08 / (1 - a * a) + 4.11 / (1 - b * b)) * (p_mb * 288.15) /
+           (1013.25 * t_k) * 1e-6;
 }
 
 Shells shells_from(const Profile& p, double radius_km, bool refraction) {

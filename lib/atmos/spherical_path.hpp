@@ -12,9 +12,11 @@ namespace sigchain::atmos {
 
 constexpr double kEarthRadiusKm = 6371.23;  // LOWTRAN 7's Earth radius
 
-// Refractivity n - 1 of dry air at wavelength 0.55 um, p in mb, T in K: the
-// Edlen-type formula of LOWTRAN 7, (n - 1) 1e6 = (77.46 + 0.459 / lambda^2) p / T
-// (lambda in um; the water vapour term, under 1 % of n - 1, is left out).
+// Refractivity n - 1 of dry air at 0.55 um (nu = 18182 cm-1), p in mb, T in K: Edlen's
+// (1966) formula as LOWTRAN 6 and 7 use it, (n - 1) 1e6 = (83.42 + 185.08 / (1 -
+// (nu / 1.14e5)^2) + 4.11 / (1 - (nu / 6.24e4)^2)) (p 288.15) / (1013.25 T); its water
+// vapour term, -(43.49 - (nu / 1.7e4)^2) e / 1013.25 (e in mb), under 0.5 % of n - 1
+// near the ground, is left out.
 double air_refractivity(double p_mb, double t_k);
 
 // The shells of a profile: level altitudes, refractivity and air density (the weight
