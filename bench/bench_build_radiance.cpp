@@ -9,10 +9,13 @@
 #include <chrono>
 #include <ctime>
 #include <cstdio>
+#include <numbers>
 #include <thread>
 #include <vector>
 
 #include "atmos/build_radiance.hpp"
+#include "atmos/column_model.hpp"
+#include "atmos/spherical_path.hpp"
 
 namespace atmos = sigchain::atmos;
 
@@ -77,6 +80,30 @@ int main() {
         std::printf("  gas exponential sums: %.3f s with, %.3f s with one depth (1 thread, CPU "
                     "time, best of 3): x%.2f; %ld column solves for %ld samples\n",
                     sums, one, sums / one, rep.gas_term_solves, samples);
+    }
+
+    // The refracted sun rays (atmos/spherical_path.hpp) behind tau1 and the
+    // pseudo-spherical beam, side by side with a whole run (CPU time, one thread): the
+    // sun traced to every level of the Hawkeye column, at most what a run traces (once
+    // per column: to the kept levels; the lines of sight need no search).
+    {
+        atmos::RadianceOptions o;
+        o.data_dir = kSource + "/data";
+        atmos::RadianceReport rep;
+        (void)atmos::build_radiance(deck, snd, o, &rep);
+        const atmos::ColumnModel column(deck.runs.front(), snd.sensor_altitude_km, o);
+        const double zenith_rad = rep.sun_zenith_deg * std::numbers::pi / 180;
+        double rays = 1e300;
+        for (int r = 0; r < 3; ++r) {
+            const std::clock_t start = std::clock();
+            for (std::size_t k = 0; k < column.profile().size(); ++k)
+                (void)atmos::trace_to_sun(column.shells(), k, zenith_rad);
+            rays = std::min(rays, static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
+        }
+        const double run = seconds_for(deck, snd, 1, 3, true, 12, true);
+        std::printf("  refracted sun rays to all %zu levels: %.4f s, a run %.3f s (CPU time, "
+                    "1 thread, best of 3): %.2f %% of a run\n",
+                    column.profile().size(), rays, run, 100 * rays / run);
     }
 
     // Sky cells (rad(5) SKY: the mean of n x n subsample directions per 5 x 10 deg

@@ -49,6 +49,7 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g);
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
+    m_shells = shells_from(m_profile);
 }
 
 std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
@@ -104,11 +105,53 @@ std::vector<LayerOptics> ColumnModel::with_gas_depths(std::vector<LayerOptics> l
     return layers;
 }
 
+double ColumnModel::slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
+                                        std::size_t i, std::size_t j, const Ray& ray) const {
+    double tau = 0;  // Rayleigh, aerosol and cloud follow Beer's law
+    for (std::size_t k = i; k < j; ++k)
+        tau += ray.air_mass[k] * (layers[k].tau_rayleigh + layers[k].tau_aerosol);
+    return m_gas->transmittance_along(nu_cm1, i, j, ray.air_mass) * std::exp(-tau);
+}
+
 double ColumnModel::direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                          std::size_t i, std::size_t j, double mu) const {
-    double tau = 0;  // Rayleigh, aerosol and cloud follow Beer's law
-    for (std::size_t k = i; k < j; ++k) tau += layers[k].tau_rayleigh + layers[k].tau_aerosol;
-    return m_gas->transmittance(nu_cm1, i, j, mu) * std::exp(-tau / mu);
+    if (i == j) return 1.0;
+    return slant_transmittance(nu_cm1, layers, i, j, view_ray(i, j, mu));
+}
+
+double ColumnModel::sun_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
+                                      std::size_t level, double mu0) const {
+    const Ray& ray = sun_ray(level, mu0);
+    if (!ray.reaches) return 0.0;
+    return slant_transmittance(nu_cm1, layers, level, m_profile.size() - 1, ray);
+}
+
+const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
+    const auto key = std::make_tuple(0, level, std::size_t{0}, mu0);
+    const std::lock_guard lock(m_ray_mutex);
+    auto it = m_rays.find(key);
+    if (it == m_rays.end())
+        it = m_rays
+                 .emplace(key, trace_to_sun(m_shells, level, std::acos(std::clamp(mu0, -1.0, 1.0))))
+                 .first;
+    return it->second;
+}
+
+// Snell's invariant n r sin z carries the zenith angle at level j down to level i
+// (past the horizon of level i: grazing there).
+const Ray& ColumnModel::view_ray(std::size_t i, std::size_t j, double mu) const {
+    const auto key = std::make_tuple(1, i, j, mu);
+    const std::lock_guard lock(m_ray_mutex);
+    auto it = m_rays.find(key);
+    if (it == m_rays.end()) {
+        const double R = m_shells.radius_km;
+        const double nr_j = (1 + m_shells.refractivity[j]) * (R + m_shells.z_km[j]);
+        const double nr_i = (1 + m_shells.refractivity[i]) * (R + m_shells.z_km[i]);
+        const double sin_j = std::sqrt(std::max(0.0, 1 - mu * mu));
+        const double zenith_i = std::asin(std::min(1.0, nr_j * sin_j / nr_i));
+        it = m_rays.emplace(key, trace_up(m_shells, i, j, zenith_i)).first;
+    }
+    return it->second;
 }
 
 }  // namespace sigchain::atmos

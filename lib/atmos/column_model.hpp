@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "atmos/aerosol.hpp"
@@ -13,6 +16,7 @@
 #include "atmos/gas_absorption.hpp"
 #include "atmos/profile.hpp"
 #include "atmos/radiance_options.hpp"
+#include "atmos/spherical_path.hpp"
 #include "io/cdk.hpp"
 
 namespace sigchain::atmos {
@@ -69,10 +73,21 @@ public:
     static std::vector<LayerOptics> with_gas_depths(std::vector<LayerOptics> layers,
                                                     const std::vector<double>& gas);
 
-    // Direct (unscattered) transmittance between levels i < j at cosine of zenith mu:
-    // band-model gas transmittance times exp(-(Rayleigh + aerosol extinction) / mu).
+    // Direct (unscattered) transmittance between levels i < j along the refracted
+    // line of sight through spherical shells (spherical_path.hpp) whose local zenith
+    // angle at level j is acos(mu): band-model gas transmittance of the slant amounts
+    // times exp(-sum of air mass times Rayleigh + aerosol extinction).
     double direct_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                 std::size_t level_i, std::size_t level_j, double mu) const;
+    // Direct transmittance of the sun's beam, true zenith acos(mu0) (outside the
+    // atmosphere), from the top down to `level` along its refracted path; 0 when the
+    // sun lies below the refracted horizon.
+    double sun_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
+                             std::size_t level, double mu0) const;
+    // The refracted rays behind them (computed once per argument, then cached).
+    const Ray& sun_ray(std::size_t level, double mu0) const;
+    const Ray& view_ray(std::size_t level_i, std::size_t level_j, double mu) const;
+    const Shells& shells() const { return m_shells; }
 
 private:
     Profile m_profile;
@@ -81,6 +96,11 @@ private:
     std::optional<CloudModel> m_cloud;        // ICLD 1-5
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
     std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
+    double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
+                               std::size_t level_i, std::size_t level_j, const Ray& ray) const;
+    Shells m_shells;
+    mutable std::mutex m_ray_mutex;  // guards m_rays (node-based: references stay valid)
+    mutable std::map<std::tuple<int, std::size_t, std::size_t, double>, Ray> m_rays;
 };
 
 }  // namespace sigchain::atmos

@@ -383,9 +383,13 @@ double GasColumn::band_optical_depth(int gas, double nu, std::size_t lo, std::si
     const auto index = static_cast<std::size_t>(i);
     const int band = grid.band[index];
     if (band < 0) return 0.0;
-    const double w = amount(band, lo, hi) / mu;
+    return band_depth_of_amount(band, grid.cprime[index], amount(band, lo, hi) / mu);
+}
+
+// -ln T of the band model at scaled amount w (band_optical_depth's last step).
+double GasColumn::band_depth_of_amount(int band, double cprime, double w) const {
     if (w < 1e-20) return 0.0;
-    const double x = m_tables->a[band] * (std::log10(w) + grid.cprime[index]);
+    const double x = m_tables->a[band] * (std::log10(w) + cprime);
     return x <= -6.0 ? 0.0 : std::pow(10.0, x);
 }
 
@@ -411,6 +415,30 @@ double GasColumn::transmittance(double nu, std::size_t i, std::size_t j, double 
     if (i > j) std::swap(i, j);
     double tau = continuum_optical_depth(nu, i, j, mu);
     for (int g = 0; g < kBandGases; ++g) tau += band_optical_depth(g, nu, i, j, mu);
+    return std::exp(-tau);
+}
+
+double GasColumn::transmittance_along(double nu, std::size_t i, std::size_t j,
+                                      const std::vector<double>& air_mass) const {
+    if (i >= m_levels || j >= m_levels || air_mass.size() + 1 < m_levels)
+        throw std::invalid_argument("GasColumn::transmittance_along: level out of range");
+    if (i > j) std::swap(i, j);
+    auto slant = [&](int q) {  // path amount of quantity q
+        double w = 0.0;
+        for (std::size_t k = i; k < j; ++k) w += air_mass[k] * amount(q, k, k + 1);
+        return w;
+    };
+    const auto c = continuum_coefficients(*m_tables, nu);
+    double tau = 0.0;
+    for (std::size_t q = 0; q < c.size(); ++q) tau += c[q] * slant(kBandCount + int(q));
+    for (int g = 0; g < kBandGases; ++g) {
+        const auto& grid = m_tables->grids[g];
+        const double x = std::round((nu - grid.nu0_cm1) / 5.0);
+        if (x < 0 || x >= static_cast<double>(grid.band.size())) continue;
+        const auto index = static_cast<std::size_t>(x);
+        const int band = grid.band[index];
+        if (band >= 0) tau += band_depth_of_amount(band, grid.cprime[index], slant(band));
+    }
     return std::exp(-tau);
 }
 

@@ -77,6 +77,11 @@ public:
     // cosine of zenith mu (0 < mu <= 1): band model per absorber on the path's total
     // amounts, times exp(-continuum and cross-section optical depth).
     double transmittance(double nu_cm1, std::size_t level_i, std::size_t level_j, double mu) const;
+    // The same along a slant path whose amounts are air_mass[k] times layer k's
+    // vertical amounts (the band model applied to the summed slant amounts; the
+    // layers' air masses from spherical_path.hpp, weighted by air density).
+    double transmittance_along(double nu_cm1, std::size_t level_i, std::size_t level_j,
+                               const std::vector<double>& air_mass) const;
 
     // Absorption optical depth of each layer [level k, level k+1] (profile.size() - 1
     // values) for a scattering solver that needs Beer's law: the vertical band-model
@@ -135,6 +140,7 @@ private:
     void add_continuum_depth(double nu_cm1, std::vector<double>& tau) const;
     double band_optical_depth(int gas_index, double nu_cm1, std::size_t lo, std::size_t hi,
                               double mu) const;
+    double band_depth_of_amount(int band, double cprime, double w) const;
     double amount(int quantity, std::size_t lo, std::size_t hi) const {
         return m_cumulative[hi * kQuantityCount + quantity] -
                m_cumulative[lo * kQuantityCount + quantity];

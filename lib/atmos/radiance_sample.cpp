@@ -130,6 +130,38 @@ rt::Problem base_problem(const SampleSetup& s, const std::vector<LayerOptics>& c
     return prob;
 }
 
+// The sun's air mass in each solver layer (top first) for the pseudo-spherical beam
+// (rt::Problem::beam_airmass), as DISORT's CHAPMAN forms it: the slant optical depth of
+// the refracted sun ray to each kept level (ColumnModel::sun_ray, the profile layers'
+// depths times their air masses), differenced across the solver layer over its vertical
+// depth. Empty (plane-parallel) when the sun is below a level's refracted horizon.
+std::vector<double> beam_airmass(const SampleSetup& s, const std::vector<LayerOptics>& col,
+                                 const std::vector<std::size_t>& kept) {
+    auto tau = [&](std::size_t k) {
+        return col[k].tau_rayleigh + col[k].tau_aerosol + col[k].tau_gas;
+    };
+    std::vector<double> slant(kept.size(), 0.0);
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        const Ray& r = s.column.sun_ray(kept[i], s.mu0);
+        if (!r.reaches) return {};
+        for (std::size_t k = kept[i]; k < col.size(); ++k) slant[i] += r.air_mass[k] * tau(k);
+    }
+    std::vector<double> out;
+    for (std::size_t i = kept.size() - 1; i-- > 0;) {
+        double vertical = 0, own = 0;  // own: the lower level's ray through this layer
+        const Ray& r = s.column.sun_ray(kept[i], s.mu0);
+        for (std::size_t k = kept[i]; k < kept[i + 1]; ++k) {
+            vertical += tau(k);
+            own += r.air_mass[k] * tau(k);
+        }
+        double a = vertical > 0 ? (slant[i] - slant[i + 1]) / vertical : 0.0;
+        if (!(a > 0 && std::isfinite(a)))  // no depth, or a path shorter below: its own
+            a = vertical > 0 && own > 0 ? own / vertical : r.air_mass[kept[i]];
+        out.push_back(a);
+    }
+    return out;
+}
+
 // Layer emission of the column `c`: Planck at each level, no beam, no surface (the
 // scene's) and no emission from space.
 rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& c,
@@ -139,6 +171,7 @@ rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& 
     const std::vector<std::size_t> k = kept_levels(c, sensor_level, s.options.merge_tau);
     rt::Problem th = prob;
     th.beam_flux = 0;
+    th.beam_airmass.clear();  // its layers are not prob's
     th.layers = merged_layers(solver_layers(c, s.moments), k);
     th.utau = solver_depths(th.layers, k, sensor_level);
     th.planck_levels.clear();
@@ -220,11 +253,14 @@ void read_coupling(const SampleSetup& s, const rt::Problem& prob, const rt::Resu
         res.diffuse_down = std::clamp(solar.levels[1].diffuse_down / normal, 0.0, 1.0);
 }
 
-// Solar scattering, the beam only (no emission): the deck's IMULT (single scattering
+// Solar scattering, the beam only (no emission), pseudo-spherical: the deck's IMULT (single scattering
 // or the full solve) and SALB (the ground's reflection in the sky). Sets prob's beam.
-rt::Result solve_solar(const SampleSetup& s, const io::RadSample& sample, rt::Problem& prob) {
+rt::Result solve_solar(const SampleSetup& s, const io::RadSample& sample,
+                       const std::vector<LayerOptics>& col, const std::vector<std::size_t>& kept,
+                       rt::Problem& prob) {
     prob.beam_flux = sample.solar_irradiance;
     prob.beam_mu0 = s.mu0;
+    prob.beam_airmass = beam_airmass(s, col, kept);
     rt::Result r = s.deck.single_scattering ? single_scattering(prob) : rt::solve(prob);
     add_ground_reflection(prob, s.deck.surface_albedo, 1, r);
     return r;
@@ -243,7 +279,7 @@ SampleResult solve_term(const SampleSetup& s, const std::vector<LayerOptics>& co
         kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
     rt::Problem prob = base_problem(s, col, kept);
     Solutions sol;
-    if (s.sun_up) sol.solar = solve_solar(s, sample, prob);
+    if (s.sun_up) sol.solar = solve_solar(s, sample, col, kept, prob);
     res.thermal = terms != nullptr;
     if (terms) {  // toward the ground (L_de) and toward the sensor (L_ue)
         for (auto [pivot, out] : {std::pair{std::size_t{0}, &sol.thermal},
@@ -290,13 +326,11 @@ void add_weighted(SampleResult& acc, const SampleResult& term, double w, bool fi
 SampleResult solve_sample(const SampleSetup& s, double nu) {
     const double wavelength = 1e4 / nu;
     const std::vector<LayerOptics> col = s.column.layers(nu);
-    const std::size_t top_level = s.column.profile().size() - 1;
     io::RadSample sample;
     sample.wavelength_um = wavelength;
     sample.wavenumber_cm1 = nu;
     sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
-    sample.sun_transmission =
-        s.sun_up ? s.column.direct_transmittance(nu, col, 0, top_level, s.mu0) : 0.0;
+    sample.sun_transmission = s.sun_up ? s.column.sun_transmittance(nu, col, 0, s.mu0) : 0.0;
 
     // Exponential sums where a gas band needs them (ColumnModel::gas_terms): the solver
     // per term, the results weighted and summed (correlated-k).
@@ -322,7 +356,7 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
         kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
     rt::Problem prob = base_problem(s, col, kept);
     Solutions sol;
-    if (s.sun_up) sol.solar = solve_solar(s, sample, prob);
+    if (s.sun_up) sol.solar = solve_solar(s, sample, col, kept, prob);
     res.thermal = thermal;
     if (res.thermal) {
         sol.thermal = solve_emission(s, col, prob, nu, 0);

@@ -39,17 +39,28 @@ double exp_integral(double base, double c, double len) {
 }
 
 struct Column {
-    std::vector<double> top;  // optical depth of each layer's top (from the top of the column)
+    std::vector<double> top;    // optical depth of each layer's top (from the top of the column)
+    std::vector<double> slant;  // the beam's slant optical depth there (pseudo-spherical only)
     double total = 0;
 };
 
 Column column_of(const rt::Problem& p) {
     Column c;
-    for (const rt::Layer& l : p.layers) {
+    double slant = 0;
+    for (std::size_t n = 0; n < p.layers.size(); ++n) {
         c.top.push_back(c.total);
-        c.total += l.tau;
+        c.slant.push_back(slant);
+        c.total += p.layers[n].tau;
+        if (!p.beam_airmass.empty()) slant += p.beam_airmass[n] * p.layers[n].tau;
     }
     return c;
+}
+
+// The beam's slant optical depth at depth t in layer n: t / mu0 plane-parallel, else
+// along the layers' air masses (rt::Problem::beam_airmass, pseudo-spherical).
+double beam_slant(const rt::Problem& p, const Column& c, std::size_t n, double t) {
+    if (p.beam_airmass.empty()) return t / p.beam_mu0;
+    return c.slant[n] + p.beam_airmass[n] * (t - c.top[n]);
 }
 
 // Single-scattered intensity at depth t in direction cosine mu (> 0 up, < 0 down)
@@ -69,9 +80,11 @@ double path_integral(const rt::Problem& p, const Column& c, double t, double mu,
         else
             b = std::min(b, t);
         if (!(b > a)) continue;
-        // exp(-s / mu0) along the beam, exp(-|s - t| / m) toward t, over s in [a, b].
-        const double base = mu > 0 ? -a / mu0 - (a - t) / m : -a / mu0 - (t - a) / m;
-        const double slope = mu > 0 ? -1 / mu0 - 1 / m : -1 / mu0 + 1 / m;
+        // exp(-beam slant) along the beam, exp(-|s - t| / m) toward t, over s in [a, b].
+        const double sa = beam_slant(p, c, n, a);
+        const double inv = p.beam_airmass.empty() ? 1 / mu0 : p.beam_airmass[n];
+        const double base = mu > 0 ? -sa - (a - t) / m : -sa - (t - a) / m;
+        const double slope = mu > 0 ? -inv - 1 / m : -inv + 1 / m;
         sum += l.ssa * phase_n[n] * exp_integral(base, slope, b - a) / m;
     }
     return sum;
@@ -94,7 +107,9 @@ rt::Result single_scattering(const rt::Problem& p) {
     const double s0 = std::sqrt(std::max(0.0, 1 - mu0 * mu0));
     for (double t : p.utau) {
         rt::LevelResult lv;
-        lv.direct_down = f0 * mu0 * std::exp(-t / mu0);
+        std::size_t layer = 0;
+        while (layer + 1 < p.layers.size() && t > col.top[layer + 1]) ++layer;
+        lv.direct_down = f0 * mu0 * std::exp(-beam_slant(p, col, layer, t));
         for (double mu : p.umu) {
             const double s = std::sqrt(std::max(0.0, 1 - mu * mu));
             for (double phi : p.phi_deg) {

@@ -33,6 +33,11 @@ void validate(const Problem& p) {
     }
     if (p.beam_flux < 0 || (p.beam_flux > 0 && !(p.beam_mu0 > 0 && p.beam_mu0 <= 1)))
         bad("beam_flux < 0 or beam_mu0 outside (0, 1]");
+    if (!p.beam_airmass.empty()) {
+        if (p.beam_airmass.size() != p.layers.size()) bad("beam_airmass: not one per layer");
+        for (double a : p.beam_airmass)
+            if (!(a > 0 && std::isfinite(a))) bad("beam_airmass: not positive and finite");
+    }
     if (p.top_isotropic < 0 || !(p.albedo >= 0 && p.albedo <= 1)) bad("bad top or albedo");
     if (!p.planck_levels.empty() && p.planck_levels.size() != p.layers.size() + 1)
         bad("planck_levels must have layers.size() + 1 values");
@@ -179,8 +184,18 @@ void Solver::setup() {
         for (std::size_t v = 0; v < m_p.umu.size(); ++v)
             if (m_p.umu[v] == -m_p.umu[u]) m_mirror[u] = static_cast<std::ptrdiff_t>(v);
     m_thermal = !m_p.planck_levels.empty();
-    for (int n = 0; n < m_L; ++n)
-        m_s.optics[n].beam_top = m_p.beam_flux * std::exp(-m_s.tau_s_level[n] / m_p.beam_mu0);
+    // The beam's path: plane-parallel tau / mu0 (kept to the bit), or pseudo-spherical.
+    const bool sph = !m_p.beam_airmass.empty();
+    m_beam_mu0.assign(m_L, m_p.beam_mu0);
+    m_slant_s.assign(m_L + 1, 0.0);
+    for (int n = 0; n <= m_L; ++n) {
+        if (sph && n < m_L) m_beam_mu0[n] = 1 / m_p.beam_airmass[n];
+        m_slant_s[n] = !sph ? m_s.tau_s_level[n] / m_p.beam_mu0
+                       : n == 0
+                           ? 0.0
+                           : m_slant_s[n - 1] + m_p.beam_airmass[n - 1] * m_s.optics[n - 1].dtau;
+    }
+    for (int n = 0; n < m_L; ++n) m_s.optics[n].beam_top = m_p.beam_flux * std::exp(-m_slant_s[n]);
     const std::size_t nu = m_p.umu.size();
     m_trans.assign(m_L * nu, 0.0);
     for (int n = 0; n < m_L; ++n)
@@ -196,9 +211,9 @@ void Solver::solve_mode(int m) {
     m_lam0.assign(m_N, 0.0);
     normalized_legendre(m, m_N - 1, -m_p.beam_mu0, m_lam0.data());
     for (int n = 0; n < m_L; ++n)
-        detail::solve_layer(m_q, m, m_s.optics[n], m_lam.data(), m_p.beam_mu0, m_lam0.data(),
+        detail::solve_layer(m_q, m, m_s.optics[n], m_lam.data(), m_beam_mu0[n], m_lam0.data(),
                             m_thermal, m_sol[n], m_scratch);
-    const double beam_bottom = m_p.beam_flux * std::exp(-m_s.tau_s_level[m_L] / m_p.beam_mu0);
+    const double beam_bottom = m_p.beam_flux * std::exp(-m_slant_s[m_L]);
     solve_boundary(m_p, m_q, m, m_s.optics, m_sol, beam_bottom, m_band, m_x);
 }
 
@@ -233,9 +248,16 @@ void Solver::fluxes() {
         }
         const double tau_s = m_s.tau_s_level[ps.layer] + ps.t;
         double direct = 0, direct_s = 0;
-        if (m_p.beam_flux > 0) {
+        if (m_p.beam_flux > 0 && m_p.beam_airmass.empty()) {
             direct = m_p.beam_flux * std::exp(-m_p.utau[i] / m_p.beam_mu0);
             direct_s = m_p.beam_flux * std::exp(-tau_s / m_p.beam_mu0);
+        } else if (m_p.beam_flux > 0) {  // pseudo-spherical: along the layers' air masses
+            const int n = ps.layer;
+            const double a = m_p.beam_airmass[n];
+            double slant = 0;
+            for (int k = 0; k < n; ++k) slant += m_p.beam_airmass[k] * m_p.layers[k].tau;
+            direct = m_p.beam_flux * std::exp(-(slant + a * (m_p.utau[i] - m_s.tau_level[n])));
+            direct_s = m_p.beam_flux * std::exp(-(m_slant_s[n] + a * ps.t));
         }
         lev.direct_down = m_p.beam_mu0 * direct;
         lev.diffuse_down = 2 * kPi * down + m_p.beam_mu0 * (direct_s - direct);

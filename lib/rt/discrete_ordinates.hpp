@@ -31,6 +31,13 @@ struct Problem {
     double beam_flux = 0;      // incident beam flux normal to its direction, >= 0
     double beam_mu0 = 1;       // cosine of the beam's zenith angle, (0, 1]
     double beam_phi0_deg = 0;  // azimuth of the beam
+    // Pseudo-spherical beam (DISORT's / libRadtran's "pseudospherical"; Dahlback &
+    // Stamnes 1991, Planet. Space Sci. 39, 671): per layer, top first, the beam's slant
+    // optical path over the layer's vertical optical depth (its Chapman factor), > 0;
+    // the beam at a layer's top is then beam_flux exp(-sum above of factor * tau) and
+    // decays as exp(-factor t) within it, while scattering keeps the angle beam_mu0.
+    // Empty: 1 / beam_mu0 in every layer (plane-parallel).
+    std::vector<double> beam_airmass;
     double top_isotropic = 0;  // isotropic intensity incident at the top, >= 0
     double albedo = 0;         // Lambertian surface albedo, [0, 1]
 
@@ -69,7 +76,8 @@ struct Result {
 
 // Solves the problem. Throws sigchain::Error on invalid input (with what is wrong):
 // no layers, streams odd or outside 4..128, tau < 0, ssa outside [0, 1], pmom[0] != 1
-// for a scattering layer, mu0 outside (0, 1] with a beam, planck_levels of the wrong
+// for a scattering layer, mu0 outside (0, 1] with a beam, beam_airmass not one positive
+// value per layer (when given), planck_levels of the wrong
 // size, utau not ascending within [0, total tau], a zero or |umu| > 1 cosine.
 // Method notes: single-scattering albedo 1 is computed as 1 - 1e-9 (DISORT's dither);
 // with delta_m and intensity_correction the Nakajima-Tanaka TMS correction is applied

@@ -108,7 +108,9 @@ private:
     std::vector<double> m_level_int;
     std::vector<double> m_lam_user;              // Lambda_l^m(|umu|) of the computed cosines
     std::vector<double> m_full_up, m_full_down;  // full-layer integrals, [cosine * L + layer]
-    std::vector<double> m_trans;  // m_trans[n * umu.size() + u] = exp(-dtau_n / |umu_u|)
+    std::vector<double> m_beam_mu0;  // per layer: the beam's decay cosine (1 / air mass)
+    std::vector<double> m_slant_s;   // per level: the beam's scaled slant optical depth
+    std::vector<double> m_trans;     // m_trans[n * umu.size() + u] = exp(-dtau_n / |umu_u|)
     Result m_result;
     bool m_thermal = false;
 };

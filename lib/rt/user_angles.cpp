@@ -214,7 +214,7 @@ double Solver::bottom_intensity(int m) const {
     for (int k = 0; k < nn; ++k)
         down += m_q.weight[k] * m_q.mu[k] *
                 quad_intensity(m_L - 1, nn + k, m_s.optics[m_L - 1].dtau);
-    const double beam_bottom = m_p.beam_flux * std::exp(-m_s.tau_s_level[m_L] / m_p.beam_mu0);
+    const double beam_bottom = m_p.beam_flux * std::exp(-m_slant_s[m_L]);
     return m_p.albedo * (2 * down + m_p.beam_mu0 * beam_bottom / kPi) +
            (1 - m_p.albedo) * m_p.planck_surface;
 }
@@ -334,19 +334,20 @@ std::vector<double> Solver::moment_differences(std::size_t nmom) const {
 // attenuated to the output level (zero for layers on the far side).
 void Solver::beam_path_integrals(std::size_t u, const Position& ps, std::vector<double>& tn) const {
     const std::size_t nu = m_p.umu.size();
-    const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
+    const double mu = m_p.umu[u];
     const int np = ps.layer;
+    double mu0 = m_beam_mu0[np];  // the beam's decay cosine in the layer at hand
     std::fill(tn.begin(), tn.end(), 0.0);
     double atten = 1;
     const double dtp = m_s.optics[np].dtau;
-    const double e0 = std::exp(-m_s.tau_s_level[np] / mu0);
+    const double e0 = std::exp(-m_slant_s[np]);
     if (mu > 0) {
         tn[np] = e0 * exp_integral(-ps.t / mu0, -(1 / mu0 + 1 / mu), dtp - ps.t) / mu;
         atten = std::exp(-(dtp - ps.t) / mu);
         for (int n = np + 1; n < m_L; ++n) {
             const double dt = m_s.optics[n].dtau;
-            tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
-                    exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu;
+            mu0 = m_beam_mu0[n];
+            tn[n] = atten * std::exp(-m_slant_s[n]) * exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu;
             atten *= m_trans[n * nu + u];
         }
     } else {
@@ -354,8 +355,9 @@ void Solver::beam_path_integrals(std::size_t u, const Position& ps, std::vector<
         atten = std::exp(ps.t / mu);
         for (int n = np - 1; n >= 0; --n) {
             const double dt = m_s.optics[n].dtau;
-            tn[n] = atten * std::exp(-m_s.tau_s_level[n] / mu0) *
-                    exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) / -mu;
+            mu0 = m_beam_mu0[n];
+            tn[n] = atten * std::exp(-m_slant_s[n]) * exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) /
+                    -mu;
             atten *= m_trans[n * nu + u];
         }
     }

@@ -1,0 +1,126 @@
+// Refracted ray paths through spherical shells (see spherical_path.hpp).
+#include "atmos/spherical_path.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace sigchain::atmos {
+
+namespace {
+
+// 16-point Gauss-Legendre nodes and weights on [0, 1] (Abramowitz & Stegun, table 25.4).
+struct Gauss16 {
+    std::array<double, 16> x{}, w{};
+    Gauss16() {
+        constexpr std::array<double, 8> xs{
+            0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
+            0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
+        constexpr std::array<double, 8> ws{
+            0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
+            0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
+        for (std::size_t i = 0; i < 8; ++i) {
+            x[i] = 0.5 * (1 - xs[i]);
+            x[15 - i] = 0.5 * (1 + xs[i]);
+            w[i] = w[15 - i] = 0.5 * ws[i];
+        }
+    }
+};
+const Gauss16 kGauss;
+
+// Value at fraction f of a layer of a quantity exponential between a and b (linear
+// where either end is not positive).
+double exp_between(double a, double b, double f) {
+    if (a > 0 && b > 0) return a * std::pow(b / a, f);
+    return a + (b - a) * f;
+}
+
+}  // namespace
+
+double air_refractivity(double p_mb, double t_k) {
+    constexpr double nu = 1e4 / 0.55;  // cm-1
+    constexpr double a = nu / 1.14e5, b = nu / 6.24e4;
+    return (83.42 + 185.08 / (1 - a * a) + 4.11 / (1 - b * b)) * (p_mb * 288.15) /
+           (1013.25 * t_k) * 1e-6;
+}
+
+Shells shells_from(const Profile& p, double radius_km, bool refraction) {
+    Shells s;
+    s.radius_km = radius_km;
+    s.z_km = p.z_km;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        s.refractivity.push_back(refraction ? air_refractivity(p.p_mb[k], p.t_k[k]) : 0.0);
+        s.density.push_back(air_number_density_cm3(p.p_mb[k], p.t_k[k]));
+    }
+    return s;
+}
+
+// In each layer the altitude is z = z_k + dz t^2 (t in [0, 1]), which removes the
+// 1 / sqrt singularity of ds/dr at a grazing start (the tangent point) and leaves
+// smooth integrands for 16-point Gauss-Legendre. Along the ray, with C = n0 r0 sin z0:
+// ds/dr = n r / w and dpsi/dr = -C n' / (n w), w = sqrt((n r)^2 - C^2) (Born & Wolf,
+// Principles of Optics, section 3.2.1; Smart, Spherical Astronomy, section 58), w
+// written through n r - n0 r0 so that a huge radius keeps full precision.
+Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_rad) {
+    const std::size_t levels = s.z_km.size();
+    if (!(to > from && to < levels) || !(zenith_rad >= 0 && zenith_rad <= std::numbers::pi / 2))
+        throw std::invalid_argument("trace_up: levels or zenith angle out of range");
+    Ray ray;
+    ray.zenith_rad = zenith_rad;
+    ray.air_mass.assign(levels - 1, 0.0);
+    const double R = s.radius_km, z0 = s.z_km[from], N0 = s.refractivity[from];
+    const double n0r0 = (1 + N0) * (R + z0);
+    const double sin0 = std::sin(zenith_rad), cos0 = std::cos(zenith_rad);
+    const double sin2 = sin0 * sin0, cos2 = cos0 * cos0;
+    const double C = n0r0 * sin0;
+    for (std::size_t k = from; k < to; ++k) {
+        const double dz = s.z_km[k + 1] - s.z_km[k];
+        const double Na = s.refractivity[k], Nb = s.refractivity[k + 1];
+        const double dlnN = Na > 0 && Nb > 0 ? std::log(Nb / Na) / dz : 0.0;  // km-1
+        double slant = 0, vertical = 0;
+        for (std::size_t q = 0; q < 16; ++q) {
+            const double t = kGauss.x[q], f = t * t;
+            const double z = s.z_km[k] + dz * f, dzdt = 2 * dz * t * kGauss.w[q];
+            const double N = exp_between(Na, Nb, f);
+            const double rho = exp_between(s.density[k], s.density[k + 1], f);
+            const double nr = (1 + N) * (R + z);
+            const double d = (z - z0) + (N - N0) * (R + z0) + N * (z - z0);  // n r - n0 r0
+            const double w = std::sqrt(std::max(0.0, nr * nr * cos2 + d * (nr + n0r0) * sin2));
+            if (!(w > 0)) continue;  // a trapped (ducted) ray: no path beyond
+            slant += rho * nr / w * dzdt;
+            vertical += rho * dzdt;
+            ray.refraction_rad += -C * (N * dlnN) / ((1 + N) * w) * dzdt;
+        }
+        ray.air_mass[k] = vertical > 0 ? slant / vertical : 0.0;
+    }
+    return ray;
+}
+
+Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
+    const std::size_t top = s.z_km.size() - 1;
+    if (to >= top) {  // at the top: no atmosphere above
+        Ray ray;
+        ray.zenith_rad = true_zenith_rad;
+        ray.air_mass.assign(top, 0.0);
+        ray.reaches = true_zenith_rad <= std::numbers::pi / 2;
+        return ray;
+    }
+    // z + R(z) increases with z: bisection on [0, pi/2] to 1e-12 rad.
+    auto seen = [&](double z) { return trace_up(s, to, top, z); };
+    Ray hi = seen(std::numbers::pi / 2);
+    if (true_zenith_rad > hi.zenith_rad + hi.refraction_rad) {
+        hi.reaches = false;
+        return hi;
+    }
+    double a = 0, b = std::numbers::pi / 2;
+    for (int it = 0; it < 60 && b - a > 1e-12; ++it) {
+        const double m = 0.5 * (a + b);
+        const Ray r = seen(m);
+        (r.zenith_rad + r.refraction_rad > true_zenith_rad ? b : a) = m;
+    }
+    return seen(0.5 * (a + b));
+}
+
+}  // namespace sigchain::atmos
