@@ -7,11 +7,26 @@
 #include "scene/id_map.hpp"
 #include "scene/mesh_file.hpp"
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <fstream>
 
 using namespace sigchain;
 
 namespace {
+
+// obj_of's folder: one per test process, since CTest runs this file's cases as
+// concurrent processes (a shared TempDir()/t.obj was rewritten under a running case).
+const std::string& obj_dir() {
+    static const std::string dir = [] {
+        const std::string d =
+            ::testing::TempDir() + "sigchain_load_test_" + std::to_string(::getpid()) + "/";
+        std::filesystem::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
 
 const std::string kData = std::string(SIGCHAIN_TEST_DATA) + "/scene/";
 
@@ -21,11 +36,11 @@ std::string data_error_of(const std::function<void()>& f) {
         f();
     } catch (const DataError& e) {
         std::string m = e.what();
-        // obj_of's files (TempDir()/t.obj, t.map) are named without their folder; other
+        // obj_of's files (obj_dir()/t.obj, t.map) are named without their folder; other
         // paths (the source tree's, wherever it is) are kept.
-        const std::string tmp = ::testing::TempDir() + "t.";
+        const std::string tmp = obj_dir() + "t.";
         for (auto at = m.find(tmp); at != std::string::npos; at = m.find(tmp))
-            m.erase(at, tmp.size() - 2);
+            m.erase(at, obj_dir().size());
         return m;
     }
     return "no error";
@@ -38,7 +53,7 @@ std::optional<scene::Hit> down(const scene::Scene& s, double x, double y) {
 
 // The OBJ `text` read as t.obj (in the temporary folder) with the map `map` (t.map).
 scene::MeshData obj_of(const std::string& text, const std::string& map = "grass 1\nasphalt 7\n") {
-    const std::string path = ::testing::TempDir() + "t.obj";
+    const std::string path = obj_dir() + "t.obj";
     std::ofstream(path) << text;
     const scene::IdMap m = scene::parse_id_map(map, "t.map");
     return scene::read_mesh_file({path, &m, {}}, scene::DegeneratePolicy::Error, nullptr);
