@@ -1,27 +1,26 @@
 // The trace job: read the inputs, check that they agree, render, write the cubes.
 #include "trace/trace_job.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <tuple>
 
-#include <sys/resource.h>
-#include <unistd.h>
-
-#include "geo/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/text.hpp"
+#include "geo/georef.hpp"
+#include "geo/solar_position.hpp"
 #include "geom/camera.hpp"
 #include "geom/view_angle.hpp"
 #include "image/image.hpp"
 #include "io/adv.hpp"
-#include "geo/georef.hpp"
 #include "io/mat.hpp"
 #include "io/odb.hpp"
 #include "io/rad.hpp"
@@ -31,8 +30,8 @@
 #include "radiometry/material.hpp"
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
-#include "trace/part.hpp"
 #include "trace/ground_layers.hpp"
+#include "trace/part.hpp"
 
 namespace sigchain::trace {
 
@@ -47,21 +46,6 @@ std::string format(const char* fmt, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, fmt, v);
     return buf;
-}
-
-// A non-negative integer, the whole of `text`.
-bool parse_count(std::string_view text, long& value) {
-    if (text.empty()) return false;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size() && value >= 0;
-}
-
-// The ENVI data file a cube name stands for (NAME.hdr writes NAME.img), so that two
-// outputs that would overwrite each other are caught.
-std::string written_name(const std::string& path) {
-    std::filesystem::path p(path);
-    if (file_extension(path) == "hdr") p.replace_extension(".img");
-    return std::filesystem::absolute(p).lexically_normal().string();
 }
 
 // The view angles over the image border and centre against the .rad's table (the
@@ -106,143 +90,6 @@ void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
 
 }  // namespace
 
-Sampling parse_sampling(const std::string& name) {
-    if (name == "dirsig") return Sampling::Dirsig;
-    if (name == "golfball") return Sampling::Golfball;
-    if (name == "montecarlo") return Sampling::MonteCarlo;
-    throw UsageError("--sampling: unknown strategy '" + name +
-                     "' (dirsig, golfball or montecarlo)");
-}
-
-void parse_background(const std::string& text, RenderOptions& options) {
-    if (text == "mean") {
-        options.background = BackgroundChoice::Mean;
-        return;
-    }
-    if (text == "none") {
-        options.background = BackgroundChoice::None;
-        return;
-    }
-    char* end = nullptr;
-    const long id = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0')
-        throw UsageError("--background: expected mean, none or a MATERIAL_ID, not '" + text + "'");
-    options.background = BackgroundChoice::Material;
-    options.background_material = id;
-}
-
-std::string sampling_name(Sampling sampling) {
-    switch (sampling) {
-        case Sampling::Dirsig:
-            return "dirsig";
-        case Sampling::Golfball:
-            return "golfball";
-        case Sampling::MonteCarlo:
-            return "montecarlo";
-    }
-    return "?";
-}
-
-int parse_bounces(const std::string& text) {
-    if (text == "auto") return kAutoBounces;
-    long n = 0;
-    if (!parse_count(text, n) || n > kMaxBounces)
-        throw UsageError("--bounces: expected auto or 0 to " + std::to_string(kMaxBounces) +
-                         ", found '" + text + "'");
-    return static_cast<int>(n);
-}
-
-std::pair<long, long> parse_rows(const std::string& text, const std::string& option) {
-    const auto colon = text.find(':');
-    long a = 0, b = 0;
-    if (colon == std::string::npos || !parse_count(std::string_view(text).substr(0, colon), a) ||
-        !parse_count(std::string_view(text).substr(colon + 1), b))
-        throw UsageError(option + ": expected A:B (first row, end row), found '" + text + "'");
-    if (b <= a)
-        throw UsageError(option + ": the end row must be greater than the first, found '" + text +
-                         "'");
-    return {a, b};
-}
-
-namespace {
-
-// --convergence MIN,MAX,THRESHOLD: 2 <= MIN <= MAX <= the .adv's limit, 0 < THRESHOLD;
-// not with --samples-per-pixel (MIN and MAX set the count).
-void check_convergence(const Convergence& c, bool samples_per_pixel) {
-    if (samples_per_pixel)
-        throw UsageError("--convergence: not with --samples-per-pixel (MIN and MAX set the count)");
-    if (c.min < 2 || c.max < c.min || c.max > io::kAdvMaxSamplesPerPixel)
-        throw UsageError("--convergence: expected 2 <= MIN <= MAX <= " +
-                         std::to_string(io::kAdvMaxSamplesPerPixel) + ", found " +
-                         std::to_string(c.min) + "," + std::to_string(c.max));
-    if (!(c.threshold > 0) || !std::isfinite(c.threshold))
-        throw UsageError("--convergence: expected a THRESHOLD > 0");
-}
-
-}  // namespace
-
-void check_job(const TraceJob& job) {
-    if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
-    if (job.output_path.empty()) throw UsageError("no output cube: give -o CUBE");
-    if (job.output_path == "-")
-        throw UsageError("a radiance cube cannot be written to standard output: give -o CUBE");
-    image::cube_format_of(job.output_path);  // UsageError for an unknown extension
-    RenderOptions background;
-    parse_background(job.background, background);  // UsageError for a bad --background
-    if (!job.truth_path.empty()) {
-        if (job.truth_path == "-")
-            throw UsageError("--truth: a truth cube cannot be written to standard output");
-        image::cube_format_of(job.truth_path);
-        if (written_name(job.truth_path) == written_name(job.output_path))
-            throw UsageError("--truth: " + job.truth_path + " would overwrite the output " +
-                             job.output_path);
-    }
-    {
-        // The cube and the truth, each with the ENVI header beside it, against the inputs.
-        std::vector<std::string> outputs;
-        for (const std::string& out : {job.output_path, job.truth_path}) {
-            if (out.empty()) continue;
-            outputs.push_back(written_name(out));
-            outputs.push_back(std::filesystem::path(written_name(out)).replace_extension(".hdr"));
-        }
-        for (const auto& [option, layers] : {std::pair{"--igm", job.igm_path},
-                                             std::pair{"--glt", job.glt_path}}) {
-            if (layers.empty()) continue;
-            if (file_extension(layers) != "tif")
-                throw UsageError(std::string(option) + ": expected a GeoTIFF FILE.tif, found '" +
-                                 layers + "'");
-            if (std::count(outputs.begin(), outputs.end(), written_name(layers)))
-                throw UsageError(std::string(option) + ": " + layers +
-                                 " would overwrite another output");
-            outputs.push_back(written_name(layers));
-        }
-        std::vector<std::string> inputs{job.adv_path, job.snd_path, job.scene_path, job.mat_path,
-                                        job.tmp_path};
-        inputs.insert(inputs.end(), job.rad_paths.begin(), job.rad_paths.end());
-        require_outputs_distinct(outputs, inputs);
-    }
-    if (job.samples_per_pixel &&
-        (*job.samples_per_pixel < 1 || *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
-        throw UsageError("--samples-per-pixel: expected 1 to " +
-                         std::to_string(io::kAdvMaxSamplesPerPixel));
-    if (job.standard_error && job.truth_path.empty())
-        throw UsageError("--standard-error: its layers are in the truth cube: give --truth FILE");
-    if (job.convergence) check_convergence(*job.convergence, job.samples_per_pixel.has_value());
-    if (job.hemisphere_samples && *job.hemisphere_samples < 1)
-        throw UsageError("--hemisphere-samples: expected at least 1");
-    if (job.max_transmissions && *job.max_transmissions < 0)
-        throw UsageError("--max-transmissions: expected 0 or more");
-    if (job.adjacency_radius_m && !(*job.adjacency_radius_m > 0))
-        throw UsageError("--adjacency-radius: expected a positive number of metres");
-    if (job.adjacency_radius_m && !job.adjacency)
-        throw UsageError("--adjacency-radius does not apply with --no-adjacency");
-    if (job.rows && (job.rows->first < 0 || job.rows->second <= job.rows->first))
-        throw UsageError("--rows: expected 0 <= A < B");
-    if (job.rows && job.tile) throw UsageError("--rows and --tile cannot be given together");
-    if (job.tile && (job.tile->index < 1 || job.tile->index > job.tile->count))
-        throw UsageError("--tile: expected K/N with 1 <= K <= N");
-}
-
 namespace {
 
 // The .adv (a frame camera) and the .snd, and the rows to render: [begin, end).
@@ -282,8 +129,8 @@ Setup read_setup(const TraceJob& job) {
 // The memory this process may use (bytes): the physical memory, or the address-space
 // limit (ulimit -v) when it is lower.
 double usable_memory_bytes() {
-    double bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
-                   static_cast<double>(sysconf(_SC_PAGESIZE));
+    double bytes =
+        static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
     struct rlimit limit {};
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
         bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
@@ -476,10 +323,10 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     if (!s.background.empty()) reporter.info(s.background);
     if (!s.bounces.empty()) reporter.info(s.bounces);
     if (pixels > 0)
-        reporter.info(format("%.2f", static_cast<double>(s.pixel_samples) /
-                                         static_cast<double>(pixels)) +
-                      " primary sample(s) per pixel on average, at most " +
-                      std::to_string(s.max_pixel_samples));
+        reporter.info(
+            format("%.2f", static_cast<double>(s.pixel_samples) / static_cast<double>(pixels)) +
+            " primary sample(s) per pixel on average, at most " +
+            std::to_string(s.max_pixel_samples));
     reporter.info(std::to_string(s.sky_samples) + " primary sample(s) saw the sky, " +
                   std::to_string(s.background_samples) + " the background world");
     for (const auto& skipped : s.skipped) reporter.info("not modelled: " + skipped);
@@ -517,8 +364,7 @@ RenderOptions render_options_layers(const TraceJob& job) {
 // and the truth cube, each written atomically.
 void write_outputs(const TraceJob& job, const image::WriteOptions& write_options,
                    const radiometry::SpectralGrid& grid, const image::Georeference& georef,
-                   const std::string& type_name,
-                   RenderResult& result) {
+                   const std::string& type_name, RenderResult& result) {
     image::Image& cube = result.radiance;
     cube.georef = georef;
     cube.sensor_type = type_name;
@@ -530,8 +376,7 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
             cube.channel_names.push_back(grid.band_names[grid.band_of_sample[k]] + " " +
                                          format("%.6g", grid.wavelength_um[k]) + " um");
     }
-    image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path),
-                      write_options);
+    image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path), write_options);
     if (job.truth_path.empty()) return;
     image::Image& truth = result.truth;
     truth.channel_names = truth_layer_names(grid, render_options_layers(job));
@@ -539,8 +384,7 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
     truth.units.clear();
     truth.georef = georef;
     truth.sensor_type = type_name;
-    image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path),
-                      write_options);
+    image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path), write_options);
 }
 
 }  // namespace
@@ -579,11 +423,10 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
                   std::to_string(st.adv.columns) + " columns, " +
-                  (job.convergence ? "--convergence " + std::to_string(options.convergence_min) +
-                                         " to " + std::to_string(options.convergence_max) +
-                                         " sample(s) per pixel"
-                                   : std::to_string(options.samples_per_pixel) +
-                                         " sample(s) per pixel") +
+                  (job.convergence
+                       ? "--convergence " + std::to_string(options.convergence_min) + " to " +
+                             std::to_string(options.convergence_max) + " sample(s) per pixel"
+                       : std::to_string(options.samples_per_pixel) + " sample(s) per pixel") +
                   ", " + sampling_name(job.sampling) + " sampling");
     RenderResult result;
     if (!render_rows(inputs, options, reporter, result)) return report;  // an MPI worker
@@ -609,8 +452,8 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
                                       image::geolocation_name(job.output_path), note);
         reporter.info(note);
     }
-    write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid,
-                  georef, sensor_type(camera), result);
+    write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, georef,
+                  sensor_type(camera), result);
     return report;
 }
 
