@@ -55,11 +55,6 @@ std::string read_id(LineCursor& c, std::string_view what) {
     return std::string(line.text);
 }
 
-double read_number(LineCursor& c, std::string_view what) {
-    auto f = c.fields(1, what);
-    return parse_double(f[0], c.where(), what);
-}
-
 // parse_double's acceptance (an optional '+', then the whole token one finite number
 // by std::from_chars) without building its SourceLocation (a copy of the file name):
 // the fast path of the .gdb's many vertex lines. False when parse_double would throw.
@@ -68,6 +63,21 @@ bool parse_finite(std::string_view t, double& value) {
     if (t.empty()) return false;
     auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     return ec == std::errc() && ptr == t.data() + t.size() && std::isfinite(value);
+}
+
+double read_number(LineCursor& c, std::string_view what) {
+    // The fast path (as read_vec3's): a line of one field (no space, tab, CR or LF in
+    // it, as split_fields splits) that is one finite number.
+    if (!c.at_end()) {
+        const std::string_view text = c.peek(what).text;
+        double v = 0;
+        if (text.find_first_of(" \t\r\n") == std::string_view::npos && parse_finite(text, v)) {
+            c.next(what);
+            return v;
+        }
+    }
+    auto f = c.fields(1, what);
+    return parse_double(f[0], c.where(), what);
 }
 
 // The fields of `text` split as split_fields(text, true) splits them, into `out`

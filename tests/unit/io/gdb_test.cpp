@@ -279,6 +279,13 @@ TEST(Gdb, VertexFastPathReadsAsTheCheckedPath) {
               "t.gdb:23: expected vertex x y z (a number), found '1e999' (out of range)");
     EXPECT_EQ(error_of(edited("1 1 0\n", "1 + 0\n")),
               "t.gdb:23: expected vertex x y z (a number), found '+'");
+    // The one-number lines' fast path likewise.
+    const Gdb warm = parsed(edited("-1\n5\n", "+20.5\n5\n"));
+    EXPECT_EQ(warm.objects.at(0).parts.at(0).facets.at(0).temperature_c, 20.5);
+    EXPECT_EQ(error_of(edited("-1\n5\n", "-1\n5 6\n")),
+              "t.gdb:14: expected 1 field (thickness (cm)), found 2: '5 6'");
+    EXPECT_EQ(error_of(edited("-1\n5\n", "-1\ninf\n")),
+              "t.gdb:14: expected thickness (cm) (a finite number), found 'inf'");
 }
 
 TEST(Gdb, OutOfRangeValues) {
