@@ -65,19 +65,34 @@ bool parse_finite(std::string_view t, double& value) {
     return ec == std::errc() && ptr == t.data() + t.size() && std::isfinite(value);
 }
 
+// The next line's number, not consumed, when the line is one field (no space, tab, CR
+// or LF in it, as split_fields splits) that parse_finite reads: the fast path of the
+// one-number lines (as read_vec3's).
+bool peek_number(const LineCursor& c, std::string_view what, double& v) {
+    if (c.at_end()) return false;
+    const std::string_view text = c.peek(what).text;
+    return text.find_first_of(" \t\r\n") == std::string_view::npos && parse_finite(text, v);
+}
+
 double read_number(LineCursor& c, std::string_view what) {
-    // The fast path (as read_vec3's): a line of one field (no space, tab, CR or LF in
-    // it, as split_fields splits) that is one finite number.
-    if (!c.at_end()) {
-        const std::string_view text = c.peek(what).text;
-        double v = 0;
-        if (text.find_first_of(" \t\r\n") == std::string_view::npos && parse_finite(text, v)) {
-            c.next(what);
-            return v;
-        }
+    double v = 0;
+    if (peek_number(c, what, v)) {
+        c.next(what);
+        return v;
     }
     auto f = c.fields(1, what);
     return parse_double(f[0], c.where(), what);
+}
+
+// A number in [lo, hi] (parse_in_range), by the fast path when it applies.
+double read_in_range(LineCursor& c, std::string_view what, double lo, double hi) {
+    double v = 0;
+    if (peek_number(c, what, v) && v >= lo && v <= hi) {
+        c.next(what);
+        return v;
+    }
+    auto f = c.fields(1, what);
+    return parse_in_range(f[0], c.where(), what, lo, hi);
 }
 
 // The fields of `text` split as split_fields(text, true) splits them, into `out`
@@ -160,10 +175,8 @@ void read_facet_geometry(LineCursor& c, GdbFacet& f) {
     f.normal = read_vec3(c, "normal nx ny nz");
     if (f.normal[0] == 0 && f.normal[1] == 0 && f.normal[2] == 0)
         throw DataError(c.where(), "expected a non-zero normal, found 0 0 0");
-    auto z = c.fields(1, "slope zenith (deg)");
-    f.slope_zenith_deg = parse_in_range(z[0], c.where(), "slope zenith (deg)", 0, 180);
-    auto a = c.fields(1, "slope azimuth (deg)");
-    f.slope_azimuth_deg = parse_in_range(a[0], c.where(), "slope azimuth (deg)", -360, 360);
+    f.slope_zenith_deg = read_in_range(c, "slope zenith (deg)", 0, 180);
+    f.slope_azimuth_deg = read_in_range(c, "slope azimuth (deg)", -360, 360);
     f.spare = read_text(c, "facet spare field");
 }
 

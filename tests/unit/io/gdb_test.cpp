@@ -286,6 +286,12 @@ TEST(Gdb, VertexFastPathReadsAsTheCheckedPath) {
               "t.gdb:14: expected 1 field (thickness (cm)), found 2: '5 6'");
     EXPECT_EQ(error_of(edited("-1\n5\n", "-1\ninf\n")),
               "t.gdb:14: expected thickness (cm) (a finite number), found 'inf'");
+    // The slope lines' bounds are inclusive on both paths.
+    const Gdb edge = parsed(edited("0 0 1\n0\n0\n", "0 0 1\n+180\n-360\n"));
+    EXPECT_EQ(edge.objects.at(0).parts.at(0).facets.at(0).slope_zenith_deg, 180);
+    EXPECT_EQ(edge.objects.at(0).parts.at(0).facets.at(0).slope_azimuth_deg, -360);
+    EXPECT_EQ(error_of(edited("0 0 1\n0\n0\n", "0 0 1\n0\n-360.5\n")),
+              "t.gdb:27: expected slope azimuth (deg) in [-360, 360], found '-360.5'");
 }
 
 TEST(Gdb, OutOfRangeValues) {
