@@ -2,6 +2,8 @@
 #include "io/gdb.hpp"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -53,12 +55,78 @@ std::string read_id(LineCursor& c, std::string_view what) {
     return std::string(line.text);
 }
 
+// parse_double's acceptance (an optional '+', then the whole token one finite number
+// by std::from_chars) without building its SourceLocation (a copy of the file name):
+// the fast path of the .gdb's many vertex lines. False when parse_double would throw.
+bool parse_finite(std::string_view t, double& value) {
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+    if (t.empty()) return false;
+    auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    return ec == std::errc() && ptr == t.data() + t.size() && std::isfinite(value);
+}
+
+// The next line's number, not consumed, when the line is one field (no space, tab, CR
+// or LF in it, as split_fields splits) that parse_finite reads: the fast path of the
+// one-number lines (as read_vec3's).
+bool peek_number(const LineCursor& c, std::string_view what, double& v) {
+    if (c.at_end()) return false;
+    const std::string_view text = c.peek(what).text;
+    return text.find_first_of(" \t\r\n") == std::string_view::npos && parse_finite(text, v);
+}
+
 double read_number(LineCursor& c, std::string_view what) {
+    double v = 0;
+    if (peek_number(c, what, v)) {
+        c.next(what);
+        return v;
+    }
     auto f = c.fields(1, what);
     return parse_double(f[0], c.where(), what);
 }
 
+// A number in [lo, hi] (parse_in_range), by the fast path when it applies.
+double read_in_range(LineCursor& c, std::string_view what, double lo, double hi) {
+    double v = 0;
+    if (peek_number(c, what, v) && v >= lo && v <= hi) {
+        c.next(what);
+        return v;
+    }
+    auto f = c.fields(1, what);
+    return parse_in_range(f[0], c.where(), what, lo, hi);
+}
+
+// The fields of `text` split as split_fields(text, true) splits them, into `out`
+// without allocating; false unless there are exactly three.
+bool three_fields(std::string_view text, std::array<std::string_view, 3>& out) {
+    auto is_sep = [](char ch) {
+        return ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n' || ch == ',';
+    };
+    std::size_t n = 0, i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && is_sep(text[i])) ++i;
+        std::size_t j = i;
+        while (j < text.size() && !is_sep(text[j])) ++j;
+        if (j > i) {
+            if (n == 3) return false;
+            out[n++] = text.substr(i, j - i);
+        }
+        i = j;
+    }
+    return n == 3;
+}
+
 Vec3 read_vec3(LineCursor& c, std::string_view what) {
+    // The fast path: three finite numbers, read as below would read them.
+    std::array<std::string_view, 3> fast;
+    if (!c.at_end() && three_fields(c.peek(what).text, fast)) {
+        Vec3 v{};
+        if (parse_finite(fast[0], v[0]) && parse_finite(fast[1], v[1]) &&
+            parse_finite(fast[2], v[2])) {
+            c.next(what);
+            return v;
+        }
+    }
+    // The checked path, whose errors name the line, the field and what was found.
     auto f = c.fields(3, what, true);
     Vec3 v{};
     for (int i = 0; i < 3; ++i) v[i] = parse_double(f[i], c.where(), what);
@@ -107,10 +175,8 @@ void read_facet_geometry(LineCursor& c, GdbFacet& f) {
     f.normal = read_vec3(c, "normal nx ny nz");
     if (f.normal[0] == 0 && f.normal[1] == 0 && f.normal[2] == 0)
         throw DataError(c.where(), "expected a non-zero normal, found 0 0 0");
-    auto z = c.fields(1, "slope zenith (deg)");
-    f.slope_zenith_deg = parse_in_range(z[0], c.where(), "slope zenith (deg)", 0, 180);
-    auto a = c.fields(1, "slope azimuth (deg)");
-    f.slope_azimuth_deg = parse_in_range(a[0], c.where(), "slope azimuth (deg)", -360, 360);
+    f.slope_zenith_deg = read_in_range(c, "slope zenith (deg)", 0, 180);
+    f.slope_azimuth_deg = read_in_range(c, "slope azimuth (deg)", -360, 360);
     f.spare = read_text(c, "facet spare field");
 }
 

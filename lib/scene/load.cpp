@@ -3,6 +3,7 @@
 
 #include <gdal.h>
 
+#include <chrono>
 #include <fstream>
 #include <map>
 
@@ -252,9 +253,15 @@ Scene load_scene(const std::string& path, const LoadOptions& options, LoadReport
     std::vector<std::string> warnings;
     Scene scene;
     SceneBuilder builder(scene);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
     assemble_scene(path, options, builder, &warnings);
+    const Clock::time_point read = Clock::now();
     scene.commit();
+    const Clock::time_point built = Clock::now();
     if (report) {
+        report->read_seconds = std::chrono::duration<double>(read - start).count();
+        report->build_seconds = std::chrono::duration<double>(built - read).count();
         report->warnings = std::move(warnings);
         report->placements = scene.placement_count();
         report->meshes = 0;

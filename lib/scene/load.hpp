@@ -54,6 +54,8 @@ struct LoadOptions {
 struct LoadReport {
     std::vector<std::string> warnings;                                  // "FILE:LINE: ..." each
     std::size_t meshes = 0, placements = 0, facets = 0, triangles = 0;  // placed counts
+    double read_seconds = 0;   // reading the files and assembling the meshes (wall, s)
+    double build_seconds = 0;  // Embree's BVH build, Scene::commit (wall, s)
 };
 
 // What load_scene assembles, handed to a builder: each mesh once (with the .gdb it

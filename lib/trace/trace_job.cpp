@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -387,6 +388,30 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
     image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path), write_options);
 }
 
+// Wall seconds of trace's phases (-v): what the set-up takes beside the rendering.
+struct PhaseTimes {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point mark = Clock::now();
+    double adv_snd = 0, rads = 0, materials = 0, scene_files = 0, build = 0, tmp = 0, other = 0;
+    // The seconds since the last lap (or construction); starts the next lap.
+    double lap() {
+        const Clock::time_point now = Clock::now();
+        const double s = std::chrono::duration<double>(now - mark).count();
+        mark = now;
+        return s;
+    }
+    double setup() const { return adv_snd + rads + materials + scene_files + build + tmp + other; }
+};
+
+void report_phases(const PhaseTimes& t, double render_seconds, const Reporter& reporter) {
+    reporter.info("set-up " + format("%.3f", t.setup()) + " s: .adv/.snd " +
+                  format("%.3f", t.adv_snd) + " s, .rad tables " + format("%.3f", t.rads) +
+                  " s, materials " + format("%.3f", t.materials) + " s, scene files " +
+                  format("%.3f", t.scene_files) + " s, Embree build " + format("%.3f", t.build) +
+                  " s, .tmp " + format("%.3f", t.tmp) + " s, other " + format("%.3f", t.other) +
+                  " s; render " + format("%.3f", render_seconds) + " s");
+}
+
 }  // namespace
 
 TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
@@ -395,8 +420,11 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     const Reporter silent;
     const Reporter& reporter = distributed_worker() ? silent : job_reporter;
     TraceReport report;
+    PhaseTimes times;
     const Setup st = read_setup(job);
+    times.adv_snd = times.lap();
     const radiometry::Atmosphere atmosphere = read_atmosphere(job, st.snd, reporter);
+    times.rads = times.lap();
     const radiometry::SpectralGrid& grid = atmosphere.grid();
     report.spectral_samples = grid.size();
     report.bands = grid.band_count();
@@ -404,8 +432,13 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     const radiometry::MaterialLibrary materials =
         radiometry::MaterialLibrary::load(io::read_mat_file(job.mat_path), job.mat_path, grid);
     report.materials = materials.materials().size();
+    times.materials = times.lap();
     const scene::Scene scene = read_scene(job, st, materials, report, reporter);
+    times.build = report.load.build_seconds;
+    // The scene's lap less the build: reading the files, assembling and validating.
+    times.scene_files = times.lap() - times.build;
     const Temperatures temperatures = read_temperatures(job, grid, scene, reporter);
+    times.tmp = times.lap();
     const std::unique_ptr<Sensor> sensor = make_sensor(
         st.adv, job.adv_path, SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
     const Sensor& camera = *sensor;
@@ -429,13 +462,16 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
                        : std::to_string(options.samples_per_pixel) + " sample(s) per pixel") +
                   ", " + sampling_name(job.sampling) + " sampling");
     RenderResult result;
+    times.other = times.lap();
     if (!render_rows(inputs, options, reporter, result)) return report;  // an MPI worker
+    const double render_seconds = times.lap();
     report.stats = result.stats;
     report.rows = result.radiance.rows;
     report.columns = result.radiance.columns;
     // With --convergence, what the pixels took (-v).
     report_stats(result.stats, job.convergence ? result.radiance.rows * result.radiance.columns : 0,
                  reporter);
+    report_phases(times, render_seconds, reporter);
     image::Georeference georef;
     const std::optional<double> plane = options.background == BackgroundChoice::None
                                             ? std::nullopt

@@ -225,6 +225,16 @@ band_bytes() {
     [[ "$stderr" == *"1024 primary"* ]] || fail "16 x 16 x 4 primary rays: $stderr"
 }
 
+@test "trace -v splits the wall time into the set-up's phases and the render" {
+    run -0 --separate-stderr trace -v $(inputs) -o v.img
+    n='[0-9]+[.][0-9]{3}'
+    assert_regex "$stderr" "trace: set-up $n s: [.]adv/[.]snd $n s, [.]rad tables $n s, materials $n s, scene files $n s, Embree build $n s, [.]tmp $n s, other $n s; render $n s"
+    # Verbose only: without -v no such line, and the cube is the same.
+    run -0 --separate-stderr trace $(inputs) -o plain.img
+    [[ "$stderr" != *"set-up"* ]] || fail "$stderr"
+    run -0 cmp v.img plain.img
+}
+
 @test "trace --progress draws a progress bar on stderr; -q silences warnings" {
     run -0 --separate-stderr trace --progress $(inputs) -o out.img
     [[ "$stderr" == *"trace: rendering ["* ]] || fail "stderr: $stderr"

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "data_error.hpp"
@@ -260,6 +261,37 @@ TEST(Gdb, NonNumbersAndWrongFieldCounts) {
               "t.gdb:23: expected 3 fields (vertex x y z), found 2: '1 1'");
     EXPECT_EQ(error_of(edited("-1\n5\n", "warm\n5\n")),
               "t.gdb:13: expected temperature (C, -1 = from therm) (a number), found 'warm'");
+}
+
+// The vertex lines' fast path (no SourceLocation per number) reads what the checked
+// path reads: a leading '+', commas and tabs as separators, exponents; and leaves the
+// errors to it: four fields, an out-of-range number, "+" alone.
+TEST(Gdb, VertexFastPathReadsAsTheCheckedPath) {
+    const Gdb g = parsed(edited("1 1 0\n", "+1,\t1e0 , -0.0\n"));
+    const auto& v = g.objects.at(0).parts.at(0).facets.at(0).vertices.at(2);
+    EXPECT_EQ(v[0], 1.0);
+    EXPECT_EQ(v[1], 1.0);
+    EXPECT_EQ(v[2], 0.0);
+    EXPECT_TRUE(std::signbit(v[2]));
+    EXPECT_EQ(error_of(edited("1 1 0\n", "1 1 0 0\n")),
+              "t.gdb:23: expected 3 fields (vertex x y z), found 4: '1 1 0 0'");
+    EXPECT_EQ(error_of(edited("1 1 0\n", "1 1e999 0\n")),
+              "t.gdb:23: expected vertex x y z (a number), found '1e999' (out of range)");
+    EXPECT_EQ(error_of(edited("1 1 0\n", "1 + 0\n")),
+              "t.gdb:23: expected vertex x y z (a number), found '+'");
+    // The one-number lines' fast path likewise.
+    const Gdb warm = parsed(edited("-1\n5\n", "+20.5\n5\n"));
+    EXPECT_EQ(warm.objects.at(0).parts.at(0).facets.at(0).temperature_c, 20.5);
+    EXPECT_EQ(error_of(edited("-1\n5\n", "-1\n5 6\n")),
+              "t.gdb:14: expected 1 field (thickness (cm)), found 2: '5 6'");
+    EXPECT_EQ(error_of(edited("-1\n5\n", "-1\ninf\n")),
+              "t.gdb:14: expected thickness (cm) (a finite number), found 'inf'");
+    // The slope lines' bounds are inclusive on both paths.
+    const Gdb edge = parsed(edited("0 0 1\n0\n0\n", "0 0 1\n+180\n-360\n"));
+    EXPECT_EQ(edge.objects.at(0).parts.at(0).facets.at(0).slope_zenith_deg, 180);
+    EXPECT_EQ(edge.objects.at(0).parts.at(0).facets.at(0).slope_azimuth_deg, -360);
+    EXPECT_EQ(error_of(edited("0 0 1\n0\n0\n", "0 0 1\n0\n-360.5\n")),
+              "t.gdb:27: expected slope azimuth (deg) in [-360, 360], found '-360.5'");
 }
 
 TEST(Gdb, OutOfRangeValues) {
