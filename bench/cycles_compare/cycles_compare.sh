@@ -31,16 +31,21 @@
 # from its start to the end of the first render, the OBJ import included). Both on
 # $CC_THREADS threads. The renderers run alternately, $CC_RUNS times; medians.
 # "eff" is the Monte Carlo efficiency 1 / (relative RMS^2 x render seconds): higher
-# is better, independent of N for an unbiased estimator whose error falls as 1/sqrt(N).
+# is better; it would not depend on N if the error fell as 1/sqrt(N) and the time grew
+# as N (it grows with N here: the error falls faster than 1/sqrt(N), as stratified
+# samples can, and each render has a fixed cost).
 #
 # Prints a table and the mean ratio trace/Cycles of the converged surface-leaving
 # radiance (trace's (solar + downwelled) / transmission, truth layers), to show the
-# two set-ups are comparable. Without Blender it prints "skipped: blender not found"
-# and exits 0 (BLENDER=PROGRAM names another). Knobs [defaults]: CC_SIZE [128],
-# CC_SPP ["4 16 64"], CC_RUNS [3], CC_THREADS [2], CC_TRACE_REF_SPP [1024],
-# CC_TRACE_REF_HEMI [4] (the reference's --hemisphere-samples), CC_CYCLES_REF_SPP [1024],
-# CC_HEMI ["1 64"] (trace's --hemisphere-samples rows),
-# CC_WORK [BUILD/cycles_compare] (work files, kept).
+# two set-ups are comparable, and for information that of the radiance at the sensor.
+# Without Blender it prints "skipped: blender not found" and exits 0 (BLENDER=PROGRAM
+# names another). Knobs [defaults]: CC_SIZE [128], CC_SPP ["4 16 64"], CC_RUNS [3],
+# CC_THREADS [2], CC_TRACE_REF_SPP [1024], CC_TRACE_REF_HEMI [4] (the reference's
+# --hemisphere-samples), CC_CYCLES_REF_SPP [1024], CC_HEMI ["1 64"] (trace's
+# --hemisphere-samples rows), CC_WORK [BUILD/cycles_compare] (work files, kept; the
+# references are reused by a rerun of the same size and samples: remove them after a
+# change to the scene or the renderers). The default run takes about 15 minutes
+# (references about 3.5).
 set -eu
 build="${1:-build}"
 blender="${BLENDER:-blender}"
@@ -106,7 +111,7 @@ run_trace() {
 run_cycles() {
     t0=$(now)
     "$blender" -b -noaudio --python-exit-code 1 --python "$here/cycles_render.py" -- \
-        "$work/export" "$1" "$2" "$threads" "$3" ${4:-} > "$work/cycles.log" 2>&1 ||
+        "$work/export" "$1" "$2" "$threads" "$3" ${4:+"$4"} > "$work/cycles.log" 2>&1 ||
         { cat "$work/cycles.log" >&2; exit 1; }
     t1=$(sed -n 's/^cycles: first render ended at //p' "$work/cycles.log")
     r=$(sed -n 's/^cycles: second render \([0-9.]*\) s/\1/p' "$work/cycles.log")
@@ -117,8 +122,9 @@ echo "== references: trace $trace_ref_spp spp x $trace_ref_hemi hemisphere rays,
 # Kept in $work under names that hold their settings, and reused by a rerun.
 tref="$work/trace_ref_${size}_${trace_ref_spp}x$trace_ref_hemi"
 cref="$work/cycles_ref_${size}_$cycles_ref_spp"
-[ -s "$tref.img" ] && [ -s "$tref.truth.img" ] ||
+if [ ! -s "$tref.img" ] || [ ! -s "$tref.truth.img" ]; then
     run_trace "$trace_ref_spp" "$trace_ref_hemi" 20261124 "$tref.img" --truth "$tref.truth.img" >&2
+fi
 [ -s "$cref.raw" ] || run_cycles "$cycles_ref_spp" 7 "$cref.raw" once >&2
 
 : > "$work/times.txt"
@@ -151,5 +157,6 @@ for n in $spps; do
 done
 ratio=$(stats ratio "$tref.truth.img" "$cref.raw" hawkeye-1,hawkeye-2,hawkeye-3)
 echo "converged mean surface-leaving radiance, trace / Cycles (bands 1, 2, 3, all): $ratio"
+echo "converged mean radiance at the sensor (trace's path terms included): $(stats sensor "$tref.img" "$bands" "$cref.raw")"
 echo "($runs runs each, alternating; medians; ${size}-pixel oblique hawkeye view; $threads threads;"
 echo " errors against each renderer's own reference: trace $trace_ref_spp spp x $trace_ref_hemi, Cycles $cycles_ref_spp spp)"

@@ -13,6 +13,9 @@
 #       pixels whose samples all hit, against Cycles' converged image over the same
 #       pixels; per channel and over all three ("r1 r2 r3 all", trace / Cycles).
 #       BANDNAMES: the three .rad stems, "hawkeye-1,hawkeye-2,hawkeye-3".
+#   cycles_stats.py sensor TRACE_CUBE BANDS CYCLES_RAW
+#       The same ratio of the images' means over every pixel, at the sensor (trace's
+#       path radiance and transmission included): "r1 r2 r3 all".
 import array
 import math
 import re
@@ -84,11 +87,20 @@ def ratio(truth, raw, names):
     print(" ".join("%.4f" % v for v in out + [t_all / c_all]))
 
 
+def sensor(cube, spec, raw):
+    t, c = load(cube, spec), load(raw, "-")
+    out = [sum(a) / sum(b) for a, b in zip(t, c)]
+    out.append(sum(sum(a) for a in t) / sum(sum(b) for b in c))
+    print(" ".join("%.4f" % v for v in out))
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 5 and sys.argv[1] == "error":
         error(*sys.argv[2:])
     elif len(sys.argv) == 5 and sys.argv[1] == "ratio":
         ratio(*sys.argv[2:])
+    elif len(sys.argv) == 5 and sys.argv[1] == "sensor":
+        sensor(*sys.argv[2:])
     else:
         raise SystemExit("usage: cycles_stats.py error IMAGE REFERENCE BANDS | "
-                         "ratio TRACE_TRUTH CYCLES_RAW BANDNAMES")
+                         "ratio TRACE_TRUTH CYCLES_RAW BANDNAMES | sensor TRACE_CUBE BANDS CYCLES_RAW")
