@@ -97,8 +97,9 @@ std::vector<double> ColumnModel::gas_depths_from(double nu_cm1, std::size_t pivo
     return out;
 }
 
-GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol) const {
-    GasColumn::Terms t = m_gas->absorption_terms(nu_cm1, kGasPathFactor, tol, max_terms);
+GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol,
+                                        bool pairs) const {
+    GasColumn::Terms t = m_gas->absorption_terms(nu_cm1, kGasPathFactor, tol, max_terms, pairs);
     for (auto& d : t.depth)
         for (double& v : d) v = std::max(0.0, v);
     return t;
@@ -106,7 +107,7 @@ GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol
 
 std::vector<double> ColumnModel::term_depths_from(double nu_cm1, const GasColumn::Terms& terms,
                                                   std::size_t t, std::size_t pivot) const {
-    std::vector<double> d = m_gas->depths_from(nu_cm1, pivot, terms.gas);
+    std::vector<double> d = m_gas->depths_from(nu_cm1, pivot, terms.gas, terms.gas2);
     for (std::size_t k = 0; k < d.size(); ++k)
         d[k] = std::max(0.0, d[k] + terms.fitted_depth[t][k]);
     return d;
