@@ -86,7 +86,7 @@ std::optional<RainModel> RainModel::from_deck(const io::CdkCard2& card2, double 
             const auto prof =
                 read_rows(data_dir + "/atmosphere/lowtran7/cloud_rain_profiles.txt", 11, 12);
             for (std::size_t i = 0; i < prof.size(); ++i)
-                table[i] = prof[i][std::size_t(6 + card2.icld - 6)];
+                table[i] = prof[i][std::size_t(card2.icld)];  // RR1..RR5: columns 6-10
         }
         for (std::size_t i = 0; i < 16; ++i) {
             const double h = kCloudLevels_km[i], z = ground_km + h;
