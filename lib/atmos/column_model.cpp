@@ -30,21 +30,31 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
                                              " km) must lie above the ground (GNDALT, CARD 2: " +
                                              format_number(ground) + " km)");
     const double sensor = std::min(sensor_km, top);
-    // A cloud model adds its levels to the profile, as LOWTRAN 7's FLAYZ does.
+    // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
+    const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
+    const std::optional<double> g =
+        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt;
+    m_cirrus = CirrusModel::from_deck(run, o.data_dir, g);
+    m_rain = RainModel::from_deck(run.card2, ground, o.data_dir,
+                                  m_cirrus ? m_cirrus->levels_km() : std::vector<double>{});
+    // A cloud, rain or cirrus model adds its levels to the profile, as LOWTRAN 7's FLAYZ
+    // does (those within the column).
     std::vector<double> extra{sensor};
     if (CloudModel::modelled(run.card2.icld))
         for (double h : CloudModel::level_heights_km()) extra.push_back(ground + h);
+    auto add = [&](const std::vector<double>& levels) {
+        for (double z : levels)
+            if (z > ground && z < top) extra.push_back(z);
+    };
+    if (m_rain) add(m_rain->levels_km());
+    if (m_cirrus) add(m_cirrus->levels_km());
     m_profile = resample(full, ground, top, extra);
     m_sensor_level = index_of(m_profile.z_km, sensor);
     if (m_sensor_level >= m_profile.size() ||
         std::abs(m_profile.z_km[m_sensor_level] - sensor) > 1e-9)
         throw Error("internal: the sensor altitude is not a level of the resampled profile");
-    // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
-    const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
-    const std::optional<double> g =
-        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt;
     io::CdkCard2 aerosol_card = run.card2;
-    aerosol_card.icld = 0;  // the cloud is m_cloud's
+    aerosol_card.icld = 0;  // the cloud, rain and cirrus are m_cloud's, m_rain's, m_cirrus's
     m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g));
     m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g);
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
@@ -62,8 +72,11 @@ std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
             rayleigh_optical_depth(wavelength_um, m_profile.p_mb[k + 1], m_profile.p_mb[k]);
         AerosolLayerOptics a =
             m_aerosol->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um);
-        if (m_cloud)  // LOWTRAN 7 adds the cloud's coefficients to the aerosols'
-            a = combine(a, m_cloud->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um));
+        const double lo = m_profile.z_km[k], hi = m_profile.z_km[k + 1];
+        // LOWTRAN 7 adds the cloud's, rain's and cirrus's coefficients to the aerosols'.
+        if (m_cloud) a = combine(a, m_cloud->layer(lo, hi, wavelength_um));
+        if (m_rain) a = combine(a, m_rain->layer(lo, hi));
+        if (m_cirrus) a = combine(a, m_cirrus->layer(lo, hi, wavelength_um));
         l.tau_aerosol = a.tau_ext;
         l.ssa_aerosol = a.ssa;
         l.g_aerosol = a.g;
@@ -84,8 +97,9 @@ std::vector<double> ColumnModel::gas_depths_from(double nu_cm1, std::size_t pivo
     return out;
 }
 
-GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol) const {
-    GasColumn::Terms t = m_gas->absorption_terms(nu_cm1, kGasPathFactor, tol, max_terms);
+GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol,
+                                        bool pairs) const {
+    GasColumn::Terms t = m_gas->absorption_terms(nu_cm1, kGasPathFactor, tol, max_terms, pairs);
     for (auto& d : t.depth)
         for (double& v : d) v = std::max(0.0, v);
     return t;
@@ -93,7 +107,7 @@ GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol
 
 std::vector<double> ColumnModel::term_depths_from(double nu_cm1, const GasColumn::Terms& terms,
                                                   std::size_t t, std::size_t pivot) const {
-    std::vector<double> d = m_gas->depths_from(nu_cm1, pivot, terms.gas);
+    std::vector<double> d = m_gas->depths_from(nu_cm1, pivot, terms.gas, terms.gas2);
     for (std::size_t k = 0; k < d.size(); ++k)
         d[k] = std::max(0.0, d[k] + terms.fitted_depth[t][k]);
     return d;

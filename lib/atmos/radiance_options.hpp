@@ -28,6 +28,9 @@ struct RadianceOptions {
                                              // off to measure it)
     int max_gas_terms = 12;                  // exponential-sum terms per gas in the solver
                                              // (1: one equivalent Beer's-law depth per layer)
+    bool gas_pairs = true;                   // fit a second, strongly overlapping gas too
+                                             // (GasColumn::absorption_terms; benchmarks
+                                             // turn it off to measure it)
     unsigned threads = 0;                    // worker threads (0: every core); results do
                                              // not depend on it
 };

@@ -337,7 +337,8 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
     const bool thermal = wavelength >= s.options.thermal_min_wavelength_um;
     const GasColumn::Terms terms = s.column.gas_terms(
         nu, s.options.max_gas_terms,
-        thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance);
+        thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance,
+        !thermal && s.options.gas_pairs);
     if (!terms.equivalent) {
         SampleResult res;
         for (std::size_t t = 0; t < terms.weight.size(); ++t)
