@@ -92,6 +92,9 @@ private:
     void beam_path_integrals(std::size_t u, const Position& ps, std::vector<double>& tn) const;
     void add_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
                         CorrectionScratch& w);
+    std::vector<double> exact_weights() const;
+    void add_exact_correction(std::size_t u, const std::vector<double>& e, CorrectionScratch& w);
+    void secondary_correction();
 
     const Problem& m_p;
     int m_N = 0, m_L = 0;
