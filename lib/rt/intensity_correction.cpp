@@ -123,9 +123,9 @@ void Solver::add_exact_correction(std::size_t u, const std::vector<double>& e,
     const std::size_t nphi = m_p.phi_deg.size(), nc = x.components;
     const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
     w.p0.resize(nc);
+    const double sines = std::sqrt((1 - mu * mu) * (1 - mu0 * mu0));
     for (std::size_t f = 0; f < nphi; ++f) {
-        const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
-        const double cs = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
+        const double cs = -mu * mu0 + sines * w.cos_dphi[f];
         x.evaluate(std::clamp(cs, -1.0, 1.0), w.p0.data());
         for (std::size_t i = 0; i < m_pos.size(); ++i) {
             double sum = 0;
@@ -145,6 +145,7 @@ void Solver::intensity_correction() {
     const std::vector<double> a = exact_weights();
     std::vector<double> tn(m_L), e(npos * nmom), ex(npos * nc);
     CorrectionScratch wx;
+    wx.cos_dphi = cos_dphi();
     CorrectionScratch w;
     w.cs.resize(nphi), w.p0.resize(nphi), w.p1.resize(nphi), w.corr.resize(npos * nphi);
     w.rec_a.resize(nmom), w.rec_b.resize(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
@@ -172,6 +173,11 @@ void Solver::intensity_correction() {
     }
 }
 
+std::vector<double> Solver::cos_dphi() const {
+    std::vector<double> c;
+    for (double phi : m_p.phi_deg) c.push_back(std::cos((phi - m_p.beam_phi0_deg) * kPi / 180));
+    return c;
+}
 
 namespace {
 
@@ -179,7 +185,8 @@ namespace {
 // scattered light along a cosine mu2 (the beam's, in the scaled medium) seen at cosine
 // mu1 below optical depth tau, int_0^tau e^{-(tau - s)/mu1} (s / mu2) e^{-s/mu2} ds / mu1.
 double xi(double mu1, double mu2, double tau) {
-    const double a = 1 / mu2 - 1 / mu1;  // int_0^tau s e^{-a s} ds = tau^2 / 2 (1 - 2 a tau / 3 ...)
+    // int_0^tau s e^{-a s} ds = tau^2 (1/2 - z/3 + z^2/8 ...), z = a tau, near z = 0.
+    const double a = 1 / mu2 - 1 / mu1;
     const double z = a * tau, e1 = std::exp(-tau / mu1);
     if (std::abs(z) < 1e-4) return e1 * tau * tau * (0.5 - z / 3 + z * z / 8) / (mu1 * mu2);
     return (e1 - (1 + z) * std::exp(-tau / mu2)) / (a * a * mu1 * mu2);
@@ -196,13 +203,14 @@ double xi(double mu1, double mu2, double tau) {
 // streams and g_k = mean(omega pmom_k) / (f w) beyond. Applied where DISORT applies it:
 // downward cosines within 10 deg of the beam's zenith angle, every azimuth.
 void Solver::secondary_correction() {
-    constexpr double kTiny = 1e-4;     // DISORT's: below it the correction is negligible
-    constexpr double kAureole = 10;    // deg
+    constexpr double kTiny = 1e-4;   // DISORT's: below it the correction is negligible
+    constexpr double kAureole = 10;  // deg
     const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size();
     const double mu0 = m_p.beam_mu0, theta0 = std::acos(-mu0) * 180 / kPi;
     std::size_t nmom = 0;
     for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
     std::vector<double> g(nmom);
+    const std::vector<double> cosd = cos_dphi();
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         const int np = m_pos[i].layer;
         const double utau = m_p.utau[i];
@@ -225,10 +233,9 @@ void Solver::secondary_correction() {
             const double mu = m_p.umu[u];
             if (mu >= 0 || std::abs(std::acos(mu) * 180 / kPi - theta0) > kAureole) continue;
             const double x = amp * xi(-mu, mu0p, utau);
+            const double sines = std::sqrt((1 - mu * mu) * (1 - mu0 * mu0));
             for (std::size_t f = 0; f < nphi; ++f) {
-                const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
-                const double cs =
-                    -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
+                const double cs = -mu * mu0 + sines * cosd[f];
                 double p0 = 1, p1 = cs, spike = 1 + 3 * cs;
                 for (std::size_t k = 2; k < std::max<std::size_t>(nmom, m_N); ++k) {
                     const double p2 = ((2.0 * k - 1) * cs * p1 - (k - 1.0) * p0) / k;
