@@ -29,7 +29,9 @@ constexpr double kDeg = std::numbers::pi / 180;
 
 // Aerosol phase moments beyond the streams, for the Nakajima-Tanaka single-scattering
 // correction of the solver: g^k of Henyey-Greenstein falls below 1e-5 by k = 32 for
-// g <= 0.7 (LOWTRAN's aerosols), so 32 moments represent the phase function.
+// g <= 0.7 (LOWTRAN's aerosols), so 32 moments represent the phase function. With IPH 2
+// the TMS correction uses the Mie functions themselves (mie_layers.hpp); the moments
+// serve delta-M (moment `streams`) and the IMS correction's forward peak.
 constexpr int kPhaseMoments = 32;
 
 // The options the samples are solved with: the COUPLING terms (rad(5)) describe the
@@ -405,10 +407,10 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             distance_factor,
                             std::max(o.streams, kPhaseMoments),
                             deck_choices(run)};
-    if (run.card1.iemsct == 2 && run.geometry.iph == 2)
+    if (column.mie())
         rep.notes.push_back(
-            "IPH 2: aerosol scattering by Henyey-Greenstein with the models' asymmetry "
-            "parameter (LOWTRAN 7's Mie phase functions are not used yet)");
+            "IPH 2: aerosol scattering by LOWTRAN 7's Mie phase functions (delta-M, with "
+            "the Nakajima-Tanaka TMS and IMS corrections)");
     if (run.card1.imult == 0)
         rep.notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
     if (run.card1.surface_albedo > 0)

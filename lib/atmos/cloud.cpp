@@ -149,6 +149,10 @@ AerosolLayerOptics combine(const AerosolLayerOptics& a, const AerosolLayerOptics
     const double sa = a.tau_ext * a.ssa, sb = b.tau_ext * b.ssa;
     if (out.tau_ext > 0) out.ssa = std::clamp((sa + sb) / out.tau_ext, 0.0, 1.0);
     if (sa + sb > 0) out.g = (sa * a.g + sb * b.g) / (sa + sb);
+    for (std::size_t r = 0; r < out.tau_scat_region.size(); ++r) {  // b (the cloud) has none
+        out.tau_scat_region[r] = a.tau_scat_region[r] + b.tau_scat_region[r];
+        out.g_region[r] = a.tau_scat_region[r] > 0 ? a.g_region[r] : b.g_region[r];
+    }
     return out;
 }
 

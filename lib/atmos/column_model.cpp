@@ -57,14 +57,43 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     aerosol_card.icld = 0;  // the cloud, rain and cirrus are m_cloud's, m_rain's, m_cirrus's
     m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g));
     m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g);
+    if (run.card1.iemsct == 2 && run.geometry.iph == 2) m_mie = MiePhaseTable::load(o.data_dir);
+    m_ihaze = run.card2.ihaze;
+    m_ivulcn = run.card2.ivulcn;
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
     m_shells = shells_from(m_profile);
 }
 
+std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double wavelength_um) const {
+    if (!m_mie) return std::nullopt;
+    return m_mie->region(region, m_ihaze, m_ivulcn, m_aerosol->boundary_layer_rh_percent(),
+                         wavelength_um);
+}
+
+namespace {
+
+// The Mie part of a layer's scattering (LayerOptics::tau_scat_mie, g_other): the regions
+// with a Mie function at this wavelength (`has`) and what remains for Henyey-Greenstein.
+void split_mie(const AerosolLayerOptics& a, const std::array<bool, 4>& has, LayerOptics& l) {
+    const double scat = a.tau_ext * a.ssa;
+    double rest = scat, rest_g = scat * a.g;
+    for (std::size_t r = 0; r < has.size(); ++r) {
+        if (!has[r]) continue;
+        l.tau_scat_mie[r] = std::min(a.tau_scat_region[r], rest);
+        rest -= l.tau_scat_mie[r];
+        rest_g -= l.tau_scat_mie[r] * a.g_region[r];
+    }
+    l.g_other = rest > 1e-12 * scat ? std::clamp(rest_g / rest, -0.999, 0.999) : 0.0;
+}
+
+}  // namespace
+
 std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
     const double wavelength_um = 1e4 / nu_cm1;
     const std::vector<double> gas = m_gas->layer_absorption_depth(nu_cm1);
+    std::array<bool, 4> has{};
+    for (int r = 0; m_mie && r < 4; ++r) has[r] = mie_phase(r, wavelength_um).has_value();
     std::vector<LayerOptics> out(m_profile.size() - 1);
     for (std::size_t k = 0; k + 1 < m_profile.size(); ++k) {
         LayerOptics& l = out[k];
@@ -80,6 +109,7 @@ std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
         l.tau_aerosol = a.tau_ext;
         l.ssa_aerosol = a.ssa;
         l.g_aerosol = a.g;
+        if (m_mie) split_mie(a, has, l);
         l.tau_gas = std::max(0.0, gas[k]);
     }
     return out;

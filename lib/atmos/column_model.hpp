@@ -3,6 +3,7 @@
 // every layer at a wavenumber. Units: wavenumber cm-1, altitude km.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <map>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "atmos/cirrus.hpp"
 #include "atmos/cloud.hpp"
 #include "atmos/gas_absorption.hpp"
+#include "atmos/mie_phase.hpp"
 #include "atmos/profile.hpp"
 #include "atmos/radiance_options.hpp"
 #include "atmos/rain.hpp"
@@ -30,6 +32,12 @@ struct LayerOptics {
     double ssa_aerosol = 0;
     double g_aerosol = 0;
     double tau_gas = 0;  // equivalent Beer's-law absorption (GasColumn)
+    // IPH 2 (ColumnModel::mie()): the scattering optical depth of each aerosol region
+    // (AerosolModel's four) that has a Mie phase function at this wavenumber; the rest
+    // of the aerosol and cloud scattering, tau_aerosol ssa_aerosol - their sum, goes by
+    // Henyey-Greenstein with g_other. All 0 without IPH 2.
+    std::array<double, 4> tau_scat_mie{};
+    double g_other = 0;
 };
 
 // The column between the ground and the top: levels, aerosols, cloud, rain, cirrus and
@@ -44,6 +52,13 @@ public:
     const Profile& profile() const { return m_profile; }
     std::size_t sensor_level() const { return m_sensor_level; }  // index into profile levels
     double visibility_km() const { return m_aerosol->visibility_km(); }
+
+    // True when the deck asks for LOWTRAN 7's Mie phase functions (IEMSCT 2, IPH 2).
+    bool mie() const { return m_mie.has_value(); }
+    // With mie(): the phase function of aerosol region `region` (0-3) at a wavelength as
+    // LOWTRAN 7's PHASEF selects it (MiePhaseTable::region: the deck's IHAZE, IVULCN
+    // and the boundary layer's humidity); none where it uses Henyey-Greenstein.
+    std::optional<TabulatedPhase> mie_phase(int region, double wavelength_um) const;
 
     // Every layer (bottom first, profile().size() - 1 of them) at wavenumber nu.
     std::vector<LayerOptics> layers(double nu_cm1) const;
@@ -104,6 +119,8 @@ private:
     std::optional<CloudModel> m_cloud;        // ICLD 1-10: the water cloud
     std::optional<RainModel> m_rain;          // ICLD 6-10, RAINRT
     std::optional<CirrusModel> m_cirrus;      // ICLD 18, 19
+    std::optional<MiePhaseTable> m_mie;       // IPH 2
+    int m_ihaze = 0, m_ivulcn = 0;
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
     std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
