@@ -90,14 +90,20 @@ void add_miss(const TraceContext& c, RowWorker& w, const SampleBuffers& b, const
 
 // Adds primary sample i of pixel (row, col) to the worker's accumulators (its radiance
 // at the sensor also in w.sample), placed in stratum `stratum` of `strata` over the
-// pixel; true on a hit.
+// pixel, or with strata 0 at point i of the pixel's shifted (0,2)-sequence
+// (--convergence); true on a hit.
 bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
                 const std::vector<std::size_t>& centre, long row, long col, long i,
                 long stratum, long strata) {
     const Sensor& cam = *c.in.sensor;
     const std::size_t n = c.n;
-    auto off = stratified_offset(stratum, strata, uniform01(c.opt.seed, row, col, i, ~0ULL),
-                                 uniform01(c.opt.seed, row, col, i, ~1ULL));
+    const auto shift = [&](std::uint64_t k) {  // the pixel's digital shift, 32 bits
+        return static_cast<std::uint32_t>(uniform01(c.opt.seed, row, col, ~0ULL, k) * 0x1.0p32);
+    };
+    auto off = strata > 0
+                   ? stratified_offset(stratum, strata, uniform01(c.opt.seed, row, col, i, ~0ULL),
+                                       uniform01(c.opt.seed, row, col, i, ~1ULL))
+                   : sobol02_offset(static_cast<std::uint32_t>(i), shift(~2ULL), shift(~3ULL));
     Vec3 o, d;
     cam.ray(static_cast<double>(row) + off[0], static_cast<double>(col) + off[1], o, d);
     HitTruth ht;
@@ -168,13 +174,35 @@ void put_truth(const TraceContext& c, const std::vector<double>& truth_acc, long
 struct SampleStats {
     long n = 0;
     std::vector<double> mean, m2;
+    std::vector<double> values;  // sample-major, per band: the block estimate's input
     void reset(std::size_t bands) {
         n = 0;
         mean.assign(bands, 0.0);
         m2.assign(bands, 0.0);
+        values.clear();
+    }
+    // Standard error from kBlocks consecutive blocks of the samples (each block of a
+    // (0,2)-sequence is itself stratified): the spread of the block means, which
+    // includes what stratification gains; sqrt(s^2 / n) below 2 kBlocks samples.
+    static constexpr long kBlocks = 8;
+    double block_error(std::size_t b) const {
+        const long m = n / kBlocks;
+        if (m < 2) return standard_error(b);
+        const std::size_t bands = mean.size();
+        double sum = 0, sum2 = 0;
+        for (long k = 0; k < kBlocks; ++k) {
+            double s = 0;
+            for (long i = k * m; i < (k + 1) * m; ++i) s += values[static_cast<std::size_t>(i) * bands + b];
+            s /= static_cast<double>(m);
+            sum += s;
+            sum2 += s * s;
+        }
+        const double kb = kBlocks, var = std::max(0.0, (sum2 - sum * sum / kb) / (kb - 1));
+        return std::sqrt(var / kb);
     }
     void add(const std::vector<double>& sample, const std::vector<std::size_t>& centre) {
         ++n;
+        for (std::size_t b = 0; b < centre.size(); ++b) values.push_back(sample[centre[b]]);
         for (std::size_t b = 0; b < centre.size(); ++b) {
             const double x = sample[centre[b]], d = x - mean[b];
             mean[b] += d / static_cast<double>(n);
@@ -190,7 +218,7 @@ struct SampleStats {
     double relative_error() const {
         double worst = 0;
         for (std::size_t b = 0; b < mean.size(); ++b) {
-            const double se = standard_error(b);
+            const double se = block_error(b);
             if (se < 0) return std::numeric_limits<double>::infinity();
             if (se == 0) continue;
             worst = std::max(worst, mean[b] == 0 ? std::numeric_limits<double>::infinity()
@@ -202,7 +230,7 @@ struct SampleStats {
     double absolute_error() const {
         double worst = 0;
         for (std::size_t b = 0; b < mean.size(); ++b) {
-            const double se = standard_error(b);
+            const double se = block_error(b);
             if (se < 0) return std::numeric_limits<double>::infinity();
             worst = std::max(worst, se);
         }
@@ -211,9 +239,11 @@ struct SampleStats {
 };
 
 // Primary samples of pixel (row, col): samples_per_pixel stratified over the pixel, or
-// with --convergence batches of MIN (each stratified on its own, its random numbers
-// those of the sample's index) until the relative (or, --convergence-error absolute,
-// the absolute) standard error is under the threshold or MAX samples are taken. Returns (samples, hits).
+// with --convergence batches of MIN at the points of the pixel's (0,2)-sequence (so
+// the samples so far stay stratified as batches are added; their other random numbers
+// those of the sample's index) until the error --convergence-error names (render.hpp
+// ConvergenceError; from the spread of block means) is under the threshold or MAX
+// samples are taken. Returns (samples, hits).
 std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
                                    const std::vector<std::size_t>& centre, SampleStats& stats,
                                    long row, long col) {
@@ -233,10 +263,14 @@ std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const Sa
     long n = 0;
     while (true) {
         const long batch = std::min(o.convergence_min, o.convergence_max - n);
-        for (long j = 0; j < batch; ++j) take(n + j, j, batch);
+        for (long j = 0; j < batch; ++j) take(n + j, 0, 0);
         n += batch;
         const double error =
-            o.convergence_absolute ? stats.absolute_error() : stats.relative_error();
+            o.convergence_error == ConvergenceError::Relative ? stats.relative_error()
+            : o.convergence_error == ConvergenceError::Absolute
+                ? stats.absolute_error()
+                : stats.absolute_error() * std::sqrt(static_cast<double>(o.convergence_min) /
+                                                     static_cast<double>(n));
         if (n >= o.convergence_max || error < o.convergence_threshold) break;
     }
     return {n, hits};

@@ -27,6 +27,14 @@ inline constexpr int kAutoBounces = -1;  // --bounces auto: the estimate's (boun
 // scene seen from above, one material of the .mat, or nothing.
 enum class BackgroundChoice { Mean, Material, None };
 
+// What --convergence's threshold bounds (trace(1) --convergence-error), with SE the
+// largest over the bands of a pixel's standard error after n samples: SE / |mean|
+// (relative), SE in W cm-2 sr-1 um-1 (absolute), or SE sqrt(MIN / n) (rms: a pixel stops
+// when another sample would lower its variance by less than threshold^2 / MIN, which
+// spends samples in proportion to the pixel's spread, the allocation that minimises the
+// image's summed variance for a given number of samples).
+enum class ConvergenceError { Relative, Absolute, Rms };
+
 struct RenderOptions {
     Sampling sampling = Sampling::Golfball;
     long samples_per_pixel = 1;    // primary rays per pixel, stratified (White (1996), section 5.1.4 rec. 7)
@@ -51,14 +59,12 @@ struct RenderOptions {
     // the band-centre spectral sample (-1 below 2 samples; trace(1) --standard-error).
     bool sampling_layers = false;
     // --convergence MIN,MAX,THRESHOLD: primary samples in batches of convergence_min
-    // (each batch stratified over the pixel on its own) until the largest relative
-    // standard error over the bands is under convergence_threshold, or
-    // convergence_max samples are taken; samples_per_pixel is then unused. 0: off.
+    // at the points of the pixel's (0,2)-sequence until the error convergence_error
+    // names is under convergence_threshold, or convergence_max samples are taken;
+    // samples_per_pixel is then unused. 0: off.
     long convergence_min = 0, convergence_max = 0;
     double convergence_threshold = 0;
-    // --convergence-error absolute: the threshold bounds the largest band's standard
-    // error (W cm-2 sr-1 um-1) instead of standard error / |mean|.
-    bool convergence_absolute = false;
+    ConvergenceError convergence_error = ConvergenceError::Relative;
     BackgroundChoice background = BackgroundChoice::Mean;
     long background_material = 0;  // MATERIAL_ID, with BackgroundChoice::Material
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)

@@ -38,6 +38,15 @@ inline double uniform01(std::uint64_t seed, std::uint64_t row, std::uint64_t col
 // is the pixel centre (no jitter), so single-sample renders are reproducible by hand.
 std::array<double, 2> stratified_offset(long i, long n, double u_row, double u_col);
 
+// Offset (row, column) in [0, 1)^2 of point i of a base-2 (0,2)-sequence: the van der
+// Corput sequence and the second dimension of Sobol's sequence (Kollig & Keller 2002,
+// "Efficient multidimensional sampling", section 3), each XORed with a 32-bit digital
+// shift. Every aligned block of 2^m points is a (0,m,2)-net, so any prefix of 2^m points
+// holds one point in each of the 2^m equal rectangles of every shape 2^-a x 2^-(m-a):
+// the pixel stays stratified as --convergence adds batches.
+std::array<double, 2> sobol02_offset(std::uint32_t i, std::uint32_t shift_row,
+                                     std::uint32_t shift_col);
+
 // The `dirsig` strategy's diffuse pattern: n directions (local frame, z = normal)
 // distributed as cos(theta)/pi, deterministic: the disk points r = sqrt((k + 1/2)/n),
 // phi = k * golden angle (a Vogel spiral, equal area per point) lifted to the

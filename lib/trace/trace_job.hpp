@@ -20,8 +20,8 @@ namespace sigchain::trace {
 // --convergence MIN,MAX,THRESHOLD (RenderOptions::convergence_*).
 struct Convergence {
     long min = 0, max = 0;
-    double threshold = 0;  // relative standard error (0.01), or with absolute W cm-2 sr-1 um-1
-    bool absolute = false;  // --convergence-error absolute: threshold on the standard error itself
+    double threshold = 0;  // in the unit of `error` (relative: 0.01 is one per cent)
+    ConvergenceError error = ConvergenceError::Relative;  // --convergence-error
 };
 
 struct TraceJob {
@@ -77,6 +77,8 @@ struct TraceReport {
 
 // "dirsig", "golfball" or "montecarlo"; else UsageError.
 Sampling parse_sampling(const std::string& name);
+// relative, absolute or rms (--convergence-error); anything else is a UsageError.
+ConvergenceError parse_convergence_error(const std::string& name);
 std::string sampling_name(Sampling sampling);
 // "mean", "none" or a MATERIAL_ID (an integer) into options; else UsageError.
 void parse_background(const std::string& text, RenderOptions& options);

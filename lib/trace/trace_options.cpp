@@ -43,6 +43,14 @@ Sampling parse_sampling(const std::string& name) {
                      "' (dirsig, golfball or montecarlo)");
 }
 
+ConvergenceError parse_convergence_error(const std::string& name) {
+    if (name == "relative") return ConvergenceError::Relative;
+    if (name == "absolute") return ConvergenceError::Absolute;
+    if (name == "rms") return ConvergenceError::Rms;
+    throw UsageError("--convergence-error: unknown error '" + name +
+                     "' (relative, absolute or rms)");
+}
+
 void parse_background(const std::string& text, RenderOptions& options) {
     if (text == "mean") {
         options.background = BackgroundChoice::Mean;

@@ -94,11 +94,8 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
                                              static_cast<double>(v[2])};
     }
     if (vm.count("convergence-error")) {
-        const std::string e = vm["convergence-error"].as<std::string>();
-        if (e != "relative" && e != "absolute")
-            throw sigchain::UsageError("--convergence-error: expected relative or absolute, not '" + e + "'");
         if (!job.convergence) throw sigchain::UsageError("--convergence-error: only with --convergence");
-        job.convergence->absolute = e == "absolute";
+        job.convergence->error = trace::parse_convergence_error(vm["convergence-error"].as<std::string>());
     }
     if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();
     if (vm.count("glt")) job.glt_path = vm["glt"].as<std::string>();
@@ -158,9 +155,10 @@ int main(int argc, char** argv) {
         "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),
         "primary samples in batches of MIN until the relative standard error\n"
         "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)")(
-        "convergence-error", cli::po::value<std::string>()->value_name("relative|absolute"),
-        "--convergence's T bounds standard error / |mean| (relative, the default)\n"
-        "                    or the standard error in W cm-2 sr-1 um-1 (absolute)");
+        "convergence-error", cli::po::value<std::string>()->value_name("relative|absolute|rms"),
+        "--convergence's T bounds standard error / |mean| (relative, the default),\n"
+        "                    the standard error in W cm-2 sr-1 um-1 (absolute), or\n"
+        "                    standard error x sqrt(MIN / samples) (rms: least RMS per sample)");
     tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
     tool.add_number("hemisphere-samples", "N", cli::integers(1, 1000000),
