@@ -210,7 +210,8 @@ bool solve_samples(const std::vector<SampleSetup>& setups, const std::vector<std
     const ProgressScope bar(reporter, "spectral samples");
     const auto solve = [&](long begin, long end, SampleResult* out,
                            const std::function<void(long, long)>& progress) {
-        parallel_for(end - begin, {setups.front().options.threads, progress}, [&](long i, unsigned) {
+        const unsigned threads = setups.front().options.threads;
+        parallel_for(end - begin, {threads, progress}, [&](long i, unsigned) {
             const auto k = static_cast<std::size_t>(begin + i);
             out[i] = solve_sample(setups[setup_of[k]], nus[k]);
         });

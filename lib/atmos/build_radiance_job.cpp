@@ -31,12 +31,14 @@ void report_tables(const RadianceReport& report, const Reporter& reporter) {
                   " km, view azimuth " + format_number(report.view_azimuth_deg) + " deg");
     for (std::size_t b = 0; b < report.band_streams.size(); ++b) {
         const StreamChoice& c = report.band_streams[b];
-        std::string line = "band " + std::to_string(b + 1) + ": " + std::to_string(c.streams) + " streams";
+        std::string line =
+            "band " + std::to_string(b + 1) + ": " + std::to_string(c.streams) + " streams";
         if (c.check_streams > 0)
             line += " (auto: estimated error " + format_number(100 * c.estimated_error) +
                     " % against " + std::to_string(c.check_streams) + " streams at " +
                     std::to_string(c.probe_wavenumbers.size()) + " samples" +
-                    (c.within_tolerance ? "" : "; above the tolerance, the largest candidate used") + ")";
+                    (c.within_tolerance ? "" : "; above the tolerance: the largest candidate") +
+                    ")";
         reporter.info(line);
     }
     for (const auto& note : report.notes) reporter.info(note);

@@ -3,9 +3,9 @@
 //
 // The rule: for N = 4, 6, 8, 12, 16, 24, 32 in turn, the band's probe samples (its
 // centre sample and its most scattering one) are solved with N and with 2N streams;
-// the first N whose tables agree with 2N's within the tolerance is the band's. The
-// difference from 2N estimates N's own error: the discrete-ordinate error falls with
-// the order, so 2N's is much smaller than N's (the estimate is checked against 32
+// N's error is estimated as twice the largest relative difference of its tables from
+// 2N's (an error falling at least as 1/N: stream_choice.cpp), and the first N whose
+// estimate is within the tolerance is the band's (the estimate is checked against 32
 // streams in tests/unit/atmos/stream_choice_test.cpp).
 #pragma once
 
@@ -24,7 +24,7 @@ inline constexpr std::array<int, 7> kStreamCandidates{4, 6, 8, 12, 16, 24, 32};
 struct StreamChoice {
     int streams = 0;                        // the band's streams
     int check_streams = 0;                  // the order it was compared with (2 streams)
-    double estimated_error = 0;             // the largest relative difference (table_difference)
+    double estimated_error = 0;             // twice the largest table_difference from 2N
     bool within_tolerance = true;           // false: no candidate agreed; the largest is used
     std::vector<double> probe_wavenumbers;  // cm-1, the samples compared
 };
@@ -35,11 +35,12 @@ struct StreamChoice {
 std::vector<double> probe_wavenumbers(const ColumnModel& column, const io::SndBand& band);
 
 // The largest relative difference of `a` from the reference `b` over every entry the
-// .rad holds of a sample: path, sky and upwelled radiances (scattered and emitted), the
-// diffuse irradiance at the ground and the coupling terms. Each entry is compared with
-// its reference value, or with a thousandth of the largest reference entry of its
-// table where that is larger (an entry a thousand times fainter than its table's
-// brightest does not set the streams).
+// .rad holds of a sample. Radiances (path, sky and upwelled; scattered and emitted):
+// each against its reference value, or against a thousandth of the largest reference
+// entry of its table where that is larger (an entry a thousand times fainter than its
+// table's brightest does not set the streams). The coupling terms through the radiance
+// each one changes (stream_choice.cpp): |dS| / (1 - S), |dt_d_down| / (tau1 +
+// t_d_down), |dt_d_up| / (tau2 + t_d_up).
 double table_difference(const SampleResult& a, const SampleResult& b);
 
 // The stream choice of one band (the rule above) from `setup` (whose options' streams
