@@ -40,6 +40,10 @@ void report_tables(const RadianceReport& report, const Reporter& reporter) {
                     (c.within_tolerance ? "" : "; above the tolerance: the largest candidate") +
                     ")";
         reporter.info(line);
+        if (!c.within_tolerance)
+            reporter.warn("band " + std::to_string(b + 1) +
+                          ": no streams up to 32 meet --stream-tolerance (estimated error " +
+                          format_number(100 * c.estimated_error) + " %): 32 used");
     }
     for (const auto& note : report.notes) reporter.info(note);
 }

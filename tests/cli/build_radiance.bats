@@ -253,3 +253,13 @@ line_of() { sed -n "${2}p" "$1"; }
     [[ "$stderr" == *"--stream-tolerance: nan: must be"* ]] || fail "stderr: $stderr"
     [ ! -e o-1.rad ]
 }
+
+@test "--streams auto warns when no streams up to 32 meet the tolerance" {
+    printf '1.0\n1\n18000 18100 100\n0 0 1\n9 30 95\n19\n5\n43.08333 77.66667\n' > two_samples.snd
+    run -0 --separate-stderr build_radiance --streams auto --stream-tolerance 1e-9 \
+        --sky-zenith-step 90 --sky-azimuth-step 360 --sky-subsamples 1 --upwelled-azimuth-step 360 \
+        "$HAWKEYE" two_samples.snd -o w.rad
+    [[ "$stderr" == *"build_radiance: warning: band 1: no streams up to 32 meet --stream-tolerance (estimated error "*" %): 32 used"* ]] ||
+        fail "stderr: $stderr"
+    sigchain-check w.rad
+}

@@ -153,6 +153,21 @@ TEST(StreamChoice, AClearNadirCaseIsWithinTheToleranceOf32Streams) {
     EXPECT_LE(loose.difference, 0.01);
 }
 
+// A tolerance no candidate meets: the largest candidate, flagged (and -v says so).
+TEST(StreamChoice, AnUnreachableToleranceGivesTheLargestCandidateFlagged) {
+    io::Snd snd = nadir(small_snd());
+    snd.bands = {{18000, 18000, 1}};
+    RadianceOptions o = one_cell(kAutoStreams);
+    o.stream_tolerance = 1e-9;
+    RadianceReport report;
+    (void)build_radiance(hawkeye_deck(), snd, o, &report);
+    ASSERT_EQ(report.band_streams.size(), 1u);
+    EXPECT_EQ(report.band_streams[0].streams, 32);
+    EXPECT_EQ(report.band_streams[0].check_streams, 64);
+    EXPECT_FALSE(report.band_streams[0].within_tolerance);
+    EXPECT_GT(report.band_streams[0].estimated_error, 1e-9);
+}
+
 TEST(StreamChoice, ProbesAreTheCentreAndTheMostScatteringSample) {
     const io::Cdk deck = hawkeye_deck();
     const RadianceOptions o = options(16);
