@@ -444,6 +444,8 @@ AerosolLayerOptics AerosolModel::layer(double z_lo_km, double z_hi_km, double wa
         out.tau_ext += column * ext;
         scat += column * std::max(0.0, ext - abs);
         scat_g += column * std::max(0.0, ext - abs) * g;
+        out.tau_scat_region[r] = column * std::max(0.0, ext - abs);
+        out.g_region[r] = g;
     }
     if (out.tau_ext > 0) out.ssa = std::clamp(scat / out.tau_ext, 0.0, 1.0);
     if (scat > 0) out.g = scat_g / scat;

@@ -18,6 +18,10 @@ struct AerosolLayerOptics {
     double tau_ext = 0;  // extinction optical depth of the slab (vertical), >= 0
     double ssa = 0;      // single-scattering albedo, [0, 1]
     double g = 0;        // Henyey-Greenstein asymmetry parameter, (-1, 1)
+    // Per region (AerosolModel's four, boundary layer first): scattering optical depth
+    // and asymmetry parameter, for the regions' own phase functions (IPH 2).
+    std::array<double, 4> tau_scat_region{};
+    std::array<double, 4> g_region{};
 };
 
 class AerosolModel {

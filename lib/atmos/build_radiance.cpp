@@ -426,10 +426,10 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             distance_factor,
                             phase_moments(o.streams),
                             deck_choices(run)};
-    if (run.card1.iemsct == 2 && run.geometry.iph == 2)
+    if (column.mie())
         rep.notes.push_back(
-            "IPH 2: aerosol scattering by Henyey-Greenstein with the models' asymmetry "
-            "parameter (LOWTRAN 7's Mie phase functions are not used yet)");
+            "IPH 2: aerosol scattering by LOWTRAN 7's Mie phase functions (delta-M, with "
+            "the Nakajima-Tanaka TMS and IMS corrections)");
     if (run.card1.imult == 0)
         rep.notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
     if (run.card1.surface_albedo > 0)
@@ -444,7 +444,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     for (std::size_t b = 0; b < snd.bands.size(); ++b) {
         const int n = band_options[b].streams;
         setups.push_back({column, dirs, solar, band_options[b], views, setup.mu0, setup.sun_up,
-                          distance_factor, phase_moments(n), setup.deck});
+                          distance_factor, phase_moments(n), setup.deck, setup.mie});
         setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
     }
     std::vector<SampleResult> results;

@@ -31,6 +31,8 @@ const SourceLocation kCard2{"card deck", 0};
 // LWC (g m-3) giving 1 km-1 at 0.55 um, ICLD 1-5 (cloud_models.txt header).
 constexpr double kEquivalentLwc[5] = {7.683e-3, 4.509e-3, 5.272e-3, 4.177e-3, 7.518e-3};
 
+}  // namespace
+
 std::vector<std::vector<double>> read_rows(const std::string& path, std::size_t columns,
                                            std::size_t rows) {
     const TextInput in = TextInput::from_file(path);
@@ -49,8 +51,6 @@ std::vector<std::vector<double>> read_rows(const std::string& path, std::size_t 
     return t;
 }
 
-}  // namespace
-
 const std::array<double, 12>& CloudModel::level_heights_km() {
     static const std::array<double, 12> z = {0,   0.16, 0.33, 0.66, 1,   1.5,
                                              2.0, 2.4,  2.7,  3.0,  3.5, 4.0};
@@ -60,12 +60,12 @@ const std::array<double, 12>& CloudModel::level_heights_km() {
 std::optional<CloudModel> CloudModel::from_deck(const io::CdkCard2& card2, double ground_km,
                                                 const std::string& data_dir,
                                                 std::optional<double> asymmetry_g) {
-    if (card2.icld == 0) return std::nullopt;
+    if (card2.icld == 0 || card2.icld == 18 || card2.icld == 19) return std::nullopt;
     if (!modelled(card2.icld))
         throw DataError(kCard2, "CARD 2 ICLD: " + std::to_string(card2.icld) +
-                                    " is not modelled (clouds 1-5 are; rain 6-10, 11 and "
-                                    "cirrus 18-20 are not)");
-    const int m = card2.icld - 1;
+                                    " is not modelled (clouds and rain 1-10 and cirrus 18-19 "
+                                    "are; 11 and 20 are not)");
+    const int m = cloud_of(card2.icld) - 1;
     const std::string dir = data_dir + "/atmosphere/lowtran7/";
     CloudModel c;
     for (const auto& row : read_rows(dir + "cloud_models.txt", 22, 47)) {
@@ -86,26 +86,24 @@ std::optional<CloudModel> CloudModel::from_deck(const io::CdkCard2& card2, doubl
     return c;
 }
 
-double CloudModel::lwc_g_m3(double z_km) const {
-    const auto& z = m_z_km;
+double level_value(const std::vector<double>& z, const std::vector<double>& v, double z_km) {
     if (z_km < z.front() || z_km > z.back()) return 0;
     std::size_t hi = std::size_t(std::upper_bound(z.begin(), z.end(), z_km) - z.begin());
-    if (hi >= z.size()) return m_lwc.back();
+    if (hi >= z.size()) return v.back();
     const double f = (z_km - z[hi - 1]) / (z[hi] - z[hi - 1]);
-    const double a = m_lwc[hi - 1], b = m_lwc[hi];
+    const double a = v[hi - 1], b = v[hi];
     return a > 0 && b > 0 ? a * std::pow(b / a, f) : a + f * (b - a);
 }
 
-// Exact integral (g m-3 x km) of the LWC over [z_lo, z_hi] (km MSL).
-double CloudModel::column_lwc(double z_lo_km, double z_hi_km) const {
-    const auto& z = m_z_km;
+double level_integral(const std::vector<double>& z, const std::vector<double>& v, double z_lo_km,
+                      double z_hi_km) {
     double sum = 0;
     for (std::size_t i = 1; i < z.size(); ++i) {
         const double lo = std::max(z_lo_km, z[i - 1]), hi = std::min(z_hi_km, z[i]);
         if (hi <= lo) continue;
         const double h = z[i] - z[i - 1];
         const double f0 = (lo - z[i - 1]) / h, f1 = (hi - z[i - 1]) / h;
-        const double b0 = m_lwc[i - 1], b1 = m_lwc[i];
+        const double b0 = v[i - 1], b1 = v[i];
         const double k = b0 > 0 && b1 > 0 ? std::log(b1 / b0) : 0.0;
         if (std::abs(k) > 1e-12) {
             sum += b0 * h / k * (std::exp(k * f1) - std::exp(k * f0));  // exponential
@@ -116,6 +114,8 @@ double CloudModel::column_lwc(double z_lo_km, double z_hi_km) const {
     }
     return sum;
 }
+
+double CloudModel::lwc_g_m3(double z_km) const { return level_value(m_z_km, m_lwc, z_km); }
 
 std::array<double, 3> CloudModel::optics(double wavelength_um) const {
     const auto& w = m_wavelength_um;
@@ -134,7 +134,7 @@ double CloudModel::extinction_km1(double z_km, double wavelength_um) const {
 AerosolLayerOptics CloudModel::layer(double z_lo_km, double z_hi_km, double wavelength_um) const {
     AerosolLayerOptics out;
     if (!(z_hi_km > z_lo_km)) return out;
-    const double column055 = column_lwc(z_lo_km, z_hi_km) / m_eq_lwc;
+    const double column055 = level_integral(m_z_km, m_lwc, z_lo_km, z_hi_km) / m_eq_lwc;
     if (column055 <= 0) return out;
     const auto [ext, abs, g] = optics(wavelength_um);
     out.tau_ext = column055 * ext;
@@ -149,6 +149,10 @@ AerosolLayerOptics combine(const AerosolLayerOptics& a, const AerosolLayerOptics
     const double sa = a.tau_ext * a.ssa, sb = b.tau_ext * b.ssa;
     if (out.tau_ext > 0) out.ssa = std::clamp((sa + sb) / out.tau_ext, 0.0, 1.0);
     if (sa + sb > 0) out.g = (sa * a.g + sb * b.g) / (sa + sb);
+    for (std::size_t r = 0; r < out.tau_scat_region.size(); ++r) {  // b (the cloud) has none
+        out.tau_scat_region[r] = a.tau_scat_region[r] + b.tau_scat_region[r];
+        out.g_region[r] = a.tau_scat_region[r] > 0 ? a.g_region[r] : b.g_region[r];
+    }
     return out;
 }
 

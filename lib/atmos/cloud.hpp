@@ -16,18 +16,26 @@ namespace sigchain::atmos {
 
 class CloudModel {
 public:
-    // The cloud models build_radiance models: ICLD 1 cumulus, 2 altostratus, 3 stratus,
-    // 4 stratus/stratocumulus, 5 nimbostratus. Rain (ICLD 6-10, RAINRT), ICLD 11 and
-    // cirrus (18-20) are not.
-    static bool modelled(int icld) { return icld >= 1 && icld <= 5; }
+    // The water clouds build_radiance models: ICLD 1 cumulus, 2 altostratus, 3 stratus,
+    // 4 stratus/stratocumulus, 5 nimbostratus, and the clouds of the rain models 6-10
+    // (stratus under the drizzle 6, nimbostratus under 7 and 8, cumulus under 9 and 10;
+    // their rain is rain.hpp's). ICLD 11 (user defined) and 20 (NOAA cirrus) are not;
+    // cirrus 18 and 19 are cirrus.hpp's.
+    static bool modelled(int icld) { return icld >= 1 && icld <= 10; }
+    // The water cloud (1-5) of a cloud or rain model (1-10): LOWTRAN 7's LAYCLD and
+    // AEREXT pair the rain models with the clouds 3, 5, 5, 1, 1.
+    static int cloud_of(int icld) {
+        constexpr int kRainCloud[5] = {3, 5, 5, 1, 1};
+        return icld <= 5 ? icld : kRainCloud[icld - 6];
+    }
 
     // LOWTRAN 7's cloud levels (km above the ground), the rows 0..11 of
     // cloud_rain_profiles.txt (subroutine FLAYZ's inserted levels).
     static const std::array<double, 12>& level_heights_km();
 
-    // The deck's cloud: nullopt for ICLD 0. `ground_km` is the ground altitude (km MSL)
-    // the cloud levels stand on. asymmetry_g, when given (IPH 0, CARD 3A2), replaces
-    // the tabulated g as it does for the aerosols. Throws DataError for an ICLD that is
+    // The deck's water cloud: nullopt for ICLD 0, 18 and 19. `ground_km` is the ground
+    // altitude (km MSL) the cloud levels stand on. asymmetry_g, when given (IPH 0, CARD 3A2),
+    // replaces the tabulated g as it does for the aerosols. Throws DataError for an ICLD that is
     // not modelled.
     static std::optional<CloudModel> from_deck(const io::CdkCard2& card2, double ground_km,
                                                const std::string& data_dir,
@@ -51,8 +59,20 @@ private:
     std::vector<double> m_wavelength_um, m_ext, m_abs, m_g;  // 47 wavelengths
     std::vector<double> m_z_km, m_lwc;                       // cloud levels
     double m_eq_lwc = 1;
-    double column_lwc(double z_lo_km, double z_hi_km) const;  // g m-3 x km
 };
+
+// The numbers of a LOWTRAN 7 table of data/atmosphere/lowtran7/ ('#' lines skipped):
+// `rows` rows of `columns` numbers, else DataError with the file and line.
+std::vector<std::vector<double>> read_rows(const std::string& path, std::size_t columns,
+                                           std::size_t rows);
+
+// LOWTRAN 7's profiles on levels (clouds, rain): the value at z between two levels is
+// exponential in altitude when both ends are positive, else linear, zero outside the
+// levels; level_integral is the exact integral of that piecewise function over
+// [z_lo, z_hi] (units of v times km). z ascending.
+double level_value(const std::vector<double>& z_km, const std::vector<double>& v, double z);
+double level_integral(const std::vector<double>& z_km, const std::vector<double>& v, double z_lo_km,
+                      double z_hi_km);
 
 // Two scatterers in one slab: optical depths add, ssa extinction-weighted, g
 // scattering-weighted.

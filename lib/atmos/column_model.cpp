@@ -30,31 +30,70 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
                                              " km) must lie above the ground (GNDALT, CARD 2: " +
                                              format_number(ground) + " km)");
     const double sensor = std::min(sensor_km, top);
-    // A cloud model adds its levels to the profile, as LOWTRAN 7's FLAYZ does.
+    // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
+    const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
+    const std::optional<double> g =
+        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt;
+    m_cirrus = CirrusModel::from_deck(run, o.data_dir, g);
+    m_rain = RainModel::from_deck(run.card2, ground, o.data_dir,
+                                  m_cirrus ? m_cirrus->levels_km() : std::vector<double>{});
+    // A cloud, rain or cirrus model adds its levels to the profile, as LOWTRAN 7's FLAYZ
+    // does (those within the column).
     std::vector<double> extra{sensor};
     if (CloudModel::modelled(run.card2.icld))
         for (double h : CloudModel::level_heights_km()) extra.push_back(ground + h);
+    auto add = [&](const std::vector<double>& levels) {
+        for (double z : levels)
+            if (z > ground && z < top) extra.push_back(z);
+    };
+    if (m_rain) add(m_rain->levels_km());
+    if (m_cirrus) add(m_cirrus->levels_km());
     m_profile = resample(full, ground, top, extra);
     m_sensor_level = index_of(m_profile.z_km, sensor);
     if (m_sensor_level >= m_profile.size() ||
         std::abs(m_profile.z_km[m_sensor_level] - sensor) > 1e-9)
         throw Error("internal: the sensor altitude is not a level of the resampled profile");
-    // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
-    const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
-    const std::optional<double> g =
-        user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt;
     io::CdkCard2 aerosol_card = run.card2;
-    aerosol_card.icld = 0;  // the cloud is m_cloud's
+    aerosol_card.icld = 0;  // the cloud, rain and cirrus are m_cloud's, m_rain's, m_cirrus's
     m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g));
     m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g);
+    if (run.card1.iemsct == 2 && run.geometry.iph == 2) m_mie = MiePhaseTable::load(o.data_dir);
+    m_ihaze = run.card2.ihaze;
+    m_ivulcn = run.card2.ivulcn;
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
     m_shells = shells_from(m_profile);
 }
 
+std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double wavelength_um) const {
+    if (!m_mie) return std::nullopt;
+    return m_mie->region(region, m_ihaze, m_ivulcn, m_aerosol->boundary_layer_rh_percent(),
+                         wavelength_um);
+}
+
+namespace {
+
+// The Mie part of a layer's scattering (LayerOptics::tau_scat_mie, g_other): the regions
+// with a Mie function at this wavelength (`has`) and what remains for Henyey-Greenstein.
+void split_mie(const AerosolLayerOptics& a, const std::array<bool, 4>& has, LayerOptics& l) {
+    const double scat = a.tau_ext * a.ssa;
+    double rest = scat, rest_g = scat * a.g;
+    for (std::size_t r = 0; r < has.size(); ++r) {
+        if (!has[r]) continue;
+        l.tau_scat_mie[r] = std::min(a.tau_scat_region[r], rest);
+        rest -= l.tau_scat_mie[r];
+        rest_g -= l.tau_scat_mie[r] * a.g_region[r];
+    }
+    l.g_other = rest > 1e-12 * scat ? std::clamp(rest_g / rest, -0.999, 0.999) : 0.0;
+}
+
+}  // namespace
+
 std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
     const double wavelength_um = 1e4 / nu_cm1;
     const std::vector<double> gas = m_gas->layer_absorption_depth(nu_cm1);
+    std::array<bool, 4> has{};
+    for (int r = 0; m_mie && r < 4; ++r) has[r] = mie_phase(r, wavelength_um).has_value();
     std::vector<LayerOptics> out(m_profile.size() - 1);
     for (std::size_t k = 0; k + 1 < m_profile.size(); ++k) {
         LayerOptics& l = out[k];
@@ -62,11 +101,15 @@ std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
             rayleigh_optical_depth(wavelength_um, m_profile.p_mb[k + 1], m_profile.p_mb[k]);
         AerosolLayerOptics a =
             m_aerosol->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um);
-        if (m_cloud)  // LOWTRAN 7 adds the cloud's coefficients to the aerosols'
-            a = combine(a, m_cloud->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um));
+        const double lo = m_profile.z_km[k], hi = m_profile.z_km[k + 1];
+        // LOWTRAN 7 adds the cloud's, rain's and cirrus's coefficients to the aerosols'.
+        if (m_cloud) a = combine(a, m_cloud->layer(lo, hi, wavelength_um));
+        if (m_rain) a = combine(a, m_rain->layer(lo, hi));
+        if (m_cirrus) a = combine(a, m_cirrus->layer(lo, hi, wavelength_um));
         l.tau_aerosol = a.tau_ext;
         l.ssa_aerosol = a.ssa;
         l.g_aerosol = a.g;
+        if (m_mie) split_mie(a, has, l);
         l.tau_gas = std::max(0.0, gas[k]);
     }
     return out;
@@ -84,8 +127,9 @@ std::vector<double> ColumnModel::gas_depths_from(double nu_cm1, std::size_t pivo
     return out;
 }
 
-GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol) const {
-    GasColumn::Terms t = m_gas->absorption_terms(nu_cm1, kGasPathFactor, tol, max_terms);
+GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol,
+                                        bool pairs) const {
+    GasColumn::Terms t = m_gas->absorption_terms(nu_cm1, kGasPathFactor, tol, max_terms, pairs);
     for (auto& d : t.depth)
         for (double& v : d) v = std::max(0.0, v);
     return t;
@@ -93,7 +137,7 @@ GasColumn::Terms ColumnModel::gas_terms(double nu_cm1, int max_terms, double tol
 
 std::vector<double> ColumnModel::term_depths_from(double nu_cm1, const GasColumn::Terms& terms,
                                                   std::size_t t, std::size_t pivot) const {
-    std::vector<double> d = m_gas->depths_from(nu_cm1, pivot, terms.gas);
+    std::vector<double> d = m_gas->depths_from(nu_cm1, pivot, terms.gas, terms.gas2);
     for (std::size_t k = 0; k < d.size(); ++k)
         d[k] = std::max(0.0, d[k] + terms.fitted_depth[t][k]);
     return d;

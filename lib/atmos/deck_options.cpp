@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "atmos/cirrus.hpp"
 #include "atmos/cloud.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -32,21 +33,15 @@ void run_refusals(const io::CdkRun& run, const std::string& pre, std::vector<std
         refuse("CARD 1 TBOUND (columns 66-73) is " + format_number(c1.boundary_temperature_k) +
                " K: the ground's temperature and emission come from the scene, rad(5) tables "
                "hold none (use 0)");
-    if (c2.icld >= 6 && c2.icld <= 10)
+    if (c2.icld != 0 && !CloudModel::modelled(c2.icld) && !CirrusModel::modelled(c2.icld))
         refuse("CARD 2 ICLD (columns 21-25) is " + std::to_string(c2.icld) +
-               ": rain is not modelled by build_radiance, its drop optics are not in the "
-               "reference data (use 0, or the cloud models 1-5)");
-    else if (c2.icld != 0 && !CloudModel::modelled(c2.icld))
-        refuse("CARD 2 ICLD (columns 21-25) is " + std::to_string(c2.icld) +
-               ": cirrus is not modelled by build_radiance (use 0, or the cloud models 1-5)");
+               ": the NOAA cirrus of LOWTRAN 6, its thickness and base drawn at random, is "
+               "not modelled by build_radiance (use 0, the clouds and rain 1-10, or the "
+               "cirrus 18-19)");
     if (c2.ivsa != 0)
         refuse(
             "CARD 2 IVSA (columns 26-30) is 1: the army vertical structure algorithm is not "
             "modelled by build_radiance (use 0)");
-    if (c2.rain_rate_mm_h > 0)
-        refuse("CARD 2 RAINRT (columns 61-70) is " + format_number(c2.rain_rate_mm_h) +
-               " mm/h: rain is not modelled by build_radiance, its drop optics are not in "
-               "the reference data (use 0)");
     if (c1.iemsct != 2) return;  // CARD 3A1 exists with IEMSCT 2 only
     const io::CdkGeometry& g = run.geometry;
     if (g.iph == 1)

@@ -8,34 +8,11 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "atmos/exp_sum.hpp"
+#include "atmos/gas_tables_data.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 
 namespace sigchain::atmos {
-
-// Band-model absorbers (the first 11 gases of Gas; HNO3 is a Beer's-law term).
-constexpr int kBandGases = 11;
-constexpr int kFirstBandId = 17;  // LOWTRAN absorber index IW of H2O band 17
-
-struct GasTables::Data {
-    // C' on a 5 cm-1 grid from nu0 (cm-1); band = band id - 17, or -1 in a gap.
-    struct BandGrid {
-        int nu0_cm1 = 0;
-        std::vector<double> cprime;
-        std::vector<std::int8_t> band;
-    };
-    std::array<BandGrid, kBandGases> grids;
-    std::array<double, GasColumn::kBandCount> a{}, n_p{}, m_t{};
-    std::array<int, GasColumn::kBandCount> band_gas{};  // int(Gas) of each band, -1 unset
-    // h2o_continuum.txt, -20..20000 cm-1 step 10 (1e-20 cm3 molecule-1 per cm-1).
-    std::vector<double> h2o_self296, h2o_self260, h2o_foreign296;
-    std::vector<double> n2_km;                // n2_continuum.txt, 2080..2740 step 5
-    std::vector<double> o2_s0, o2_a, o2_b;    // o2_continuum_1395_1760.txt, step 5
-    std::vector<double> chappuis;             // C8(1..57), (atm-cm)^-1
-    std::vector<double> hh_c0, hh_c1, hh_c2;  // o3_hartley_huggins.txt, 27370.. step 5
-    std::vector<double> hno3;                 // hno3_band_coefficients.txt, 850..1735 step 5
-};
 
 namespace {
 
@@ -466,76 +443,6 @@ std::vector<double> GasColumn::layer_absorption_depth(double nu) const {
     for (int g = 0; g < kBandGases; ++g) add_equivalent_band_depth(g, nu, tau);
     add_continuum_depth(nu, tau);
     return tau;
-}
-
-GasColumn::Terms GasColumn::absorption_terms(double nu, double path_factor, double tol,
-                                             int max_terms) const {
-    const std::size_t layers = m_levels - 1;
-    // The band of every gas at nu, and the one to fit: the strongest over path_factor
-    // columns among those too strong for Beer's law (header comment).
-    struct Band {
-        int band = -1;
-        double c = 0, column = 0;
-    };
-    std::array<Band, kBandGases> bands;
-    int fit_gas = -1;
-    double strongest = 0;
-    for (int g = 0; g < kBandGases; ++g) {
-        const auto& grid = m_tables->grids[g];
-        const double i = std::round((nu - grid.nu0_cm1) / 5.0);
-        if (i < 0 || i >= static_cast<double>(grid.band.size())) continue;
-        Band& b = bands[g];
-        b.band = grid.band[static_cast<std::size_t>(i)];
-        if (b.band < 0) continue;
-        b.c = std::pow(10.0, grid.cprime[static_cast<std::size_t>(i)]);  // x = 10^C' W
-        b.column = amount(b.band, 0, layers);
-        const double depth = std::pow(path_factor * b.c * b.column, m_tables->a[b.band]);
-        // Beer's law is within tol on every path of at most path_factor columns when
-        // path_factor (C W)^a <= -ln(1 - tol): both then transmit between that and 1.
-        const double beer_bound = path_factor * std::pow(b.c * b.column, m_tables->a[b.band]);
-        if (max_terms > 1 && b.column > 0 && beer_bound > -std::log1p(-tol) && depth > strongest) {
-            strongest = depth;
-            fit_gas = g;
-        }
-    }
-    if (fit_gas < 0) return {{1.0}, {layer_absorption_depth(nu)}, true, -1, {}};
-    const Band& b = bands[fit_gas];
-    double thinnest = b.column;
-    for (std::size_t k = 0; k < layers; ++k)
-        if (amount(b.band, k, k + 1) > 0) thinnest = std::min(thinnest, amount(b.band, k, k + 1));
-    const ExpSum fit = fit_band_model(m_tables->a[b.band], b.c * thinnest,
-                                      b.c * b.column * path_factor, tol, max_terms);
-    // Every other gas and the continua: the equivalent depths, the same in every term.
-    std::vector<double> base(layers, 0.0);
-    for (int g = 0; g < kBandGases; ++g)
-        if (g != fit_gas) add_equivalent_band_depth(g, nu, base);
-    add_continuum_depth(nu, base);
-    Terms terms{fit.weight, {}, false, fit_gas, {}};
-    for (double k : fit.k) {
-        std::vector<double> g(layers);
-        for (std::size_t l = 0; l < layers; ++l) g[l] = k * b.c * amount(b.band, l, l + 1);
-        std::vector<double> d = base;
-        for (std::size_t l = 0; l < layers; ++l) d[l] += g[l];
-        terms.depth.push_back(std::move(d));
-        terms.fitted_depth.push_back(std::move(g));
-    }
-    return terms;
-}
-
-std::vector<double> GasColumn::depths_from(double nu, std::size_t pivot, int exclude) const {
-    const std::size_t layers = m_levels - 1;
-    auto depth = [&](std::size_t i, std::size_t j) {  // -ln T vertical without `exclude`
-        if (i == j) return 0.0;
-        double tau = continuum_optical_depth(nu, i, j, 1.0);
-        for (int g = 0; g < kBandGases; ++g)
-            if (g != exclude) tau += band_optical_depth(g, nu, i, j, 1.0);
-        return tau;
-    };
-    std::vector<double> out(layers, 0.0);
-    for (std::size_t k = 0; k < layers; ++k)
-        out[k] = std::max(0.0, k >= pivot ? depth(pivot, k + 1) - depth(pivot, k)
-                                          : depth(k, pivot) - depth(k + 1, pivot));
-    return out;
 }
 
 }  // namespace sigchain::atmos

@@ -33,8 +33,8 @@
 // that Beer's-law medium are approximate. Direct-beam and line-of-sight paths must use
 // transmittance(), which applies the band model to the path's summed amounts exactly;
 // only the diffuse field uses the equivalent depths, and where a gas is too strong for
-// them the strongest one is carried as an exponential sum instead (absorption_terms,
-// exp_sum.hpp).
+// them the strongest one (and a second that overlaps it strongly) is carried as an
+// exponential sum instead (absorption_terms in gas_terms.cpp, exp_sum.hpp).
 //
 // Thread-safety: both classes are immutable after construction; const use from several
 // threads is safe. GasTables copies share their data; GasColumn keeps its tables alive.
@@ -98,25 +98,33 @@ public:
     // times the vertical column, within tol (transmittance) with at most max_terms
     // terms; a term's k applies to every layer's amount (correlated-k). Every other gas
     // keeps its equivalent depth of layer_absorption_depth, as do the continua (Beer's
-    // law), the same in every term: overlapping strong bands are carried exactly only
-    // for the strongest gas (multiplying the sums and merging the product was tried and
-    // erred more on partial paths than equivalent depths). With no gas to fit (or
-    // max_terms 1) the one term is layer_absorption_depth itself, weight 1,
-    // `equivalent` true.
+    // law), the same in every term; except a second gas that overlaps the first
+    // strongly: one whose equivalent depths err by more than tol / 2 on the paths from
+    // a level to the top at up to path_factor air masses (the most erring such gas).
+    // Then both gases are fitted within tol / 3 and their sums multiplied (the band
+    // model's transmittances multiply; a pair of terms is one term, its depths the sum
+    // of both), the lightest pairs, together at most tol / 3 of the weight, merged into
+    // the nearest kept pair: within tol of the band model's product on any path of at
+    // most path_factor columns, for the two gases. With no gas to fit (or max_terms 1)
+    // the one term is layer_absorption_depth itself, weight 1, `equivalent` true.
+    // pairs_allowed false: never a second gas.
     struct Terms {
         std::vector<double> weight;                     // sum 1
         std::vector<std::vector<double>> depth;         // [term][layer], bottom first
         bool equivalent = true;                         // the one term is layer_absorption_depth
         int gas = -1;                                   // the fitted gas (int(Gas)), -1: none
-        std::vector<std::vector<double>> fitted_depth;  // [term][layer]: its part of depth
+        int gas2 = -1;                                  // the second, overlapping, or -1
+        std::vector<std::vector<double>> fitted_depth;  // [term][layer]: their part of depth
     };
-    Terms absorption_terms(double nu_cm1, double path_factor, double tol, int max_terms) const;
+    Terms absorption_terms(double nu_cm1, double path_factor, double tol, int max_terms,
+                           bool pairs_allowed = true) const;
 
-    // Equivalent depths of every layer (bottom first) of all gases but band-model gas
-    // `exclude` (-1: none) and the continua, exact on vertical paths from level `pivot`
-    // (ColumnModel::gas_depths_from says why): the others' part of a term's depths for
-    // the emission toward the ground or the sensor.
-    std::vector<double> depths_from(double nu_cm1, std::size_t pivot, int exclude) const;
+    // Equivalent depths of every layer (bottom first) of all gases but band-model gases
+    // `exclude` and `exclude2` (-1: none) and the continua, exact on vertical paths from
+    // level `pivot` (ColumnModel::gas_depths_from says why): the others' part of a
+    // term's depths for the emission toward the ground or the sensor.
+    std::vector<double> depths_from(double nu_cm1, std::size_t pivot, int exclude,
+                                    int exclude2 = -1) const;
 
     // (implementation-defined members follow)
 
@@ -136,6 +144,14 @@ public:
     static constexpr int kQuantityCount = kBandCount + 11;
 
 private:
+    struct FitBand {            // a gas's band at one nu (gas_terms.cpp)
+        int band = -1;          // -1: no band there
+        double c = 0;           // 10^C'
+        std::vector<double> w;  // scaled amount W of every layer, bottom first
+        double column = 0;      // W of the whole column
+    };
+    FitBand fit_band(int gas_index, double nu_cm1) const;
+    double equivalent_error(int gas_index, double nu_cm1, double path_factor) const;
     void add_equivalent_band_depth(int gas_index, double nu_cm1, std::vector<double>& tau) const;
     void add_continuum_depth(double nu_cm1, std::vector<double>& tau) const;
     double band_optical_depth(int gas_index, double nu_cm1, std::size_t lo, std::size_t hi,

@@ -15,7 +15,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
-constexpr int kGaussPerInterval = 64;
 
 // Interpolates a to b at fraction f: in ln when both are positive (PHASEF).
 double log_lerp(double a, double b, double f) {
@@ -78,9 +77,10 @@ double TabulatedPhase::at(double angle) const {
     return log_lerp(p_sr1[i], p_sr1[i + 1], f);
 }
 
-std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral) {
+std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral,
+                                  int gauss_points) {
     std::vector<double> nodes, weights;
-    rt::gauss_half_range(kGaussPerInterval, nodes, weights);
+    rt::gauss_half_range(gauss_points, nodes, weights);
     std::vector<double> chi(static_cast<std::size_t>(nmom) + 1, 0.0), pk(chi.size());
     double norm = 0;
     for (std::size_t i = 0; i + 1 < p.angle_deg.size(); ++i) {

@@ -16,8 +16,8 @@ struct RadianceOptions {
     std::string cdk_path = "<cdk>";          // and about the card deck
     int streams = 16;                        // discrete ordinates (even, 4-64), or
                                              // kAutoStreams: chosen per band (stream_choice.hpp)
-    double stream_tolerance = 0.005;         // --streams auto: relative agreement asked of
-                                             // the chosen streams with twice as many
+    double stream_tolerance = 0.01;          // --streams auto: relative error allowed, as
+                                             // estimated against twice as many streams
     double sky_zenith_step_deg = 5;          // downwelled hemisphere rings (90 / step rings)
     double sky_azimuth_step_deg = 10;        // cells per ring: 360 / step
     int sky_subsamples = 2;                  // per cell and axis: the cell's radiance is the
@@ -34,6 +34,9 @@ struct RadianceOptions {
                                              // off to measure it)
     int max_gas_terms = 12;                  // exponential-sum terms per gas in the solver
                                              // (1: one equivalent Beer's-law depth per layer)
+    bool gas_pairs = true;                   // fit a second, strongly overlapping gas too
+                                             // (GasColumn::absorption_terms; benchmarks
+                                             // turn it off to measure it)
     unsigned threads = 0;                    // worker threads (0: every core); results do
                                              // not depend on it
 };

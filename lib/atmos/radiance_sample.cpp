@@ -114,13 +114,24 @@ std::vector<double> solver_depths(const std::vector<rt::Layer>& layers,
     return {above, sum};
 }
 
+// The solver's layers for the column `col` (bottom first) merged between the levels
+// `kept`: with IPH 2 (s.mie) the mixtures of mie_layers.hpp, with their exact phase
+// functions in `exact` when given; else Rayleigh and Henyey-Greenstein moments.
+std::vector<rt::Layer> layers_for(const SampleSetup& s, const std::vector<LayerOptics>& col,
+                                  const std::vector<std::size_t>& kept, rt::ExactPhase* exact) {
+    if (s.mie) return mie_solver_layers(col, kept, *s.mie, s.moments, exact);
+    return merged_layers(solver_layers(col, s.moments), kept);
+}
+
 // The solver's problem for the column `col` (bottom first) with the levels `kept`:
 // delta-M, black surface (the scene supplies the ground; White (1996), section 3.4),
 // output at the sensor and at the ground in every direction of the tables.
 rt::Problem base_problem(const SampleSetup& s, const std::vector<LayerOptics>& col,
                          const std::vector<std::size_t>& kept) {
     rt::Problem prob;
-    prob.layers = merged_layers(solver_layers(col, s.moments), kept);
+    prob.layers = layers_for(s, col, kept, &prob.exact_phase);
+    // IPH 2's Mie functions are strongly peaked: the aureole needs the IMS correction.
+    prob.secondary_correction = s.mie != nullptr;
     prob.streams = s.options.streams;
     prob.delta_m = true;
     prob.albedo = 0;
@@ -172,7 +183,8 @@ rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& 
     rt::Problem th = prob;
     th.beam_flux = 0;
     th.beam_airmass.clear();  // its layers are not prob's
-    th.layers = merged_layers(solver_layers(c, s.moments), k);
+    th.layers = layers_for(s, c, k, nullptr);
+    th.exact_phase = {};  // prob's is for prob's layers; without a beam it is not used
     th.utau = solver_depths(th.layers, k, sensor_level);
     th.planck_levels.clear();
     for (std::size_t i = k.size(); i-- > 0;)
@@ -325,6 +337,12 @@ void add_weighted(SampleResult& acc, const SampleResult& term, double w, bool fi
 
 SampleResult solve_sample(const SampleSetup& s, double nu) {
     const double wavelength = 1e4 / nu;
+    if (s.column.mie() && !s.mie) {  // IPH 2: the Mie functions once for every solve
+        const MieOptics mie = mie_optics(s.column, wavelength, s.moments);
+        SampleSetup with = s;
+        with.mie = &mie;
+        return solve_sample(with, nu);
+    }
     const std::vector<LayerOptics> col = s.column.layers(nu);
     io::RadSample sample;
     sample.wavelength_um = wavelength;
@@ -337,7 +355,8 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
     const bool thermal = wavelength >= s.options.thermal_min_wavelength_um;
     const GasColumn::Terms terms = s.column.gas_terms(
         nu, s.options.max_gas_terms,
-        thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance);
+        thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance,
+        !thermal && s.options.gas_pairs);
     if (!terms.equivalent) {
         SampleResult res;
         for (std::size_t t = 0; t < terms.weight.size(); ++t)

@@ -7,6 +7,7 @@
 
 #include "atmos/column_model.hpp"
 #include "atmos/deck_options.hpp"
+#include "atmos/mie_layers.hpp"
 #include "atmos/radiance_directions.hpp"
 #include "atmos/radiance_options.hpp"
 #include "atmos/solar_spectrum.hpp"
@@ -27,6 +28,9 @@ struct SampleSetup {
     double distance_factor = 1;  // (1 AU / Earth-Sun distance)^2
     int moments = 0;             // phase-function moments handed to the solver
     DeckChoices deck;            // IMULT 0 (single scattering), SALB (ground in the sky)
+    // IPH 2: the Mie functions at the sample's wavelength (solve_sample sets it when
+    // column.mie()).
+    const MieOptics* mie = nullptr;
 };
 
 // The table entries of one spectral sample (radiances W cm-2 sr-1 um-1).

@@ -99,8 +99,20 @@ rt::Result single_scattering(const rt::Problem& p) {
     std::size_t nmom = 1;
     for (const rt::Layer& l : p.layers) nmom = std::max(nmom, l.pmom.size());
     std::vector<double> pk(nmom), phase_n(p.layers.size());
+    const rt::ExactPhase& x = p.exact_phase;
+    std::vector<double> comp(x.components);
     auto phases = [&](double cos_theta) {
-        legendre(std::clamp(cos_theta, -1.0, 1.0), pk);
+        const double c = std::clamp(cos_theta, -1.0, 1.0);
+        if (x.components > 0) {  // the exact mixtures (IPH 2's Mie functions)
+            x.evaluate(c, comp.data());
+            for (std::size_t n = 0; n < p.layers.size(); ++n) {
+                phase_n[n] = 0;
+                for (std::size_t k = 0; k < comp.size(); ++k)
+                    phase_n[n] += x.weights[n * comp.size() + k] * comp[k];
+            }
+            return;
+        }
+        legendre(c, pk);
         for (std::size_t n = 0; n < p.layers.size(); ++n) phase_n[n] = phase(p.layers[n].pmom, pk);
     };
     rt::Result r;

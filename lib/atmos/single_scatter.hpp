@@ -9,7 +9,8 @@ namespace sigchain::atmos {
 
 // The single-scattered intensity at each of `p`'s output depths and directions, from
 // the beam (beam_flux, beam_mu0, beam_phi0_deg) in the unscaled layers (tau, ssa, the
-// phase function as the Legendre series of pmom): in layer n between optical depths a
+// phase function as the Legendre series of pmom, or p.exact_phase's mixture when it has
+// components; the downward flux uses pmom either way): in layer n between optical depths a
 // and b the source is omega F0 P(Theta) exp(-t / mu0) / (4 pi) (Liou 2002, An
 // Introduction to Atmospheric Radiation, eq. 6.5.4 ff.), integrated analytically along
 // each direction. direct_down and diffuse_down are set (the latter from the

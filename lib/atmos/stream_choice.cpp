@@ -10,7 +10,9 @@ namespace sigchain::atmos {
 namespace {
 
 // Aerosol phase moments beyond the streams for the Nakajima-Tanaka correction: g^k of
-// Henyey-Greenstein falls below 1e-5 by k = 32 for g <= 0.7 (LOWTRAN's aerosols).
+// Henyey-Greenstein falls below 1e-5 by k = 32 for g <= 0.7 (LOWTRAN's aerosols). With
+// IPH 2 the TMS correction uses the Mie functions themselves (mie_layers.hpp); the
+// moments serve delta-M (moment `streams`) and the IMS correction's forward peak.
 constexpr int kPhaseMoments = 32;
 
 // An entry is compared with the larger of its reference and this fraction of the
@@ -83,7 +85,8 @@ std::vector<SampleResult> solve_probes(const SampleSetup& base, const std::vecto
                   base.sun_up,
                   base.distance_factor,
                   phase_moments(streams),
-                  base.deck};
+                  base.deck,
+                  base.mie};
     std::vector<SampleResult> out;
     for (double nu : probes) out.push_back(solve_sample(s, nu));
     return out;

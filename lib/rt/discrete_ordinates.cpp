@@ -49,6 +49,9 @@ void validate(const Problem& p) {
             bad("utau must ascend within [0, total optical depth]");
     for (double mu : p.umu)
         if (mu == 0 || std::abs(mu) > 1) bad("umu must be nonzero cosines");
+    const ExactPhase& x = p.exact_phase;
+    if (x.components > 0 && (!x.evaluate || x.weights.size() != x.components * p.layers.size()))
+        bad("exact_phase: one weight per component and layer, and a function");
 }
 
 Scaled scale_layers(const Problem& p) {
@@ -306,7 +309,10 @@ Result Solver::run() {
     }
     bool peaked = false;
     for (double f : m_s.f) peaked = peaked || f != 0;
-    if (beam && m_p.delta_m && m_p.intensity_correction && peaked && nu > 0) intensity_correction();
+    if (beam && m_p.delta_m && m_p.intensity_correction && peaked && nu > 0) {
+        intensity_correction();
+        if (m_p.secondary_correction) secondary_correction();
+    }
     return std::move(m_result);
 }
 

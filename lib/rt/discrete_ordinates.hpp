@@ -12,6 +12,8 @@
 // the units of the sources (beam flux normal to the beam, intensities per sr).
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace sigchain::rt {
@@ -22,11 +24,32 @@ struct Layer {
     std::vector<double> pmom;  // Legendre moments, pmom[0] = 1 (P = sum (2k+1) pmom[k] P_k)
 };
 
+// The layers' exact phase functions, for when their Legendre moments cannot represent
+// them (a tabulated Mie function's forward peak needs thousands): `components`
+// functions of the cosine of the scattering angle in the moments' normalisation
+// (sum (2k+1) pmom_k P_k, i.e. 4 pi times the phase function in sr-1, average 1 over
+// the sphere), and per layer the weights of its mixture (summing to 1 where it
+// scatters). The layers' pmom must still hold the moments of the same mixture (the
+// solver's delta-M truncation and the IMS correction use them). `evaluate` is called
+// from the solving thread only.
+struct ExactPhase {
+    std::size_t components = 0;  // 0: the moments are the phase function
+    // Writes every component's value at cos_scat (in [-1, 1]) into out[0 .. components).
+    std::function<void(double cos_scat, double* out)> evaluate;
+    std::vector<double> weights;  // [layer * components + c]
+};
+
 struct Problem {
     std::vector<Layer> layers;         // top to bottom, at least one
     int streams = 16;                  // even, >= 4 (N in DISORT; N/2 per hemisphere)
     bool delta_m = true;               // delta-M scaling of peaked phase functions
-    bool intensity_correction = true;  // Nakajima-Tanaka correction with delta-M
+    bool intensity_correction = true;  // Nakajima-Tanaka TMS correction with delta-M
+    // Nakajima-Tanaka IMS correction (with intensity_correction): the secondary
+    // scattering within the forward peak, for downward directions within 10 deg of the
+    // beam's zenith angle (the aureole). Off by default so that weakly peaked problems
+    // (Henyey-Greenstein aerosols) keep their results.
+    bool secondary_correction = false;
+    ExactPhase exact_phase;  // used by the TMS correction when components > 0
 
     double beam_flux = 0;      // incident beam flux normal to its direction, >= 0
     double beam_mu0 = 1;       // cosine of the beam's zenith angle, (0, 1]
@@ -79,10 +102,14 @@ struct Result {
 // for a scattering layer, mu0 outside (0, 1] with a beam, beam_airmass not one positive
 // value per layer (when given), planck_levels of the wrong
 // size, utau not ascending within [0, total tau], a zero or |umu| > 1 cosine.
+// exact_phase with other than `components` weights per layer or no function.
 // Method notes: single-scattering albedo 1 is computed as 1 - 1e-9 (DISORT's dither);
-// with delta_m and intensity_correction the Nakajima-Tanaka TMS correction is applied
-// (not their IMS secondary-scattering term, which matters only within a few degrees of
-// the beam direction for strongly peaked phase functions). Reentrant: concurrent calls
+// with delta_m and intensity_correction the Nakajima-Tanaka (1988, JQSRT 40, 51) TMS
+// correction is applied (eq. 13: the beam's single scattering with the exact phase
+// function, the moments' or exact_phase's), and with secondary_correction also their
+// IMS term (eqs. 14-15, in DISORT's form: Stamnes et al. 2000, DISORT report v1.1,
+// eqs. A7-A13), which matters within a few degrees of the beam direction for strongly
+// peaked phase functions. Reentrant: concurrent calls
 // share nothing. Cost for 35 layers, 16 streams, 110 umu, 40 azimuths: ~8 ms of one core
 // (bench/bench_rt: 2.1 / 8.0 / 52 ms for 8 / 16 / 32 streams).
 Result solve(const Problem& problem);

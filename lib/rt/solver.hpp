@@ -87,11 +87,16 @@ private:
     void intensity_correction();
     struct CorrectionScratch {  // per-azimuth Legendre recursion and its sums
         std::vector<double> cs, p0, p1, corr, rec_a, rec_b;
+        std::vector<double> cos_dphi;  // cos(phi - phi0) per azimuth (exact_phase, IMS)
     };
     std::vector<double> moment_differences(std::size_t nmom) const;
     void beam_path_integrals(std::size_t u, const Position& ps, std::vector<double>& tn) const;
     void add_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
                         CorrectionScratch& w);
+    std::vector<double> exact_weights() const;
+    std::vector<double> cos_dphi() const;
+    void add_exact_correction(std::size_t u, const std::vector<double>& e, CorrectionScratch& w);
+    void secondary_correction();
 
     const Problem& m_p;
     int m_N = 0, m_L = 0;

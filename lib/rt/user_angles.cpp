@@ -1,5 +1,5 @@
-// Intensities at user angles by analytic integration of the source function, and the
-// Nakajima-Tanaka intensity correction (parts of the discrete-ordinate solver).
+// Intensities at user angles by analytic integration of the source function (part of
+// the discrete-ordinate solver; the intensity correction is intensity_correction.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -304,121 +304,6 @@ void Solver::user_intensities(int m, std::vector<double>& im) {
         if (mu > 0) sweep_up(u, k, bottom, im);
         const std::ptrdiff_t d = mu < 0 ? static_cast<std::ptrdiff_t>(u) : m_mirror[u];
         if (d >= 0) sweep_down(static_cast<std::size_t>(d), k, top, im);
-    }
-}
-
-// Nakajima & Tanaka (1988, JQSRT 40, 51) TMS correction: the single-scattered beam
-// computed with the truncated delta-M phase function is replaced by the one with the
-// exact phase function, P(cos) omega / (1 - omega f) in the scaled medium (their eq. 13).
-// The correction is sum_l P_l(cos scattering angle) e_l(level, mu), with
-// e_l = sum_n d_nl T_n: d_nl the layer's moment difference, T_n the beam's path integral
-// through layer n seen from the output level.
-// d_nl of every layer: the beam's single-scattering source with the exact moments
-// less the one with the truncated (delta-M) moments, [layer * nmom + l].
-std::vector<double> Solver::moment_differences(std::size_t nmom) const {
-    std::vector<double> d(m_L * nmom, 0.0);
-    for (int n = 0; n < m_L; ++n) {
-        const Layer& layer = m_p.layers[n];
-        const LayerOptics& o = m_s.optics[n];
-        for (std::size_t l = 0; l < nmom; ++l) {
-            const double exact = l < layer.pmom.size() ? layer.pmom[l] : 0.0;
-            const double trunc = l < static_cast<std::size_t>(m_N) ? o.g[l] : 0.0;
-            d[n * nmom + l] = m_p.beam_flux / (4 * kPi) * (2.0 * l + 1) *
-                              (layer.ssa * exact / (1 - layer.ssa * m_s.f[n]) - o.ssa * trunc);
-        }
-    }
-    return d;
-}
-
-// T_n for user cosine u seen from output depth ps: the beam path integral of layer n,
-// attenuated to the output level (zero for layers on the far side).
-void Solver::beam_path_integrals(std::size_t u, const Position& ps, std::vector<double>& tn) const {
-    const std::size_t nu = m_p.umu.size();
-    const double mu = m_p.umu[u];
-    const int np = ps.layer;
-    double mu0 = m_beam_mu0[np];  // the beam's decay cosine in the layer at hand
-    std::fill(tn.begin(), tn.end(), 0.0);
-    double atten = 1;
-    const double dtp = m_s.optics[np].dtau;
-    const double e0 = std::exp(-m_slant_s[np]);
-    if (mu > 0) {
-        tn[np] = e0 * exp_integral(-ps.t / mu0, -(1 / mu0 + 1 / mu), dtp - ps.t) / mu;
-        atten = std::exp(-(dtp - ps.t) / mu);
-        for (int n = np + 1; n < m_L; ++n) {
-            const double dt = m_s.optics[n].dtau;
-            mu0 = m_beam_mu0[n];
-            tn[n] = atten * std::exp(-m_slant_s[n]) * exp_integral(0, -(1 / mu0 + 1 / mu), dt) / mu;
-            atten *= m_trans[n * nu + u];
-        }
-    } else {
-        tn[np] = e0 * exp_integral(ps.t / mu, -1 / mu - 1 / mu0, ps.t) / -mu;
-        atten = std::exp(ps.t / mu);
-        for (int n = np - 1; n >= 0; --n) {
-            const double dt = m_s.optics[n].dtau;
-            mu0 = m_beam_mu0[n];
-            tn[n] = atten * std::exp(-m_slant_s[n]) * exp_integral(dt / mu, -1 / mu - 1 / mu0, dt) /
-                    -mu;
-            atten *= m_trans[n * nu + u];
-        }
-    }
-}
-
-// Adds sum_l P_l(cos scattering angle) e_l to user cosine u's intensities at every
-// depth and azimuth. The Legendre recursion runs for all azimuths at once (the inner
-// loops run over azimuth and vectorise); the sums accumulate in the same order as a
-// per-azimuth loop would.
-void Solver::add_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
-                            CorrectionScratch& w) {
-    const std::size_t nphi = m_p.phi_deg.size(), npos = m_pos.size();
-    const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
-    for (std::size_t f = 0; f < nphi; ++f) {
-        const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
-        w.cs[f] = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
-        w.p0[f] = 1;
-        w.p1[f] = w.cs[f];
-    }
-    for (std::size_t i = 0; i < npos; ++i)
-        for (std::size_t f = 0; f < nphi; ++f)
-            w.corr[i * nphi + f] = e[i * nmom] + w.cs[f] * e[i * nmom + 1];
-    for (std::size_t l = 2; l < nmom; ++l) {
-        const double ra = w.rec_a[l], rb = w.rec_b[l];
-        for (std::size_t f = 0; f < nphi; ++f) {
-            const double p2 = ra * w.cs[f] * w.p1[f] - rb * w.p0[f];
-            w.p0[f] = w.p1[f];
-            w.p1[f] = p2;
-        }
-        for (std::size_t i = 0; i < npos; ++i) {
-            const double el = e[i * nmom + l];
-            double* ci = &w.corr[i * nphi];
-            for (std::size_t f = 0; f < nphi; ++f) ci[f] += w.p1[f] * el;
-        }
-    }
-    for (std::size_t i = 0; i < npos; ++i)
-        for (std::size_t f = 0; f < nphi; ++f)
-            m_result.levels[i].intensity[u * nphi + f] += w.corr[i * nphi + f];
-}
-
-void Solver::intensity_correction() {
-    const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size(), npos = m_pos.size();
-    std::size_t nmom = m_N;
-    for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
-    const std::vector<double> d = moment_differences(nmom);
-    std::vector<double> tn(m_L), e(npos * nmom);
-    CorrectionScratch w;
-    w.cs.resize(nphi), w.p0.resize(nphi), w.p1.resize(nphi), w.corr.resize(npos * nphi);
-    w.rec_a.resize(nmom), w.rec_b.resize(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
-    for (std::size_t l = 2; l < nmom; ++l)
-        w.rec_a[l] = (2.0 * l - 1) / l, w.rec_b[l] = (l - 1.0) / l;
-    for (std::size_t u = 0; u < nu; ++u) {
-        std::fill(e.begin(), e.end(), 0.0);
-        for (std::size_t i = 0; i < npos; ++i) {
-            beam_path_integrals(u, m_pos[i], tn);
-            for (int n = 0; n < m_L; ++n) {
-                if (tn[n] == 0) continue;
-                for (std::size_t l = 0; l < nmom; ++l) e[i * nmom + l] += d[n * nmom + l] * tn[n];
-            }
-        }
-        add_correction(u, e, nmom, w);
     }
 }
 

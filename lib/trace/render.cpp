@@ -198,12 +198,22 @@ struct SampleStats {
         }
         return worst;
     }
+    // max over bands of the standard error (infinite below 2 samples).
+    double absolute_error() const {
+        double worst = 0;
+        for (std::size_t b = 0; b < mean.size(); ++b) {
+            const double se = standard_error(b);
+            if (se < 0) return std::numeric_limits<double>::infinity();
+            worst = std::max(worst, se);
+        }
+        return worst;
+    }
 };
 
 // Primary samples of pixel (row, col): samples_per_pixel stratified over the pixel, or
 // with --convergence batches of MIN (each stratified on its own, its random numbers
-// those of the sample's index) until the relative standard error is under the
-// threshold or MAX samples are taken. Returns (samples, hits).
+// those of the sample's index) until the relative (or, --convergence-error absolute,
+// the absolute) standard error is under the threshold or MAX samples are taken. Returns (samples, hits).
 std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
                                    const std::vector<std::size_t>& centre, SampleStats& stats,
                                    long row, long col) {
@@ -225,7 +235,9 @@ std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const Sa
         const long batch = std::min(o.convergence_min, o.convergence_max - n);
         for (long j = 0; j < batch; ++j) take(n + j, j, batch);
         n += batch;
-        if (n >= o.convergence_max || stats.relative_error() < o.convergence_threshold) break;
+        const double error =
+            o.convergence_absolute ? stats.absolute_error() : stats.relative_error();
+        if (n >= o.convergence_max || error < o.convergence_threshold) break;
     }
     return {n, hits};
 }

@@ -56,6 +56,9 @@ struct RenderOptions {
     // convergence_max samples are taken; samples_per_pixel is then unused. 0: off.
     long convergence_min = 0, convergence_max = 0;
     double convergence_threshold = 0;
+    // --convergence-error absolute: the threshold bounds the largest band's standard
+    // error (W cm-2 sr-1 um-1) instead of standard error / |mean|.
+    bool convergence_absolute = false;
     BackgroundChoice background = BackgroundChoice::Mean;
     long background_material = 0;  // MATERIAL_ID, with BackgroundChoice::Material
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)

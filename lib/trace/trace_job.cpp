@@ -306,6 +306,7 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
         options.convergence_min = job.convergence->min;
         options.convergence_max = job.convergence->max;
         options.convergence_threshold = job.convergence->threshold;
+        options.convergence_absolute = job.convergence->absolute;
     }
     options.meters_per_unit = io::meters_per_unit(st.adv.units);
     options.adjacency = job.adjacency;

@@ -20,7 +20,8 @@ namespace sigchain::trace {
 // --convergence MIN,MAX,THRESHOLD (RenderOptions::convergence_*).
 struct Convergence {
     long min = 0, max = 0;
-    double threshold = 0;  // relative standard error, e.g. 0.01
+    double threshold = 0;  // relative standard error (0.01), or with absolute W cm-2 sr-1 um-1
+    bool absolute = false;  // --convergence-error absolute: threshold on the standard error itself
 };
 
 struct TraceJob {

@@ -135,14 +135,10 @@ line_of() { sed -n "${2}p" "$1"; }
     [ ! -e o-1.rad ]
 }
 
-@test "rain and a horizontal-path model are refused with the card named" {
-    sed '2s/^\(.\{20\}\)    0/\1    6/' "$DATA/rural23.cdk" > cloud.cdk
-    run -1 --separate-stderr build_radiance "${QUICK[@]}" cloud.cdk "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 6: rain is not modelled"* ]] ||
-        fail "stderr: $stderr"
-    sed '2s/^\(.\{60\}\)     0.000/\1     5.000/' "$DATA/rural23.cdk" > rain.cdk
-    run -1 --separate-stderr build_radiance "${QUICK[@]}" rain.cdk "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"CARD 2 RAINRT (columns 61-70) is 5 mm/h: rain is not modelled"* ]] ||
+@test "the NOAA cirrus and a horizontal-path model are refused with the card named" {
+    sed '2s/^\(.\{20\}\)    0/\1   20/' "$DATA/rural23.cdk" | sed '2a\     0.000     0.000     0.000         0' > noaa.cdk
+    run -1 --separate-stderr build_radiance "${QUICK[@]}" noaa.cdk "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 20: the NOAA cirrus"* ]] ||
         fail "stderr: $stderr"
     sed '1s/^    6/    0/' "$DATA/rural23.cdk" > model0.cdk
     run -1 --separate-stderr build_radiance "${QUICK[@]}" model0.cdk "$DATA/small.snd" -o 'o-%d.rad'

@@ -1,5 +1,5 @@
 #!/usr/bin/env bats
-# Tests: build_radiance (LOWTRAN 7 cloud models, CARD 2 ICLD)
+# Tests: build_radiance (LOWTRAN 7 cloud, rain and cirrus models, CARD 2 ICLD and RAINRT, CARD 2A)
 # Also requires: tests/data/build_radiance/{small.snd,rural23.cdk},
 # tests/data/control7/hawkeye.answers, tests/data/white1996/30Sep95800L.rsd,
 # data/atmosphere/lowtran7/cloud_*.txt (reference data)
@@ -50,18 +50,94 @@ with_icld() { sed "2s/^\(.\{20\}\)    0/\1$(printf '%5d' "$1")/" "$DATA/rural23.
     done
 }
 
-@test "rain (ICLD 6-10, RAINRT) and cirrus (ICLD 18) are refused with the card and columns" {
-    with_icld 7 > rain7.cdk
-    run -1 --separate-stderr build_radiance "${QUICK[@]}" rain7.cdk "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 7: rain is not modelled"* ]] || fail "stderr: $stderr"
-    sed '2s/^\(.\{60\}\)     0.000/\1     5.000/' "$DATA/rural23.cdk" > rain.cdk
-    run -1 --separate-stderr build_radiance "${QUICK[@]}" rain.cdk "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"CARD 2 RAINRT (columns 61-70) is 5 mm/h: rain is not modelled"* ]] ||
-        fail "stderr: $stderr"
-    # ICLD 18 needs CARD 2A (cirrus) after CARD 2.
-    with_icld 18 | sed '2a\     0.000     0.000     0.000         0' > cirrus.cdk
-    run -1 --separate-stderr build_radiance "${QUICK[@]}" cirrus.cdk "$DATA/small.snd" -o 'o-%d.rad'
-    [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 18: cirrus is not modelled"* ]] || fail "stderr: $stderr"
+# rural23.cdk with CARD 2 RAINRT (columns 61-70) set to $1 (F10.3).
+with_rainrt() { sed "2s/^\(.\{60\}\)     0.000/\1$(printf '%10.3f' "$1")/" "$DATA/rural23.cdk"; }
+# rural23.cdk with ICLD $1 and CARD 2A "CTHIK CALT CEXT ISEED" = $2 $3 $4 0 after CARD 2.
+with_cirrus() {
+    with_icld "$1" | sed "2a\\$(printf '%10.3f%10.3f%10.3f%10d' "$2" "$3" "$4" 0)"
+}
+
+@test "RAINRT 5 mm/h lowers tau1 and tau2 by the Marshall-Palmer extinction times the path" {
+    with_rainrt 5 > rain.cdk
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" "$DATA/rural23.cdk" "$DATA/small.snd" -o 'clear-%d.rad'
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" rain.cdk "$DATA/small.snd" -o 'rain-%d.rad'
+    run -0 sigchain-check rain-1.rad rain-2.rad
+    # beta = pi N0 / Lambda^3 = 0.3647 R^0.63 km-1 (Marshall & Palmer 1948, Q_ext = 2), any
+    # wavelength. tau1: the rain (0-6 km, tapering to 0 at 7 km: a column of 6.5 km) along
+    # the sun's air mass m at the rain's centre of extinction (3.256 km), m as in the
+    # stratus test above with the refraction left above that height (Saemundsson's at the
+    # ground times the air density there over the ground's, 0.724 in the US standard
+    # atmosphere). tau2: the sensor (1 km) looks down through constant rain, so its ratio
+    # is exp(-beta x range), the range printed in each view-angle line. Tolerances: tau1
+    # 1e-4 relative of beta H m (the deck's refraction and density against the standard
+    # ones, a few % of 0.4 arcmin: 1e-5 of m; the air mass's spread over the 7 km of rain
+    # about its centre, second order: 1e-5); tau2 1e-5 relative (the Earth's curvature
+    # along the slanted kilometre, tan^2(10 deg) h / 2R = 2.4e-6; the gas path's
+    # re-layering, 1e-8).
+    for b in 1 2; do
+        paste -d ' ' <(sed -n '13,14p' clear-$b.rad) <(sed -n '13,14p' rain-$b.rad) |
+            awk -v sun="$(awk '/^SUN / { print $2 }' rain-$b.rad)" '{
+                deg = atan2(0, -1) / 180
+                beta = atan2(0, -1) * 8000 / (4.1 * 5 ^ -0.21) ^ 3 * 1e-3
+                alt = 90 - sun; x = (alt + 10.3 / (alt + 5.11)) * deg
+                z = (sun - 0.724 * 1.02 / (sin(x) / cos(x)) / 60) * deg
+                earth = 6371.23; s = earth * sin(z) / (earth + 3.256); m = 1 / sqrt(1 - s * s)
+                got = log($8 / $4); want = -beta * 6.5 * m
+                printf "%s um: ln tau1 ratio %.9g predicted %.9g\n", $1, got, want
+                if (!(got < 0 && got - want < 1e-4 * -want && want - got < 1e-4 * -want)) bad = 1
+            } END { exit bad }'
+    done
+    # Band 2's view-angle blocks (lines 15-23: "angle range", then two "tau2 L_ue L_us").
+    paste -d ' ' <(sed -n '15,23p' clear-2.rad) <(sed -n '15,23p' rain-2.rad) |
+        awk 'NF == 4 { range = $2; next } {
+                 beta = atan2(0, -1) * 8000 / (4.1 * 5 ^ -0.21) ^ 3 * 1e-3
+                 got = log($4 / $1); want = -beta * range; n++
+                 printf "range %s km: ln tau2 ratio %.9g predicted %.9g\n", range, got, want
+                 if (!(got - want < 1e-5 * -want && want - got < 1e-5 * -want)) bad = 1
+             } END { exit bad || n != 6 }'
+}
+
+@test "every rain model (ICLD 6-10) gives valid tables, ICLD 9 darker than its cumulus alone" {
+    for m in 6 7 8 9 10; do
+        with_icld "$m" > r$m.cdk
+        run -0 --separate-stderr build_radiance "${QUICK[@]}" r$m.cdk "$DATA/small.snd" -o "r$m-%d.rad"
+        run -0 sigchain-check "r$m-1.rad" "r$m-2.rad"
+    done
+    with_icld 1 > c1.cdk
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" c1.cdk "$DATA/small.snd" -o 'c1-%d.rad'
+    # tau1 (4th field) of band 2's samples: the 25 mm/h rain under the cumulus darkens.
+    paste -d ' ' <(sed -n '13,14p' c1-2.rad) <(sed -n '13,14p' r9-2.rad) |
+        awk '{ printf "%s um: cumulus %s, with rain %s\n", $1, $4, $8; if (!($8 < $4)) bad = 1 }
+             END { exit bad }'
+}
+
+@test "cirrus (ICLD 18, 19) is accepted and CARD 2A's CTHIK, CALT and CEXT are honoured" {
+    with_cirrus 18 0 0 0 > defaults.cdk
+    with_cirrus 18 1 10 0.14 > explicit.cdk  # CIRR18's defaults, MODEL 6: 1 km, 10 km, 0.14
+    with_cirrus 18 1 10 0.42 > thick.cdk
+    with_cirrus 19 0 0 0 > subvisual.cdk
+    for d in defaults explicit thick subvisual; do
+        run -0 --separate-stderr build_radiance "${QUICK[@]}" $d.cdk "$DATA/small.snd" -o "$d-%d.rad"
+        run -0 sigchain-check "$d-1.rad" "$d-2.rad"
+    done
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" "$DATA/rural23.cdk" "$DATA/small.snd" -o 'clear-%d.rad'
+    # The defaults spelled out give the same tables, byte for byte.
+    cmp defaults-1.rad explicit-1.rad
+    cmp defaults-2.rad explicit-2.rad
+    # Three times CEXT (same levels): three times ln(tau1 / clear tau1), to 1e-6 relative
+    # (rounding of the printed transmissions, 9 digits).
+    paste -d ' ' <(sed -n '13,14p' clear-2.rad) <(sed -n '13,14p' explicit-2.rad) <(sed -n '13,14p' thick-2.rad) |
+        awk '{ one = log($8 / $4); three = log($12 / $4)
+               printf "%s um: %.9g x 3 = %.9g\n", $1, one, three
+               if (!(one < 0 && (three - 3 * one) ^ 2 < (1e-6 * three) ^ 2)) bad = 1 }
+             END { exit bad }'
+    # Thinner sub-visual cirrus (0.2 km x 0.028 km-1) dims less than the standard one.
+    paste -d ' ' <(sed -n '13,14p' defaults-2.rad) <(sed -n '13,14p' subvisual-2.rad) |
+        awk '{ if (!($8 > $4)) bad = 1 } END { exit bad }'
+    # CTHIK, CALT, CEXT 0 mean the defaults; the NOAA cirrus (20) stays refused.
+    with_cirrus 20 0 0 0 > noaa.cdk
+    run -1 --separate-stderr build_radiance "${QUICK[@]}" noaa.cdk "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"CARD 2 ICLD (columns 21-25) is 20"* ]] || fail "stderr: $stderr"
     [ ! -e o-1.rad ]
     assert_no_temp_files .
 }

@@ -45,6 +45,38 @@ sky_block() { sed -n '/SIGCHAIN_RAD/,/UPWELLED/p' "$1"; }
     run ! cmp -s mie-1.rad hg-1.rad
 }
 
+# The sky cell nearest the sun: its distance (deg) and its first sample's radiance.
+near_sun_cell() {
+    awk 'function sep(z1, a1, z2, a2,   c) {
+             c = cos(z1 * d) * cos(z2 * d) + sin(z1 * d) * sin(z2 * d) * cos((a1 - a2) * d)
+             return atan2(sqrt(1 - c * c), c) / d }
+         BEGIN { d = atan2(0, -1) / 180; best = 1e9 }
+         $1 == "SUN" { sz = $2; sa = $3 }
+         $1 == "HEMISPHERE" { sky = 1; next }
+         $1 == "UPWELLED" { sky = 0 }
+         sky && k == 1 { if (s < best) { best = s; l = $1 } k = 2; next }
+         sky && k == 2 { k = 0; next }
+         sky && NF == 3 { s = sep($1, $2, sz, sa); k = 1 }
+         END { print best, l }' "$1"
+}
+
+@test "IPH 2 (Mie) brightens the sky next to the sun against IPH 0 (Henyey-Greenstein)" {
+    # The default sky grid (5 x 10 deg cells): its cell nearest the sun is within the
+    # Mie functions' forward peak (a few degrees wide); QUICK's 15 x 30 deg cells are not.
+    run -0 --separate-stderr build_radiance -v --streams 8 "$DATA/rural23.cdk" "$DATA/small.snd" -o 'mie-%d.rad'
+    [[ "$stderr" == *"IPH 2: aerosol scattering by LOWTRAN 7's Mie phase functions"* ]] ||
+        fail "stderr: $stderr"
+    # G 0.70: about the rural model's tabulated asymmetry in the visible.
+    sed -e '4s/^    1    2/    1    0/' -e '5s/     0.000$/     0.700/' "$DATA/rural23.cdk" > hg.cdk
+    build_radiance --streams 8 hg.cdk "$DATA/small.snd" -o 'hg-%d.rad'
+    read -r dist mie < <(near_sun_cell mie-1.rad)
+    read -r _ hg < <(near_sun_cell hg-1.rad)
+    # The forward peak: 1.8 times Henyey-Greenstein's radiance 2.8 deg from the sun.
+    awk -v d="$dist" -v m="$mie" -v h="$hg" 'BEGIN { exit !(d < 5 && m > 1.3 * h) }' ||
+        fail "cell $dist deg from the sun: Mie $mie, Henyey-Greenstein $hg"
+    sigchain-check mie-1.rad mie-2.rad
+}
+
 @test "TBOUND, IEMSCT, ISOURC and a second atmosphere are refused with card and columns" {
     sed '1s/^\(.\{65\}\)   0.000/\1 290.000/' "$DATA/rural23.cdk" > tbound.cdk
     run -1 --separate-stderr build_radiance "${QUICK[@]}" tbound.cdk "$DATA/small.snd" -o 'o-%d.rad'

@@ -78,3 +78,16 @@ trace_bad() {
     [[ "$stderr" =~ trace:\ [0-9.]+\ primary\ sample\(s\)\ per\ pixel\ on\ average,\ at\ most\ (4|8|12|16|20|24|28|32)$'\n' ]] ||
         fail "stderr: $stderr"
 }
+
+@test "trace --convergence-error absolute: a threshold every pixel meets stops at MIN, and needs --convergence" {
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 8 --convergence 4,32,1 \
+        --convergence-error absolute -o abs.img --truth abs_truth.img
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 8 --samples-per-pixel 4 \
+        -o four.img --truth four_truth.img --standard-error
+    # Every pixel took MIN = 4 samples: the same cube as 4 samples per pixel.
+    run -0 cmp abs.img four.img
+    trace_bad "--convergence-error: expected relative or absolute, not 'both'" $(inputs) -o out.img \
+        --convergence 4,32,0.1 --convergence-error both
+    trace_bad "--convergence-error: only with --convergence" $(inputs) -o out.img \
+        --convergence-error absolute
+}

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
                        "discrete ordinates of the solver (even, 4-64), or auto: per band\n"
                        "                    the fewest that agree with twice as many", "16");
     tool.add_number("stream-tolerance", "REL", cli::reals(0, 1, true),
-                    "--streams auto: relative agreement asked (> 0 and <= 1)", "0.005");
+                    "--streams auto: relative error allowed (> 0 and <= 1)", "0.01");
     tool.add_number("sky-zenith-step", "DEG", cli::reals(0, 90, true),
                     "downwelled hemisphere: ring width (divides 90)", "5");
     tool.add_number("sky-azimuth-step", "DEG", cli::reals(0, 360, true),

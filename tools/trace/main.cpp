@@ -17,8 +17,8 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs", "standard-error", "convergence", "igm",
-                          "glt"})
+                          "adjacency-radius", "co", "crs", "standard-error", "convergence", "convergence-error",
+                          "igm", "glt"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -93,6 +93,13 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
         job.convergence = trace::Convergence{static_cast<long>(v[0]), static_cast<long>(v[1]),
                                              static_cast<double>(v[2])};
     }
+    if (vm.count("convergence-error")) {
+        const std::string e = vm["convergence-error"].as<std::string>();
+        if (e != "relative" && e != "absolute")
+            throw sigchain::UsageError("--convergence-error: expected relative or absolute, not '" + e + "'");
+        if (!job.convergence) throw sigchain::UsageError("--convergence-error: only with --convergence");
+        job.convergence->absolute = e == "absolute";
+    }
     if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();
     if (vm.count("glt")) job.glt_path = vm["glt"].as<std::string>();
     return job;
@@ -150,7 +157,10 @@ int main(int argc, char** argv) {
         "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
         "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),
         "primary samples in batches of MIN until the relative standard error\n"
-        "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)");
+        "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)")(
+        "convergence-error", cli::po::value<std::string>()->value_name("relative|absolute"),
+        "--convergence's T bounds standard error / |mean| (relative, the default)\n"
+        "                    or the standard error in W cm-2 sr-1 um-1 (absolute)");
     tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
     tool.add_number("hemisphere-samples", "N", cli::integers(1, 1000000),

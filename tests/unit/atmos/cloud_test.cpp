@@ -121,15 +121,27 @@ TEST(AtmosCloud, ColumnIsTheExactIntegralOfTheLevels) {
     EXPECT_NEAR(split, tau, kArith * tau);
 }
 
-TEST(AtmosCloud, RainAndCirrusAreNotModelled) {
-    for (int icld : {6, 10, 11, 18, 20}) {
+// The rain models 6-10 carry LOWTRAN 7's clouds 3, 5, 5, 1, 1 (their rain is
+// rain_test.cpp's); cirrus 18-19 has no water cloud; 11 and 20 are not modelled.
+TEST(AtmosCloud, RainModelsCarryTheirCloudAndCirrusNone) {
+    const int pair[5] = {3, 5, 5, 1, 1};
+    for (int icld = 6; icld <= 10; ++icld) {
+        EXPECT_TRUE(CloudModel::modelled(icld));
+        const CloudModel r = cloud(icld), c = cloud(pair[icld - 6]);
+        for (double z : {0.2, 0.5, 0.8, 1.7, 2.5})
+            EXPECT_EQ(r.extinction_km1(z, 1.06), c.extinction_km1(z, 1.06)) << icld << " " << z;
+    }
+    for (int icld : {11, 20}) {
         io::CdkCard2 c;
         c.icld = icld;
         EXPECT_THROW(CloudModel::from_deck(c, 0, kData), DataError) << icld;
         EXPECT_FALSE(CloudModel::modelled(icld));
     }
-    io::CdkCard2 clear;
-    EXPECT_FALSE(CloudModel::from_deck(clear, 0, kData).has_value());
+    for (int icld : {0, 18, 19}) {
+        io::CdkCard2 c;
+        c.icld = icld;
+        EXPECT_FALSE(CloudModel::from_deck(c, 0, kData).has_value()) << icld;
+    }
 }
 
 TEST(AtmosCloud, CombineWeightsSsaByExtinctionAndGByScattering) {

@@ -187,6 +187,17 @@ TEST(DeckRefusals, NameCardFieldAndColumns) {
     d = rural23();
     d.runs[0].card2.ihaze = 3;  // Navy maritime: modelled
     EXPECT_TRUE(deck_refusals(d).empty());
+    // Rain (ICLD 6-10, RAINRT) and cirrus (18, 19 with CARD 2A) are modelled; the NOAA
+    // cirrus (20) is refused.
+    for (int icld : {6, 10, 18, 19}) {
+        d = rural23();
+        d.runs[0].card2.icld = icld;
+        d.runs[0].card2.rain_rate_mm_h = 5;
+        if (icld >= 18) d.runs[0].cirrus = io::CdkCirrus{};
+        EXPECT_TRUE(deck_refusals(d).empty()) << icld;
+    }
+    d.runs[0].card2.icld = 20;
+    EXPECT_TRUE(any_contains(deck_refusals(d), "CARD 2 ICLD (columns 21-25) is 20: the NOAA"));
     // A second run with another atmosphere; one that repeats only CARD 4 is accepted.
     d = rural23();
     d.runs[0].irpt = 1;

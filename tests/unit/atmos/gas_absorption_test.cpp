@@ -647,8 +647,9 @@ TEST(GasAbsorptionTerms, OneTermIsTheEquivalentDepth) {
 }
 
 // Every gas together in the US standard atmosphere, every 100 cm-1 from 500 to 20000
-// cm-1: only the strongest gas is fitted, the others keep their equivalent depths, so
-// where bands overlap there is no tol bound; on every path from the ground or the top
+// cm-1: only the strongest gas is fitted (with a second where it overlaps strongly:
+// gas_overlap_test.cpp), the others keep their equivalent depths, so where more bands
+// overlap there is no tol bound; on every path from the ground or the top
 // to a level at 1 to 20 vertical amounts the terms' error is compared with that of one
 // equivalent depth per layer. Printed: the largest of each and the share of paths
 // where the terms do better; the terms must do better on most paths and in the worst

@@ -42,5 +42,37 @@ TEST(AtmosSingleScatter, PseudoSphericalBeamAgreesWithTheSolver) {
     }
 }
 
+// IMULT 0 with exact phase functions (IPH 2's, rt::ExactPhase) against the same
+// mixtures as Legendre series long enough to be exact: Henyey-Greenstein g 0.8 (400
+// moments, g^400 = 1e-39) and isotropic, in different proportions in two layers. The
+// intensities differ only by the series' truncation and rounding: 1e-9 relative.
+TEST(AtmosSingleScatter, ExactPhaseFunctionsAgreeWithTheirSeries) {
+    const double g = 0.8;
+    rt::Problem series;
+    series.beam_flux = 1;
+    series.beam_mu0 = 0.6;
+    for (double w : {0.7, 0.3}) {
+        rt::Layer l{0.4, 0.9, {}};
+        for (int k = 0; k < 400; ++k) l.pmom.push_back(w * std::pow(g, k) + (k == 0 ? 1 - w : 0.0));
+        series.layers.push_back(l);
+    }
+    series.utau = {0.0, 0.3, 0.8};
+    series.umu = {-0.9, -0.6, -0.2, 0.3, 0.8};
+    series.phi_deg = {0, 5, 90, 180};
+    rt::Problem exact = series;
+    exact.exact_phase.components = 2;
+    exact.exact_phase.weights = {0.7, 0.3, 0.3, 0.7};
+    exact.exact_phase.evaluate = [g](double x, double* out) {
+        out[0] = (1 - g * g) / std::pow(1 + g * g - 2 * g * x, 1.5);
+        out[1] = 1;
+    };
+    const rt::Result a = single_scattering(series), b = single_scattering(exact);
+    for (std::size_t i = 0; i < a.levels.size(); ++i)
+        for (std::size_t j = 0; j < a.levels[i].intensity.size(); ++j)
+            EXPECT_NEAR(b.levels[i].intensity[j], a.levels[i].intensity[j],
+                        1e-9 * std::abs(a.levels[i].intensity[j]) + 1e-15)
+                << i << " " << j;
+}
+
 }  // namespace
 }  // namespace sigchain::atmos

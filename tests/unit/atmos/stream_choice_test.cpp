@@ -102,11 +102,13 @@ TEST(StreamChoice, TableDifferenceIsRelativeWithATableFloor) {
     EXPECT_EQ(table_difference(b, b), 0.0);
 }
 
-// The training deck (White (1996)'s Hawkeye deck, urban aerosol, VIS 23 km) over the
-// small scene node: auto's tables lie within the tolerance of the 32-stream solution
-// in every entry the .rad holds.
+// The training deck (White (1996)'s Hawkeye deck, urban aerosol, VIS 23 km, LOWTRAN 7's
+// Mie phase functions) over the small scene node: auto's tables lie within the
+// default tolerance (1 %) of the 32-stream solution in every entry the .rad holds.
+// (At 0.5 % the sky near the sun asks more than 32 streams: 32 against 64 differ by
+// 0.49 %, an estimated 0.97 %.)
 TEST(StreamChoice, AutoIsWithinTheToleranceOf32StreamsOnTheTrainingDeck) {
-    const double tolerance = 0.005;
+    const double tolerance = 0.01;
     const AutoAgainst32 r = auto_against_32(hawkeye_deck(), small_snd(), tolerance);
     ASSERT_EQ(r.report.band_streams.size(), 2u);
     for (const auto& c : r.report.band_streams) {
@@ -118,11 +120,10 @@ TEST(StreamChoice, AutoIsWithinTheToleranceOf32StreamsOnTheTrainingDeck) {
 }
 
 // A hazy deck (the same, VIS 2 km), one line of sight and one sky cell: within the
-// tolerance of 32 streams. (More aerosol does not ask for more streams here: with
-// delta-M and the single-scattering correction the peaked aerosol phase function
-// costs few streams, and the hazy probes settle at 6 to 8, as the training deck's.)
+// tolerance of 32 streams. (More aerosol does not ask for more streams here: the
+// hazy probes settle at 12, as the training deck's.)
 TEST(StreamChoice, AHazyDeckIsWithinTheToleranceOf32Streams) {
-    const double tolerance = 0.005;
+    const double tolerance = 0.01;
     io::Cdk hazy = hawkeye_deck();
     hazy.runs.front().card2.visibility_km = 2;
     const AutoAgainst32 r = auto_against_32(hazy, nadir(small_snd()), tolerance, one_cell);

@@ -173,6 +173,71 @@ TEST(Solver, BeamAtAnEigenvalueResonance) {
     }
 }
 
+// The TMS correction with an exact phase function (ExactPhase) against the same
+// correction from a Legendre series long enough to be exact: Henyey-Greenstein g = 0.8
+// as the function itself and as 400 moments (g^400 = 1e-39). Two layers, the exact
+// function a mixture of Henyey-Greenstein and isotropic in different proportions.
+// The two differ only by the series' truncation and rounding: 1e-9 relative.
+TEST(Solver, ExactPhaseCorrectionMatchesLongSeries) {
+    const double g = 0.8;
+    Problem series;
+    series.streams = 8;
+    series.beam_flux = 1;
+    series.beam_mu0 = 0.6;
+    const std::vector<double> hg = henyey_greenstein(g, 400);
+    std::vector<double> iso(400, 0.0);
+    iso[0] = 1;
+    const double w0 = 0.7, w1 = 0.3;  // Henyey-Greenstein's share in each layer
+    for (double w : {w0, w1}) {
+        Layer l{0.4, 0.95, {}};
+        for (std::size_t k = 0; k < hg.size(); ++k) l.pmom.push_back(w * hg[k] + (1 - w) * iso[k]);
+        series.layers.push_back(l);
+    }
+    series.utau = {0.0, 0.3, 0.8};
+    series.umu = {-0.9, -0.6, -0.2, 0.3, 0.8};
+    series.phi_deg = {0, 20, 90, 180};
+    Problem exact = series;
+    exact.exact_phase.components = 2;
+    exact.exact_phase.weights = {w0, 1 - w0, w1, 1 - w1};
+    exact.exact_phase.evaluate = [g](double x, double* out) {
+        out[0] = (1 - g * g) / std::pow(1 + g * g - 2 * g * x, 1.5);
+        out[1] = 1;
+    };
+    for (Layer& l : exact.layers) l.pmom.resize(9);  // delta-M needs moments 0 .. streams
+    const Result a = solve(series), b = solve(exact);
+    for (std::size_t i = 0; i < a.levels.size(); ++i)
+        for (std::size_t j = 0; j < a.levels[i].intensity.size(); ++j)
+            EXPECT_NEAR(b.levels[i].intensity[j], a.levels[i].intensity[j],
+                        1e-9 * std::abs(a.levels[i].intensity[j]) + 1e-14)
+                << i << " " << j;
+}
+
+// The IMS correction lowers the intensities near the beam direction only (downward,
+// within 10 deg of its zenith angle) and leaves every other value as it was.
+TEST(Solver, SecondaryCorrectionOnlyInTheAureole) {
+    Problem p;
+    p.streams = 8;
+    p.beam_flux = 1;
+    p.beam_mu0 = 0.5;
+    p.layers = {{2.0, 0.99, henyey_greenstein(0.9, 200)}};
+    p.utau = {0.0, 1.0, 2.0};
+    p.umu = {-0.5, -0.3, 0.5};  // -0.5: the beam's zenith angle; -0.3: 13 deg away
+    p.phi_deg = {0, 90};
+    const Result off = solve(p);
+    p.secondary_correction = true;
+    const Result on = solve(p);
+    for (std::size_t i = 0; i < on.levels.size(); ++i)
+        for (std::size_t u = 0; u < 3; ++u)
+            for (std::size_t f = 0; f < 2; ++f) {
+                const double a = off.levels[i].intensity[u * 2 + f];
+                const double b = on.levels[i].intensity[u * 2 + f];
+                if (u == 0 && i > 0)
+                    EXPECT_LT(b, a) << i << " " << f;
+                else
+                    EXPECT_EQ(b, a) << i << " " << u << " " << f;
+            }
+}
+
 TEST(Solver, RejectsInvalidInput) {
     Problem p = beam_problem(0.5, 0.5, 1, 8);
     p.streams = 7;
@@ -188,6 +253,10 @@ TEST(Solver, RejectsInvalidInput) {
     EXPECT_THROW(solve(p), Error);
     p = beam_problem(0.5, 0.5, 1, 8);
     p.umu = {0.0};
+    EXPECT_THROW(solve(p), Error);
+    p = beam_problem(0.5, 0.5, 1, 8);
+    p.exact_phase.components = 1;  // weights missing
+    p.exact_phase.evaluate = [](double, double* out) { out[0] = 1; };
     EXPECT_THROW(solve(p), Error);
     p.layers.clear();
     EXPECT_THROW(solve(p), Error);

@@ -150,6 +150,39 @@ TEST(SamplingError, ConvergenceStopsEarlyOnThePlateAndRunsToMaxOnTheEdge) {
     EXPECT_GT(e.truth.at(se, 0, 0), 0.01 * e.radiance.at(0, 0, 0));
 }
 
+TEST(SamplingError, AbsoluteConvergenceBoundsTheStandardErrorItself) {
+    // --convergence-error absolute: the threshold bounds the largest band's standard
+    // error (the cube's unit), not standard error / |mean|. On the edge pixel of the
+    // test above, where the relative 1 % runs to MAX, a threshold 4 times the standard
+    // error reached at MAX stops earlier (at 8 samples the error is about sqrt(8) = 2.8
+    // times that at 64), and the pixel's standard-error layer is under it.
+    const Fixture f;
+    RenderOptions o;
+    o.sampling = Sampling::MonteCarlo;
+    o.hemisphere_samples = 16;
+    o.convergence_min = 8;
+    o.convergence_max = 64;
+    o.convergence_threshold = 0.01;
+    o.threads = 1;
+    Ortho edge(1, 1, 2, 1.0, 0.0, {0, 0, -1});
+    const RenderResult rel = render_with(f, edge, o);
+    const int samples = layer(rel, "samples");
+    ASSERT_EQ(rel.truth.at(samples, 0, 0), 64);
+    const float se64 = rel.truth.at(layer(rel, "standard_error_u"), 0, 0);
+    ASSERT_GT(se64, 0);
+    o.convergence_absolute = true;
+    o.convergence_threshold = 4.0 * se64;
+    const RenderResult a = render_with(f, edge, o);
+    EXPECT_LT(a.truth.at(samples, 0, 0), 64);
+    EXPECT_LT(a.truth.at(layer(a, "standard_error_u"), 0, 0), o.convergence_threshold);
+    // The two ends: a threshold no error reaches runs to MAX, one every error meets
+    // stops at MIN.
+    o.convergence_threshold = 1e-12;
+    EXPECT_EQ(render_with(f, edge, o).truth.at(samples, 0, 0), 64);
+    o.convergence_threshold = 1.0;
+    EXPECT_EQ(render_with(f, edge, o).truth.at(samples, 0, 0), 8);
+}
+
 TEST(SamplingError, SameImageAndLayersForAnyThreadCount) {
     const Fixture f;
     Ortho cam(12, 12, 0.75, -4.5, 4.5, {0, 0, -1});
