@@ -5,6 +5,8 @@
 // 0.55 and 0.65 um for the same deck, with the coupling terms (S, t_d_down, t_d_up at
 // nadir). Target: under 2 s on one core; the coupling terms', the Mie phase functions'
 // (IPH 2 against IPH 0) and the gas exponential sums' shares printed beside.
+// One line of sight (nadir, one sky cell) at 16 streams and with --streams auto, side
+// by side, against LOWTRAN 7's 25 ms.
 #include <algorithm>
 #include <chrono>
 #include <ctime>
@@ -172,6 +174,50 @@ int main() {
             std::printf("  %d x %d: %.4f %%  %.5f %%  %+.5f %%  %.3f s\n", n, n, 100 * rel.back(),
                         100 * rel[rel.size() / 2], 100 * (e / e_ref - 1), t);
         }
+    }
+
+    // One line of sight: the Hawkeye bands (123 samples), nadir only, one sky cell and one
+    // upwelled node, on one thread; 16 streams against --streams auto, side by side, and
+    // both against LOWTRAN 7's time for one line of sight.
+    {
+        // LOWTRAN 7, one run of the same deck (301 wavenumbers, multiple scattering):
+        // 25 ms, measured side by side on the same deck, one LOWTRAN 7 run.
+        constexpr double kLowtran7_s = 0.025;
+        sigchain::io::Snd one = snd;
+        one.view_min_deg = one.view_max_deg = 0;
+        one.view_increment_deg = 1;
+        auto timed = [&](int streams, atmos::RadianceReport* rep) {
+            atmos::RadianceOptions o;
+            o.data_dir = kSource + "/data";
+            o.threads = 1;
+            o.streams = streams;
+            o.sky_zenith_step_deg = 90;
+            o.sky_azimuth_step_deg = 360;
+            o.sky_subsamples = 1;
+            o.upwelled_azimuth_step_deg = 360;
+            double best = 1e300;
+            for (int r = 0; r < 3; ++r) {
+                const auto start = std::chrono::steady_clock::now();
+                (void)atmos::build_radiance(deck, one, o, rep);
+                best = std::min(best, std::chrono::duration<double>(
+                                          std::chrono::steady_clock::now() - start)
+                                          .count());
+            }
+            return best;
+        };
+        atmos::RadianceReport rep16, rep_auto;
+        const double t16 = timed(16, &rep16);
+        const double t_auto = timed(atmos::kAutoStreams, &rep_auto);
+        std::printf("one line of sight (nadir, 1 sky cell, %ld samples, 1 thread, best of 3): "
+                    "16 streams %.3f s, auto %.3f s (x%.2f); against LOWTRAN 7's %.0f ms: "
+                    "x%.1f and x%.1f\n",
+                    samples, t16, t_auto, t16 / t_auto, 1e3 * kLowtran7_s, t16 / kLowtran7_s,
+                    t_auto / kLowtran7_s);
+        std::printf("  auto's streams per band:");
+        for (const auto& c : rep_auto.band_streams)
+            std::printf(" %d (estimated error %.2f %%)", c.streams, 100 * c.estimated_error);
+        std::printf("; column solves: %ld at 16 streams, %ld with auto (probes excluded)\n",
+                    rep16.gas_term_solves, rep_auto.gas_term_solves);
     }
 
     // The three wavelengths of README.md's Hawkeye table, one sample each, nadir only.

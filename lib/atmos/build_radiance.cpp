@@ -15,6 +15,7 @@
 #include "atmos/radiance_directions.hpp"
 #include "atmos/radiance_sample.hpp"
 #include "atmos/solar_spectrum.hpp"
+#include "atmos/stream_choice.hpp"
 #include "core/error.hpp"
 #include "core/farm.hpp"
 #include "core/parallel.hpp"
@@ -26,13 +27,6 @@ namespace sigchain::atmos {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
-
-// Aerosol phase moments beyond the streams, for the Nakajima-Tanaka single-scattering
-// correction of the solver: g^k of Henyey-Greenstein falls below 1e-5 by k = 32 for
-// g <= 0.7 (LOWTRAN's aerosols), so 32 moments represent the phase function. With IPH 2
-// the TMS correction uses the Mie functions themselves (mie_layers.hpp); the moments
-// serve delta-M (moment `streams`) and the IMS correction's forward peak.
-constexpr int kPhaseMoments = 32;
 
 // The options the samples are solved with: the COUPLING terms (rad(5)) describe the
 // atmosphere over a black ground, for trace to add the scene's own ground to the sky;
@@ -208,14 +202,18 @@ void unpack(const FarmBytes& bytes, SampleResult* r, long count) {
 // Every sample is independent: solved on worker threads, each writing its own slot;
 // under mpirun parts of the samples go to the ranks (core/farm.hpp), gathered on rank 0.
 // Returns false on an MPI worker, which has no results.
-bool solve_samples(const SampleSetup& setup, const std::vector<double>& nus,
-                   const Reporter& reporter, std::vector<SampleResult>& results) {
+// Sample i is solved with setups[setup_of[i]] (its band's streams).
+bool solve_samples(const std::vector<SampleSetup>& setups, const std::vector<std::size_t>& setup_of,
+                   const std::vector<double>& nus, const Reporter& reporter,
+                   std::vector<SampleResult>& results) {
     results.assign(nus.size(), {});
     const ProgressScope bar(reporter, "spectral samples");
     const auto solve = [&](long begin, long end, SampleResult* out,
                            const std::function<void(long, long)>& progress) {
-        parallel_for(end - begin, {setup.options.threads, progress}, [&](long i, unsigned) {
-            out[i] = solve_sample(setup, nus[static_cast<std::size_t>(begin + i)]);
+        const unsigned threads = setups.front().options.threads;
+        parallel_for(end - begin, {threads, progress}, [&](long i, unsigned) {
+            const auto k = static_cast<std::size_t>(begin + i);
+            out[i] = solve_sample(setups[setup_of[k]], nus[k]);
         });
     };
     const long n = static_cast<long>(nus.size());
@@ -290,6 +288,24 @@ void append_sample(io::Rad& rad, io::RadSky& sky, const SampleResult& r) {
         coupling.diffuse_up[v].push_back(r.diffuse_up[v]);
 }
 
+// The streams of every band: the options' own, or with --streams auto each band's
+// choice (stream_choice.hpp); `options` receives each band's solver options.
+std::vector<StreamChoice> band_streams(const SampleSetup& setup, const io::Snd& snd,
+                                       std::vector<RadianceOptions>& options) {
+    std::vector<StreamChoice> choices;
+    for (const io::SndBand& band : snd.bands) {
+        StreamChoice c;
+        c.streams = setup.options.streams;
+        if (c.streams == kAutoStreams)
+            c = choose_streams(setup, probe_wavenumbers(setup.column, band),
+                               setup.options.stream_tolerance);
+        options.push_back(setup.options);
+        options.back().streams = c.streams;
+        choices.push_back(std::move(c));
+    }
+    return choices;
+}
+
 }  // namespace
 
 // The .snd's view angles, none within 0.5 deg of the horizon.
@@ -357,8 +373,11 @@ std::string band_output_path(const std::string& pattern, int band, int band_coun
 }
 
 void check_radiance_options(const RadianceOptions& o) {
-    if (o.streams < 4 || o.streams % 2 != 0 || o.streams > 64)
+    if (o.streams != kAutoStreams && (o.streams < 4 || o.streams % 2 != 0 || o.streams > 64))
         throw UsageError("streams must be even, 4 to 64; found " + format_number(o.streams));
+    if (!(o.stream_tolerance > 0 && o.stream_tolerance <= 1))
+        throw UsageError("the stream tolerance must be > 0 and <= 1; found " +
+                         format_number(o.stream_tolerance));
     auto divides = [](double whole, double step) {
         const double n = whole / step;
         return step > 0 && n >= 1 && std::abs(n - std::round(n)) < 1e-9;
@@ -405,7 +424,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             std::cos(sun.zenith_deg * kDeg),
                             sun.zenith_deg < 90,
                             distance_factor,
-                            std::max(o.streams, kPhaseMoments),
+                            phase_moments(o.streams),
                             deck_choices(run)};
     if (column.mie())
         rep.notes.push_back(
@@ -417,8 +436,19 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         rep.notes.push_back("SALB " + format_number(run.card1.surface_albedo) +
                             ": the sky includes the ground's reflection; no COUPLING terms "
                             "(trace would add its own ground to the sky a second time)");
+    // Per band its streams (--streams auto: band_streams), the samples solved with them.
+    std::vector<RadianceOptions> band_options;
+    rep.band_streams = band_streams(setup, snd, band_options);
+    std::vector<SampleSetup> setups;
+    std::vector<std::size_t> setup_of;
+    for (std::size_t b = 0; b < snd.bands.size(); ++b) {
+        const int n = band_options[b].streams;
+        setups.push_back({column, dirs, solar, band_options[b], views, setup.mu0, setup.sun_up,
+                          distance_factor, phase_moments(n), setup.deck, setup.mie});
+        setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
+    }
     std::vector<SampleResult> results;
-    if (!solve_samples(setup, sample_wavenumbers(snd), reporter, results)) return {};
+    if (!solve_samples(setups, setup_of, sample_wavenumbers(snd), reporter, results)) return {};
 
     const Profile& prof = column.profile();
     const double height_km = prof.z_km[column.sensor_level()] - prof.bottom_km();

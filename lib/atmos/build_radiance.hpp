@@ -14,6 +14,7 @@
 
 #include "atmos/column_model.hpp"
 #include "atmos/radiance_options.hpp"
+#include "atmos/stream_choice.hpp"
 #include "core/report.hpp"
 #include "io/cdk.hpp"
 #include "io/rad.hpp"
@@ -36,6 +37,9 @@ struct RadianceReport {
     // W cm-2 um-1, to check the hemisphere against.
     std::vector<std::vector<double>> ground_diffuse_irradiance;
     std::vector<std::string> notes;  // what was skipped or assumed
+    // Per band, the streams solved with; with --streams auto also how they were chosen
+    // (stream_choice.hpp), else only `streams` is set.
+    std::vector<StreamChoice> band_streams;
 };
 
 // The output name of band `band` (1-based) of `band_count`: every "%d" in `pattern`

@@ -29,6 +29,22 @@ void report_tables(const RadianceReport& report, const Reporter& reporter) {
                   format_number(report.sensor_km) + " km, " + std::to_string(report.layers) +
                   " layers, visibility " + format_number(report.visibility_km) +
                   " km, view azimuth " + format_number(report.view_azimuth_deg) + " deg");
+    for (std::size_t b = 0; b < report.band_streams.size(); ++b) {
+        const StreamChoice& c = report.band_streams[b];
+        std::string line =
+            "band " + std::to_string(b + 1) + ": " + std::to_string(c.streams) + " streams";
+        if (c.check_streams > 0)
+            line += " (auto: estimated error " + format_number(100 * c.estimated_error) +
+                    " % against " + std::to_string(c.check_streams) + " streams at " +
+                    std::to_string(c.probe_wavenumbers.size()) + " samples" +
+                    (c.within_tolerance ? "" : "; above the tolerance: the largest candidate") +
+                    ")";
+        reporter.info(line);
+        if (!c.within_tolerance)
+            reporter.warn("band " + std::to_string(b + 1) +
+                          ": no streams up to 32 meet --stream-tolerance (estimated error " +
+                          format_number(100 * c.estimated_error) + " %): 32 used");
+    }
     for (const auto& note : report.notes) reporter.info(note);
 }
 

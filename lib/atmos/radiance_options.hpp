@@ -7,11 +7,17 @@
 
 namespace sigchain::atmos {
 
+// RadianceOptions::streams for --streams auto.
+inline constexpr int kAutoStreams = 0;
+
 struct RadianceOptions {
     std::string data_dir;                    // reference data (core/data_dir.hpp)
     std::string snd_path = "<snd>";          // named in messages about the scene node
     std::string cdk_path = "<cdk>";          // and about the card deck
-    int streams = 16;                        // discrete ordinates (even, >= 4)
+    int streams = 16;                        // discrete ordinates (even, 4-64), or
+                                             // kAutoStreams: chosen per band (stream_choice.hpp)
+    double stream_tolerance = 0.01;          // --streams auto: relative error allowed, as
+                                             // estimated against twice as many streams
     double sky_zenith_step_deg = 5;          // downwelled hemisphere rings (90 / step rings)
     double sky_azimuth_step_deg = 10;        // cells per ring: 360 / step
     int sky_subsamples = 2;                  // per cell and axis: the cell's radiance is the

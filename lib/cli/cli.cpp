@@ -124,6 +124,28 @@ void Cli::add_number(const char* name, const char* value_name, const Range& rang
     (hidden ? m_hidden : m_options).add_options()(name, value, help);
 }
 
+void Cli::add_number_or(const char* name, const char* keyword, const char* value_name,
+                        const Range& range, const char* help, const char* default_value) {
+    const std::string option = std::string("--") + name;
+    const std::string word(keyword);
+    auto* value = po::value<std::string>()->value_name(value_name)->notifier(
+        [option, word, range](const std::string& text) {
+            if (text == word) return;
+            try {
+                parse_number(option, text, range);
+            } catch (const UsageError&) {
+                throw UsageError(option + ": " + text + ": must be " + word + " or " +
+                                 range.describe());
+            }
+        });
+    if (default_value) value->default_value(default_value);
+    m_options.add_options()(name, value, help);
+}
+
+bool keyword_given(const po::variables_map& vm, const char* name, const char* keyword) {
+    return vm.count(name) && vm[name].as<std::string>() == keyword;
+}
+
 namespace {
 
 // A range end as text: integers in full, other numbers as %Lg.

@@ -146,6 +146,12 @@ public:
     // integer(). `help` should state the range as the man page does.
     void add_number(const char* name, const char* value_name, const Range& range,
                     const char* help, const char* default_value = nullptr, bool hidden = false);
+    // The same for an option that also takes one word instead of a number (--streams
+    // N|auto): `keyword` is accepted as it is, anything else is checked against `range`,
+    // its usage error then reading "--NAME: VALUE: must be KEYWORD or DESCRIPTION". Read
+    // it with keyword_given(), then real() or integer().
+    void add_number_or(const char* name, const char* keyword, const char* value_name,
+                       const Range& range, const char* help, const char* default_value = nullptr);
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
@@ -177,6 +183,9 @@ std::vector<std::string> args(const po::variables_map& vm, const char* name);
 // The value of a numeric option added with add_number (checked when parsed).
 double real(const po::variables_map& vm, const char* name);
 long long integer(const po::variables_map& vm, const char* name);
+
+// Whether an option added with add_number_or was given its keyword (or defaults to it).
+bool keyword_given(const po::variables_map& vm, const char* name, const char* keyword);
 
 // The shared options' values (the options must have been added).
 std::string output_path(const po::variables_map& vm);  // UsageError if -o is required and missing

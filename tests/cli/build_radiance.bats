@@ -221,3 +221,41 @@ line_of() { sed -n "${2}p" "$1"; }
     awk '/^(SPHERICAL_ALBEDO|DIFFUSE_DOWN)/ { for (i = 2; i <= NF; ++i) if (!($i > 0 && $i < 1)) exit 1 }
          /^DIFFUSE_UP/ { for (i = 3; i <= NF; ++i) if (!($i > 0 && $i < 1)) exit 1 }' k-1.rad
 }
+
+@test "--streams auto chooses per band, -v says which and the estimated error" {
+    local one=(--sky-zenith-step 90 --sky-azimuth-step 360 --sky-subsamples 1 --upwelled-azimuth-step 360)
+    run -0 --separate-stderr build_radiance -v --streams auto "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'a-%d.rad'
+    [[ "$stderr" =~ "band 1: "[0-9]+" streams (auto: estimated error "[0-9.e-]+" % against "[0-9]+" streams at "[12]" samples)" ]] ||
+        fail "stderr: $stderr"
+    [[ "$stderr" == *"band 2: "* ]] || fail "stderr: $stderr"
+    sigchain-check a-1.rad a-2.rad
+    # Without auto, -v names the fixed streams.
+    run -0 --separate-stderr build_radiance -v --streams 8 "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'b-%d.rad'
+    [[ "$stderr" == *"band 1: 8 streams"$'\n'* ]] || fail "stderr: $stderr"
+    # Threads do not change the choice or the tables.
+    build_radiance --streams auto --threads 2 "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'c-%d.rad'
+    cmp a-1.rad c-1.rad
+    cmp a-2.rad c-2.rad
+}
+
+@test "--streams takes auto or an even count, --stream-tolerance (0, 1]" {
+    run -2 --separate-stderr build_radiance --streams automatic "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"--streams: automatic: must be auto or an integer from 4 to 64"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --streams 7 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"streams must be even"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --streams auto --stream-tolerance 0 "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"--stream-tolerance: 0: must be a number > 0 and <= 1"* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr build_radiance --stream-tolerance nan "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"--stream-tolerance: nan: must be"* ]] || fail "stderr: $stderr"
+    [ ! -e o-1.rad ]
+}
+
+@test "--streams auto warns when no streams up to 32 meet the tolerance" {
+    printf '1.0\n1\n18000 18100 100\n0 0 1\n9 30 95\n19\n5\n43.08333 77.66667\n' > two_samples.snd
+    run -0 --separate-stderr build_radiance --streams auto --stream-tolerance 1e-9 \
+        --sky-zenith-step 90 --sky-azimuth-step 360 --sky-subsamples 1 --upwelled-azimuth-step 360 \
+        "$HAWKEYE" two_samples.snd -o w.rad
+    [[ "$stderr" == *"build_radiance: warning: band 1: no streams up to 32 meet --stream-tolerance (estimated error "*" %): 32 used"* ]] ||
+        fail "stderr: $stderr"
+    sigchain-check w.rad
+}

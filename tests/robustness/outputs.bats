@@ -26,6 +26,7 @@ QUICK=(--streams 8 --sky-zenith-step 15 --sky-azimuth-step 30 --sky-subsamples 1
 # The test "every numeric option of every tool is listed" keeps this list complete.
 NUMERIC_OPTIONS='
 build_radiance          streams                3     65                    int
+build_radiance          stream-tolerance       0     1.1                   real
 build_radiance          sky-zenith-step        0     90.5                  real
 build_radiance          sky-azimuth-step       0     361                   real
 build_radiance          sky-subsamples         0     9                     int

@@ -17,8 +17,11 @@ int main(int argc, char** argv) {
     tool.add_positional("input", -1, "card deck (.cdk) and scene node (.snd); one may be '-'");
     tool.add_required_output_option(
         "PATTERN", "write band N to PATTERN with %d replaced by N (e.g. scene-%d.rad); required");
-    tool.add_number("streams", "N", cli::integers(4, 64),
-                    "discrete ordinates of the solver (even, 4-64)", "16");
+    tool.add_number_or("streams", "auto", "N|auto", cli::integers(4, 64),
+                       "discrete ordinates of the solver (even, 4-64), or auto: per band\n"
+                       "                    the fewest that agree with twice as many", "16");
+    tool.add_number("stream-tolerance", "REL", cli::reals(0, 1, true),
+                    "--streams auto: relative error allowed (> 0 and <= 1)", "0.01");
     tool.add_number("sky-zenith-step", "DEG", cli::reals(0, 90, true),
                     "downwelled hemisphere: ring width (divides 90)", "5");
     tool.add_number("sky-azimuth-step", "DEG", cli::reals(0, 360, true),
@@ -55,7 +58,10 @@ int main(int argc, char** argv) {
         if (job.write_decks_dir.empty()) job.output_pattern = cli::output_path(vm);
         if (vm.count("data-dir")) job.data_dir = vm["data-dir"].as<std::string>();
         atmos::RadianceOptions& o = job.options;
-        o.streams = static_cast<int>(cli::integer(vm, "streams"));
+        o.streams = cli::keyword_given(vm, "streams", "auto")
+                        ? atmos::kAutoStreams
+                        : static_cast<int>(cli::integer(vm, "streams"));
+        o.stream_tolerance = cli::real(vm, "stream-tolerance");
         o.sky_zenith_step_deg = cli::real(vm, "sky-zenith-step");
         o.sky_azimuth_step_deg = cli::real(vm, "sky-azimuth-step");
         o.sky_subsamples = static_cast<int>(cli::integer(vm, "sky-subsamples"));

@@ -264,6 +264,36 @@ TEST(ParseNumber, RejectsOutOfRangeAndFractionsOfIntegers) {
     EXPECT_EQ(rejection("0", only_min), "--x: 0: must be an integer >= 1");
 }
 
+// An option that takes a number or one word (build_radiance --streams N|auto): the
+// word passes as it is, a number is checked against the range, anything else is a
+// usage error naming both.
+TEST(ParseNumber, NumberOrKeywordAcceptsTheWordAndCheckedNumbers) {
+    auto configure = [](cli::Cli& c) {
+        c.add_number_or("streams", "auto", "N|auto", cli::integers(4, 64), "streams", "16");
+    };
+    bool automatic = true;
+    long long n = 0;
+    auto body = [&](const po::variables_map& vm, cli::Context&) {
+        automatic = cli::keyword_given(vm, "streams", "auto");
+        if (!automatic) n = cli::integer(vm, "streams");
+        return 0;
+    };
+    EXPECT_EQ(run({}, body, configure).status, 0);
+    EXPECT_FALSE(automatic);
+    EXPECT_EQ(n, 16);
+    EXPECT_EQ(run({"--streams", "auto"}, body, configure).status, 0);
+    EXPECT_TRUE(automatic);
+    EXPECT_EQ(run({"--streams", "8"}, body, configure).status, 0);
+    EXPECT_FALSE(automatic);
+    EXPECT_EQ(n, 8);
+    for (const char* bad : {"nan", "3", "65", "Auto", "auto2", "4.5"}) {
+        const Result r = run({"--streams", bad}, body, configure);
+        EXPECT_EQ(r.status, 2);
+        EXPECT_EQ(r.err, std::string("tool: --streams: ") + bad +
+                             ": must be auto or an integer from 4 to 64\nTry 'tool --help'.\n");
+    }
+}
+
 TEST(ParseNumber, OptionsAreCheckedWhenParsedDefaultsIncluded) {
     auto configure = [](cli::Cli& c) {
         c.add_number("top", "KM", cli::positive(1000), "top", "100");
