@@ -18,7 +18,7 @@ trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
                           "adjacency-radius", "co", "crs", "standard-error", "convergence", "igm",
-                          "glt"})
+                          "glt", "uncertainty"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -93,6 +93,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
         job.convergence = trace::Convergence{static_cast<long>(v[0]), static_cast<long>(v[1]),
                                              static_cast<double>(v[2])};
     }
+    if (vm.count("uncertainty")) job.uncertainty_path = vm["uncertainty"].as<std::string>();
     if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();
     if (vm.count("glt")) job.glt_path = vm["glt"].as<std::string>();
     return job;
@@ -148,6 +149,9 @@ int main(int argc, char** argv) {
         "write the geometry lookup table (GLT: a map grid's source pixels)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
         "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
+        "uncertainty", cli::po::value<std::string>()->value_name("FILE"),
+        "with --truth: add the layers uncertainty_BAND, propagated from the\n"
+        "                    input uncertainties in FILE (.unc)")(
         "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),
         "primary samples in batches of MIN until the relative standard error\n"
         "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)");
