@@ -17,6 +17,10 @@
 //               background's setup (64 x 64 vertical rays) and the rays that meet it.
 //   adjacency   adjacency and coupling against --no-adjacency.
 //   bounces N   --bounces N against --bounces 1 (the default), N = 0, 2, 3.
+//   uncertainty --truth --uncertainty (every input of unc(5) uncertain) against the
+//               plain render (no truth) and against --truth alone: the partials
+//               accumulated alongside the radiance (trace(1) UNCERTAINTY); the ratio
+//               on/off is 1 + cost (target <= 1.5 against the plain render).
 //
 // The sky seen by rays that leave the scene upward (sky interpolation for secondary
 // rays, the effective sky for primary rays) cannot be switched off: RenderOptions has
@@ -46,6 +50,7 @@
 #include "scene/scene.hpp"
 #include "trace/render.hpp"
 #include "trace/tracer.hpp"
+#include "trace/uncertainty.hpp"
 #include "trace/world.hpp"
 #include "trace_bench_scene.hpp"
 
@@ -335,6 +340,19 @@ int main(int argc, char** argv) {
         rows.push_back(
             compare("bounces " + std::to_string(b) + " (off: 1)", in, base, deeper, a.rounds));
     }
+    // Every input uncertain (unc(5)): the most work the layers can do.
+    trace::InputUncertainty u;
+    u.es = u.tau1 = u.lus = u.lds = {0.02, true};
+    u.tau2 = {0.01, false};
+    u.sun_zenith_deg = 0.5;
+    u.reflectance.assign(materials.materials().size(), {0.02, false});
+    u.specularity.assign(materials.materials().size(), {0.05, false});
+    trace::RenderInputs in_u = in;
+    in_u.uncertainty = &u;
+    trace::RenderOptions truth = base, uncertain = base;
+    truth.truth = uncertain.truth = uncertain.uncertainty_layers = true;
+    rows.push_back(compare("uncertainty (off: plain)", in_u, base, uncertain, a.rounds));
+    rows.push_back(compare("uncertainty (off: truth)", in_u, truth, uncertain, a.rounds));
     std::printf("\n%-26s %7s %7s %7s %7s %-17s %7s\n", "feature", "off", "on", "cost %", "paired",
                 "(range)", "wall %");
     for (const auto& c : rows) print_comparison(c);

@@ -21,6 +21,7 @@
 #include "io/t7m.hpp"
 #include "io/tmp.hpp"
 #include "io/trj.hpp"
+#include "io/unc.hpp"
 #include "io/wth.hpp"
 
 namespace sigchain::io {
@@ -47,6 +48,7 @@ const std::vector<FormatHandler>& formats() {
             t7m_format(),
             tmp_format(),
             trj_format(),
+            unc_format(),
             wth_format(),
         };
         // clang-format on

@@ -5,6 +5,13 @@
 
 namespace sigchain::sensor {
 
+double noise_variance(double signal_counts, const NoiseModel& model) {
+    double var = model.read_noise_counts * model.read_noise_counts;
+    if (model.electrons_per_count > 0 && signal_counts > 0)
+        var += signal_counts / model.electrons_per_count;  // Poisson: variance = mean
+    return var;
+}
+
 void add_noise(std::vector<float>& counts, double bias, const NoiseModel& model,
                std::uint64_t stream) {
     if (!model.enabled()) return;

@@ -20,6 +20,11 @@ struct NoiseModel {
     bool enabled() const { return electrons_per_count > 0 || read_noise_counts > 0; }
 };
 
+// The model's variance of a count whose signal part (counts above the bias) is
+// `signal_counts`: signal / E + sigma_read^2 (0 for a model without noise; no shot
+// noise for a signal <= 0), counts squared.
+double noise_variance(double signal_counts, const NoiseModel& model);
+
 // Applies the model in place to one band's noise-free counts. `stream` selects an
 // independent random sequence per band (same seed and stream: same noise).
 void add_noise(std::vector<float>& counts, double bias, const NoiseModel& model,

@@ -11,6 +11,7 @@
 #include "core/text.hpp"
 #include "image/image.hpp"
 #include "io/sen.hpp"
+#include "sensor/count_uncertainty.hpp"
 #include "sensor/psf.hpp"
 
 namespace sigchain::sensor {
@@ -82,9 +83,16 @@ void check_job(const SensorizeJob& job) {
         (job.calibrate || file_extension(job.preview_path) != "png"))
         throw UsageError("--preview " + job.preview_path +
                          ": the preview is a .png file, not made with --calibrate");
+    if (job.uncertainty_path.empty() != job.uncertainty_output_path.empty())
+        throw UsageError("--uncertainty and --uncertainty-output go together");
+    if (!job.uncertainty_path.empty() &&
+        (job.calibrate || file_extension(job.uncertainty_output_path) != "tif"))
+        throw UsageError("--uncertainty-output " + job.uncertainty_output_path +
+                         ": a float .tif file, not made with --calibrate");
     std::vector<std::string> inputs = job.sen_paths;
     inputs.push_back(job.cube_path);
     inputs.push_back(job.psf_path);
+    inputs.push_back(job.uncertainty_path);
     if (job.calibrate) {
         std::vector<std::string> outputs;
         for (const auto& path : job.sen_paths)
@@ -92,7 +100,8 @@ void check_job(const SensorizeJob& job) {
                 (std::filesystem::path(job.output_path) / (stem_of(path) + ".sen")).string());
         require_outputs_distinct(outputs, inputs);
     } else {
-        require_outputs_distinct({job.output_path, job.preview_path}, inputs);
+        require_outputs_distinct({job.output_path, job.preview_path, job.uncertainty_output_path},
+                                 inputs);
     }
     if (job.calibrate) {
         if (job.float_output) throw UsageError("give --calibrate or --float, not both");
@@ -135,6 +144,22 @@ void carry_georeference(const SensorizeJob& job, const image::Image& cube, image
     image::copy_geolocation(cube.georef.geolocation_path, out.georef.geolocation_path);
 }
 
+// The counts' (or with --float the band radiance's) standard uncertainty, one float
+// band per sensor band, named and georeferenced as the output.
+void write_uncertainty(const SensorizeJob& job, const image::Image& out,
+                       const std::vector<std::vector<float>>& sigma) {
+    image::Image u(out.rows, out.columns, static_cast<int>(sigma.size()));
+    u.units = out.units;
+    u.channel_names = out.channel_names;
+    u.wavelength_um = out.wavelength_um;
+    u.fwhm_um = out.fwhm_um;
+    u.georef = out.georef;
+    u.georef.geolocation_path.clear();
+    for (std::size_t b = 0; b < sigma.size(); ++b)
+        std::copy(sigma[b].begin(), sigma[b].end(), u.data.begin() + b * u.plane_size());
+    image::write_float(job.uncertainty_output_path, u, job.write_options);
+}
+
 }  // namespace
 
 SensorizeReport run_sensorize(const SensorizeJob& job) {
@@ -153,6 +178,9 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     const int bands = static_cast<int>(sens.size());
     image::Image out(cube.rows, cube.columns, bands);
     out.units = job.float_output ? cube.units : "DC";
+    std::vector<std::vector<float>> sigma;  // --uncertainty: per band, radiance then counts
+    if (!job.uncertainty_path.empty())
+        sigma = read_radiance_uncertainty(job.uncertainty_path, cube, bands);
     for (int b = 0; b < bands; ++b) {
         const auto wavelengths = band_wavelengths(cube, groups[b]);
         const auto widths = sample_widths_um(wavelengths, groups[b].count);
@@ -172,6 +200,8 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
         }
         if (!job.float_output) {
             apply_gain_bias(plane, sens[b].gain, sens[b].bias);
+            if (!sigma.empty())
+                counts_uncertainty(sigma[b], plane, sens[b].gain, sens[b].bias, job.noise);
             add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));
             report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
         }
@@ -194,6 +224,7 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
         image::write_counts(job.output_path, out, job.bits, job.write_options);
     if (!job.preview_path.empty())
         image::write_counts(job.preview_path, preview, 8);
+    if (!sigma.empty()) write_uncertainty(job, out, sigma);
     return report;
 }
 

@@ -35,6 +35,10 @@ struct SensorizeJob {
     CalibrationSetup calibration;
     image::WriteOptions write_options;  // --co and the provenance of the image
     std::string preview_path;           // --preview: a true-colour PNG too, when not empty
+    // --uncertainty TRUTH and --uncertainty-output FILE.tif (sensorize(1) UNCERTAINTY):
+    // trace's uncertainty_BAND layers in, the counts' standard uncertainty out.
+    std::string uncertainty_path;
+    std::string uncertainty_output_path;
 };
 
 struct BandReport {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include "core/parallel.hpp"
@@ -16,6 +17,7 @@
 #include "trace/material_fraction.hpp"
 #include "trace/sampling.hpp"
 #include "trace/tracer.hpp"
+#include "trace/uncertainty.hpp"
 #include "trace/world.hpp"
 
 namespace sigchain::trace {
@@ -43,7 +45,12 @@ constexpr int kPerBand = 5;  // reflectance, solar, downwelled, upwelled, transm
 // One worker's state: its tracer and pixel accumulators.
 struct RowWorker {
     RowWorker(const TraceContext& c, std::size_t truth_layers)
-        : tracer(c), pixel(c.n), sample(c.n), truth_acc(truth_layers) {}
+        : tracer(c),
+          pixel(c.n),
+          sample(c.n),
+          truth_acc(truth_layers),
+          uncertainty(c.opt.uncertainty_layers ? c.in.uncertainty : nullptr,
+                      c.in.atmosphere->grid().band_count()) {}
     Tracer tracer;
     std::vector<double> pixel;
     std::vector<double> sample;  // the last primary sample's radiance at the sensor
@@ -52,6 +59,7 @@ struct RowWorker {
     std::uint64_t samples = 0;  // primary samples of the worker's pixels
     long max_samples = 0;
     MaterialTally materials;  // material_fraction layers
+    PixelUncertainty uncertainty;  // uncertainty layers (uncertainty.hpp)
 };
 
 // The spectral buffers of one primary sample: radiance leaving the hit and the path
@@ -86,6 +94,34 @@ void add_miss(const TraceContext& c, RowWorker& w, const SampleBuffers& b, const
         w.pixel[k] += (w.sample[k] = b.tau2[k] * l[k] + b.lus[k] + (c.emission ? b.lue[k] : 0.0));
     ++w.background;
     if (c.opt.truth) w.truth_acc[kBackground] += 1;
+}
+
+// The partials of a primary hit's radiance at the sensor at each band centre
+// (uncertainty.hpp), into the worker's pixel uncertainty.
+void add_uncertainty(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
+                     const std::vector<std::size_t>& centre, const scene::Hit& hit,
+                     const HitTruth& ht) {
+    const auto& a = c.in.scene->attributes(hit);
+    const radiometry::MaterialOptics* m = c.in.materials->find(a.material_id);
+    const auto& all = c.in.materials->materials();
+    for (std::size_t band = 0; band < centre.size() && ht.rho; ++band) {
+        const std::size_t k = centre[band];
+        HitTerms t;
+        t.tau2 = b.tau2[k];
+        t.lus = b.lus[k];
+        t.leave = b.leave[k];
+        t.solar = ht.solar[k];
+        t.downwelled = ht.downwelled[k];
+        t.solar_per_zenith_deg = ht.solar_per_zenith ? ht.solar_per_zenith[k] : 0.0;
+        t.solar_per_specularity = ht.solar_per_specularity ? ht.solar_per_specularity[k] : 0.0;
+        t.tau1 = c.tau1[k];
+        if (m) {
+            t.material = m - all.data();
+            t.r = 1 - m->emissivity[a.texture_curve][k];
+            t.specularity = m->specularity;
+        }
+        w.uncertainty.add_hit(band, t);
+    }
 }
 
 // Adds primary sample i of pixel (row, col) to the worker's accumulators (its radiance
@@ -138,6 +174,7 @@ bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
         t[3] += b.lus[k];
         t[4] += b.tau2[k];
     }
+    if (w.uncertainty.active()) add_uncertainty(c, w, b, centre, *hit, ht);
     return true;
 }
 
@@ -291,6 +328,7 @@ void render_row(const TraceContext& c, RowWorker& w, long row, long out_row, Ren
         std::fill(w.pixel.begin(), w.pixel.end(), 0.0);
         std::fill(w.truth_acc.begin(), w.truth_acc.end(), 0.0);
         w.materials.clear();
+        if (w.uncertainty.active()) w.uncertainty.clear();
         const auto [spp, hits] = sample_pixel(c, w, buffers, centre, stats, row, col);
         w.samples += static_cast<std::uint64_t>(spp);
         w.max_samples = std::max(w.max_samples, spp);
@@ -301,6 +339,12 @@ void render_row(const TraceContext& c, RowWorker& w, long row, long out_row, Ren
         put_truth(c, w.truth_acc, hits, spp, row, col, out_row, res.truth);
         w.materials.put(spp, sampling_first - 2 * kMaterialFractionSlots, out_row, col,
                         res.truth);
+        if (w.uncertainty.active()) {
+            const int first = static_cast<int>(res.truth.channel_names.size() - centre.size());
+            for (std::size_t b = 0; b < centre.size(); ++b)
+                res.truth.at(first + static_cast<int>(b), out_row, col) =
+                    static_cast<float>(w.uncertainty.sigma(b, spp));
+        }
         if (!c.opt.sampling_layers) continue;
         res.truth.at(sampling_first, out_row, col) = static_cast<float>(spp);
         for (std::size_t b = 0; b < centre.size(); ++b)
@@ -384,15 +428,20 @@ std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid)
 std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid,
                                            const RenderOptions& options) {
     std::vector<std::string> names = truth_layer_names(grid);
-    if (!options.sampling_layers) return names;
-    names.push_back("samples");
-    for (const auto& band : grid.band_names) names.push_back("standard_error_" + band);
+    if (options.sampling_layers) {
+        names.push_back("samples");
+        for (const auto& band : grid.band_names) names.push_back("standard_error_" + band);
+    }
+    if (options.uncertainty_layers)
+        for (const auto& band : grid.band_names) names.push_back("uncertainty_" + band);
     return names;
 }
 
 RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
                     const std::function<void(long, long)>& progress) {
     auto start = std::chrono::steady_clock::now();
+    if (options.uncertainty_layers && (!options.truth || !inputs.uncertainty))
+        throw std::invalid_argument("render: uncertainty layers need truth and uncertainties");
     const TraceContext c = make_context(inputs, options);
     const Sensor& cam = *inputs.sensor;
     long row_begin = std::clamp(options.row_begin, 0L, cam.rows());

@@ -73,10 +73,16 @@ struct RenderOptions {
     // within this radius (metres) of the ground point the image centre sees.
     bool adjacency = true;
     double adjacency_radius_m = 1000;
+    // With truth: one "uncertainty_BAND" layer per band after the others, the standard
+    // uncertainty of the pixel radiance from RenderInputs::uncertainty (uncertainty.hpp;
+    // trace(1) --uncertainty).
+    bool uncertainty_layers = false;
 };
 
 // Facet temperatures (kelvin) by facet key ("1-1-1", "2.3/1-1-1"; tmp(5)).
 using Temperatures = std::map<std::string, double>;
+
+struct InputUncertainty;  // uncertainty.hpp
 
 struct RenderInputs {
     const scene::Scene* scene = nullptr;
@@ -84,12 +90,15 @@ struct RenderInputs {
     const radiometry::MaterialLibrary* materials = nullptr;
     const Sensor* sensor = nullptr;
     const Temperatures* temperatures = nullptr;  // nullptr: no emission
+    // The inputs' uncertainties; required with RenderOptions::uncertainty_layers.
+    const InputUncertainty* uncertainty = nullptr;
 };
 
 // Names of the truth layers, in channel order (trace(1) TRUTH LAYERS). Reflectance
 // is one layer per band ("reflectance_BAND").
 std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid);
-// The same, with the sampling layers when options.sampling_layers.
+// The same, with the sampling layers when options.sampling_layers and the uncertainty
+// layers when options.uncertainty_layers.
 std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid,
                                            const RenderOptions& options);
 

@@ -33,6 +33,7 @@
 #include "trace/georef.hpp"
 #include "trace/ground_layers.hpp"
 #include "trace/part.hpp"
+#include "trace/uncertainty.hpp"
 
 namespace sigchain::trace {
 
@@ -88,10 +89,6 @@ void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
             " deg but the .rad files cover " + format("%.2f", atm.min_view_angle_deg()) + " to " +
             format("%.2f", atm.max_view_angle_deg()) + " deg: path terms are clamped at the ends");
 }
-
-}  // namespace
-
-namespace {
 
 // The .adv (a frame camera) and the .snd, and the rows to render: [begin, end).
 struct Setup {
@@ -302,6 +299,7 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     options.row_end = st.row_end;
     options.truth = !job.truth_path.empty();
     options.sampling_layers = options.truth && (job.standard_error || job.convergence);
+    options.uncertainty_layers = options.truth && !job.uncertainty_path.empty();
     if (job.convergence) {
         options.convergence_min = job.convergence->min;
         options.convergence_max = job.convergence->max;
@@ -359,6 +357,7 @@ std::optional<GeoPlacement> geo_placement(const TraceJob& job, const Setup& st) 
 RenderOptions render_options_layers(const TraceJob& job) {
     RenderOptions o;
     o.sampling_layers = !job.truth_path.empty() && (job.standard_error || job.convergence);
+    o.uncertainty_layers = !job.truth_path.empty() && !job.uncertainty_path.empty();
     return o;
 }
 
@@ -454,6 +453,8 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     inputs.materials = &materials;
     inputs.sensor = &camera;
     inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
+    const InputUncertainty uncertainty = read_input_uncertainty(job.uncertainty_path, materials);
+    inputs.uncertainty = &uncertainty;
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
                   std::to_string(st.adv.columns) + " columns, " +

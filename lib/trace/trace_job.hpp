@@ -60,6 +60,8 @@ struct TraceJob {
     // --standard-error: the truth cube's sampling layers (samples, standard_error_BAND).
     bool standard_error = false;
     std::optional<Convergence> convergence;  // --convergence; implies the sampling layers
+    // --uncertainty FILE (unc(5)): the truth cube's uncertainty_BAND layers; "" for none.
+    std::string uncertainty_path;
     // --igm, --glt: the ground-position layers and the geometry lookup table (GeoTIFFs,
     // cube(5) GEOLOCATION LAYERS); "" for none.
     std::string igm_path;

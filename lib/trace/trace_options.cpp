@@ -154,7 +154,7 @@ void check_job(const TraceJob& job) {
             outputs.push_back(written_name(layers));
         }
         std::vector<std::string> inputs{job.adv_path, job.snd_path, job.scene_path, job.mat_path,
-                                        job.tmp_path};
+                                        job.tmp_path, job.uncertainty_path};
         inputs.insert(inputs.end(), job.rad_paths.begin(), job.rad_paths.end());
         require_outputs_distinct(outputs, inputs);
     }
@@ -164,6 +164,8 @@ void check_job(const TraceJob& job) {
                          std::to_string(io::kAdvMaxSamplesPerPixel));
     if (job.standard_error && job.truth_path.empty())
         throw UsageError("--standard-error: its layers are in the truth cube: give --truth FILE");
+    if (!job.uncertainty_path.empty() && job.truth_path.empty())
+        throw UsageError("--uncertainty: its layers are in the truth cube: give --truth FILE");
     if (job.convergence) check_convergence(*job.convergence, job.samples_per_pixel.has_value());
     if (job.hemisphere_samples && *job.hemisphere_samples < 1)
         throw UsageError("--hemisphere-samples: expected at least 1");

@@ -322,7 +322,9 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
     for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * (solar[k] + down[k]);
     double t_k = m_c.emission ? temperature_k(hit) : -1;
     if (m_c.emission) add_emission(m, curve, theta_o, t_k, out);
-    if (truth) keep_truth(visibility, sky_view, t_k, rho, solar, down, *truth);
+    if (!truth) return;
+    keep_truth(visibility, sky_view, t_k, rho, solar, down, *truth);
+    if (m_c.opt.uncertainty_layers) keep_sun_rates(m, f, wo_l, rho, solar, *truth);
 }
 
 // The truth of a primary hit; its spectral buffers outlive the arena scope of

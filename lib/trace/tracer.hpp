@@ -63,9 +63,18 @@ struct TraceContext {
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;
     Background background;                           // below the horizon (world.hpp)
+    // With RenderOptions::uncertainty_layers (prepare_uncertainty): the sun moved by
+    // +-zenith_step_deg in zenith, and per sample tau1 and tau1(z +- step) / tau1(z)
+    // by Beer's law in a plane-parallel column (column_depth), for the solar term's
+    // central difference in sun zenith (uncertainty.hpp).
+    double zenith_step_deg = 0;
+    geo::Vec3 sun_plus{}, sun_minus{};
+    std::vector<double> tau1, tau1_ratio_plus, tau1_ratio_minus;
 };
 
 TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
+// Fills the context's uncertainty fields (above) from its atmosphere (tracer_uncertainty.cpp).
+void prepare_uncertainty(TraceContext& c);
 
 // Local facet frame (header comment): z normal, x strike, y = z x x.
 struct FacetFrame {
@@ -124,6 +133,10 @@ struct HitTruth {
     const double* rho = nullptr;         // reflectance rho(theta_o) per sample
     const double* solar = nullptr;       // reflected solar radiance per sample
     const double* downwelled = nullptr;  // reflected sky + neighbours per sample
+    // With RenderOptions::uncertainty_layers: d(solar)/d(sun zenith) per degree and
+    // d(solar)/d(SPECULARITY) per sample (tracer_uncertainty.cpp); else null.
+    const double* solar_per_zenith = nullptr;
+    const double* solar_per_specularity = nullptr;
 };
 
 class HemisphereStrategy;
@@ -166,6 +179,7 @@ private:
     long m_row = 0, m_col = 0, m_sample = 0;
     std::uint64_t m_index = 0;  // counter of random numbers within a sample
     std::vector<double> m_truth_rho, m_truth_solar, m_truth_down;
+    std::vector<double> m_truth_per_zenith, m_truth_per_specularity;
 
     const radiometry::MaterialOptics& material_of(const scene::Hit& hit) const;
     double temperature_k(const scene::Hit& hit) const;
@@ -187,6 +201,20 @@ private:
                     const geo::Vec3& wo, double* out, HitTruth* truth);
     void keep_truth(double visibility, double sky_view, double t_k, const double* rho,
                     const double* solar, const double* down, HitTruth& truth);
+    // The solar term's rates in sun zenith and SPECULARITY of a primary hit into the
+    // truth (tracer_uncertainty.cpp): `sun` the unreflected solar term w F E tau1 V per
+    // sample, `rho` the reflectance; for a split material each part apart (no
+    // SPECULARITY rate).
+    void keep_sun_rates(const radiometry::MaterialOptics& m, const FacetFrame& f,
+                        const geo::Vec3& wo_l, const double* rho, const double* sun,
+                        HitTruth& truth);
+    void keep_split_sun_rates(const radiometry::MaterialOptics& m,
+                              const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                              const geo::Vec3& wo_l, const double* rho_d, const double* sun_d,
+                              const double* rho_s, const double* sun_s, HitTruth& truth);
+    // The strategy's sun weight times the incoming fall-off for the sun along `sun`.
+    double sun_weight_toward(const radiometry::MaterialOptics& m, const FacetFrame& f,
+                             const geo::Vec3& wo_l, const geo::Vec3& sun) const;
     // The same three shadings for a material whose diffuse and specular parts reflect
     // differently (tracer_split.cpp): each sum kept in two parts, multiplied by rho_d
     // and rho_s. Every other material takes the functions above, unchanged.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bats
-# Tests: sigchain-check (formats .adv .snd .rsd .sen .cpt .tmp .brdf)
-# Also requires: tests/data/white1996, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp,brdf}, data/brdf,
+# Tests: sigchain-check (formats .adv .snd .rsd .sen .cpt .tmp .unc .brdf)
+# Also requires: tests/data/white1996, tests/data/bad/{adv,snd,rsd,sen,cpt,tmp,unc,brdf}, tests/data/trace/training.unc, data/brdf,
 # tests/golden/sigchain-check (the canonical rewrites of the samples of White (1996))
 
 load test_helper
@@ -124,6 +124,24 @@ bats_require_minimum_version 1.5.0
 @test "tmp: duplicate facet" { check_bad tmp duplicate.tmp 3 "expected each facet once, found '1-1-1' again (first on line 2)"; }
 @test "tmp: not a facet id" { check_bad tmp bad_id.tmp 2 "expected a facet id such as 1-1-1 or 2.3/1-1-1, found 'roof'"; }
 @test "tmp: unknown header key" { check_bad tmp bad_key.tmp 2 "expected key time_hours, found 'date'"; }
+
+# --- .unc ---------------------------------------------------------------------------
+UNC="$SIGCHAIN_SOURCE_DIR/tests/data/trace/training.unc"
+@test "unc: example checks" { check_good "$UNC" "8 uncertainties (2 of materials)"; }
+@test "unc: stdin with -f unc" {
+    run -0 --separate-stderr sigchain-check -f unc - < "$UNC"
+    assert_output "-: ok: 8 uncertainties (2 of materials)"
+}
+@test "unc: --rewrite gives the golden canonical file" { check_rewrite_golden "$UNC"; }
+@test "unc: empty file" { check_bad unc empty.unc "" "empty file, expected '# sigchain-unc 1'"; }
+@test "unc: unknown term" { check_bad unc unknown_term.unc 3 "expected Es, tau1, tau2, L_us, L_ds, sun_zenith or material, found 'foo'"; }
+@test "unc: negative sigma" { check_bad unc negative.unc 3 "expected sigma at or above 0, found '-0.1'"; }
+@test "unc: absolute Es" { check_bad unc absolute_es.unc 2 "Es takes a relative sigma only (per cent: it is a spectrum), found an absolute one"; }
+@test "unc: relative sun zenith" { check_bad unc relative_zenith.unc 2 "sun_zenith takes an absolute sigma only, found per cent"; }
+@test "unc: duplicate term" { check_bad unc duplicate.unc 4 "expected each term once, found 'tau2' again (first on line 2)"; }
+@test "unc: unknown material quantity" { check_bad unc bad_quantity.unc 2 "expected reflectance or specularity, found 'colour'"; }
+@test "unc: not a number" { check_bad unc not_number.unc 2 "expected sigma (a number), found 'lots'"; }
+@test "unc: truncated version 1.1" { check_bad unc truncated.unc 3 "expected '# sigchain-end 2' as the last line"; }
 
 # --- all six ------------------------------------------------------------------------
 @test "the six formats are listed" {

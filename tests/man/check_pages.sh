@@ -20,7 +20,7 @@ for tool in control7 build_radiance therm find_min_max_view_angle trace sensoriz
             sigchain-check; do
     [ -f "$src/man/$tool.1.scd" ] || { echo "FAIL: no man page for tool $tool"; fail=1; }
 done
-for fmt in adv snd rsd cdk wth rad mat ems sen ext gdb odb shd tmp cpt brdf t7m trj; do
+for fmt in adv snd rsd cdk wth rad mat ems sen ext gdb odb shd tmp cpt brdf t7m trj unc; do
     page="$src/man/$fmt.5.scd"
     if [ ! -f "$page" ]; then
         echo "FAIL: no man page for format .$fmt"

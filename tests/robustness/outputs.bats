@@ -73,7 +73,7 @@ trace                   material-id            -1    16777217              int
 TEXT_OPTIONS='answer answers bands co data-dir output error-map plot format method origin
 sampling bounces background rows truth tmp psf preview card1 card2 target1 target2
 material-map landuse landuse-map crs write-decks from-tape7 mtf-smear mtf-electronics
-convergence convergence-error tile igm glt'
+convergence convergence-error tile igm glt uncertainty uncertainty-output'
 TOOLS='build_radiance compare control7 find_min_max_view_angle hawkeye_scene merge_tiles
 olinda_scene sensorize sigchain-check soho_scene therm trace'
 

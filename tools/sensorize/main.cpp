@@ -142,6 +142,9 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
     job.mtf = mtf_from(vm);
     job.write_options = {cli::creation_options(vm), ctx.command()};
     if (vm.count("preview")) job.preview_path = vm["preview"].as<std::string>();
+    if (vm.count("uncertainty")) job.uncertainty_path = vm["uncertainty"].as<std::string>();
+    if (vm.count("uncertainty-output"))
+        job.uncertainty_output_path = vm["uncertainty-output"].as<std::string>();
     job.calibrate = vm.count("calibrate") > 0;
     if (job.calibrate) {
         for (const char* o : {"card1", "card2", "target1", "target2"})
@@ -187,6 +190,10 @@ int main(int argc, char** argv) {
         "MTF: Butterworth low-pass along scan: cutoff HZ, dwell S seconds per pixel")(
         "preview", value<std::string>()->value_name("PNG"),
         "also write a true-colour 8-bit PNG preview (2-98 % stretch)")(
+        "uncertainty", value<std::string>()->value_name("TRUTH"),
+        "trace's truth cube with uncertainty_BAND layers (trace --uncertainty)")(
+        "uncertainty-output", value<std::string>()->value_name("FILE.tif"),
+        "write the counts' standard uncertainty per band (with --uncertainty)")(
         "calibrate", "solve gain and bias per band from two gray cards; -o names a directory")(
         "card1", value<std::string>()->value_name("BOX"), "card 1 pixel box ROW0,COL0,ROW1,COL1")(
         "card2", value<std::string>()->value_name("BOX"), "card 2 pixel box ROW0,COL0,ROW1,COL1")(

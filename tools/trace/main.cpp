@@ -18,7 +18,7 @@ trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
                           "adjacency-radius", "co", "crs", "standard-error", "convergence", "convergence-error",
-                          "igm", "glt"})
+                          "igm", "glt", "uncertainty"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -97,6 +97,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
         if (!job.convergence) throw sigchain::UsageError("--convergence-error: only with --convergence");
         job.convergence->error = trace::parse_convergence_error(vm["convergence-error"].as<std::string>());
     }
+    if (vm.count("uncertainty")) job.uncertainty_path = vm["uncertainty"].as<std::string>();
     if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();
     if (vm.count("glt")) job.glt_path = vm["glt"].as<std::string>();
     return job;
@@ -152,6 +153,9 @@ int main(int argc, char** argv) {
         "write the geometry lookup table (GLT: a map grid's source pixels)")(
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
         "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
+        "uncertainty", cli::po::value<std::string>()->value_name("FILE"),
+        "with --truth: add the layers uncertainty_BAND, propagated from the\n"
+        "                    input uncertainties in FILE (.unc)")(
         "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),
         "primary samples in batches of MIN until the relative standard error\n"
         "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)")(
