@@ -54,13 +54,7 @@ std::optional<CirrusModel> CirrusModel::from_deck(const io::CdkRun& run,
 }
 
 std::array<double, 3> CirrusModel::optics(double wavelength_um) const {
-    const auto& w = m_wavelength_um;
-    const double l = std::clamp(wavelength_um, w.front(), w.back());
-    std::size_t hi = std::size_t(std::upper_bound(w.begin(), w.end(), l) - w.begin());
-    hi = std::clamp<std::size_t>(hi, 1, w.size() - 1);
-    const double f = (l - w[hi - 1]) / (w[hi] - w[hi - 1]);
-    auto lerp = [&](const std::vector<double>& v) { return v[hi - 1] + f * (v[hi] - v[hi - 1]); };
-    return {lerp(m_ext), lerp(m_abs), lerp(m_g)};
+    return table_optics(m_wavelength_um, m_ext, m_abs, m_g, wavelength_um);
 }
 
 double CirrusModel::extinction_km1(double z_km, double wavelength_um) const {

@@ -115,16 +115,21 @@ double level_integral(const std::vector<double>& z, const std::vector<double>& v
     return sum;
 }
 
+std::array<double, 3> table_optics(const std::vector<double>& wl, const std::vector<double>& ext,
+                                   const std::vector<double>& abs, const std::vector<double>& g,
+                                   double wavelength_um) {
+    const double l = std::clamp(wavelength_um, wl.front(), wl.back());
+    std::size_t hi = std::size_t(std::upper_bound(wl.begin(), wl.end(), l) - wl.begin());
+    hi = std::clamp<std::size_t>(hi, 1, wl.size() - 1);
+    const double f = (l - wl[hi - 1]) / (wl[hi] - wl[hi - 1]);
+    auto lerp = [&](const std::vector<double>& v) { return v[hi - 1] + f * (v[hi] - v[hi - 1]); };
+    return {lerp(ext), lerp(abs), lerp(g)};
+}
+
 double CloudModel::lwc_g_m3(double z_km) const { return level_value(m_z_km, m_lwc, z_km); }
 
 std::array<double, 3> CloudModel::optics(double wavelength_um) const {
-    const auto& w = m_wavelength_um;
-    const double l = std::clamp(wavelength_um, w.front(), w.back());
-    std::size_t hi = std::size_t(std::upper_bound(w.begin(), w.end(), l) - w.begin());
-    hi = std::clamp<std::size_t>(hi, 1, w.size() - 1);
-    const double f = (l - w[hi - 1]) / (w[hi] - w[hi - 1]);
-    auto lerp = [&](const std::vector<double>& v) { return v[hi - 1] + f * (v[hi] - v[hi - 1]); };
-    return {lerp(m_ext), lerp(m_abs), lerp(m_g)};
+    return table_optics(m_wavelength_um, m_ext, m_abs, m_g, wavelength_um);
 }
 
 double CloudModel::extinction_km1(double z_km, double wavelength_um) const {

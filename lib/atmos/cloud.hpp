@@ -74,6 +74,13 @@ double level_value(const std::vector<double>& z_km, const std::vector<double>& v
 double level_integral(const std::vector<double>& z_km, const std::vector<double>& v, double z_lo_km,
                       double z_hi_km);
 
+// {extinction, absorption, g} of a table on wavelengths wl (um, increasing) at
+// wavelength_um, linear between the table's wavelengths and held beyond its ends (the
+// cloud and cirrus columns of LOWTRAN 7's cloud_models.txt).
+std::array<double, 3> table_optics(const std::vector<double>& wl, const std::vector<double>& ext,
+                                   const std::vector<double>& abs, const std::vector<double>& g,
+                                   double wavelength_um);
+
 // Two scatterers in one slab: optical depths add, ssa extinction-weighted, g
 // scattering-weighted.
 AerosolLayerOptics combine(const AerosolLayerOptics& a, const AerosolLayerOptics& b);
