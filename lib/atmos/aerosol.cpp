@@ -323,8 +323,7 @@ std::array<std::vector<double>, 3> boundary_layer_optics(
 }  // namespace
 
 AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& profile,
-                                     const std::string& data_dir,
-                                     std::optional<double> asymmetry_g,
+                                     const std::string& data_dir, std::optional<double> asymmetry_g,
                                      const io::CdkUserOptics* user) {
     check_card2(card2);
     if (card2.ihaze == 7 && !user) reject("IHAZE", "7 (user-defined aerosol) needs CARD 2D");

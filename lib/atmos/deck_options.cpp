@@ -70,8 +70,8 @@ bool same_atmosphere(const io::CdkRun& a, const io::CdkRun& b) {
     c1a.noprt = c1b.noprt = 0;  // printing
     c1a.im = c1b.im = 0;        // a profile re-read or reused
     return c1a == c1b && a.card2 == b.card2 && a.cirrus == b.cirrus && a.vsa == b.vsa &&
-           a.profile == b.profile && a.user_optics == b.user_optics && a.geometry.iph == b.geometry.iph &&
-           a.geometry.asymmetry_g == b.geometry.asymmetry_g;
+           a.profile == b.profile && a.user_optics == b.user_optics &&
+           a.geometry.iph == b.geometry.iph && a.geometry.asymmetry_g == b.geometry.asymmetry_g;
 }
 
 // Month and day of day-of-year `doy` (1-based) in `year`.

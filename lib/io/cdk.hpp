@@ -36,13 +36,13 @@ struct CdkCard1 {
 
 // CARD 2: IHAZE,ISEASN,IVULCN,ICSTL,ICLD,IVSA,VIS,WSS,WHH,RAINRT,GNDALT  FORMAT(6I5,5F10.3)
 struct CdkCard2 {
-    int ihaze = 0;             // aerosol model 0-10 (7: user defined, CARD 2D)
-    int iseasn = 0;            // 0 model's season, 1 spring-summer, 2 fall-winter
-    int ivulcn = 0;            // stratospheric aerosol 0-8
-    int icstl = 0;             // air mass character 0-10 (navy maritime only)
-    int icld = 0;              // cloud/rain 0-10, 11 user defined (CARD 2D), 18-20 cirrus
-    int ivsa = 0;              // 1 army vertical structure algorithm (CARD 2B follows)
-    double visibility_km = 0;  // VIS (0: the aerosol model's default)
+    int ihaze = 0;                  // aerosol model 0-10 (7: user defined, CARD 2D)
+    int iseasn = 0;                 // 0 model's season, 1 spring-summer, 2 fall-winter
+    int ivulcn = 0;                 // stratospheric aerosol 0-8
+    int icstl = 0;                  // air mass character 0-10 (navy maritime only)
+    int icld = 0;                   // cloud/rain 0-10, 11 user defined (CARD 2D), 18-20 cirrus
+    int ivsa = 0;                   // 1 army vertical structure algorithm (CARD 2B follows)
+    double visibility_km = 0;       // VIS (0: the aerosol model's default)
     double wind_speed_m_s = 0;      // WSS
     double wind_speed_24h_m_s = 0;  // WHH
     double rain_rate_mm_h = 0;      // RAINRT
@@ -166,9 +166,9 @@ struct CdkRun {
     CdkRunKind kind = CdkRunKind::Full;
     CdkCard1 card1;
     CdkCard2 card2;
-    std::optional<CdkCirrus> cirrus;    // CARD 2A
-    std::optional<CdkVsa> vsa;          // CARD 2B
-    std::optional<CdkProfile> profile;  // CARD 2C and its layers (MODEL 0 or 7)
+    std::optional<CdkCirrus> cirrus;           // CARD 2A
+    std::optional<CdkVsa> vsa;                 // CARD 2B
+    std::optional<CdkProfile> profile;         // CARD 2C and its layers (MODEL 0 or 7)
     std::optional<CdkUserOptics> user_optics;  // CARD 2D (IHAZE 7 or ICLD 11)
     CdkGeometry geometry;
     CdkSpectral spectral;

@@ -13,10 +13,10 @@ namespace sigchain::io {
 
 // EXTDTA's VX2 (um), the wavelengths of every aerosol and cloud table of LOWTRAN 7.
 const std::array<double, kCdkUserWavelengths> kCdkUserWavelengths_um = {
-    0.2,  0.3,  0.3371, 0.55, 0.6943, 1.06, 1.536, 2.0,   2.25, 2.5,  2.7,  3.0,
-    3.3923, 3.75, 4.5,  5.0,  5.5,  6.0,  6.2,   6.5,  7.2,  7.9,  8.2,  8.7,
-    9.0,  9.2,  10.0, 10.591, 11.0, 11.5, 12.5, 14.8, 15.0, 16.4, 17.2, 18.5,
-    21.3, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0, 150.0, 200.0, 300.0};
+    0.2,    0.3,  0.3371, 0.55,   0.6943, 1.06, 1.536, 2.0,   2.25,  2.5,   2.7,  3.0,
+    3.3923, 3.75, 4.5,    5.0,    5.5,    6.0,  6.2,   6.5,   7.2,   7.9,   8.2,  8.7,
+    9.0,    9.2,  10.0,   10.591, 11.0,   11.5, 12.5,  14.8,  15.0,  16.4,  17.2, 18.5,
+    21.3,   25.0, 30.0,   40.0,   50.0,   60.0, 80.0,  100.0, 150.0, 200.0, 300.0};
 
 namespace {
 
@@ -100,8 +100,10 @@ CdkUserOptics read_cdk_card2d(const CdkNextCard& next) {
         long v = c.integer(1 + 5 * k, 5, names[k]);
         if (v != 0 && v != 1)
             c.fail(names[k], 1 + 5 * k, 5,
-                   std::string("expected ") + names[k] + " 0 (the region's own model) or 1 "
-                   "(CARD 2D1 and 2D2 follow), found " + quoted(std::to_string(v)));
+                   std::string("expected ") + names[k] +
+                       " 0 (the region's own model) or 1 "
+                       "(CARD 2D1 and 2D2 follow), found " +
+                       quoted(std::to_string(v)));
         ireg[k] = static_cast<int>(v);
     }
     c.require_blank_from(21);

@@ -12,7 +12,8 @@
 namespace sigchain::io {
 
 // The next card of the deck, named for messages, with its field layout.
-using CdkNextCard = std::function<fortran::Card(const std::string& name, const std::string& layout)>;
+using CdkNextCard =
+    std::function<fortran::Card(const std::string& name, const std::string& layout)>;
 
 // Reads CARD 2D and, for each region with IREG 1, CARD 2D1 and the 16 lines of CARD
 // 2D2; throws DataError naming the card, field and columns of the first problem.

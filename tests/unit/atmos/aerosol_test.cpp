@@ -56,9 +56,10 @@ std::string deck_with_card2d(int ihaze, int icld, const std::array<int, 4>& ireg
                              const std::vector<std::vector<double>>& rows, int ext, int abs,
                              int g) {
     char c2[128];
-    std::snprintf(c2, sizeof c2, "%5d%5d%5d%5d%5d%5d%10.3f%10.3f%10.3f%10.3f%10.3f", ihaze, 0,
-                  0, 0, icld, 0, 23.0, 0.0, 0.0, 0.0, 0.0);
-    std::string d = "    6    2    2    1    0    0    0    0    0    0    1    0    1   0.000   0.00\n";
+    std::snprintf(c2, sizeof c2, "%5d%5d%5d%5d%5d%5d%10.3f%10.3f%10.3f%10.3f%10.3f", ihaze, 0, 0, 0,
+                  icld, 0, 23.0, 0.0, 0.0, 0.0, 0.0);
+    std::string d =
+        "    6    2    2    1    0    0    0    0    0    0    1    0    1   0.000   0.00\n";
     d += std::string(c2) + "\n";
     char ir[32];
     std::snprintf(ir, sizeof ir, "%5d%5d%5d%5d", ireg[0], ireg[1], ireg[2], ireg[3]);
@@ -289,13 +290,14 @@ TEST(AtmosAerosol, UserDefinedRuralCoefficientsGiveTheRuralModel) {
     const io::CdkRun run = parsed(deck_with_card2d(7, 0, {1, 0, 0, 0}, rural, 1, 5, 9));
     ASSERT_TRUE(run.user_optics);
     const Profile dry = uniform_rh(0);
-    const auto user = AerosolModel::from_deck(run.card2, dry, kData, std::nullopt,
-                                              &*run.user_optics);
+    const auto user =
+        AerosolModel::from_deck(run.card2, dry, kData, std::nullopt, &*run.user_optics);
     const auto ihaze1 = AerosolModel::from_deck(card2(1, 23), dry, kData);
     EXPECT_EQ(user.visibility_km(), 23);
     for (double lambda : {0.25, 0.55, 0.6, 1.06, 2.2, 3.9, 10.6, 250.0})
         for (auto [lo, hi] : {std::pair{0.0, 0.4}, {0.4, 1.7}, {1.7, 3.5}, {3.5, 12.0}}) {
-            const AerosolLayerOptics a = user.layer(lo, hi, lambda), b = ihaze1.layer(lo, hi, lambda);
+            const AerosolLayerOptics a = user.layer(lo, hi, lambda),
+                                     b = ihaze1.layer(lo, hi, lambda);
             // 1e-12 relative: IHAZE 1's effective RH over a uniform 0 % profile is
             // 100 - exp(mean ln 100), 0 to a few ulps, so its ln-ln interpolation weight
             // differs from 0 by about 1e-16; everything else is the same arithmetic.
@@ -312,8 +314,8 @@ TEST(AtmosAerosol, UserDefinedRuralCoefficientsGiveTheRuralModel) {
 TEST(AtmosAerosol, UserDefinedAerosolWithoutTheBoundaryLayer) {
     const auto rural = table_rows("aerosol_rural.txt");
     const io::CdkRun run = parsed(deck_with_card2d(7, 0, {0, 1, 0, 0}, rural, 1, 5, 9));
-    const auto m = AerosolModel::from_deck(run.card2, uniform_rh(50), kData, std::nullopt,
-                                           &*run.user_optics);
+    const auto m =
+        AerosolModel::from_deck(run.card2, uniform_rh(50), kData, std::nullopt, &*run.user_optics);
     EXPECT_EQ(m.layer(0, 1.0, 0.55).tau_ext, 0);
     EXPECT_GT(m.layer(3, 9, 0.55).tau_ext, 0);
     EXPECT_THROW(AerosolModel::from_deck(card2(7, 23), uniform_rh(50), kData), DataError);

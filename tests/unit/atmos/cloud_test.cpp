@@ -243,10 +243,11 @@ namespace {
 // the deck reader: CARD 2D2 written with printf's F6.2,2F7.5,F6.4.
 io::CdkUserOptics user_cloud(int ext, int abs, int g, double ext_scale = 1) {
     std::ifstream in(kData + "/atmosphere/lowtran7/cloud_models.txt");
-    std::string text = "    6    2    2    1    0    0    0    0    0    0    1    0    1   0.000   0.00\n"
-                       "    1    0    0    0   11    0    23.000     0.000     0.000     0.000     0.000\n"
-                       "    0    1    0    0\n"
-                       " 7.683E-03CLOUD\n";
+    std::string text =
+        "    6    2    2    1    0    0    0    0    0    0    1    0    1   0.000   0.00\n"
+        "    1    0    0    0   11    0    23.000     0.000     0.000     0.000     0.000\n"
+        "    0    1    0    0\n"
+        " 7.683E-03CLOUD\n";
     int i = 0;
     for (std::string line; std::getline(in, line);) {
         if (line.empty() || line[0] == '#') continue;
@@ -260,10 +261,11 @@ io::CdkUserOptics user_cloud(int ext, int abs, int g, double ext_scale = 1) {
         text += grp;
         if (++i % 3 == 0 || i == 47) text += "\n";
     }
-    text += "     1.000     0.000   180.000     0.000     0.000     0.000    0\n"
-            "    1    2  273    0\n"
-            "    43.083    77.667     0.000     0.000    19.000    90.000     0.000     0.000\n"
-            " 14000.000 25000.000   100.000\n    0\n";
+    text +=
+        "     1.000     0.000   180.000     0.000     0.000     0.000    0\n"
+        "    1    2  273    0\n"
+        "    43.083    77.667     0.000     0.000    19.000    90.000     0.000     0.000\n"
+        " 14000.000 25000.000   100.000\n    0\n";
     return *io::parse_cdk(TextInput::from_string(text, "t.cdk")).runs.at(0).user_optics;
 }
 

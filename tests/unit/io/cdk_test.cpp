@@ -250,8 +250,7 @@ TEST(Cdk, Card2dRejectsMalformedCards) {
     auto lines = ihaze7_lines();
     lines.erase(lines.begin() + 55, lines.begin() + 57);
     const std::string e = error_of(joined(lines));
-    EXPECT_EQ(e.rfind("t.cdk:56: CARD 2D2 (region 4, line 15 of 16) VX(43) (columns 1-6): ", 0),
-              0u)
+    EXPECT_EQ(e.rfind("t.cdk:56: CARD 2D2 (region 4, line 15 of 16) VX(43) (columns 1-6): ", 0), 0u)
         << e;
 }
 
