@@ -1,8 +1,10 @@
 #!/usr/bin/env bats
-# Tests: build_radiance (LOWTRAN 7 cloud, rain and cirrus models, CARD 2 ICLD and RAINRT, CARD 2A)
+# Tests: build_radiance (LOWTRAN 7 cloud, rain and cirrus models, CARD 2 ICLD and RAINRT, CARD 2A;
+# user-defined aerosol and cloud coefficients, IHAZE 7 and ICLD 11 with CARD 2D)
 # Also requires: tests/data/build_radiance/{small.snd,rural23.cdk},
 # tests/data/control7/hawkeye.answers, tests/data/white1996/30Sep95800L.rsd,
-# data/atmosphere/lowtran7/cloud_*.txt (reference data)
+# tests/data/white1996/flyover.cdk, man/cdk.5.scd (its second EXAMPLE),
+# data/atmosphere/lowtran7/cloud_*.txt and aerosol_rural.txt (reference data)
 load test_helper
 
 DATA="$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance"
@@ -204,4 +206,28 @@ card2d() {
     run -1 --separate-stderr build_radiance "${QUICK[@]}" ireg3.cdk "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"CARD 2D IREG(3) (columns 11-15) is 1 with ICLD 3: with a cloud LOWTRAN 7 makes the cloud aerosol region 2"* ]] ||
         fail "stderr: $stderr"
+}
+
+# rural23.cdk's cards as MODEL 7 with IHAZE $1, IPH 0 (Henyey-Greenstein with G) and the
+# 19 layers of White (1996)'s profile (tests/data/white1996/flyover.cdk) made dry: H2O
+# given as relative humidity (JCHAR H) 0 %.
+dry_deck() {
+    sed -n 1p "$DATA/rural23.cdk" | sed 's/^    6/    7/; s/^\(.\{55\}\)    0/\1    1/'
+    sed -n 2p "$DATA/rural23.cdk" | sed "s/^    1/$(printf '%5d' "$1")/"
+    local white="$SIGCHAIN_SOURCE_DIR/tests/data/white1996/flyover.cdk"
+    sed -n 3p "$white"
+    sed -n 4,22p "$white" | awk '{ printf "%s 0.000E+00%sABH\n", substr($0, 1, 30), substr($0, 41, 20) }'
+}
+
+@test "IHAZE 7 with the rural model's RH 0 % coefficients (CARD 2D2) makes IHAZE 1's tables over a dry profile, byte for byte" {
+    { dry_deck 1; sed -n '3,$p' "$DATA/rural23.cdk"; } | sed 's/^    1    2  273    0$/    1    0  273    0/' > dry1.cdk
+    { dry_deck 7; card2d "    1    0    0    0" 2 6 10 aerosol_rural.txt; sed -n '3,$p' "$DATA/rural23.cdk"; } |
+        sed 's/^    1    2  273    0$/    1    0  273    0/' > dry7.cdk
+    grep -q '^    1    0  273    0$' dry7.cdk
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" dry1.cdk "$DATA/small.snd" -o 'd1-%d.rad'
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" dry7.cdk "$DATA/small.snd" -o 'd7-%d.rad'
+    # The same 0.55-um profiles (VIS 23), the same coefficients (IHAZE 1's ln-ln
+    # interpolation in RH lands on its 0 % column), the same interpolation in wavelength.
+    cmp d1-1.rad d7-1.rad
+    cmp d1-2.rad d7-2.rad
 }
