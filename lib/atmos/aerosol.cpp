@@ -194,7 +194,6 @@ int strat_optics_column(int ivulcn) {
 
 void check_card2(const io::CdkCard2& c) {
     if (c.ihaze < 0 || c.ihaze > 10) reject("IHAZE", "expected 0-10");
-    if (c.ihaze == 7) reject("IHAZE", "7 (user-defined aerosol, CARD 2D) is not supported");
     if (c.iseasn < 0 || c.iseasn > 2) reject("ISEASN", "expected 0-2");
     if (c.ivulcn < 0 || c.ivulcn > 8) reject("IVULCN", "expected 0-8");
     if (c.icld != 0) reject("ICLD", "clouds and rain are not modelled (use ICLD 0)");
@@ -309,6 +308,9 @@ std::array<std::vector<double>, 3> boundary_layer_optics(
                                 rh_eff);
         case 6:
             return humid_optics(trop_table, rh_eff);
+        case 7:  // CARD 2D with IREG(1) 0: LOWTRAN's EXABIN leaves the coefficients 0
+            return {std::vector<double>(47, 0), std::vector<double>(47, 0),
+                    std::vector<double>(47, 0)};
         case 8:
         case 9:
             return fixed_optics(read_table(table_path(data_dir, "aerosol_fog.txt"), 7, 47),
@@ -321,9 +323,10 @@ std::array<std::vector<double>, 3> boundary_layer_optics(
 }  // namespace
 
 AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& profile,
-                                     const std::string& data_dir,
-                                     std::optional<double> asymmetry_g) {
+                                     const std::string& data_dir, std::optional<double> asymmetry_g,
+                                     const io::CdkUserOptics* user) {
     check_card2(card2);
+    if (card2.ihaze == 7 && !user) reject("IHAZE", "7 (user-defined aerosol) needs CARD 2D");
     AerosolModel m;
     const Table rural = read_table(table_path(data_dir, "aerosol_rural.txt"), 13, 47);
     for (const auto& row : rural) m.m_wavelength_um.push_back(row[0]);
@@ -357,6 +360,16 @@ AerosolModel AerosolModel::from_deck(const io::CdkCard2& card2, const Profile& p
     const Table strat = read_table(table_path(data_dir, "aerosol_stratospheric.txt"), 13, 47);
     m.m_optics[2] = optics(fixed_optics(strat, strat_optics_column(card2.ivulcn)));
     m.m_optics[3] = optics(fixed_optics(strat, 10));  // meteoric dust
+    // CARD 2D: a region with IREG 1 takes the deck's coefficients on the tables' own 47
+    // wavelengths, times the region's 0.55-um profile as they stand (LOWTRAN 7 EXABIN,
+    // RDEXA, AEREXT: no renormalisation, VX unused).
+    if (user)
+        for (std::size_t r = 0; r < kRegions; ++r)
+            if (const auto& u = user->regions[r]) {
+                m.m_optics[r].ext.assign(u->extinction.begin(), u->extinction.end());
+                m.m_optics[r].abs.assign(u->absorption.begin(), u->absorption.end());
+                m.m_optics[r].g.assign(u->asymmetry.begin(), u->asymmetry.end());
+            }
     if (asymmetry_g)  // IPH 0: Henyey-Greenstein with the deck's G for every aerosol
         for (Optics& o : m.m_optics) std::fill(o.g.begin(), o.g.end(), *asymmetry_g);
     return m;

@@ -30,10 +30,12 @@ public:
     // humidity-dependent models). IHAZE 0 gives no aerosol. Throws DataError naming
     // the card and field for a model that is not supported.
     // asymmetry_g, when given (the deck's G with IPH 0, CARD 3A2), replaces every
-    // model's tabulated asymmetry parameter.
+    // model's tabulated asymmetry parameter. `user` (CARD 2D, needed by IHAZE 7) gives
+    // the regions with IREG 1 the deck's coefficients, in AerosolModel's region order.
     static AerosolModel from_deck(const io::CdkCard2& card2, const Profile& profile,
                                   const std::string& data_dir,
-                                  std::optional<double> asymmetry_g = std::nullopt);
+                                  std::optional<double> asymmetry_g = std::nullopt,
+                                  const io::CdkUserOptics* user = nullptr);
 
     // Extinction coefficient (km-1) at altitude z (km MSL) and wavelength (um).
     double extinction_km1(double z_km, double wavelength_um) const;

@@ -59,20 +59,28 @@ const std::array<double, 12>& CloudModel::level_heights_km() {
 
 std::optional<CloudModel> CloudModel::from_deck(const io::CdkCard2& card2, double ground_km,
                                                 const std::string& data_dir,
-                                                std::optional<double> asymmetry_g) {
+                                                std::optional<double> asymmetry_g,
+                                                const io::CdkUserOptics* user) {
     if (card2.icld == 0 || card2.icld == 18 || card2.icld == 19) return std::nullopt;
     if (!modelled(card2.icld))
         throw DataError(kCard2, "CARD 2 ICLD: " + std::to_string(card2.icld) +
-                                    " is not modelled (clouds and rain 1-10 and cirrus 18-19 "
-                                    "are; 11 and 20 are not)");
+                                    " is not modelled (clouds and rain 1-11 and cirrus 18-19 "
+                                    "are; 20 is not)");
+    // CARD 2D IREG(2): with a cloud LOWTRAN 7's aerosol region 2 is the cloud, whose
+    // coefficients EXABIN then leaves as the deck gave them; without them ICLD 11 takes
+    // the cumulus's (EXABIN's cloud table for IC 11).
+    const io::CdkUserRegion* u = user && user->regions[1] ? &*user->regions[1] : nullptr;
     const int m = cloud_of(card2.icld) - 1;
     const std::string dir = data_dir + "/atmosphere/lowtran7/";
     CloudModel c;
     for (const auto& row : read_rows(dir + "cloud_models.txt", 22, 47)) {
+        const std::size_t i = c.m_wavelength_um.size();
         c.m_wavelength_um.push_back(row[0]);
-        c.m_ext.push_back(row[1 + 3 * m]);
-        c.m_abs.push_back(row[2 + 3 * m]);
-        c.m_g.push_back(asymmetry_g ? *asymmetry_g : row[3 + 3 * m]);
+        // CARD 2D2's coefficients on the same 47 wavelengths (LOWTRAN 7 RDEXA, EXABIN;
+        // VX is not used), times LWC / the model's equivalent LWC as they stand (HAZEC).
+        c.m_ext.push_back(u ? u->extinction[i] : row[1 + 3 * m]);
+        c.m_abs.push_back(u ? u->absorption[i] : row[2 + 3 * m]);
+        c.m_g.push_back(asymmetry_g ? *asymmetry_g : u ? u->asymmetry[i] : row[3 + 3 * m]);
     }
     const auto prof = read_rows(dir + "cloud_rain_profiles.txt", 11, 12);
     for (std::size_t i = 0; i < prof.size(); ++i) {

@@ -19,13 +19,15 @@ public:
     // The water clouds build_radiance models: ICLD 1 cumulus, 2 altostratus, 3 stratus,
     // 4 stratus/stratocumulus, 5 nimbostratus, and the clouds of the rain models 6-10
     // (stratus under the drizzle 6, nimbostratus under 7 and 8, cumulus under 9 and 10;
-    // their rain is rain.hpp's). ICLD 11 (user defined) and 20 (NOAA cirrus) are not;
-    // cirrus 18 and 19 are cirrus.hpp's.
-    static bool modelled(int icld) { return icld >= 1 && icld <= 10; }
-    // The water cloud (1-5) of a cloud or rain model (1-10): LOWTRAN 7's LAYCLD and
-    // AEREXT pair the rain models with the clouds 3, 5, 5, 1, 1.
+    // their rain is rain.hpp's) and 11, the user-defined cloud (CARD 2D). 20 (NOAA
+    // cirrus) is not; cirrus 18 and 19 are cirrus.hpp's.
+    static bool modelled(int icld) { return icld >= 1 && icld <= 11; }
+    // The water cloud (1-5) whose liquid water profile a cloud or rain model (1-11) takes:
+    // LOWTRAN 7's LAYCLD pairs the rain models with the clouds 3, 5, 5, 1, 1 and the
+    // user-defined cloud 11 with the cumulus 1 (MC=1), whose LWC per km-1 (CULWC) its
+    // HAZEC also divides by.
     static int cloud_of(int icld) {
-        constexpr int kRainCloud[5] = {3, 5, 5, 1, 1};
+        constexpr int kRainCloud[6] = {3, 5, 5, 1, 1, 1};
         return icld <= 5 ? icld : kRainCloud[icld - 6];
     }
 
@@ -36,10 +38,13 @@ public:
     // The deck's water cloud: nullopt for ICLD 0, 18 and 19. `ground_km` is the ground
     // altitude (km MSL) the cloud levels stand on. asymmetry_g, when given (IPH 0, CARD 3A2),
     // replaces the tabulated g as it does for the aerosols. Throws DataError for an ICLD that is
-    // not modelled.
+    // not modelled. With `user`'s region 2 (CARD 2D IREG(2) 1: LOWTRAN 7 makes the cloud
+    // aerosol region 2) the cloud takes its extinction, absorption and asymmetry; ICLD 11
+    // without them is the cumulus.
     static std::optional<CloudModel> from_deck(const io::CdkCard2& card2, double ground_km,
                                                const std::string& data_dir,
-                                               std::optional<double> asymmetry_g = std::nullopt);
+                                               std::optional<double> asymmetry_g = std::nullopt,
+                                               const io::CdkUserOptics* user = nullptr);
 
     // Liquid water content (g m-3) at altitude z (km MSL).
     double lwc_g_m3(double z_km) const;

@@ -35,7 +35,10 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     const std::optional<double> g =
         user_g ? std::optional<double>(run.geometry.asymmetry_g) : std::nullopt;
     m_cirrus = CirrusModel::from_deck(run, o.data_dir, g);
-    m_rain = RainModel::from_deck(run.card2, ground, o.data_dir,
+    // LOWTRAN 7's LAYCLD gives ICLD 11 the cumulus's levels and rain rule (MC=1, MR=6).
+    io::CdkCard2 rain_card = run.card2;
+    if (rain_card.icld == 11) rain_card.icld = 1;
+    m_rain = RainModel::from_deck(rain_card, ground, o.data_dir,
                                   m_cirrus ? m_cirrus->levels_km() : std::vector<double>{});
     // A cloud, rain or cirrus model adds its levels to the profile, as LOWTRAN 7's FLAYZ
     // does (those within the column).
@@ -55,8 +58,20 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
         throw Error("internal: the sensor altitude is not a level of the resampled profile");
     io::CdkCard2 aerosol_card = run.card2;
     aerosol_card.icld = 0;  // the cloud, rain and cirrus are m_cloud's, m_rain's, m_cirrus's
-    m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g));
-    m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g);
+    // CARD 2D: with a cloud (ICLD 1-11) LOWTRAN 7 makes the cloud aerosol region 2, so
+    // only IREG(1) (the boundary layer) is the aerosol's; IREG(2) is the cloud's
+    // (deck_options refuses the others).
+    std::optional<io::CdkUserOptics> aerosol_user = run.user_optics;
+    if (aerosol_user && CloudModel::modelled(run.card2.icld))
+        for (std::size_t r = 1; r < aerosol_user->regions.size(); ++r)
+            aerosol_user->regions[r].reset();
+    const io::CdkUserOptics* user = aerosol_user ? &*aerosol_user : nullptr;
+    m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g, user));
+    if (user)
+        for (std::size_t r = 0; r < m_user_region.size(); ++r)
+            m_user_region[r] = user->regions[r].has_value();
+    m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g,
+                                    run.user_optics ? &*run.user_optics : nullptr);
     if (run.card1.iemsct == 2 && run.geometry.iph == 2) m_mie = MiePhaseTable::load(o.data_dir);
     m_ihaze = run.card2.ihaze;
     m_ivulcn = run.card2.ivulcn;
@@ -67,6 +82,8 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
 
 std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double wavelength_um) const {
     if (!m_mie) return std::nullopt;
+    // LOWTRAN 7's Mie tables belong to its own models, not to CARD 2D's coefficients.
+    if (m_user_region[static_cast<std::size_t>(region)]) return std::nullopt;
     return m_mie->region(region, m_ihaze, m_ivulcn, m_aerosol->boundary_layer_rh_percent(),
                          wavelength_um);
 }

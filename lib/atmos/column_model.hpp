@@ -116,11 +116,12 @@ private:
     Profile m_profile;
     std::size_t m_sensor_level = 0;
     std::optional<AerosolModel> m_aerosol;
-    std::optional<CloudModel> m_cloud;        // ICLD 1-10: the water cloud
-    std::optional<RainModel> m_rain;          // ICLD 6-10, RAINRT
-    std::optional<CirrusModel> m_cirrus;      // ICLD 18, 19
-    std::optional<MiePhaseTable> m_mie;       // IPH 2
+    std::optional<CloudModel> m_cloud;    // ICLD 1-10: the water cloud
+    std::optional<RainModel> m_rain;      // ICLD 6-10, RAINRT
+    std::optional<CirrusModel> m_cirrus;  // ICLD 18, 19
+    std::optional<MiePhaseTable> m_mie;   // IPH 2
     int m_ihaze = 0, m_ivulcn = 0;
+    std::array<bool, 4> m_user_region{};      // CARD 2D IREG: Henyey-Greenstein with its ASYM
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
     std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,

@@ -38,6 +38,17 @@ void run_refusals(const io::CdkRun& run, const std::string& pre, std::vector<std
                ": the NOAA cirrus of LOWTRAN 6, its thickness and base drawn at random, is "
                "not modelled by build_radiance (use 0, the clouds and rain 1-10, or the "
                "cirrus 18-19)");
+    if (run.user_optics && c2.icld >= 1 && c2.icld <= 11)
+        for (int k = 2; k < 4; ++k) {  // IREG(2) is the cloud's
+            if (!run.user_optics->regions[static_cast<std::size_t>(k)]) continue;
+            refuse("CARD 2D IREG(" + std::to_string(k + 1) + ") (columns " +
+                   std::to_string(5 * k + 1) + "-" + std::to_string(5 * k + 5) +
+                   ") is 1 with ICLD " + std::to_string(c2.icld) +
+                   ": with a cloud LOWTRAN 7 makes the cloud aerosol region 2 and moves the "
+                   "troposphere and stratosphere up one region, which build_radiance does not "
+                   "(it keeps its clouds apart from the four aerosol regions); use IREG(1) and "
+                   "IREG(2) only, or ICLD 0");
+        }
     if (c2.ivsa != 0)
         refuse(
             "CARD 2 IVSA (columns 26-30) is 1: the army vertical structure algorithm is not "
@@ -59,8 +70,8 @@ bool same_atmosphere(const io::CdkRun& a, const io::CdkRun& b) {
     c1a.noprt = c1b.noprt = 0;  // printing
     c1a.im = c1b.im = 0;        // a profile re-read or reused
     return c1a == c1b && a.card2 == b.card2 && a.cirrus == b.cirrus && a.vsa == b.vsa &&
-           a.profile == b.profile && a.geometry.iph == b.geometry.iph &&
-           a.geometry.asymmetry_g == b.geometry.asymmetry_g;
+           a.profile == b.profile && a.user_optics == b.user_optics &&
+           a.geometry.iph == b.geometry.iph && a.geometry.asymmetry_g == b.geometry.asymmetry_g;
 }
 
 // Month and day of day-of-year `doy` (1-based) in `year`.

@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "io/cdk_card2d.hpp"
 #include "io/fortran_columns.hpp"
 
 namespace sigchain::io {
@@ -114,11 +115,6 @@ CdkCard2 read_card2(DeckReader& r) {
                "expected GNDALT (km) at least 0 and below 6, found " +
                    quoted(format_number(k.ground_altitude_km)));
     c.require_blank_from(81);
-    // CARD 2D/2D1/2D2 (user-defined aerosol or cloud coefficients) are not read.
-    if (k.ihaze == 7)
-        c.fail("IHAZE", 1, 5, "IHAZE 7 (user-defined aerosol, CARD 2D) is not supported");
-    if (k.icld == 11)
-        c.fail("ICLD", 21, 5, "ICLD 11 (user-defined cloud, CARD 2D) is not supported");
     return k;
 }
 
@@ -392,6 +388,11 @@ CdkRun read_full_run(DeckReader& r, const CdkRun* previous) {
                                           " (IM 0 reuses an earlier run's profile, and there is "
                                           "none), found '0'");
     }
+    // CARD 2D follows the profile (LOWTRAN 7 calls RDEXA after AERNSM).
+    if (run.card2.ihaze == 7 || run.card2.icld == 11)
+        run.user_optics = read_cdk_card2d([&r](const std::string& name, const std::string& layout) {
+            return r.next(name, layout);
+        });
     run.geometry = read_geometry(r, run.card1);
     run.spectral = read_card4(r);
     return run;

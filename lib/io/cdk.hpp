@@ -36,13 +36,13 @@ struct CdkCard1 {
 
 // CARD 2: IHAZE,ISEASN,IVULCN,ICSTL,ICLD,IVSA,VIS,WSS,WHH,RAINRT,GNDALT  FORMAT(6I5,5F10.3)
 struct CdkCard2 {
-    int ihaze = 0;             // aerosol model 0-10 (7, user defined, is not supported)
-    int iseasn = 0;            // 0 model's season, 1 spring-summer, 2 fall-winter
-    int ivulcn = 0;            // stratospheric aerosol 0-8
-    int icstl = 0;             // air mass character 0-10 (navy maritime only)
-    int icld = 0;              // cloud/rain 0-10, 18-20 cirrus (11, user defined, is not supported)
-    int ivsa = 0;              // 1 army vertical structure algorithm (CARD 2B follows)
-    double visibility_km = 0;  // VIS (0: the aerosol model's default)
+    int ihaze = 0;                  // aerosol model 0-10 (7: user defined, CARD 2D)
+    int iseasn = 0;                 // 0 model's season, 1 spring-summer, 2 fall-winter
+    int ivulcn = 0;                 // stratospheric aerosol 0-8
+    int icstl = 0;                  // air mass character 0-10 (navy maritime only)
+    int icld = 0;                   // cloud/rain 0-10, 11 user defined (CARD 2D), 18-20 cirrus
+    int ivsa = 0;                   // 1 army vertical structure algorithm (CARD 2B follows)
+    double visibility_km = 0;       // VIS (0: the aerosol model's default)
     double wind_speed_m_s = 0;      // WSS
     double wind_speed_24h_m_s = 0;  // WHH
     double rain_rate_mm_h = 0;      // RAINRT
@@ -93,6 +93,32 @@ struct CdkProfile {
     bool operator==(const CdkProfile&) const = default;
 };
 
+// The 47 wavelengths (um) of LOWTRAN 7's aerosol and cloud tables (EXTDTA's VX2), to
+// which CARD 2D2's coefficients belong.
+inline constexpr int kCdkUserWavelengths = 47;
+extern const std::array<double, kCdkUserWavelengths> kCdkUserWavelengths_um;
+
+// One region's CARD 2D1 (AWCCON,TITLE  FORMAT(E10.3,18A4)) and CARD 2D2
+// ((VX(I),EXTC(N,I),ABSC(N,I),ASYM(N,I),I=1,47)  FORMAT(3(F6.2,2F7.5,F6.4)), 16 lines).
+struct CdkUserRegion {
+    double liquid_water_g_m3 = 0;  // AWCCON, equivalent liquid water content
+    std::string title;             // up to 72 characters, trailing blanks dropped
+    std::array<double, kCdkUserWavelengths> wavelength_um{};  // VX, the tables' wavelengths
+    std::array<double, kCdkUserWavelengths> extinction{};     // EXTC, 1 at 0.55 um for aerosols
+    std::array<double, kCdkUserWavelengths> absorption{};     // ABSC, same unit, <= EXTC
+    std::array<double, kCdkUserWavelengths> asymmetry{};      // ASYM, in (-1, 1)
+    bool operator==(const CdkUserRegion&) const = default;
+};
+
+// CARD 2D (IHAZE=7 or ICLD=11): IREG(1..4)  FORMAT(4I5), then CARD 2D1 and 2D2 for each
+// region with IREG 1 (LOWTRAN 7 subroutine RDEXA). Regions in LOWTRAN's order: boundary
+// layer, troposphere, stratosphere, upper atmosphere (with ICLD 11: boundary layer, the
+// cloud, troposphere, stratosphere).
+struct CdkUserOptics {
+    std::array<std::optional<CdkUserRegion>, 4> regions;  // set where IREG is 1
+    bool operator==(const CdkUserOptics&) const = default;
+};
+
 // CARD 3B2 (IPH=1): ANGF,F(1..4)  FORMAT(5E10.3)
 struct CdkPhaseAngle {
     double angle_deg = 0;
@@ -140,9 +166,10 @@ struct CdkRun {
     CdkRunKind kind = CdkRunKind::Full;
     CdkCard1 card1;
     CdkCard2 card2;
-    std::optional<CdkCirrus> cirrus;    // CARD 2A
-    std::optional<CdkVsa> vsa;          // CARD 2B
-    std::optional<CdkProfile> profile;  // CARD 2C and its layers (MODEL 0 or 7)
+    std::optional<CdkCirrus> cirrus;           // CARD 2A
+    std::optional<CdkVsa> vsa;                 // CARD 2B
+    std::optional<CdkProfile> profile;         // CARD 2C and its layers (MODEL 0 or 7)
+    std::optional<CdkUserOptics> user_optics;  // CARD 2D (IHAZE 7 or ICLD 11)
     CdkGeometry geometry;
     CdkSpectral spectral;
     int irpt = 0;  // CARD 5: 0 end, 1 all cards again, 3 CARD 3 again, 4 CARD 4 again
@@ -164,6 +191,8 @@ Cdk parse_cdk(const TextInput& in);
 // Writes the deck in LOWTRAN 7's columns (trailing blanks dropped). Throws
 // sigchain::Error if a value does not fit its field.
 void write_cdk(std::ostream& out, const Cdk& cdk);
+// Writes CARD 2D, 2D1 and 2D2 (cdk_card2d.cpp).
+void write_cdk_card2d(std::ostream& out, const CdkUserOptics& user);
 inline Cdk read_cdk_file(const std::string& path) { return parse_cdk(TextInput::from_file(path)); }
 FormatHandler cdk_format();
 

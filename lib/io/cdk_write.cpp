@@ -110,6 +110,10 @@ void write_full(std::ostream& out, const CdkRun& run) {
         if (!run.profile) throw Error("MODEL 0/7 with IM 1 needs a CARD 2C profile");
         write_profile(out, *run.profile);
     }
+    if (run.card2.ihaze == 7 || run.card2.icld == 11) {
+        if (!run.user_optics) throw Error("IHAZE 7 or ICLD 11 needs CARD 2D");
+        write_cdk_card2d(out, *run.user_optics);
+    }
     write_geometry(out, run.geometry, run.card1);
     write_card4(out, run.spectral);
 }

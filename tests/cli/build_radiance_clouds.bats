@@ -1,8 +1,10 @@
 #!/usr/bin/env bats
-# Tests: build_radiance (LOWTRAN 7 cloud, rain and cirrus models, CARD 2 ICLD and RAINRT, CARD 2A)
+# Tests: build_radiance (LOWTRAN 7 cloud, rain and cirrus models, CARD 2 ICLD and RAINRT, CARD 2A;
+# user-defined aerosol and cloud coefficients, IHAZE 7 and ICLD 11 with CARD 2D)
 # Also requires: tests/data/build_radiance/{small.snd,rural23.cdk},
 # tests/data/control7/hawkeye.answers, tests/data/white1996/30Sep95800L.rsd,
-# data/atmosphere/lowtran7/cloud_*.txt (reference data)
+# tests/data/white1996/flyover.cdk, man/cdk.5.scd (its second EXAMPLE),
+# data/atmosphere/lowtran7/cloud_*.txt and aerosol_rural.txt (reference data)
 load test_helper
 
 DATA="$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance"
@@ -152,4 +154,80 @@ with_cirrus() {
     run -0 sigchain-check o-1.rad o-2.rad
     # control7 still warns about cirrus (ICLD 18): the unit test
     # Control7Job.WarnsAboutAnOverrideWhoseQuestionIsNotAsked.
+}
+
+# CARD 2D "$1" (IREG(1..4)), then for every region with IREG 1 a CARD 2D1 and the 16
+# lines of CARD 2D2 written by printf (F6.2,2F7.5,F6.4) from columns $2 (ext), $3 (abs)
+# and $4 (g) of the LOWTRAN 7 table $5 (data/atmosphere/lowtran7).
+card2d() {
+    printf '%s\n' "$1"
+    for r in $1; do
+        [ "$r" = 1 ] || continue
+        printf ' 0.000E+00USER\n'
+        awk -v e="$2" -v a="$3" -v g="$4" '!/^#/ && NF {
+            printf "%6.2f%7.5f%7.5f%6.4f", $1, $e, $a, $g
+            if (++n % 3 == 0 || n == 47) printf "\n"
+        }' "$SIGCHAIN_SOURCE_DIR/data/atmosphere/lowtran7/$5"
+    done
+}
+
+@test "ICLD 11 with the cumulus's coefficients in CARD 2D (IREG(2) 1) gives ICLD 1's tables" {
+    with_icld 1 > c1.cdk
+    { with_icld 11 | sed -n 1,2p; card2d "    0    1    0    0" 2 3 4 cloud_models.txt
+      sed -n '3,$p' "$DATA/rural23.cdk"; } > c11.cdk
+    run -0 sigchain-check c11.cdk
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" c1.cdk "$DATA/small.snd" -o 'c1-%d.rad'
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" c11.cdk "$DATA/small.snd" -o 'c11-%d.rad'
+    run -0 sigchain-check c11-1.rad c11-2.rad
+    # The same liquid water (LAYCLD's MC=1), CULWC and coefficients: the same numbers.
+    for b in 1 2; do
+        diff <(grep -v 'c1\.cdk' "c1-$b.rad") <(grep -v 'c11\.cdk' "c11-$b.rad")
+    done
+}
+
+@test "IHAZE 7 (the deck of cdk(5)'s second EXAMPLE) is accepted and makes tables; a truncated CARD 2D2 exits 1 with file:line" {
+    awk '/^# EXAMPLE/{e=1} e && /^```/{n++; next} e && n == 3' \
+        "$SIGCHAIN_SOURCE_DIR/man/cdk.5.scd" > user.cdk
+    run -0 sigchain-check user.cdk
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" user.cdk "$DATA/small.snd" -o 'u-%d.rad'
+    run -0 sigchain-check u-1.rad u-2.rad
+    # CARD 2D2 cut after its 15th line: CARD 3 is read as its 16th and fails at VX(46).
+    sed '20d' user.cdk > cut.cdk
+    run -1 --separate-stderr build_radiance "${QUICK[@]}" cut.cdk "$DATA/small.snd" -o 'x-%d.rad'
+    [[ "$stderr" == "build_radiance: cut.cdk:20: CARD 2D2 (region 1, line 16 of 16) VX(46) (columns 1-6): "* ]] ||
+        fail "stderr: $stderr"
+    [ ! -e x-1.rad ]
+}
+
+@test "CARD 2D IREG(3) with a cloud is refused with card and columns" {
+    { with_icld 3 | sed -n 1,2p | sed "2s/^    1/    7/"; card2d "    1    0    1    0" 2 6 10 aerosol_rural.txt
+      sed -n '3,$p' "$DATA/rural23.cdk"; } > ireg3.cdk
+    run -0 sigchain-check ireg3.cdk
+    run -1 --separate-stderr build_radiance "${QUICK[@]}" ireg3.cdk "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" == *"CARD 2D IREG(3) (columns 11-15) is 1 with ICLD 3: with a cloud LOWTRAN 7 makes the cloud aerosol region 2"* ]] ||
+        fail "stderr: $stderr"
+}
+
+# rural23.cdk's cards as MODEL 7 with IHAZE $1, IPH 0 (Henyey-Greenstein with G) and the
+# 19 layers of White (1996)'s profile (tests/data/white1996/flyover.cdk) made dry: H2O
+# given as relative humidity (JCHAR H) 0 %.
+dry_deck() {
+    sed -n 1p "$DATA/rural23.cdk" | sed 's/^    6/    7/; s/^\(.\{55\}\)    0/\1    1/'
+    sed -n 2p "$DATA/rural23.cdk" | sed "s/^    1/$(printf '%5d' "$1")/"
+    local white="$SIGCHAIN_SOURCE_DIR/tests/data/white1996/flyover.cdk"
+    sed -n 3p "$white"
+    sed -n 4,22p "$white" | awk '{ printf "%s 0.000E+00%sABH\n", substr($0, 1, 30), substr($0, 41, 20) }'
+}
+
+@test "IHAZE 7 with the rural model's RH 0 % coefficients (CARD 2D2) makes IHAZE 1's tables over a dry profile, byte for byte" {
+    { dry_deck 1; sed -n '3,$p' "$DATA/rural23.cdk"; } | sed 's/^    1    2  273    0$/    1    0  273    0/' > dry1.cdk
+    { dry_deck 7; card2d "    1    0    0    0" 2 6 10 aerosol_rural.txt; sed -n '3,$p' "$DATA/rural23.cdk"; } |
+        sed 's/^    1    2  273    0$/    1    0  273    0/' > dry7.cdk
+    grep -q '^    1    0  273    0$' dry7.cdk
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" dry1.cdk "$DATA/small.snd" -o 'd1-%d.rad'
+    run -0 --separate-stderr build_radiance "${QUICK[@]}" dry7.cdk "$DATA/small.snd" -o 'd7-%d.rad'
+    # The same 0.55-um profiles (VIS 23), the same coefficients (IHAZE 1's ln-ln
+    # interpolation in RH lands on its 0 % column), the same interpolation in wavelength.
+    cmp d1-1.rad d7-1.rad
+    cmp d1-2.rad d7-2.rad
 }

@@ -124,8 +124,8 @@ load test_helper
     check_bad cdk tab.cdk 4 "CARD 4: expected a fixed-column card of printable characters, found '\\x09' in column 1 (a tab; use spaces)"
 }
 
-@test "cdk: user-defined aerosol (CARD 2D) is reported as not supported" {
-    check_bad cdk unsupported_ihaze7.cdk 2 "CARD 2 IHAZE (columns 1-5): IHAZE 7 (user-defined aerosol, CARD 2D) is not supported"
+@test "cdk: IHAZE 7 without its CARD 2D reads CARD 3 as CARD 2D and fails there" {
+    check_bad cdk ihaze7_without_card2d.cdk 3 "CARD 2D IREG(2) (columns 6-10): expected an integer, found '0.500'"
 }
 
 # --- .wth: good input -------------------------------------------------------------------

@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -29,6 +33,58 @@ Profile uniform_rh(double rh) {
     Profile p = afgl_profile(6, kData);
     for (double& v : p.rh_percent) v = rh;
     return p;
+}
+
+// The numbers of a data/atmosphere/lowtran7 table ('#' lines skipped), read here.
+std::vector<std::vector<double>> table_rows(const std::string& name) {
+    std::ifstream in(kData + "/atmosphere/lowtran7/" + name);
+    std::vector<std::vector<double>> rows;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream f(line);
+        std::vector<double> row;
+        for (double v; f >> v;) row.push_back(v);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// A deck (rural23.cdk's cards, MODEL 6) with CARD 2 IHAZE `ihaze`, ICLD `icld`, VIS 23
+// and CARD 2D giving the regions flagged in `ireg` the table columns ext/abs/g of
+// `rows` (every region the same), CARD 2D2 written with printf's F6.2,2F7.5,F6.4.
+std::string deck_with_card2d(int ihaze, int icld, const std::array<int, 4>& ireg,
+                             const std::vector<std::vector<double>>& rows, int ext, int abs,
+                             int g) {
+    char c2[128];
+    std::snprintf(c2, sizeof c2, "%5d%5d%5d%5d%5d%5d%10.3f%10.3f%10.3f%10.3f%10.3f", ihaze, 0, 0, 0,
+                  icld, 0, 23.0, 0.0, 0.0, 0.0, 0.0);
+    std::string d =
+        "    6    2    2    1    0    0    0    0    0    0    1    0    1   0.000   0.00\n";
+    d += std::string(c2) + "\n";
+    char ir[32];
+    std::snprintf(ir, sizeof ir, "%5d%5d%5d%5d", ireg[0], ireg[1], ireg[2], ireg[3]);
+    d += std::string(ir) + "\n";
+    for (int r : ireg) {
+        if (!r) continue;
+        d += " 0.000E+00TEST\n";
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            char grp[40];
+            std::snprintf(grp, sizeof grp, "%6.2f%7.5f%7.5f%6.4f", rows[i][0],
+                          rows[i][std::size_t(ext)], rows[i][std::size_t(abs)],
+                          rows[i][std::size_t(g)]);
+            d += grp;
+            if (i % 3 == 2 || i + 1 == rows.size()) d += "\n";
+        }
+    }
+    d += "     1.000     0.000   180.000     0.000     0.000     0.000    0\n";
+    d += "    1    2  273    0\n";
+    d += "    43.083    77.667     0.000     0.000    19.000    90.000     0.000     0.000\n";
+    d += " 14000.000 25000.000   100.000\n    0\n";
+    return d;
+}
+
+io::CdkRun parsed(const std::string& deck) {
+    return io::parse_cdk(TextInput::from_string(deck, "t.cdk")).runs.at(0);
 }
 
 }  // namespace
@@ -221,4 +277,46 @@ TEST(AtmosAerosol, NavyMaritimeFollowsTheModeTable) {
     // More wind, more sea salt: a shorter visibility.
     c.wind_speed_m_s = 20;
     EXPECT_LT(AerosolModel::from_deck(c, uniform_rh(85), kData).visibility_km(), m.visibility_km());
+}
+
+// IHAZE 7 whose CARD 2D2 boundary-layer coefficients are the rural model's at RH 0 %
+// (aerosol_rural.txt's first ext, abs and g columns, exact in F7.5 and F6.4) gives the
+// optics of IHAZE 1 over a dry profile: the same 0.55-um profile (VIS 23), the same
+// coefficients, the same linear interpolation in wavelength (LOWTRAN 7 AEREXT). An
+// independent check of reading CARD 2D2 and of its scaling by the VIS profile.
+TEST(AtmosAerosol, UserDefinedRuralCoefficientsGiveTheRuralModel) {
+    const auto rural = table_rows("aerosol_rural.txt");
+    ASSERT_EQ(rural.size(), 47u);
+    const io::CdkRun run = parsed(deck_with_card2d(7, 0, {1, 0, 0, 0}, rural, 1, 5, 9));
+    ASSERT_TRUE(run.user_optics);
+    const Profile dry = uniform_rh(0);
+    const auto user =
+        AerosolModel::from_deck(run.card2, dry, kData, std::nullopt, &*run.user_optics);
+    const auto ihaze1 = AerosolModel::from_deck(card2(1, 23), dry, kData);
+    EXPECT_EQ(user.visibility_km(), 23);
+    for (double lambda : {0.25, 0.55, 0.6, 1.06, 2.2, 3.9, 10.6, 250.0})
+        for (auto [lo, hi] : {std::pair{0.0, 0.4}, {0.4, 1.7}, {1.7, 3.5}, {3.5, 12.0}}) {
+            const AerosolLayerOptics a = user.layer(lo, hi, lambda),
+                                     b = ihaze1.layer(lo, hi, lambda);
+            // 1e-12 relative: IHAZE 1's effective RH over a uniform 0 % profile is
+            // 100 - exp(mean ln 100), 0 to a few ulps, so its ln-ln interpolation weight
+            // differs from 0 by about 1e-16; everything else is the same arithmetic.
+            EXPECT_NEAR(a.tau_ext, b.tau_ext, 1e-12 * b.tau_ext) << lambda << " " << lo;
+            EXPECT_NEAR(a.ssa, b.ssa, 1e-12) << lambda << " " << lo;
+            EXPECT_NEAR(a.g, b.g, 1e-12) << lambda << " " << lo;
+            EXPECT_GT(b.tau_ext, 0);
+        }
+}
+
+// CARD 2D without the boundary layer (IREG(1) 0) under IHAZE 7: LOWTRAN 7's EXABIN
+// leaves that region's coefficients 0, so no aerosol below the troposphere's reach;
+// IHAZE 7 without CARD 2D is refused.
+TEST(AtmosAerosol, UserDefinedAerosolWithoutTheBoundaryLayer) {
+    const auto rural = table_rows("aerosol_rural.txt");
+    const io::CdkRun run = parsed(deck_with_card2d(7, 0, {0, 1, 0, 0}, rural, 1, 5, 9));
+    const auto m =
+        AerosolModel::from_deck(run.card2, uniform_rh(50), kData, std::nullopt, &*run.user_optics);
+    EXPECT_EQ(m.layer(0, 1.0, 0.55).tau_ext, 0);
+    EXPECT_GT(m.layer(3, 9, 0.55).tau_ext, 0);
+    EXPECT_THROW(AerosolModel::from_deck(card2(7, 23), uniform_rh(50), kData), DataError);
 }

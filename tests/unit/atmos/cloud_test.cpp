@@ -131,12 +131,10 @@ TEST(AtmosCloud, RainModelsCarryTheirCloudAndCirrusNone) {
         for (double z : {0.2, 0.5, 0.8, 1.7, 2.5})
             EXPECT_EQ(r.extinction_km1(z, 1.06), c.extinction_km1(z, 1.06)) << icld << " " << z;
     }
-    for (int icld : {11, 20}) {
-        io::CdkCard2 c;
-        c.icld = icld;
-        EXPECT_THROW(CloudModel::from_deck(c, 0, kData), DataError) << icld;
-        EXPECT_FALSE(CloudModel::modelled(icld));
-    }
+    io::CdkCard2 noaa;
+    noaa.icld = 20;
+    EXPECT_THROW(CloudModel::from_deck(noaa, 0, kData), DataError);
+    EXPECT_FALSE(CloudModel::modelled(20));
     for (int icld : {0, 18, 19}) {
         io::CdkCard2 c;
         c.icld = icld;
@@ -237,4 +235,80 @@ TEST(AtmosCloud, NonAbsorbingOvercastColumnConservesEnergy) {
     // measured 4e-8). A cloud ssa of 0.99999 would lose ~1e-3.
     EXPECT_NEAR(up + down, p.beam_mu0, 1e-6);
     EXPECT_GT(up / p.beam_mu0, 0.5);  // overcast: most of the sunlight goes back up (0.81)
+}
+
+namespace {
+
+// CARD 2D region 2 (the cloud's) with the columns ext/abs/g of cloud_models.txt, through
+// the deck reader: CARD 2D2 written with printf's F6.2,2F7.5,F6.4.
+io::CdkUserOptics user_cloud(int ext, int abs, int g, double ext_scale = 1) {
+    std::ifstream in(kData + "/atmosphere/lowtran7/cloud_models.txt");
+    std::string text =
+        "    6    2    2    1    0    0    0    0    0    0    1    0    1   0.000   0.00\n"
+        "    1    0    0    0   11    0    23.000     0.000     0.000     0.000     0.000\n"
+        "    0    1    0    0\n"
+        " 7.683E-03CLOUD\n";
+    int i = 0;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream f(line);
+        std::vector<double> v;
+        for (double x; f >> x;) v.push_back(x);
+        char grp[40];
+        std::snprintf(grp, sizeof grp, "%6.2f%7.5f%7.5f%6.4f", v[0],
+                      ext < 0 ? ext_scale : v[std::size_t(ext)], v[std::size_t(abs)],
+                      v[std::size_t(g)]);
+        text += grp;
+        if (++i % 3 == 0 || i == 47) text += "\n";
+    }
+    text +=
+        "     1.000     0.000   180.000     0.000     0.000     0.000    0\n"
+        "    1    2  273    0\n"
+        "    43.083    77.667     0.000     0.000    19.000    90.000     0.000     0.000\n"
+        " 14000.000 25000.000   100.000\n    0\n";
+    return *io::parse_cdk(TextInput::from_string(text, "t.cdk")).runs.at(0).user_optics;
+}
+
+}  // namespace
+
+// ICLD 11 with the cumulus's coefficients (cloud_models.txt's first three columns, exact
+// in F7.5/F6.4) is the cumulus (ICLD 1) exactly: LOWTRAN 7's LAYCLD gives ICLD 11 the
+// cumulus's liquid water (MC=1) and HAZEC divides it by the cumulus's CULWC.
+TEST(AtmosCloud, UserDefinedCloudWithCumulusCoefficientsIsTheCumulus) {
+    const io::CdkUserOptics u = user_cloud(1, 2, 3);
+    io::CdkCard2 c;
+    c.icld = 11;
+    EXPECT_TRUE(CloudModel::modelled(11));
+    const CloudModel user = *CloudModel::from_deck(c, 0.3, kData, std::nullopt, &u);
+    const CloudModel cumulus = cloud(1, 0.3);
+    const CloudModel fallback = *CloudModel::from_deck(c, 0.3, kData);  // IREG(2) 0
+    for (double lambda : {0.3, 0.55, 0.9, 3.0, 11.0})
+        for (auto [lo, hi] : {std::pair{0.3, 1.0}, {1.0, 2.2}, {2.2, 3.4}, {0.3, 6.0}}) {
+            const AerosolLayerOptics a = user.layer(lo, hi, lambda);
+            const AerosolLayerOptics b = cumulus.layer(lo, hi, lambda);
+            const AerosolLayerOptics f = fallback.layer(lo, hi, lambda);
+            EXPECT_EQ(a.tau_ext, b.tau_ext) << lambda << " " << lo;
+            EXPECT_EQ(a.ssa, b.ssa) << lambda << " " << lo;
+            EXPECT_EQ(a.g, b.g) << lambda << " " << lo;
+            EXPECT_EQ(f.tau_ext, b.tau_ext) << lambda << " " << lo;
+            EXPECT_GT(b.tau_ext, 0);
+        }
+}
+
+// ICLD 11 with a grey extinction of 2 (every wavelength) over the cumulus's liquid
+// water: tau = 2 x the LWC column / CULWC (7.683e-3 g m-3 per km-1), the column
+// computed here by hand from CLD1 (0 .2 .35 1 1 1 .3 .15 0 g m-3 at .33 .66 1 1.5 2 2.4
+// 2.7 3 3.5 km above the ground), exponential between positive values, linear to 0.
+TEST(AtmosCloud, UserDefinedGreyCloudOpticalDepthIsExtinctionTimesColumn) {
+    const io::CdkUserOptics u = user_cloud(-1, 2, 3, 2.0);
+    io::CdkCard2 c;
+    c.icld = 11;
+    const CloudModel m = *CloudModel::from_deck(c, 0, kData, std::nullopt, &u);
+    auto expo = [](double h, double a, double b) { return h * (b - a) / std::log(b / a); };
+    const double lwc = 0.5 * 0.2 * (0.66 - 0.33) + expo(0.34, 0.2, 0.35) + expo(0.5, 0.35, 1.0) +
+                       1.0 * (2.4 - 1.5) + expo(0.3, 1.0, 0.3) + expo(0.3, 0.3, 0.15) +
+                       0.5 * 0.15 * (3.5 - 3.0);
+    for (double lambda : {0.4, 1.06, 10.0})
+        EXPECT_NEAR(m.layer(0, 8, lambda).tau_ext, 2 * lwc / 7.683e-3, kArith * 2 * lwc / 7.683e-3)
+            << lambda;
 }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -72,6 +74,16 @@ Cdk everything_deck() {
         l.wmol_4_12 = std::array<double, 9>{0.32, 0.15, 1.7, 2.09e5, 0, 0, 0, 0, 5e-4};
         l.aerosol = CdkLayerAerosol{0.158, 0, 0, 1, 0, 0, 1, 0};
     }
+    full.card2.ihaze = 7;  // CARD 2D, boundary layer and stratosphere
+    CdkUserRegion bl{0.0123, "USER HAZE", {}, {}, {}, {}};
+    for (int i = 0; i < kCdkUserWavelengths; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        bl.wavelength_um[k] = std::round(kCdkUserWavelengths_um[k] * 100) / 100;
+        bl.extinction[k] = 2.0 - 0.03125 * i;  // binary fractions exact in F7.5, F6.4
+        bl.absorption[k] = 0.03125 * (i % 8);
+        bl.asymmetry[k] = 0.75 - 0.0625 * (i % 8);
+    }
+    full.user_optics = CdkUserOptics{{bl, std::nullopt, bl, std::nullopt}};
     full.geometry.iph = 1;
     full.geometry.phase_function = {
         {0, {0.5, 0.4, 0.3, 0.2}}, {90, {0.01, 0.02, 0.03, 0.04}}, {180, {0.1, 0.2, 0.3, 0.4}}};
@@ -87,6 +99,7 @@ Cdk everything_deck() {
     solar.cirrus.reset();
     solar.vsa.reset();
     solar.profile.reset();
+    solar.user_optics.reset();
     solar.geometry = CdkGeometry{};
     solar.geometry.h1_km = 0.5;
     solar.geometry.zenith_angle_deg = 30;
@@ -142,6 +155,103 @@ TEST(Cdk, SeedSampleParsesToTheSeedValues) {
 
 TEST(Cdk, RewritingTheSeedGivesTheSeedByteForByte) {
     EXPECT_EQ(written(read_cdk_file(kSeedPath)), seed_text());
+}
+
+namespace {
+
+// CARD 2D2 text written with printf's %6.2f%7.5f%7.5f%6.4f (independent of the writer):
+// at wavelength i extinction 1 + i/100, absorption i/1000, asymmetry 0.6 + i/200.
+std::vector<std::string> card2d2_lines() {
+    std::vector<std::string> lines;
+    std::string line;
+    for (int i = 0; i < kCdkUserWavelengths; ++i) {
+        char group[40];
+        std::snprintf(group, sizeof group, "%6.2f%7.5f%7.5f%6.4f",
+                      kCdkUserWavelengths_um[static_cast<std::size_t>(i)], 1 + i / 100.0,
+                      i / 1000.0, 0.6 + i / 200.0);
+        line += group;
+        if (i % 3 == 2 || i == kCdkUserWavelengths - 1) {
+            lines.push_back(line);
+            line.clear();
+        }
+    }
+    return lines;
+}
+
+// The deck of White (1996) with IHAZE 7 and CARD 2D (IREG 1 0 0 1) after its profile;
+// its lines 23-55 are CARD 2D, then 2D1 and 16 lines of 2D2 for regions 1 and 4.
+std::vector<std::string> ihaze7_lines() {
+    auto lines = seed_lines();
+    lines[1].replace(0, 5, "    7");
+    std::vector<std::string> d = {"    1    0    0    1", " 1.500E-02USER BOUNDARY LAYER"};
+    for (const auto& l : card2d2_lines()) d.push_back(l);
+    d.push_back(" 0.000E+00");
+    for (const auto& l : card2d2_lines()) d.push_back(l);
+    lines.insert(lines.begin() + 22, d.begin(), d.end());
+    return lines;
+}
+
+}  // namespace
+
+TEST(Cdk, Card2dParsesToTheCoefficients) {
+    const auto lines = ihaze7_lines();
+    ASSERT_EQ(lines[22], "    1    0    0    1");
+    const Cdk d = parse(joined(lines));
+    ASSERT_TRUE(d.runs[0].user_optics);
+    const auto& u = *d.runs[0].user_optics;
+    ASSERT_TRUE(u.regions[0]);
+    EXPECT_FALSE(u.regions[1]);
+    EXPECT_FALSE(u.regions[2]);
+    ASSERT_TRUE(u.regions[3]);
+    const CdkUserRegion& r = *u.regions[0];
+    EXPECT_EQ(r.liquid_water_g_m3, 0.015);
+    EXPECT_EQ(r.title, "USER BOUNDARY LAYER");
+    EXPECT_EQ(u.regions[3]->title, "");
+    EXPECT_EQ(r.wavelength_um[2], 0.34);  // 0.3371 in F6.2
+    EXPECT_EQ(r.wavelength_um[46], 300);
+    for (int i : {0, 3, 17, 45, 46}) {
+        const auto k = static_cast<std::size_t>(i);
+        EXPECT_DOUBLE_EQ(r.extinction[k], 1 + i / 100.0) << i;
+        EXPECT_DOUBLE_EQ(r.absorption[k], i / 1000.0) << i;
+        EXPECT_DOUBLE_EQ(r.asymmetry[k], 0.6 + i / 200.0) << i;
+    }
+    EXPECT_EQ(u.regions[3]->extinction, r.extinction);
+    // The written deck reads back to the same values.
+    EXPECT_EQ(parse(written(d)), d);
+}
+
+TEST(Cdk, Card2dRejectsMalformedCards) {
+    auto with = [](int line, int column, const std::string& text) {
+        auto lines = ihaze7_lines();
+        std::string& l = lines[static_cast<std::size_t>(line - 1)];
+        if (l.size() < std::size_t(column - 1) + text.size())
+            l.resize(std::size_t(column - 1) + text.size(), ' ');
+        l.replace(std::size_t(column - 1), text.size(), text);
+        return joined(lines);
+    };
+    EXPECT_EQ(error_of(with(23, 1, "    2")),
+              "t.cdk:23: CARD 2D IREG(1) (columns 1-5): expected IREG(1) 0 (the region's own "
+              "model) or 1 (CARD 2D1 and 2D2 follow), found '2'");
+    EXPECT_EQ(error_of(with(23, 1, "    0    0    0    0")),
+              "t.cdk:23: CARD 2D IREG(1) (columns 1-20): expected IREG 1 for at least one "
+              "region (IHAZE 7 or ICLD 11 need CARD 2D2 coefficients), found none");
+    // Line 26 is CARD 2D2 line 2 of region 1: wavelengths 4-6 (0.55, 0.6943, 1.06 um).
+    EXPECT_EQ(error_of(with(26, 1, "  0.56")),
+              "t.cdk:26: CARD 2D2 (region 1, line 2 of 16) VX(4) (columns 1-6): expected the "
+              "table wavelength 0.55 um, found '0.56'");
+    EXPECT_EQ(error_of(with(26, 27 + 13, "1.50000")),
+              "t.cdk:26: CARD 2D2 (region 1, line 2 of 16) ABSC(5) (columns 40-46): expected "
+              "ABSC(5) in [0, EXTC 1.04], found '1.5'");
+    EXPECT_EQ(error_of(with(26, 53 + 20, "1.0000")),
+              "t.cdk:26: CARD 2D2 (region 1, line 2 of 16) ASYM(6) (columns 73-78): expected "
+              "ASYM(6) above -1 and below 1, found '1'");
+    // A truncated CARD 2D2: region 4's last two lines (56, 57) are missing, so CARD 3
+    // is read as its line 15 and fails at the first group.
+    auto lines = ihaze7_lines();
+    lines.erase(lines.begin() + 55, lines.begin() + 57);
+    const std::string e = error_of(joined(lines));
+    EXPECT_EQ(e.rfind("t.cdk:56: CARD 2D2 (region 4, line 15 of 16) VX(43) (columns 1-6): ", 0), 0u)
+        << e;
 }
 
 TEST(Cdk, RoundTripOfEveryCardIsExactAndIdempotent) {
@@ -234,9 +344,6 @@ TEST(Cdk, RejectsOutOfRangeValues) {
 }
 
 TEST(Cdk, RejectsUnsupportedCards) {
-    EXPECT_EQ(error_of(seed_with(2, 1, "    7")),
-              "t.cdk:2: CARD 2 IHAZE (columns 1-5): IHAZE 7 (user-defined aerosol, CARD 2D) is "
-              "not supported");
     EXPECT_EQ(error_of(seed_with(1, 56, "    0")),
               "t.cdk:1: CARD 1 IM (columns 56-60): expected IM 1 with MODEL 7 (IM 0 reuses an "
               "earlier run's profile, and there is none), found '0'");
