@@ -124,22 +124,14 @@ void add_uncertainty(const TraceContext& c, RowWorker& w, const SampleBuffers& b
     }
 }
 
-// Adds primary sample i of pixel (row, col) to the worker's accumulators (its radiance
-// at the sensor also in w.sample), placed in stratum `stratum` of `strata` over the
-// pixel, or with strata 0 at point i of the pixel's shifted (0,2)-sequence
-// (--convergence); true on a hit.
+// Adds primary sample i of pixel (row, col), at offset `off` in [0, 1)^2 over the
+// pixel, to the worker's accumulators (its radiance at the sensor also in w.sample);
+// true on a hit.
 bool add_sample(const TraceContext& c, RowWorker& w, const SampleBuffers& b,
                 const std::vector<std::size_t>& centre, long row, long col, long i,
-                long stratum, long strata) {
+                const std::array<double, 2>& off) {
     const Sensor& cam = *c.in.sensor;
     const std::size_t n = c.n;
-    const auto shift = [&](std::uint64_t k) {  // the pixel's digital shift, 32 bits
-        return static_cast<std::uint32_t>(uniform01(c.opt.seed, row, col, ~0ULL, k) * 0x1.0p32);
-    };
-    auto off = strata > 0
-                   ? stratified_offset(stratum, strata, uniform01(c.opt.seed, row, col, i, ~0ULL),
-                                       uniform01(c.opt.seed, row, col, i, ~1ULL))
-                   : sobol02_offset(static_cast<std::uint32_t>(i), shift(~2ULL), shift(~3ULL));
     Vec3 o, d;
     cam.ray(static_cast<double>(row) + off[0], static_cast<double>(col) + off[1], o, d);
     HitTruth ht;
@@ -211,11 +203,13 @@ void put_truth(const TraceContext& c, const std::vector<double>& truth_acc, long
 struct SampleStats {
     long n = 0;
     std::vector<double> mean, m2;
+    bool keep = false;           // keep the samples (--convergence's block estimate)
     std::vector<double> values;  // sample-major, per band: the block estimate's input
-    void reset(std::size_t bands) {
+    void reset(std::size_t bands, bool keep_values) {
         n = 0;
         mean.assign(bands, 0.0);
         m2.assign(bands, 0.0);
+        keep = keep_values;
         values.clear();
     }
     // Standard error from kBlocks consecutive blocks of the samples (each block of a
@@ -229,7 +223,8 @@ struct SampleStats {
         double sum = 0, sum2 = 0;
         for (long k = 0; k < kBlocks; ++k) {
             double s = 0;
-            for (long i = k * m; i < (k + 1) * m; ++i) s += values[static_cast<std::size_t>(i) * bands + b];
+            for (long i = k * m; i < (k + 1) * m; ++i)
+                s += values[static_cast<std::size_t>(i) * bands + b];
             s /= static_cast<double>(m);
             sum += s;
             sum2 += s * s;
@@ -239,7 +234,8 @@ struct SampleStats {
     }
     void add(const std::vector<double>& sample, const std::vector<std::size_t>& centre) {
         ++n;
-        for (std::size_t b = 0; b < centre.size(); ++b) values.push_back(sample[centre[b]]);
+        if (keep)
+            for (std::size_t b = 0; b < centre.size(); ++b) values.push_back(sample[centre[b]]);
         for (std::size_t b = 0; b < centre.size(); ++b) {
             const double x = sample[centre[b]], d = x - mean[b];
             mean[b] += d / static_cast<double>(n);
@@ -285,22 +281,30 @@ std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const Sa
                                    const std::vector<std::size_t>& centre, SampleStats& stats,
                                    long row, long col) {
     const RenderOptions& o = c.opt;
-    const bool track = o.sampling_layers || o.convergence_min > 0;
-    stats.reset(centre.size());
+    const bool converge = o.convergence_min > 0, track = o.sampling_layers || converge;
+    stats.reset(centre.size(), converge);
     long hits = 0;
-    auto take = [&](long i, long stratum, long strata) {
-        if (add_sample(c, w, b, centre, row, col, i, stratum, strata)) ++hits;
+    auto take = [&](long i, const std::array<double, 2>& off) {
+        if (add_sample(c, w, b, centre, row, col, i, off)) ++hits;
         if (track) stats.add(w.sample, centre);
     };
-    if (o.convergence_min <= 0) {
+    if (!converge) {
         const long spp = std::max(1L, o.samples_per_pixel);
-        for (long i = 0; i < spp; ++i) take(i, i, spp);
+        for (long i = 0; i < spp; ++i)
+            take(i, stratified_offset(i, spp, uniform01(o.seed, row, col, i, ~0ULL),
+                                      uniform01(o.seed, row, col, i, ~1ULL)));
         return {spp, hits};
     }
+    // The pixel's digital shift of its (0,2)-sequence, 32 bits per axis.
+    const auto shift = [&](std::uint64_t k) {
+        return static_cast<std::uint32_t>(uniform01(o.seed, row, col, ~0ULL, k) * 0x1.0p32);
+    };
+    const std::uint32_t shift_row = shift(~2ULL), shift_col = shift(~3ULL);
     long n = 0;
     while (true) {
         const long batch = std::min(o.convergence_min, o.convergence_max - n);
-        for (long j = 0; j < batch; ++j) take(n + j, 0, 0);
+        for (long i = n; i < n + batch; ++i)
+            take(i, sobol02_offset(static_cast<std::uint32_t>(i), shift_row, shift_col));
         n += batch;
         const double error =
             o.convergence_error == ConvergenceError::Relative ? stats.relative_error()

@@ -17,8 +17,8 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs", "standard-error", "convergence", "convergence-error",
-                          "igm", "glt", "uncertainty"})
+                          "adjacency-radius", "co", "crs", "standard-error", "convergence",
+                          "convergence-error", "igm", "glt", "uncertainty"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -94,8 +94,10 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
                                              static_cast<double>(v[2])};
     }
     if (vm.count("convergence-error")) {
-        if (!job.convergence) throw sigchain::UsageError("--convergence-error: only with --convergence");
-        job.convergence->error = trace::parse_convergence_error(vm["convergence-error"].as<std::string>());
+        if (!job.convergence)
+            throw sigchain::UsageError("--convergence-error: only with --convergence");
+        job.convergence->error =
+            trace::parse_convergence_error(vm["convergence-error"].as<std::string>());
     }
     if (vm.count("uncertainty")) job.uncertainty_path = vm["uncertainty"].as<std::string>();
     if (vm.count("igm")) job.igm_path = vm["igm"].as<std::string>();

@@ -207,7 +207,8 @@ TEST(SamplingError, Sobol02PrefixesAreNets) {
             std::vector<int> count(n, 0);
             for (int i = 0; i < n; ++i) {
                 const auto p = sobol02_offset(static_cast<std::uint32_t>(i), shift[0], shift[1]);
-                const int x = static_cast<int>(p[0] * (1 << a)), y = static_cast<int>(p[1] * (1 << (m - a)));
+                const int x = static_cast<int>(p[0] * (1 << a));
+                const int y = static_cast<int>(p[1] * (1 << (m - a)));
                 ++count[static_cast<std::size_t>(x * (1 << (m - a)) + y)];
             }
             for (int c : count) EXPECT_EQ(c, 1) << "a = " << a;

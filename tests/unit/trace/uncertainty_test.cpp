@@ -137,6 +137,55 @@ int layer(const RenderResult& r, const std::string& name) {
     return static_cast<int>(std::find(n.begin(), n.end(), name) - n.begin());
 }
 
+
+// Per band, the mean over the pixels that hit the scene of the Monte Carlo sigma (the
+// spread of `draws` renders of drawn inputs, render_draw(Draw), at the band's centre
+// sample) against the mean of base's uncertainty layer: within 5 %.
+template <class RenderDraw>
+void expect_monte_carlo_agrees(const RenderResult& base, const radiometry::SpectralGrid& grid,
+                               std::size_t materials, RenderDraw render_draw, const char* what) {
+    const std::size_t bands = grid.band_count();
+    const long cols = base.radiance.columns, pixels = base.radiance.rows * cols;
+    std::vector<double> sum(bands * pixels, 0.0), sum2(bands * pixels, 0.0);
+    const int draws = 2000;
+    std::mt19937_64 rng(20261203);
+    std::normal_distribution<double> normal;
+    for (int i = 0; i < draws; ++i) {
+        Draw d{normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), {}};
+        for (std::size_t m = 0; m < materials; ++m) d.reflectance.push_back(normal(rng));
+        const RenderResult r = render_draw(d);
+        for (std::size_t b = 0; b < bands; ++b) {
+            const int k = static_cast<int>(grid.band_centre_sample(static_cast<int>(b)));
+            for (long p = 0; p < pixels; ++p) {
+                const double l = r.radiance.at(k, p / cols, p % cols);
+                sum[b * pixels + p] += l;
+                sum2[b * pixels + p] += l * l;
+            }
+        }
+    }
+    const int hit = layer(base, "hit");
+    for (std::size_t b = 0; b < bands; ++b) {
+        const int unc_layer = layer(base, "uncertainty_" + grid.band_names[b]);
+        double mc = 0, first_order = 0;
+        long n = 0;
+        for (long p = 0; p < pixels; ++p) {
+            if (base.truth.at(hit, p / cols, p % cols) != 1) continue;
+            const double s = sum[b * pixels + p], s2 = sum2[b * pixels + p];
+            mc += std::sqrt(std::max(0.0, (s2 - s * s / draws) / (draws - 1)));
+            first_order += base.truth.at(unc_layer, p / cols, p % cols);
+            ++n;
+        }
+        ASSERT_GT(n, 0);
+        ASSERT_GT(first_order, 0);
+        std::printf("%s, band %s: %ld pixels, mean sigma Monte Carlo %.6g, first order %.6g, "
+                    "ratio %.4f\n",
+                    what, grid.band_names[b].c_str(), n, mc / n, first_order / n, mc / first_order);
+        EXPECT_NEAR(mc / first_order, 1.0, 0.05)
+            << what << ", band " << grid.band_names[b] << ": Monte Carlo " << mc / n
+            << ", first order " << first_order / n;
+    }
+}
+
 }  // namespace
 
 TEST(Uncertainty, LayersNamedAfterTheOthers) {
@@ -189,64 +238,19 @@ TEST(Uncertainty, PathRadianceAloneIsItsSigma) {
 TEST(Uncertainty, FirstOrderAgreesWithMonteCarloOnTheTrainingScene) {
     const Training t;
     const InputUncertainty u = read_input_uncertainty(kData + "training.unc", t.materials);
-    const long rows = 4;
-    RenderOptions o = options(rows);
+    RenderOptions o = options(4);
     o.truth = o.uncertainty_layers = true;
     const RenderResult base = render_with(t, t.atm, t.materials, o, &u);
-    const auto& grid = t.atm.grid();
-    const std::size_t bands = grid.band_count();
-    const long cols = base.radiance.columns, pixels = rows * cols;
-    std::vector<double> sum(bands * pixels, 0.0), sum2(bands * pixels, 0.0);
-    const int draws = 2000;
-    std::mt19937_64 rng(20261203);
-    std::normal_distribution<double> normal;
-    RenderOptions plain = options(rows);
-    for (int i = 0; i < draws; ++i) {
-        Draw d{normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), {}};
-        for (std::size_t m = 0; m < t.materials.materials().size(); ++m)
-            d.reflectance.push_back(normal(rng));
-        const radiometry::Atmosphere atm = Training::atmosphere(perturbed_rads(t.rads, u, d));
-        const auto mats = perturbed_materials(t.materials, u, d);
-        const RenderResult r = render_with(t, atm, mats, plain, nullptr);
-        for (std::size_t b = 0; b < bands; ++b)
-            for (long p = 0; p < pixels; ++p) {
-                const double l = r.radiance.at(static_cast<int>(grid.band_centre_sample(
-                                                   static_cast<int>(b))),
-                                               p / cols, p % cols);
-                sum[b * pixels + p] += l;
-                sum2[b * pixels + p] += l * l;
-            }
-    }
-    const int hit = layer(base, "hit");
-    for (std::size_t b = 0; b < bands; ++b) {
-        const int unc_layer = layer(base, "uncertainty_" + grid.band_names[b]);
-        double mc = 0, first_order = 0;
-        long n = 0;
-        for (long p = 0; p < pixels; ++p) {
-            if (base.truth.at(hit, p / cols, p % cols) != 1) continue;
-            const double s = sum[b * pixels + p], s2 = sum2[b * pixels + p];
-            mc += std::sqrt(std::max(0.0, (s2 - s * s / draws) / (draws - 1)));
-            first_order += base.truth.at(unc_layer, p / cols, p % cols);
-            ++n;
-        }
-        ASSERT_GT(n, 0);
-        ASSERT_GT(first_order, 0);
-        std::printf("band %s: %ld pixels, mean sigma Monte Carlo %.6g, first order %.6g, "
-                    "ratio %.4f\n",
-                    grid.band_names[b].c_str(), n, mc / n, first_order / n, mc / first_order);
-        EXPECT_NEAR(mc / first_order, 1.0, 0.05) << "band " << grid.band_names[b] << ": Monte "
-                                                 << "Carlo " << mc / n << ", first order "
-                                                 << first_order / n;
-    }
+    const RenderOptions plain = options(4);
+    expect_monte_carlo_agrees(
+        base, t.atm.grid(), t.materials.materials().size(),
+        [&](const Draw& d) {
+            const radiometry::Atmosphere atm = Training::atmosphere(perturbed_rads(t.rads, u, d));
+            return render_with(t, atm, perturbed_materials(t.materials, u, d), plain, nullptr);
+        },
+        "box-on-plane scene");
 }
 
-// Each input alone: the spread of the renders divided by the spread of the draws
-// themselves (their sample standard deviation) is the slope |dL/dx| sigma along the
-// draws, without the sampling error of a standard deviation; against the layer of
-// that input alone it tests each partial. Where the radiance is linear in the input
-// (all but the sun zenith) the two agree to rounding; the zenith's curvature (cos,
-// Beer's law) over +-3 sigma = 1.5 deg moves the slope by well under 1 %; a shadow
-// edge crossed by a pixel's sample would not be (none is, in these rows).
 TEST(Uncertainty, EachInputAloneMatchesItsPartial) {
     const Training t;
     const InputUncertainty all = read_input_uncertainty(kData + "training.unc", t.materials);
@@ -367,45 +371,14 @@ TEST(Uncertainty, FirstOrderAgainstMonteCarloOnThePipelinesTrainingScene) {
     RenderOptions with = o;
     with.truth = with.uncertainty_layers = true;
     const RenderResult base = render_one(atm, materials, with, &u);
-    const auto& grid = atm.grid();
-    const std::size_t bands = grid.band_count();
-    const long rows = base.radiance.rows, cols = base.radiance.columns, pixels = rows * cols;
-    std::vector<double> sum(bands * pixels, 0.0), sum2(bands * pixels, 0.0);
-    const int draws = 2000;
-    std::mt19937_64 rng(20261203);
-    std::normal_distribution<double> normal;
-    for (int i = 0; i < draws; ++i) {
-        Draw d{normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), {}};
-        for (std::size_t m = 0; m < materials.materials().size(); ++m)
-            d.reflectance.push_back(normal(rng));
-        const radiometry::Atmosphere a = radiometry::Atmosphere::from_rads(perturbed_rads(rads, u, d), names);
-        const auto m = perturbed_materials(materials, u, d);
-        const RenderResult r = render_one(a, m, o, nullptr);
-        for (std::size_t b = 0; b < bands; ++b)
-            for (long p = 0; p < pixels; ++p) {
-                const double l = r.radiance.at(
-                    static_cast<int>(grid.band_centre_sample(static_cast<int>(b))), p / cols, p % cols);
-                sum[b * pixels + p] += l;
-                sum2[b * pixels + p] += l * l;
-            }
-    }
-    const int hit = layer(base, "hit");
-    for (std::size_t b = 0; b < bands; ++b) {
-        const int unc_layer = layer(base, "uncertainty_" + grid.band_names[b]);
-        double mc = 0, first_order = 0;
-        long n = 0;
-        for (long p = 0; p < pixels; ++p) {
-            if (base.truth.at(hit, p / cols, p % cols) != 1) continue;
-            const double s = sum[b * pixels + p], s2 = sum2[b * pixels + p];
-            mc += std::sqrt(std::max(0.0, (s2 - s * s / draws) / (draws - 1)));
-            first_order += base.truth.at(unc_layer, p / cols, p % cols);
-            ++n;
-        }
-        std::printf("training scene, band %s: %ld pixels, mean sigma Monte Carlo %.6g, first order "
-                    "%.6g, ratio %.4f\n",
-                    grid.band_names[b].c_str(), n, mc / n, first_order / n, mc / first_order);
-        EXPECT_NEAR(mc / first_order, 1.0, 0.05) << "band " << grid.band_names[b];
-    }
+    expect_monte_carlo_agrees(
+        base, atm.grid(), materials.materials().size(),
+        [&](const Draw& d) {
+            const radiometry::Atmosphere a =
+                radiometry::Atmosphere::from_rads(perturbed_rads(rads, u, d), names);
+            return render_one(a, perturbed_materials(materials, u, d), o, nullptr);
+        },
+        "training scene");
 }
 
 }  // namespace
