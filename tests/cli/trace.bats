@@ -7,35 +7,7 @@
 
 bats_require_minimum_version 1.5.0
 load test_helper
-
-DATA="$SIGCHAIN_SOURCE_DIR/tests/data/trace"
-GDB="$SEED/box_on_plane.gdb"
-
-# The standard inputs, in trace's order: ADV SND SCENE MAT RAD...
-inputs() {
-    echo "$DATA/box.adv" "$DATA/box.snd" "${1:-$GDB}" "${2:-$DATA/box.mat}" \
-        "$DATA/band1.rad" "$DATA/band2.rad"
-}
-
-# trace_ok ARGS...: exit 0, nothing on stdout, nothing on stderr, nothing half-written.
-trace_ok() {
-    run -0 --separate-stderr trace "$@"
-    assert_output ''
-    assert_equal "$stderr" ''
-    assert_no_temp_files .
-}
-
-# trace_bad STATUS PREFIX ARGS...: exit STATUS, nothing on stdout, stderr beginning with
-# "trace: PREFIX", no output cube and nothing half-written.
-trace_bad() {
-    local status="$1" prefix="$2"
-    shift 2
-    run "-$status" --separate-stderr trace "$@"
-    assert_output ''
-    [[ "$stderr" == "trace: $prefix"* ]] || fail "stderr: $stderr (wanted 'trace: $prefix...')"
-    [ ! -e out.img ] && [ ! -e out.hdr ] || fail "an output cube was written"
-    assert_no_temp_files .
-}
+load trace_helper
 
 # The float32 planes of band B of an ENVI cube of ROWS x 16 pixels, as raw bytes.
 band_bytes() {

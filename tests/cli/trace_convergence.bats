@@ -6,31 +6,7 @@
 
 bats_require_minimum_version 1.5.0
 load test_helper
-
-DATA="$SIGCHAIN_SOURCE_DIR/tests/data/trace"
-GDB="$SEED/box_on_plane.gdb"
-
-inputs() {
-    echo "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad"
-}
-
-trace_ok() {
-    run -0 --separate-stderr trace "$@"
-    assert_output ''
-    assert_equal "$stderr" ''
-    assert_no_temp_files .
-}
-
-# trace_bad MESSAGE ARGS...: exit 2, stderr exactly "trace: MESSAGE" then the usage hint.
-trace_bad() {
-    local message="$1"
-    shift
-    run -2 --separate-stderr trace "$@"
-    assert_output ''
-    [[ "$stderr" == "trace: $message"* ]] || fail "stderr: $stderr (wanted 'trace: $message')"
-    [ ! -e out.img ] || fail "an output cube was written"
-    assert_no_temp_files .
-}
+load trace_helper
 
 @test "trace --standard-error adds samples and standard_error_BAND to the truth, the cube unchanged" {
     trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 8 -o out.img --truth truth.img \
@@ -43,7 +19,7 @@ trace_bad() {
 }
 
 @test "trace --standard-error needs --truth" {
-    trace_bad "--standard-error: its layers are in the truth cube: give --truth FILE" \
+    trace_bad 2 "--standard-error: its layers are in the truth cube: give --truth FILE" \
         $(inputs) -o out.img --standard-error
 }
 
@@ -57,17 +33,17 @@ trace_bad() {
 }
 
 @test "trace refuses bad --convergence values with exit 2" {
-    trace_bad "--convergence: 4,32: expected MIN,MAX,THRESHOLD" $(inputs) -o out.img --convergence 4,32
-    trace_bad "--convergence: 4,32,0.1,2: expected MIN,MAX,THRESHOLD" $(inputs) -o out.img \
+    trace_bad 2 "--convergence: 4,32: expected MIN,MAX,THRESHOLD" $(inputs) -o out.img --convergence 4,32
+    trace_bad 2 "--convergence: 4,32,0.1,2: expected MIN,MAX,THRESHOLD" $(inputs) -o out.img \
         --convergence 4,32,0.1,2
-    trace_bad "--convergence: 1: must be an integer from 2 to" $(inputs) -o out.img --convergence 1,32,0.1
-    trace_bad "--convergence: x: must be an integer" $(inputs) -o out.img --convergence x,32,0.1
-    trace_bad "--convergence: 0: must be a number > 0" $(inputs) -o out.img --convergence 4,32,0
-    trace_bad "--convergence: nan: must be" $(inputs) -o out.img --convergence 4,32,nan
-    trace_bad "--convergence: expected 2 <= MIN <= MAX" $(inputs) -o out.img --convergence 32,4,0.1
-    trace_bad "--convergence: not with --samples-per-pixel" $(inputs) -o out.img \
+    trace_bad 2 "--convergence: 1: must be an integer from 2 to" $(inputs) -o out.img --convergence 1,32,0.1
+    trace_bad 2 "--convergence: x: must be an integer" $(inputs) -o out.img --convergence x,32,0.1
+    trace_bad 2 "--convergence: 0: must be a number > 0" $(inputs) -o out.img --convergence 4,32,0
+    trace_bad 2 "--convergence: nan: must be" $(inputs) -o out.img --convergence 4,32,nan
+    trace_bad 2 "--convergence: expected 2 <= MIN <= MAX" $(inputs) -o out.img --convergence 32,4,0.1
+    trace_bad 2 "--convergence: not with --samples-per-pixel" $(inputs) -o out.img \
         --convergence 4,32,0.1 --samples-per-pixel 8
-    trace_bad "--convergence does not apply to --shadow-history" --shadow-history \
+    trace_bad 2 "--convergence does not apply to --shadow-history" --shadow-history \
         --convergence 4,32,0.1 "$DATA/box.snd" "$GDB" "$DATA/box.mat" -o out.shd
 }
 
@@ -86,8 +62,8 @@ trace_bad() {
         [[ "$stderr" == *"trace: 4.00 primary sample(s) per pixel on average, at most 4"* ]] ||
             fail "$e: stderr: $stderr"
     done
-    trace_bad "--convergence-error: unknown error 'both' (relative, absolute or rms)" $(inputs) -o out.img \
+    trace_bad 2 "--convergence-error: unknown error 'both' (relative, absolute or rms)" $(inputs) -o out.img \
         --convergence 4,32,0.1 --convergence-error both
-    trace_bad "--convergence-error: only with --convergence" $(inputs) -o out.img \
+    trace_bad 2 "--convergence-error: only with --convergence" $(inputs) -o out.img \
         --convergence-error absolute
 }

@@ -8,31 +8,7 @@
 
 bats_require_minimum_version 1.5.0
 load test_helper
-
-DATA="$SIGCHAIN_SOURCE_DIR/tests/data/trace"
-GDB="$SEED/box_on_plane.gdb"
-
-inputs() {
-    echo "$DATA/box.adv" "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad"
-}
-
-trace_ok() {
-    run -0 --separate-stderr trace "$@"
-    assert_output ''
-    assert_equal "$stderr" ''
-    assert_no_temp_files .
-}
-
-# trace_bad STATUS MESSAGE ARGS...: exit STATUS, stderr beginning "trace: MESSAGE", no cube.
-trace_bad() {
-    local status="$1" message="$2"
-    shift 2
-    run "-$status" --separate-stderr trace "$@"
-    assert_output ''
-    [[ "$stderr" == "trace: $message"* ]] || fail "stderr: $stderr (wanted 'trace: $message')"
-    [ ! -e out.img ] || fail "an output cube was written"
-    assert_no_temp_files .
-}
+load trace_helper
 
 @test "trace --uncertainty adds uncertainty_BAND to the truth, the cube unchanged" {
     trace_ok $(inputs) --samples-per-pixel 1 -o out.img --truth truth.img \
