@@ -18,6 +18,7 @@ void add_ground_reflection(const rt::Problem& problem, double albedo, std::size_
     double total = 0;
     for (const rt::Layer& l : u.layers) total += l.tau;
     u.utau = {total};
+    u.want = {rt::Problem::kWantDown};
     for (double mu : problem.umu)
         if (mu < 0) u.umu.push_back(mu);
     u.phi_deg = {0};

@@ -136,6 +136,8 @@ rt::Problem base_problem(const SampleSetup& s, const std::vector<LayerOptics>& c
     prob.delta_m = true;
     prob.albedo = 0;
     prob.utau = solver_depths(prob.layers, kept, s.column.sensor_level());
+    // read_tables reads upward radiance at the sensor and the sky at the ground only.
+    prob.want = {rt::Problem::kWantUp, rt::Problem::kWantDown};
     prob.umu = s.dirs.umu;
     prob.phi_deg = s.dirs.phi;
     return prob;

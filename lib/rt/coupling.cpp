@@ -32,6 +32,7 @@ SurfaceCoupling surface_coupling(const Problem& atmosphere, double level_tau,
     p.umu = mus;
     p.phi_deg = {0};
     p.utau = {level_tau, total};
+    p.want = {Problem::kWantUp, Problem::kWantNone};  // the ground's only flux is read
     p.azimuth_accuracy = 0;  // no beam: only mode 0 is non-zero
     const Result r = solve(p);
     SurfaceCoupling c;

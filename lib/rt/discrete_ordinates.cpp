@@ -52,6 +52,9 @@ void validate(const Problem& p) {
     const ExactPhase& x = p.exact_phase;
     if (x.components > 0 && (!x.evaluate || x.weights.size() != x.components * p.layers.size()))
         bad("exact_phase: one weight per component and layer, and a function");
+    if (!p.want.empty() && p.want.size() != p.utau.size()) bad("want: not one per utau");
+    for (unsigned char w : p.want)
+        if (w > Problem::kWantBoth) bad("want: not 0-3");
 }
 
 Scaled scale_layers(const Problem& p) {
@@ -179,6 +182,12 @@ void Solver::setup() {
     gauss_half_range(m_q.nn, m_q.mu, m_q.weight);
     m_s = scale_layers(m_p);
     m_pos = locate(m_p, m_s);
+    for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        const unsigned char w = m_p.want.empty() ? static_cast<unsigned char>(Problem::kWantBoth)
+                                                  : m_p.want[i];
+        m_pos[i].up = (w & Problem::kWantUp) != 0;
+        m_pos[i].down = (w & Problem::kWantDown) != 0;
+    }
     m_sol.resize(m_L);
     m_us.resize(m_L);
     m_us_down.resize(m_L);

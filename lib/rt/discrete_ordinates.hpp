@@ -75,6 +75,13 @@ struct Problem {
     std::vector<double> utau;     // optical depths (unscaled, from the top), ascending
     std::vector<double> umu;      // cosines, nonzero, ascending
     std::vector<double> phi_deg;  // azimuths
+    // Per utau (empty: both directions at every depth): the intensities wanted there,
+    // upward (mu > 0), downward (mu < 0), both or none. The others come out 0 and cost
+    // nothing: a layer no wanted intensity depends on is not integrated (the upward
+    // radiance at a sensor needs only the layers below it, the sky at the ground every
+    // layer above), and the intensity corrections skip them. Fluxes are always computed.
+    enum Want : unsigned char { kWantNone = 0, kWantUp = 1, kWantDown = 2, kWantBoth = 3 };
+    std::vector<unsigned char> want;
 
     // Azimuthal (Fourier) series convergence: stop after two successive modes whose
     // contribution to every intensity is below this fraction of the intensity (DISORT's
@@ -102,7 +109,8 @@ struct Result {
 // for a scattering layer, mu0 outside (0, 1] with a beam, beam_airmass not one positive
 // value per layer (when given), planck_levels of the wrong
 // size, utau not ascending within [0, total tau], a zero or |umu| > 1 cosine.
-// exact_phase with other than `components` weights per layer or no function.
+// exact_phase with other than `components` weights per layer or no function, want not
+// one value of 0-3 per utau (when given).
 // Method notes: single-scattering albedo 1 is computed as 1 - 1e-9 (DISORT's dither);
 // with delta_m and intensity_correction the Nakajima-Tanaka (1988, JQSRT 40, 51) TMS
 // correction is applied (eq. 13: the beam's single scattering with the exact phase

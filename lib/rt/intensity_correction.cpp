@@ -152,8 +152,12 @@ void Solver::intensity_correction() {
     for (std::size_t l = 2; l < nmom; ++l)
         w.rec_a[l] = (2.0 * l - 1) / l, w.rec_b[l] = (l - 1.0) / l;
     for (std::size_t u = 0; u < nu; ++u) {
+        const double mu = m_p.umu[u];
+        if (std::none_of(m_pos.begin(), m_pos.end(), [&](const Position& p) { return p.wants(mu); }))
+            continue;
         std::fill(e.begin(), e.end(), 0.0);
         for (std::size_t i = 0; i < npos; ++i) {
+            if (!m_pos[i].wants(mu)) continue;
             beam_path_integrals(u, m_pos[i], tn);
             for (int n = 0; n < m_L; ++n) {
                 if (tn[n] == 0) continue;
@@ -164,6 +168,7 @@ void Solver::intensity_correction() {
         if (nc == 0) continue;
         std::fill(ex.begin(), ex.end(), 0.0);
         for (std::size_t i = 0; i < npos; ++i) {
+            if (!m_pos[i].wants(mu)) continue;
             beam_path_integrals(u, m_pos[i], tn);
             for (int n = 0; n < m_L; ++n)
                 for (std::size_t c = 0; c < nc && tn[n] != 0; ++c)
@@ -212,6 +217,7 @@ void Solver::secondary_correction() {
     std::vector<double> g(nmom);
     const std::vector<double> cosd = cos_dphi();
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
+        if (!m_pos[i].down) continue;
         const int np = m_pos[i].layer;
         const double utau = m_p.utau[i];
         double w = 0, fw = 0, stau = 0;

@@ -30,6 +30,8 @@ struct Scaled {
 struct Position {
     int layer = 0;
     double t = 0;  // scaled depth below the layer top
+    bool up = true, down = true;  // intensities wanted here (Problem::want)
+    bool wants(double mu) const { return mu > 0 ? up : down; }
 };
 
 // Stable integral int_0^L exp(base + c s) ds, for base <= 0 and base + c L <= 0

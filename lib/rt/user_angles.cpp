@@ -221,20 +221,35 @@ double Solver::bottom_intensity(int m) const {
 
 // The cosines computed (a downward cosine whose upward mirror is also wanted is done
 // with the mirror), their Legendre functions, and the full-layer integrals of every
-// layer for each, layer by layer so that a layer's solution stays in cache.
+// layer a wanted intensity depends on, layer by layer so that a layer's solution stays
+// in cache; the others are 0. The sweeps below read level n from the layers below it
+// (upward) or above it (downward), so upward intensities need layers from up_lo down,
+// downward ones layers down to down_hi.
 std::vector<std::size_t> Solver::prepare_user_cosines(int m) {
     const std::size_t nu = m_p.umu.size();
+    int up_lo = m_L, down_hi = -1;
+    for (const Position& ps : m_pos) {
+        if (ps.up) up_lo = std::min(up_lo, ps.t == 0 ? ps.layer : ps.layer + 1);
+        if (ps.down) down_hi = std::max(down_hi, ps.t == m_s.optics[ps.layer].dtau ? ps.layer
+                                                                                  : ps.layer - 1);
+    }
     std::vector<std::size_t> primary;
     for (std::size_t u = 0; u < nu; ++u)
         if (!(m_p.umu[u] < 0 && m_mirror[u] >= 0)) primary.push_back(u);
     const std::size_t np = primary.size();
     m_lam_user.resize(np * m_N);
-    for (std::size_t k = 0; k < np; ++k)
-        normalized_legendre(m, m_N - 1, std::abs(m_p.umu[primary[k]]), &m_lam_user[k * m_N]);
-    m_full_up.resize(np * m_L);
-    m_full_down.resize(np * m_L);
+    std::vector<char> need_up(np), need_down(np);
+    for (std::size_t k = 0; k < np; ++k) {
+        const std::size_t u = primary[k];
+        normalized_legendre(m, m_N - 1, std::abs(m_p.umu[u]), &m_lam_user[k * m_N]);
+        need_up[k] = m_p.umu[u] > 0;
+        need_down[k] = m_p.umu[u] < 0 || m_mirror[u] >= 0;
+    }
+    m_full_up.assign(np * m_L, 0.0);
+    m_full_down.assign(np * m_L, 0.0);
     for (int n = 0; n < m_L; ++n)
         for (std::size_t k = 0; k < np; ++k) {
+            if (!((need_up[k] && n >= up_lo) || (need_down[k] && n <= down_hi))) continue;
             const std::size_t u = primary[k];
             full_layer_pair(n, m, &m_lam_user[k * m_N], std::abs(m_p.umu[u]), m_trans[n * nu + u],
                             m_full_up[k * m_L + n], m_full_down[k * m_L + n]);
@@ -252,6 +267,7 @@ void Solver::sweep_up(std::size_t u, std::size_t k, double bottom, std::vector<d
         m_level_int[n] = m_level_int[n + 1] * m_trans[n * nu + u] + full_up[n];
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         const Position& ps = m_pos[i];
+        if (!ps.up) continue;
         const double dt = m_s.optics[ps.layer].dtau;
         if (ps.t == 0)
             im[i * nu + u] = m_level_int[ps.layer];
@@ -273,6 +289,7 @@ void Solver::sweep_down(std::size_t d, std::size_t k, double top, std::vector<do
         m_level_int[n + 1] = m_level_int[n] * m_trans[n * nu + d] + full_down[n];
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         const Position& ps = m_pos[i];
+        if (!ps.down) continue;
         const double dt = m_s.optics[ps.layer].dtau;
         if (ps.t == 0)
             im[i * nu + d] = m_level_int[ps.layer];

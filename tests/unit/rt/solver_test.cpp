@@ -238,6 +238,55 @@ TEST(Solver, SecondaryCorrectionOnlyInTheAureole) {
             }
 }
 
+// Problem::want: the intensities asked for are a full solve's to the bit (all modes
+// summed, so the azimuth series stops at the same mode), the others are 0, the fluxes
+// are untouched; at depths inside layers and on levels, with emission, the exact-phase
+// TMS correction and the IMS correction. The reference has every cosine's mirror and
+// the ground as an output too, so that it integrates every layer for every cosine.
+TEST(Solver, WantedIntensitiesAreTheFullSolvesAndTheRestZero) {
+    Problem p = beam_problem(0.9, 0.8, 4, 8);
+    p.layers[2].tau = 0.5;  // levels 0, 0.3, 1.3, 1.8, 4.2
+    p.azimuth_accuracy = 0;
+    p.secondary_correction = true;
+    p.exact_phase.components = 1;
+    p.exact_phase.weights.assign(4, 1.0);
+    p.exact_phase.evaluate = [](double x, double* out) {
+        const double g = 0.8;
+        out[0] = (1 - g * g) / std::pow(1 + g * g - 2 * g * x, 1.5);
+    };
+    p.planck_levels = {0.1, 0.2, 0.3, 0.4, 0.5};
+    p.phi_deg = {0, 45, 180};
+    Problem ref = p;
+    ref.utau = {0.0, 0.3, 1.1, 1.3, 3.9, 4.2};
+    ref.umu = {-0.9, -0.7, -0.4, -0.2, 0.2, 0.4, 0.7, 0.9};
+    const Result all = solve(ref);
+    p.utau = {0.0, 0.3, 1.1, 1.3, 3.9};  // level, level, inside, level, inside
+    p.umu = {-0.9, -0.4, 0.2, 0.4, 0.7};
+    const std::size_t in_ref[] = {0, 2, 4, 5, 6};
+    const std::size_t nphi = p.phi_deg.size();
+    for (const std::vector<unsigned char>& want :
+         {std::vector<unsigned char>{1, 2, 3, 0, 1}, {2, 0, 1, 2, 2}, {0, 1, 2, 1, 3},
+          {0, 0, 0, 2, 1}, {3, 3, 3, 3, 3}, {0, 0, 0, 0, 0}, {}}) {
+        p.want = want;
+        const Result some = solve(p);
+        for (std::size_t i = 0; i < p.utau.size(); ++i) {
+            EXPECT_EQ(some.levels[i].diffuse_down, all.levels[i].diffuse_down);
+            EXPECT_EQ(some.levels[i].diffuse_up, all.levels[i].diffuse_up);
+            for (std::size_t u = 0; u < p.umu.size(); ++u) {
+                const bool wanted = want.empty() || (want[i] & (p.umu[u] > 0 ? 1 : 2)) != 0;
+                for (std::size_t f = 0; f < nphi; ++f)
+                    EXPECT_EQ(some.levels[i].intensity[u * nphi + f],
+                              wanted ? all.levels[i].intensity[in_ref[u] * nphi + f] : 0.0)
+                        << i << " " << u << " " << f;
+            }
+        }
+    }
+    p.want = {1, 2};  // not one per depth
+    EXPECT_THROW(solve(p), Error);
+    p.want = {1, 2, 3, 4, 0};
+    EXPECT_THROW(solve(p), Error);
+}
+
 TEST(Solver, RejectsInvalidInput) {
     Problem p = beam_problem(0.5, 0.5, 1, 8);
     p.streams = 7;
