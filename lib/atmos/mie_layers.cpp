@@ -96,6 +96,14 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
         if (mie.has[r]) comp->grid[r] = &mie.grid[r];
     std::vector<rt::Layer> out;
     std::vector<std::vector<double>> scat_c;  // per output layer: scattering per component
+    std::vector<std::vector<double>> hg_moments;  // g^k of each Henyey-Greenstein component
+    auto hg_moment = [&](std::size_t h, int k) {
+        for (std::size_t n = hg_moments.size(); n <= h; ++n) {
+            hg_moments.emplace_back();
+            for (int j = 0; j <= moments; ++j) hg_moments[n].push_back(std::pow(comp->hg_g[n], j));
+        }
+        return hg_moments[h][static_cast<std::size_t>(k)];
+    };
     for (std::size_t i = kept.size() - 1; i-- > 0;) {
         rt::Layer l;
         std::vector<double> sc(kHg0, 0.0);
@@ -127,7 +135,7 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
                     chi = k < static_cast<int>(mie.chi[c - kMie0].size()) ? mie.chi[c - kMie0][k]
                                                                           : 0.0;
                 else
-                    chi = std::pow(comp->hg_g[c - kHg0], k);
+                    chi = hg_moment(c - kHg0, k);
                 m += sc[c] * chi;
             }
             l.pmom[k] = scat > 0 ? m / scat : (k == 0 ? 1.0 : 0.0);

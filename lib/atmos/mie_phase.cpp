@@ -77,22 +77,51 @@ double TabulatedPhase::at(double angle) const {
     return log_lerp(p_sr1[i], p_sr1[i + 1], f);
 }
 
-std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral,
-                                  int gauss_points) {
-    std::vector<double> nodes, weights;
+namespace {
+
+// The quadrature of phase_moments for one angle grid: per node (interval i, Gauss point
+// q), the weight 2 pi (b - a) w_q sin(t) and P_0..P_nmom(cos t). The same grid (LOWTRAN
+// 7's 34 angles) comes back for every spectral sample, so each thread keeps the last
+// one: the sums are then formed from the same numbers as without it, bit for bit.
+struct MomentNodes {
+    std::vector<double> angle_deg;
+    int nmom = -1, gauss_points = 0;
+    std::size_t per = 0;  // nodes per interval
+    std::vector<double> fraction, weight, pk;  // per node; pk[node * (nmom + 1) + k]
+};
+
+const MomentNodes& moment_nodes(const std::vector<double>& angle_deg, int nmom, int gauss_points) {
+    thread_local MomentNodes m;
+    if (m.nmom == nmom && m.gauss_points == gauss_points && m.angle_deg == angle_deg) return m;
+    m = MomentNodes{angle_deg, nmom, gauss_points, 0, {}, {}, {}};
+    std::vector<double> nodes, weights, pk(static_cast<std::size_t>(nmom) + 1);
     rt::gauss_half_range(gauss_points, nodes, weights);
-    std::vector<double> chi(static_cast<std::size_t>(nmom) + 1, 0.0), pk(chi.size());
-    double norm = 0;
-    for (std::size_t i = 0; i + 1 < p.angle_deg.size(); ++i) {
-        const double a = p.angle_deg[i] * kDeg, b = p.angle_deg[i + 1] * kDeg;
+    m.per = nodes.size();
+    for (std::size_t i = 0; i + 1 < angle_deg.size(); ++i) {
+        const double a = angle_deg[i] * kDeg, b = angle_deg[i + 1] * kDeg;
         for (std::size_t q = 0; q < nodes.size(); ++q) {
             const double t = a + (b - a) * nodes[q];
-            const double w =
-                2 * kPi * (b - a) * weights[q] * std::sin(t) * moment_value(p, i, nodes[q]);
+            m.fraction.push_back(nodes[q]);
+            m.weight.push_back(2 * kPi * (b - a) * weights[q] * std::sin(t));
             legendre(std::cos(t), pk);
-            norm += w;
-            for (std::size_t k = 0; k < chi.size(); ++k) chi[k] += w * pk[k];
+            m.pk.insert(m.pk.end(), pk.begin(), pk.end());
         }
+    }
+    return m;
+}
+
+}  // namespace
+
+std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral,
+                                  int gauss_points) {
+    const MomentNodes& m = moment_nodes(p.angle_deg, nmom, gauss_points);
+    std::vector<double> chi(static_cast<std::size_t>(nmom) + 1, 0.0);
+    double norm = 0;
+    for (std::size_t node = 0; node < m.weight.size(); ++node) {
+        const double w = m.weight[node] * moment_value(p, node / m.per, m.fraction[node]);
+        const double* pk = &m.pk[node * chi.size()];
+        norm += w;
+        for (std::size_t k = 0; k < chi.size(); ++k) chi[k] += w * pk[k];
     }
     for (double& c : chi) c /= norm;
     chi[0] = 1;

@@ -63,23 +63,28 @@ Shells shells_from(const Profile& p, double radius_km, bool refraction) {
 // ds/dr = n r / w and dpsi/dr = -C n' / (n w), w = sqrt((n r)^2 - C^2) (Born & Wolf,
 // Principles of Optics, section 3.2.1; Smart, Spherical Astronomy, section 58), w
 // written through n r - n0 r0 so that a huge radius keeps full precision.
-Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_rad) {
-    const std::size_t levels = s.z_km.size();
-    if (!(to > from && to < levels) || !(zenith_rad >= 0 && zenith_rad <= std::numbers::pi / 2))
-        throw std::invalid_argument("trace_up: levels or zenith angle out of range");
-    Ray ray;
-    ray.zenith_rad = zenith_rad;
-    ray.air_mass.assign(levels - 1, 0.0);
+namespace {
+
+// The parts of trace_up's integrands that do not depend on the zenith angle, node by
+// node (layer k from `from` up, Gauss point q): trace_to_sun's bisection evaluates
+// the ray ~40 times over the same nodes. The ray is formed from them by the same
+// operations in the same order as from scratch, so its bits do not depend on this.
+struct PathNodes {
+    std::size_t from = 0, to = 0;
+    double n0r0 = 0;
+    std::vector<double> nr2, dsum, rho, nr, dzdt, ndlnn, one_n;  // per node
+};
+
+PathNodes path_nodes(const Shells& s, std::size_t from, std::size_t to) {
+    PathNodes p;
+    p.from = from;
+    p.to = to;
     const double R = s.radius_km, z0 = s.z_km[from], N0 = s.refractivity[from];
-    const double n0r0 = (1 + N0) * (R + z0);
-    const double sin0 = std::sin(zenith_rad), cos0 = std::cos(zenith_rad);
-    const double sin2 = sin0 * sin0, cos2 = cos0 * cos0;
-    const double C = n0r0 * sin0;
+    p.n0r0 = (1 + N0) * (R + z0);
     for (std::size_t k = from; k < to; ++k) {
         const double dz = s.z_km[k + 1] - s.z_km[k];
         const double Na = s.refractivity[k], Nb = s.refractivity[k + 1];
         const double dlnN = Na > 0 && Nb > 0 ? std::log(Nb / Na) / dz : 0.0;  // km-1
-        double slant = 0, vertical = 0;
         for (std::size_t q = 0; q < 16; ++q) {
             const double t = kGauss.x[q], f = t * t;
             const double z = s.z_km[k] + dz * f, dzdt = 2 * dz * t * kGauss.w[q];
@@ -87,15 +92,46 @@ Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_ra
             const double rho = exp_between(s.density[k], s.density[k + 1], f);
             const double nr = (1 + N) * (R + z);
             const double d = (z - z0) + (N - N0) * (R + z0) + N * (z - z0);  // n r - n0 r0
-            const double w = std::sqrt(std::max(0.0, nr * nr * cos2 + d * (nr + n0r0) * sin2));
+            p.nr2.push_back(nr * nr);
+            p.dsum.push_back(d * (nr + p.n0r0));
+            p.rho.push_back(rho);
+            p.nr.push_back(nr);
+            p.dzdt.push_back(dzdt);
+            p.ndlnn.push_back(N * dlnN);
+            p.one_n.push_back(1 + N);
+        }
+    }
+    return p;
+}
+
+Ray trace_nodes(const PathNodes& p, std::size_t levels, double zenith_rad) {
+    Ray ray;
+    ray.zenith_rad = zenith_rad;
+    ray.air_mass.assign(levels - 1, 0.0);
+    const double sin0 = std::sin(zenith_rad), cos0 = std::cos(zenith_rad);
+    const double sin2 = sin0 * sin0, cos2 = cos0 * cos0;
+    const double C = p.n0r0 * sin0;
+    for (std::size_t k = p.from, i = 0; k < p.to; ++k) {
+        double slant = 0, vertical = 0;
+        for (std::size_t q = 0; q < 16; ++q, ++i) {
+            const double w = std::sqrt(std::max(0.0, p.nr2[i] * cos2 + p.dsum[i] * sin2));
             if (!(w > 0)) continue;  // a trapped (ducted) ray: no path beyond
-            slant += rho * nr / w * dzdt;
-            vertical += rho * dzdt;
-            ray.refraction_rad += -C * (N * dlnN) / ((1 + N) * w) * dzdt;
+            slant += p.rho[i] * p.nr[i] / w * p.dzdt[i];
+            vertical += p.rho[i] * p.dzdt[i];
+            ray.refraction_rad += -C * p.ndlnn[i] / (p.one_n[i] * w) * p.dzdt[i];
         }
         ray.air_mass[k] = vertical > 0 ? slant / vertical : 0.0;
     }
     return ray;
+}
+
+}  // namespace
+
+Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_rad) {
+    const std::size_t levels = s.z_km.size();
+    if (!(to > from && to < levels) || !(zenith_rad >= 0 && zenith_rad <= std::numbers::pi / 2))
+        throw std::invalid_argument("trace_up: levels or zenith angle out of range");
+    return trace_nodes(path_nodes(s, from, to), levels, zenith_rad);
 }
 
 Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
@@ -108,7 +144,8 @@ Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
         return ray;
     }
     // z + R(z) increases with z: bisection on [0, pi/2] to 1e-12 rad.
-    auto seen = [&](double z) { return trace_up(s, to, top, z); };
+    const PathNodes nodes = path_nodes(s, to, top);
+    auto seen = [&](double z) { return trace_nodes(nodes, s.z_km.size(), z); };
     Ray hi = seen(std::numbers::pi / 2);
     if (true_zenith_rad > hi.zenith_rad + hi.refraction_rad) {
         hi.reaches = false;
