@@ -303,6 +303,7 @@ Result Solver::run() {
             cos_m[f] = std::cos(m * (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180);
         for (std::size_t i = 0; i < m_pos.size(); ++i)
             for (std::size_t u = 0; u < nu; ++u) {
+                if (!m_pos[i].wants(m_p.umu[u])) continue;  // 0, and adds nothing
                 double* total = &m_result.levels[i].intensity[u * nphi];
                 const double a = im[i * nu + u];
                 for (std::size_t f = 0; f < nphi; ++f) {

@@ -75,8 +75,7 @@ void Solver::add_correction(std::size_t u, const std::vector<double>& e, std::si
     const std::size_t nphi = m_p.phi_deg.size(), npos = m_pos.size();
     const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
     for (std::size_t f = 0; f < nphi; ++f) {
-        const double dphi = (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180;
-        w.cs[f] = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * std::cos(dphi);
+        w.cs[f] = -mu * mu0 + std::sqrt((1 - mu * mu) * (1 - mu0 * mu0)) * w.cos_dphi[f];
         w.p0[f] = 1;
         w.p1[f] = w.cs[f];
     }
@@ -147,6 +146,7 @@ void Solver::intensity_correction() {
     CorrectionScratch wx;
     wx.cos_dphi = cos_dphi();
     CorrectionScratch w;
+    w.cos_dphi = wx.cos_dphi;
     w.cs.resize(nphi), w.p0.resize(nphi), w.p1.resize(nphi), w.corr.resize(npos * nphi);
     w.rec_a.resize(nmom), w.rec_b.resize(nmom);  // P_l = ((2l-1) x P_{l-1} - (l-1) P_{l-2}) / l
     for (std::size_t l = 2; l < nmom; ++l)
@@ -216,6 +216,10 @@ void Solver::secondary_correction() {
     for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
     std::vector<double> g(nmom);
     const std::vector<double> cosd = cos_dphi();
+    std::vector<char> aureole(nu);
+    for (std::size_t u = 0; u < nu; ++u)
+        aureole[u] = m_p.umu[u] < 0 &&
+                     std::abs(std::acos(m_p.umu[u]) * 180 / kPi - theta0) <= kAureole;
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         if (!m_pos[i].down) continue;
         const int np = m_pos[i].layer;
@@ -237,7 +241,7 @@ void Solver::secondary_correction() {
         const double mu0p = mu0 / (1 - fwbar);
         for (std::size_t u = 0; u < nu; ++u) {
             const double mu = m_p.umu[u];
-            if (mu >= 0 || std::abs(std::acos(mu) * 180 / kPi - theta0) > kAureole) continue;
+            if (!aureole[u]) continue;
             const double x = amp * xi(-mu, mu0p, utau);
             const double sines = std::sqrt((1 - mu * mu) * (1 - mu0 * mu0));
             for (std::size_t f = 0; f < nphi; ++f) {
