@@ -1,34 +1,91 @@
 // Reading TIFF, PNG, JPEG and Netpbm, and writing PNG and Netpbm counts, through
-// OpenImageIO (TIFF is written through GDAL: gdal_write.cpp).
-#include <OpenImageIO/imageio.h>
+// OpenImageIO (TIFF is written through GDAL: gdal_write.cpp). OpenImageIO itself is
+// called by the module sigchain_oiio (oiio_module.cpp), which this file loads on the
+// first such image (oiio_module.hpp says why); the checks, the temporary folder and the
+// rename stay here.
+#include <dlfcn.h>
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
+#include <mutex>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
+#include "image/oiio_module.hpp"
 
 namespace sigchain::image {
 namespace {
 
-using OIIO::ImageInput;
-using OIIO::ImageOutput;
-using OIIO::ImageSpec;
-using OIIO::TypeDesc;
+using oiio::Sample;
+using oiio::Status;
 
-// Interleaved native samples (as read or to be written) <-> planar floats.
-template <typename T>
-void deinterleave(const std::vector<T>& in, Image& image) {
-    const std::size_t plane = image.plane_size();
-    for (std::size_t p = 0; p < plane; ++p)
-        for (int c = 0; c < image.channels; ++c)
-            image.data[c * plane + p] = static_cast<float>(in[p * image.channels + c]);
+// The module's candidate paths, in order: LIBDIR/sigchain beside the running program's
+// bin folder (an installed copy, and the build tree's bin/), then the build tree's
+// folder (unit tests and benchmarks, whose programs live elsewhere in the build tree).
+// Both are fixed when sigchain is configured (CMakeLists.txt).
+std::vector<std::string> module_paths() {
+    std::vector<std::string> paths;
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec)
+        paths.push_back((exe.parent_path() / SIGCHAIN_OIIO_MODULE_FROM_BINDIR /
+                         SIGCHAIN_OIIO_MODULE_NAME).lexically_normal().string());
+    paths.push_back(SIGCHAIN_OIIO_MODULE_BUILD_DIR "/" SIGCHAIN_OIIO_MODULE_NAME);
+    return paths;
 }
 
+struct Module {
+    const oiio::Api* api = nullptr;
+    std::string error;  // why api is null
+};
+
+// dlopens the first candidate that exists (the first one when none does, for dlerror's
+// message) and checks that it was built with this Api.
+Module load_module() {
+    const std::vector<std::string> paths = module_paths();
+    std::string path = paths.front();
+    std::error_code ec;
+    for (const std::string& p : paths)
+        if (std::filesystem::exists(p, ec)) {
+            path = p;
+            break;
+        }
+    const std::string failed = "cannot load the OpenImageIO module " + path + ": ";
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) return {nullptr, failed + dlerror()};
+    using Entry = const oiio::Api* (*)();
+    const auto entry = reinterpret_cast<Entry>(dlsym(handle, "sigchain_oiio_api"));
+    if (!entry) return {nullptr, failed + dlerror()};
+    const oiio::Api* api = entry();
+    if (!api || api->size != sizeof(oiio::Api) || api->version != oiio::kApiVersion)
+        return {nullptr, failed + "built for another interface (version " +
+                             std::to_string(api ? api->version : 0) + ", expected " +
+                             std::to_string(oiio::kApiVersion) + ")"};
+    return {api, {}};
+}
+
+// The module's functions, loaded once per process (thread-safe); IoError
+// "IMAGE: cannot load the OpenImageIO module PATH: REASON" when it cannot be loaded.
+const oiio::Api& module_for(const std::string& image_path) {
+    static std::once_flag once;
+    static Module module;
+    std::call_once(once, [] { module = load_module(); });
+    if (!module.api) throw IoError(image_path + ": " + module.error);
+    return *module.api;
+}
+
+// Throws the error `status` stands for. Errors in this file name the image only:
+// binary rasters have no lines.
+void check(Status status, const std::string& path, const std::string& message) {
+    if (status == Status::DataError) throw DataError({path, 0}, message);
+    if (status == Status::IoError) throw IoError(path + ": " + message);
+}
+
+// Planar floats -> interleaved native samples to be written.
 template <typename T>
 std::vector<T> interleave(const Image& image) {
     const std::size_t plane = image.plane_size();
@@ -39,43 +96,29 @@ std::vector<T> interleave(const Image& image) {
     return out;
 }
 
-template <typename T>
-// Errors in this file name the image only: binary rasters have no lines.
-void read_as(ImageInput& in, TypeDesc type, const std::string& path, Image& image) {
-    std::vector<T> buffer(image.plane_size() * image.channels);
-    if (!in.read_image(0, 0, 0, image.channels, type, buffer.data()))
-        throw DataError({path, 0}, "cannot read pixels: " + in.geterror());
-    deinterleave(buffer, image);
-}
-
-// Writes `pixels` (interleaved, of `type`) into a private temporary folder with the
-// plugin chosen by the final name's extension, then renames into place.
-void write_oiio(const std::string& path, const Image& image, TypeDesc type, const void* pixels) {
-    auto out = ImageOutput::create(path);
-    if (!out) throw IoError(path + ": cannot write this image format: " + OIIO::geterror());
-    ImageSpec spec(static_cast<int>(image.columns), static_cast<int>(image.rows), image.channels,
-                   type);
-    for (int c = 0; c < image.channels && c < static_cast<int>(image.channel_names.size()); ++c)
-        spec.channelnames[c] = image.channel_names[c];
-    // Counts in an alpha position (2- and 4-channel PNG) are data: never premultiplied.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (image.channels > 4 && file_extension(path) == "png")
+// Writes `pixels` (interleaved, of `sample` type) into a private temporary folder with the
+// writer chosen by the final name's extension, then renames into place.
+void write_oiio(const std::string& path, const Image& image, Sample sample, const void* pixels) {
+    const oiio::Api& module = module_for(path);
+    std::string message;
+    check(module.can_write(path, message), path, message);
+    const std::string ext = file_extension(path);
+    if (image.channels > 4 && ext == "png")
         throw DataError({path, 0}, "PNG holds at most 4 channels; use a TIFF for " +
                                        std::to_string(image.channels) + " bands");
-    const std::string ext = file_extension(path);
-    if (ext == "pgm" || ext == "ppm" || ext == "pnm") {
+    const bool netpbm = ext == "pgm" || ext == "ppm" || ext == "pnm";
+    if (netpbm) {
         if (image.channels != 1 && image.channels != 3)
             throw DataError({path, 0},
                             "PGM/PPM hold 1 or 3 channels, not " + std::to_string(image.channels));
-        if (type != TypeDesc::UINT8)  // OpenImageIO 2.4 garbles 16-bit plain PNM
+        if (sample != Sample::UInt8)  // OpenImageIO 2.4 garbles 16-bit plain PNM
             throw DataError({path, 0}, "PGM/PPM output holds 8-bit counts only");
-        spec.attribute("pnm:binary", 0);  // plain (text) Netpbm: readable and diffable
     }
     // OpenImageIO opens its file itself: it goes into a private folder beside the target.
     const TempDir folder(path);
     const std::string temp = folder.file(std::filesystem::path(path).filename().string());
-    bool ok = out->open(temp, spec) && out->write_image(type, pixels) && out->close();
-    if (!ok) throw IoError(path + ": cannot write: " + out->geterror());
+    // Netpbm is written plain (text): readable and diffable.
+    check(module.write(path, temp, image, sample, pixels, netpbm, message), path, message);
     commit_moves({{temp, path}});
 }
 
@@ -84,21 +127,10 @@ void write_oiio(const std::string& path, const Image& image, TypeDesc type, cons
 namespace detail {
 
 Image read_oiio(const std::string& path) {
-    ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);  // alpha-position channels are data
-    auto in = ImageInput::open(path, &config);
-    if (!in) throw DataError({path, 0}, "not a readable image: " + OIIO::geterror());
-    const ImageSpec& spec = in->spec();
-    Image image(spec.height, spec.width, spec.nchannels);
-    // Integer samples keep their count values (OpenImageIO would normalise them to 0..1).
-    if (spec.format == TypeDesc::UINT8)
-        read_as<std::uint8_t>(*in, TypeDesc::UINT8, path, image);
-    else if (spec.format == TypeDesc::UINT16)
-        read_as<std::uint16_t>(*in, TypeDesc::UINT16, path, image);
-    else
-        read_as<float>(*in, TypeDesc::FLOAT, path, image);
-    for (int c = 0; c < spec.nchannels; ++c) image.channel_names.push_back(spec.channel_name(c));
-    in->close();
+    const oiio::Api& module = module_for(path);
+    Image image;
+    std::string message;
+    check(module.read(path, image, message), path, message);
     return image;
 }
 
@@ -126,10 +158,10 @@ void write_counts(const std::string& path, const Image& counts, int bits,
     check_write_options(path, options);
     if (bits == 8) {
         auto pixels = interleave<std::uint8_t>(counts);
-        write_oiio(path, counts, TypeDesc::UINT8, pixels.data());
+        write_oiio(path, counts, Sample::UInt8, pixels.data());
     } else {  // 12-bit counts are stored in 16-bit samples
         auto pixels = interleave<std::uint16_t>(counts);
-        write_oiio(path, counts, TypeDesc::UINT16, pixels.data());
+        write_oiio(path, counts, Sample::UInt16, pixels.data());
     }
 }
 
@@ -137,7 +169,7 @@ void write_float(const std::string& path, const Image& image, const WriteOptions
     if (is_tiff(path)) return detail::write_gtiff(path, image, 32, options);
     check_write_options(path, options);
     auto pixels = interleave<float>(image);
-    write_oiio(path, image, TypeDesc::FLOAT, pixels.data());
+    write_oiio(path, image, Sample::Float, pixels.data());
 }
 
 }  // namespace sigchain::image

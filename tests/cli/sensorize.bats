@@ -262,3 +262,36 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
         --preview p.tif
     assert_no_temp_files .
 }
+
+# OpenImageIO is loaded only for an image read or written through it (the module
+# sigchain_oiio, lib/image/oiio_module.hpp); its errors keep their messages and exit 1.
+@test "a corrupt PNG or TIFF cube exits 1 naming it; no tool links OpenImageIO itself" {
+    printf '\211PNG\r\n\032\nnot a png at all' >bad.png
+    printf 'II*\000garbage garbage garbage' >bad.tif
+    run -1 --separate-stderr sensorize bad.png "$CUBE/red.sen" -o out.png
+    [[ "$stderr" == *"sensorize: bad.png: not a readable image: PNG read error: "* ]] ||
+        fail "stderr: $stderr"
+    run -1 --separate-stderr sensorize bad.tif "$CUBE/red.sen" -o out.png
+    assert_equal "$stderr" \
+        "sensorize: bad.tif: not a readable image: Could not open file: Failed to read directory at offset 1651663207"
+    [ ! -e out.png ]
+    run -0 readelf -d "$SIGCHAIN_BIN/sensorize" "$SIGCHAIN_BIN/trace" "$SIGCHAIN_BIN/compare"
+    refute_output --partial OpenImageIO
+}
+
+@test "an unloadable OpenImageIO module is an error naming it only when an image needs it" {
+    local rel
+    rel=$(cd "$SIGCHAIN_BIN/.." && find lib* -name 'sigchain_oiio.so' -path '*/sigchain/*' | head -1)
+    [ -n "$rel" ] || fail "no sigchain_oiio.so under $SIGCHAIN_BIN/../lib*"
+    mkdir -p copy/bin "copy/$(dirname "$rel")"
+    cp "$SIGCHAIN_BIN/sensorize" copy/bin/
+    echo 'not a shared object' >"copy/$rel"
+    local sens=("$CUBE/blue.sen" "$CUBE/green1.sen" "$CUBE/red1.sen") m="$PWD/copy/$rel"
+    run -0 --separate-stderr copy/bin/sensorize -q "$CUBE/tiny.img" "${sens[@]}" -o out.tif
+    run -1 --separate-stderr copy/bin/sensorize -q "$CUBE/tiny.img" "${sens[@]}" -o out.png
+    # dlerror() follows: "PATH: file too short" here.
+    [[ "$stderr" == "sensorize: out.png: cannot load the OpenImageIO module $m: $m: "?* ]] ||
+        fail "stderr: $stderr"
+    [ ! -e out.png ]
+    assert_no_temp_files .
+}
