@@ -31,7 +31,7 @@ outside() {
         [ -x "$p/$f" ] || fail "$f is not installed"
     done
     for f in share/man/man1/trace.1 share/man/man5/snd.5 share/man/man7/sigchain.7 \
-        share/sigchain/pipelines/scene.mk \
+        share/sigchain/pipelines/scene.mk lib/sigchain/sigchain_oiio.so \
         share/sigchain/data/atmosphere/solar_lowtran7_extraterrestrial.txt \
         share/sigchain/data/atmosphere/lowtran7/aerosol_rural.txt; do
         [ -f "$p/$f" ] || fail "$f is not installed"
