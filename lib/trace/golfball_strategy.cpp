@@ -2,7 +2,6 @@
 // matrix sub-cell (golfball.hpp for the pattern), at its centre or, with golfball_jitter, drawn
 // inside it.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -39,15 +38,13 @@ public:
         const auto& rays = golfball_rays(matrix);
         double lobe_sum = directions(tracer, m, rays, mir, wo_l, lobe);
         bool lobe_rays = lobe && lobe_sum >= 0.5;
-        const double* diffuse_w = diffuse_weights(rays, s);
-        const double* view = view_factors(matrix);
         double svf = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            double w = diffuse_w[i];
+            const GolfRay& r = rays[i];
+            double w = (1 - s) * r.projected_sr / kPi;
             if (lobe_rays) w += s * m_lobe[i] / lobe_sum;
-            if (!m.flat_fall_off)
-                w *= m.fall_off_cos(m_dirs[i][2]);  // incoming fall-off (material.hpp)
-            if (tracer.incoming(p, f.to_world(m_dirs[i]), li)) svf += view[i];
+            w *= m.fall_off_cos(m_dirs[i][2]);  // incoming fall-off (material.hpp)
+            if (tracer.incoming(p, f.to_world(m_dirs[i]), li)) svf += r.projected_sr / kPi;
             if (w == 0) continue;
             for (std::size_t k = 0; k < n; ++k) acc[k] += w * li[k];
         }
@@ -90,32 +87,6 @@ public:
 
 private:
     bool m_jitter;
-    // (1 - s) projected / pi per ray, for the rays and s of the last call.
-    const std::vector<GolfRay>* m_weights_rays = nullptr;
-    double m_weights_s = -1;
-    std::vector<double> m_diffuse_w;
-
-    const double* diffuse_weights(const std::vector<GolfRay>& rays, double s) {
-        if (&rays != m_weights_rays || s != m_weights_s) {
-            m_diffuse_w.resize(rays.size());
-            for (std::size_t i = 0; i < rays.size(); ++i)
-                m_diffuse_w[i] = (1 - s) * rays[i].projected_sr / kPi;
-            m_weights_rays = &rays;
-            m_weights_s = s;
-        }
-        return m_diffuse_w.data();
-    }
-    // projected / pi per ray of a matrix (0: plain cells): each ray's share of the
-    // sky-view factor.
-    static const double* view_factors(int matrix) {
-        static const std::array<std::vector<double>, 4> shares = [] {
-            std::array<std::vector<double>, 4> out;
-            for (int mx = 0; mx < 4; ++mx)
-                for (const GolfRay& r : golfball_rays(mx)) out[mx].push_back(r.projected_sr / kPi);
-            return out;
-        }();
-        return shares[static_cast<std::size_t>(matrix)].data();
-    }
     std::vector<Vec3> m_dirs;    // ray directions (local frame)
     std::vector<double> m_lobe;  // rays' lobe terms (lobe x solid angle)
 

@@ -191,13 +191,13 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
                               const Vec3& wo, double* out) {
     if (m.split_reflectance()) return shade_one_bounce_split(hit, m, a, point, n, wo, out);
     ArenaScope scope(m_arena);
+    double* rho = m_arena.take();
     double* in = m_arena.take();
-    // theta_o only where it matters: a fall-off, a transmissive slab or emission.
-    const bool angular = !view_independent(m) || m_c.emission;
-    const double theta_o =
-        angular ? std::acos(std::clamp(geo::dot(n, wo), 0.0, 1.0)) * kDeg : 0.0;
+    double cos_o = std::clamp(geo::dot(n, wo), 0.0, 1.0);
+    double theta_o = std::acos(cos_o) * kDeg;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
-    const double* rho = reflectance_at(hit, m, a, curve, theta_o);
+    m.reflectance(curve, theta_o, a.thickness_cm, {rho, m_c.n});
+    apply_texture_gain(m_c, m, hit, rho);
     double s = specularity_of(m);
     // The sky fills the part (1 + cos(tilt))/2 of the facet's view, the background
     // plane the rest (irradiance pi L_bg (1 - cos(tilt))/2).
@@ -224,41 +224,6 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     }
     for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * in[k];
     if (m_c.emission) add_emission(m, curve, theta_o, temperature_k(hit), out);
-}
-
-bool Tracer::view_independent(const MaterialOptics& m) {
-    return m.flat_fall_off && !m.transmissive && !m.split_reflectance();
-}
-
-// rho(theta_o) of the hit with its Gaussian texture gain (an arena buffer), or, for a
-// material whose reflectance does not depend on theta_o (view_independent: 1 - eps of
-// its curve, F = 1), the same values computed once per material and curve and kept.
-const double* Tracer::reflectance_at(const scene::Hit& hit, const MaterialOptics& m,
-                                     const scene::FacetAttributes& a, int curve,
-                                     double theta_o_deg) {
-    if (!view_independent(m)) {
-        double* rho = m_arena.take();
-        m.reflectance(curve, theta_o_deg, a.thickness_cm, {rho, m_c.n});
-        apply_texture_gain(m_c, m, hit, rho);
-        return rho;
-    }
-    const double* fixed = nullptr;
-    for (const FixedReflectance& r : m_fixed_rho)
-        if (r.material == &m && r.curve == curve) {
-            fixed = r.rho.data();
-            break;
-        }
-    if (!fixed) {
-        FixedReflectance r{&m, curve, std::vector<double>(m_c.n)};
-        m.reflectance(curve, 0.0, a.thickness_cm, r.rho);  // theta_o does not matter here
-        m_fixed_rho.push_back(std::move(r));
-        fixed = m_fixed_rho.back().rho.data();
-    }
-    if (!m.gaussian_texture) return fixed;
-    double* rho = m_arena.take();
-    std::copy(fixed, fixed + m_c.n, rho);
-    apply_texture_gain(m_c, m, hit, rho);
-    return rho;
 }
 
 // Secondary hit B at depth d < bounces, shaded with its own hemisphere estimate: the

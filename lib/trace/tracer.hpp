@@ -181,18 +181,7 @@ private:
     std::vector<double> m_truth_rho, m_truth_solar, m_truth_down;
     std::vector<double> m_truth_per_zenith, m_truth_per_specularity;
 
-    // Reflectances of view-independent materials, by material and curve (reflectance_at).
-    struct FixedReflectance {
-        const radiometry::MaterialOptics* material;
-        int curve;
-        std::vector<double> rho;
-    };
-    std::vector<FixedReflectance> m_fixed_rho;
-
     const radiometry::MaterialOptics& material_of(const scene::Hit& hit) const;
-    static bool view_independent(const radiometry::MaterialOptics& m);
-    const double* reflectance_at(const scene::Hit& hit, const radiometry::MaterialOptics& m,
-                                 const scene::FacetAttributes& a, int curve, double theta_o_deg);
     double temperature_k(const scene::Hit& hit) const;
     void add_emission(const radiometry::MaterialOptics& m, int curve, double theta_deg, double t_k,
                       double* out);
