@@ -62,15 +62,9 @@ double CirrusModel::extinction_km1(double z_km, double wavelength_um) const {
 }
 
 AerosolLayerOptics CirrusModel::layer(double z_lo_km, double z_hi_km, double wavelength_um) const {
-    AerosolLayerOptics out;
-    if (!(z_hi_km > z_lo_km)) return out;
+    if (!(z_hi_km > z_lo_km)) return {};
     const double column055 = level_integral(m_z_km, m_ext055, z_lo_km, z_hi_km);
-    if (column055 <= 0) return out;
-    const auto [ext, abs, g] = optics(wavelength_um);
-    out.tau_ext = column055 * ext;
-    if (ext > 0) out.ssa = std::clamp(1 - abs / ext, 0.0, 1.0);
-    out.g = g;
-    return out;
+    return column055 > 0 ? slab_optics(column055, optics(wavelength_um)) : AerosolLayerOptics{};
 }
 
 }  // namespace sigchain::atmos

@@ -86,6 +86,11 @@ std::array<double, 3> table_optics(const std::vector<double>& wl, const std::vec
                                    const std::vector<double>& abs, const std::vector<double>& g,
                                    double wavelength_um);
 
+// A slab of `column055` (its optical depth at 0.55 um, scaled so that the table's
+// extinction there is 1) with a table's {extinction, absorption, g} at the sample's
+// wavelength: tau = column055 ext, ssa = 1 - abs / ext, g. Empty for no column.
+AerosolLayerOptics slab_optics(double column055, const std::array<double, 3>& optics);
+
 // Two scatterers in one slab: optical depths add, ssa extinction-weighted, g
 // scattering-weighted.
 AerosolLayerOptics combine(const AerosolLayerOptics& a, const AerosolLayerOptics& b);
