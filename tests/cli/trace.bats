@@ -437,31 +437,22 @@ therm_materials() {
 @test "trace --shadow-history: bad usage exits 2, a missing input 1, and nothing is written" {
     therm_materials
     local args=("$SEED/hawkeye.snd" "$GDB" box_on_plane.mat)
-    shadow_bad() {
-        local status="$1" prefix="$2"
-        shift 2
-        run "-$status" --separate-stderr trace "$@"
-        assert_output ''
-        [[ "$stderr" == "trace: $prefix"* ]] || fail "stderr: $stderr (wanted 'trace: $prefix...')"
-        [ ! -e out.shd ] || fail "out.shd was written"
-        assert_no_temp_files .
-    }
-    shadow_bad 2 "--history-step-minutes: 7 min does not divide" --shadow-history \
+    trace_bad 2 "--history-step-minutes: 7 min does not divide" --shadow-history \
         --history-step-minutes 7 "${args[@]}" -o out.shd
-    shadow_bad 2 "--history-hours: 0: must be a number > 0" --shadow-history --history-hours 0 \
+    trace_bad 2 "--history-hours: 0: must be a number > 0" --shadow-history --history-hours 0 \
         "${args[@]}" -o out.shd
-    shadow_bad 2 "--shadow-history: expected SND SCENE MAT" --shadow-history \
+    trace_bad 2 "--shadow-history: expected SND SCENE MAT" --shadow-history \
         "$SEED/hawkeye.snd" "$GDB" -o out.shd
-    shadow_bad 2 "no output: give -o" --shadow-history "${args[@]}"
-    shadow_bad 2 "--points-per-facet: 0: must be an integer from 1 to 1000000" --shadow-history --points-per-facet 0 \
+    trace_bad 2 "no output: give -o" --shadow-history "${args[@]}"
+    trace_bad 2 "--points-per-facet: 0: must be an integer from 1 to 1000000" --shadow-history --points-per-facet 0 \
         "${args[@]}" -o out.shd
-    shadow_bad 2 "--truth does not apply to --shadow-history" --shadow-history --truth t.img \
+    trace_bad 2 "--truth does not apply to --shadow-history" --shadow-history --truth t.img \
         "${args[@]}" -o out.shd
-    shadow_bad 2 "--points-per-facet needs --shadow-history" --points-per-facet 4 $(inputs) \
+    trace_bad 2 "--points-per-facet needs --shadow-history" --points-per-facet 4 $(inputs) \
         -o out.shd
-    shadow_bad 1 "no_such.gdb: cannot open" --shadow-history "$SEED/hawkeye.snd" no_such.gdb \
+    trace_bad 1 "no_such.gdb: cannot open" --shadow-history "$SEED/hawkeye.snd" no_such.gdb \
         box_on_plane.mat -o out.shd
-    shadow_bad 1 "no_such_dir/out.shd: cannot create" --shadow-history "${args[@]}" \
+    trace_bad 1 "no_such_dir/out.shd: cannot create" --shadow-history "${args[@]}" \
         -o no_such_dir/out.shd
 }
 

@@ -18,7 +18,7 @@ trace_ok() {
 }
 
 # trace_bad STATUS PREFIX ARGS...: exit STATUS, stderr starting "trace: PREFIX", no
-# output cube and no temporary files.
+# output (cube or shadow history) and no temporary files.
 trace_bad() {
     local status="$1" prefix="$2"
     shift 2
@@ -26,5 +26,6 @@ trace_bad() {
     assert_output ''
     [[ "$stderr" == "trace: $prefix"* ]] || fail "stderr: $stderr (wanted 'trace: $prefix...')"
     [ ! -e out.img ] && [ ! -e out.hdr ] || fail "an output cube was written"
+    [ ! -e out.shd ] || fail "out.shd was written"
     assert_no_temp_files .
 }
