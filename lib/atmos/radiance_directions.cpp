@@ -132,6 +132,9 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
     sort_unique(d.umu);
     sort_unique(d.phi);
     index_directions(d, view_angles_deg, view, pending);
+    d.azimuth_means_only =
+        d.azimuth_count == 1 && std::all_of(view_angles_deg.begin(), view_angles_deg.end(),
+                                            [](double v) { return v == 0; });
     return d;
 }
 

@@ -29,6 +29,10 @@ struct Directions {
     // The upwelled grid: rings at the distinct |view angle|, azimuth nodes every step.
     std::vector<double> up_zenith_deg, up_azimuth_deg;
     std::vector<std::size_t> up_mu, up_phi;  // per ring, per azimuth node
+    // Every entry is a mean over azimuth: views and upwelled rings at nadir only (mu = 1)
+    // and sky cells spanning every azimuth. The solver's Fourier mode 0 then gives the
+    // diffuse part of each exactly (rt::Problem::azimuth_mean).
+    bool azimuth_means_only = false;
 };
 
 // The directions of `view_angles_deg` (positive ones look along view_azimuth_deg), of

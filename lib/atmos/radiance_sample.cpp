@@ -140,6 +140,9 @@ rt::Problem base_problem(const SampleSetup& s, const std::vector<LayerOptics>& c
     prob.want = {rt::Problem::kWantUp, rt::Problem::kWantDown};
     prob.umu = s.dirs.umu;
     prob.phi_deg = s.dirs.phi;
+    // Only azimuthal means are read (nadir views, sky cells of a full circle): solve for
+    // them exactly rather than average the subsamples' azimuths, as few as one.
+    prob.azimuth_mean = s.dirs.azimuth_means_only;
     return prob;
 }
 

@@ -286,7 +286,7 @@ void Solver::fluxes() {
 Result Solver::run() {
     setup();
     const bool beam = m_p.beam_flux > 0;
-    const int modes = beam && !m_p.umu.empty() ? m_N : 1;
+    const int modes = beam && !m_p.umu.empty() && !m_p.azimuth_mean ? m_N : 1;
     const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size();
     std::vector<double> im, cos_m(nphi);
     int converged = 0;

@@ -87,6 +87,12 @@ struct Problem {
     // contribution to every intensity is below this fraction of the intensity (DISORT's
     // ACCUR). 0 computes all modes m = 0 .. streams - 1.
     double azimuth_accuracy = 1e-5;
+    // Every intensity is its mean over azimuth (the same at every phi_deg): Fourier mode 0
+    // only (the modes m > 0 integrate to 0 over a full circle), and the TMS and IMS
+    // corrections averaged over azimuth. Exact for what is read as such: mu = +-1
+    // (P_l^m(+-1) = 0 for m > 0, so every mode's sum there is mode 0) and rings of
+    // directions spanning every azimuth; about one Fourier mode's cost instead of N.
+    bool azimuth_mean = false;
 };
 
 struct LevelResult {
