@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "atmos/ground_albedo.hpp"
 #include "atmos/rayleigh.hpp"
 #include "atmos/single_scatter.hpp"
+#include "core/error.hpp"
 #include "rt/coupling.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
@@ -340,28 +342,39 @@ void add_weighted(SampleResult& acc, const SampleResult& term, double w, bool fi
 
 }  // namespace
 
-SampleResult solve_sample(const SampleSetup& s, double nu) {
+SamplePrep prepare_sample(const SampleSetup& s, double nu) {
+    SamplePrep p;
+    p.nu = nu;
+    p.moments = s.moments;
     const double wavelength = 1e4 / nu;
-    if (s.column.mie() && !s.mie) {  // IPH 2: the Mie functions once for every solve
-        const MieOptics mie = mie_optics(s.column, wavelength, s.moments);
-        SampleSetup with = s;
-        with.mie = &mie;
-        return solve_sample(with, nu);
-    }
-    const std::vector<LayerOptics> col = s.column.layers(nu);
-    io::RadSample sample;
-    sample.wavelength_um = wavelength;
-    sample.wavenumber_cm1 = nu;
-    sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
-    sample.sun_transmission = s.sun_up ? s.column.sun_transmittance(nu, col, 0, s.mu0) : 0.0;
-
+    // IPH 2: the Mie functions once for every solve of the sample.
+    if (s.column.mie() && !s.mie) p.mie = mie_optics(s.column, wavelength, s.moments);
+    p.col = s.column.layers(nu);
+    p.sample.wavelength_um = wavelength;
+    p.sample.wavenumber_cm1 = nu;
+    p.sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
+    p.sample.sun_transmission = s.sun_up ? s.column.sun_transmittance(nu, p.col, 0, s.mu0) : 0.0;
     // Exponential sums where a gas band needs them (ColumnModel::gas_terms): the solver
     // per term, the results weighted and summed (correlated-k).
-    const bool thermal = wavelength >= s.options.thermal_min_wavelength_um;
-    const GasColumn::Terms terms = s.column.gas_terms(
+    p.thermal = wavelength >= s.options.thermal_min_wavelength_um;
+    p.terms = s.column.gas_terms(
         nu, s.options.max_gas_terms,
-        thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance,
-        !thermal && s.options.gas_pairs);
+        p.thermal ? ColumnModel::kGasThermalTolerance : ColumnModel::kGasFitTolerance,
+        !p.thermal && s.options.gas_pairs);
+    return p;
+}
+
+SampleResult solve_sample(const SampleSetup& setup, const SamplePrep& p) {
+    if (p.moments != setup.moments)
+        throw Error("solve_sample: prepared with " + std::to_string(p.moments) + " moments, not " +
+                    std::to_string(setup.moments));
+    SampleSetup s = setup;
+    if (p.mie) s.mie = &*p.mie;
+    const double nu = p.nu;
+    const std::vector<LayerOptics>& col = p.col;
+    const io::RadSample& sample = p.sample;
+    const bool thermal = p.thermal;
+    const GasColumn::Terms& terms = p.terms;
     if (!terms.equivalent) {
         SampleResult res;
         for (std::size_t t = 0; t < terms.weight.size(); ++t)
@@ -389,6 +402,10 @@ SampleResult solve_sample(const SampleSetup& s, double nu) {
     read_tables(s, sol, col, nu, res);
     if (s.options.coupling) read_coupling(s, prob, sol.solar, res);
     return res;
+}
+
+SampleResult solve_sample(const SampleSetup& s, double nu) {
+    return solve_sample(s, prepare_sample(s, nu));
 }
 
 }  // namespace sigchain::atmos

@@ -3,6 +3,7 @@
 // infrared) and the table entries read from its intensities. Internal to lib/atmos.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "atmos/column_model.hpp"
@@ -49,7 +50,24 @@ struct SampleResult {
     int terms = 1;                        // exponential-sum terms solved (gas_terms)
 };
 
+// What every solve of a sample shares, whatever its streams (prepare_sample): the
+// column's layers, the Mie functions (with `moments` moments), the sun and the
+// exponential-sum terms.
+struct SamplePrep {
+    double nu = 0;  // cm-1
+    int moments = 0;
+    std::optional<MieOptics> mie;  // IPH 2 only (and when the setup has none)
+    std::vector<LayerOptics> col;  // bottom first
+    io::RadSample sample;
+    GasColumn::Terms terms;
+    bool thermal = false;  // layer emission solved
+};
+SamplePrep prepare_sample(const SampleSetup& setup, double nu_cm1);
+
 // Solves the sample at wavenumber nu_cm1. Thread-safe for one setup.
 SampleResult solve_sample(const SampleSetup& setup, double nu_cm1);
+// The same from its preparation, which must have been made with setup's moments (else
+// sigchain::Error): the probes of --streams auto solve one sample at several streams.
+SampleResult solve_sample(const SampleSetup& setup, const SamplePrep& prep);
 
 }  // namespace sigchain::atmos

@@ -71,9 +71,11 @@ double column_scattering(const std::vector<LayerOptics>& layers) {
     return tau;
 }
 
-// The probes solved at `streams` (the setup's options copied with them).
+// The probes solved at `streams` (the setup's options copied with them). A probe's
+// preparation (its column, Mie functions and gas terms) serves every order with the
+// same phase moments (every order up to kPhaseMoments): preps[p] is kept or remade.
 std::vector<SampleResult> solve_probes(const SampleSetup& base, const std::vector<double>& probes,
-                                       int streams) {
+                                       int streams, std::vector<SamplePrep>& preps) {
     RadianceOptions o = base.options;
     o.streams = streams;
     SampleSetup s{base.column,
@@ -87,8 +89,13 @@ std::vector<SampleResult> solve_probes(const SampleSetup& base, const std::vecto
                   phase_moments(streams),
                   base.deck,
                   base.mie};
+    preps.resize(probes.size());
     std::vector<SampleResult> out;
-    for (double nu : probes) out.push_back(solve_sample(s, nu));
+    for (std::size_t p = 0; p < probes.size(); ++p) {
+        if (preps[p].moments != s.moments || preps[p].nu != probes[p])
+            preps[p] = prepare_sample(s, probes[p]);
+        out.push_back(solve_sample(s, preps[p]));
+    }
     return out;
 }
 
@@ -126,10 +133,11 @@ double table_difference(const SampleResult& a, const SampleResult& b) {
 StreamChoice choose_streams(const SampleSetup& setup, const std::vector<double>& probes,
                             double tolerance) {
     std::map<int, std::vector<SampleResult>> solved;  // per order, per probe
+    std::vector<SamplePrep> preps;
     auto at = [&](int streams) -> const std::vector<SampleResult>& {
         auto it = solved.find(streams);
         if (it == solved.end())
-            it = solved.emplace(streams, solve_probes(setup, probes, streams)).first;
+            it = solved.emplace(streams, solve_probes(setup, probes, streams, preps)).first;
         return it->second;
     };
     StreamChoice choice;
@@ -144,6 +152,7 @@ StreamChoice choose_streams(const SampleSetup& setup, const std::vector<double>&
         choice.check_streams = 2 * n;
         choice.estimated_error = kErrorPerDifference * worst;
         choice.within_tolerance = choice.estimated_error <= tolerance;
+        choice.probe_results = low;
         if (choice.within_tolerance) break;
         solved.erase(n);  // no longer needed: the next comparisons are of higher orders
     }

@@ -27,6 +27,9 @@ struct StreamChoice {
     double estimated_error = 0;             // twice the largest table_difference from 2N
     bool within_tolerance = true;           // false: no candidate agreed; the largest is used
     std::vector<double> probe_wavenumbers;  // cm-1, the samples compared
+    // The probes solved at `streams`: the same as the band's own solve of those samples
+    // (the same setup), so build_radiance takes them instead of solving them again.
+    std::vector<SampleResult> probe_results;
 };
 
 // The band's probe samples (cm-1): its centre sample and the sample with the largest
