@@ -109,11 +109,15 @@ std::vector<Position> locate(const Problem& p, const Scaled& s) {
 // Assembles and solves the boundary-value problem for one mode: top boundary, continuity
 // at every interface, Lambertian bottom (Stamnes et al. 1988, eqs. 16-20), as a banded
 // system with kl = ku = 3 nn - 1 (unknowns ordered layer by layer, decaying then growing).
+// With `factored`, band already holds this system's factors: only the right-hand side
+// is formed.
 void solve_boundary(const Problem& p, const Quadrature& q, int m,
                     const std::vector<LayerOptics>& opt, const std::vector<LayerSolution>& sol,
-                    double beam_bottom, linalg::BandMatrix& band, std::vector<double>& x) {
+                    double beam_bottom, bool factored, linalg::BandMatrix& band,
+                    std::vector<double>& x) {
     const int nn = q.nn, n2 = 2 * nn, L = static_cast<int>(sol.size());
-    band.reset(L * n2, 3 * nn - 1, 3 * nn - 1);
+    const bool assemble = !factored;
+    if (assemble) band.reset(L * n2, 3 * nn - 1, 3 * nn - 1);
     x.assign(L * n2, 0.0);
     auto part = [&](int n, int a, double t) {
         const LayerSolution& s = sol[n];
@@ -126,7 +130,7 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
     const double top = m == 0 ? p.top_isotropic + p.top_emission : 0.0;
     for (int i = 0; i < nn; ++i) {
         const int a = nn + i;
-        for (int j = 0; j < nn; ++j) {
+        for (int j = 0; j < nn && assemble; ++j) {
             band.at(i, j) = sol[0].dec(j, a);
             band.at(i, nn + j) = sol[0].grow(j, a) * sol[0].exp_k[j];
         }
@@ -137,7 +141,7 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
         const LayerSolution &u = sol[n], &d = sol[n + 1];
         for (int a = 0; a < n2; ++a) {
             const int r = nn + n * n2 + a;
-            for (int j = 0; j < nn; ++j) {
+            for (int j = 0; j < nn && assemble; ++j) {
                 band.at(r, n * n2 + j) = u.dec(j, a) * u.exp_k[j];
                 band.at(r, n * n2 + nn + j) = u.grow(j, a);
                 band.at(r, (n + 1) * n2 + j) = -d.dec(j, a);
@@ -157,7 +161,7 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
     for (int k = 0; k < nn; ++k) part_refl += q.weight[k] * q.mu[k] * part(nb, nn + k, dt);
     for (int i = 0; i < nn; ++i) {
         const int r = nn + nb * n2 + i;
-        for (int j = 0; j < nn; ++j) {
+        for (int j = 0; j < nn && assemble; ++j) {
             double rd = 0, rg = 0;
             if (alb > 0)
                 for (int k = 0; k < nn; ++k) {
@@ -169,8 +173,32 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
         }
         x[r] = src - part(nb, i, dt) + 2 * alb * part_refl;
     }
-    if (!band.factor()) throw Error("discrete-ordinate solver: singular boundary-value system");
+    if (assemble && !band.factor())
+        throw Error("discrete-ordinate solver: singular boundary-value system");
     band.solve(x.data());
+}
+
+// Mode 0 of the last solve on this thread that solved mode 0 alone (no beam, or
+// Problem::azimuth_mean): its layers' homogeneous solutions and the factors of its
+// boundary-value system, with what they depend on (the key: streams, surface albedo and
+// every scaled layer's optical depth, albedo and moments). build_radiance's coupling
+// solve follows its solar solve on the same layers: it takes them instead of solving
+// them again, bit for bit the same numbers.
+struct ModeZero {
+    std::vector<double> key;
+    std::vector<LayerSolution> sol;
+    linalg::BandMatrix band;
+};
+thread_local ModeZero t_mode_zero;
+
+std::vector<double> mode_zero_key(const Problem& p, const Scaled& s) {
+    std::vector<double> key{static_cast<double>(p.streams), p.albedo};
+    for (const LayerOptics& o : s.optics) {
+        key.push_back(o.dtau);
+        key.push_back(o.ssa);
+        key.insert(key.end(), o.g.begin(), o.g.end());
+    }
+    return key;
 }
 
 }  // namespace
@@ -222,11 +250,31 @@ void Solver::solve_mode(int m) {
     detail::quadrature_legendre(m_q, m, m_N, m_lam);
     m_lam0.assign(m_N, 0.0);
     normalized_legendre(m, m_N - 1, -m_p.beam_mu0, m_lam0.data());
-    for (int n = 0; n < m_L; ++n)
-        detail::solve_layer(m_q, m, m_s.optics[n], m_lam.data(), m_beam_mu0[n], m_lam0.data(),
-                            m_thermal, m_sol[n], m_scratch);
+    // Without sources inside the layers, mode 0 of a system solved just before is reused
+    // (ModeZero): its layers need no particular solutions, which would need the
+    // eigen-decomposition's work arrays.
+    const bool reuse = m == 0 && !(m_p.beam_flux > 0) && !m_thermal &&
+                       t_mode_zero.key == m_mode_zero_key;
+    if (reuse) {
+        std::swap(m_sol, t_mode_zero.sol);
+        std::swap(m_band, t_mode_zero.band);
+        t_mode_zero.key.clear();
+        for (int n = 0; n < m_L; ++n) {  // as solve_layer leaves a layer without sources
+            LayerSolution& s = m_sol[n];
+            s.beam.assign(2 * m_q.nn, 0.0);
+            s.bmom.assign(s.nl, 0.0);
+            s.inv_mu0 = m_beam_mu0[n] > 0 ? 1 / m_beam_mu0[n] : 0;
+            s.exp_beam = std::exp(-m_s.optics[n].dtau * s.inv_mu0);
+            s.thermal0.assign(2 * m_q.nn, 0.0);
+            s.tmom.assign(s.nl, 0.0);
+        }
+    } else {
+        for (int n = 0; n < m_L; ++n)
+            detail::solve_layer(m_q, m, m_s.optics[n], m_lam.data(), m_beam_mu0[n],
+                                m_lam0.data(), m_thermal, m_sol[n], m_scratch);
+    }
     const double beam_bottom = m_p.beam_flux * std::exp(-m_slant_s[m_L]);
-    solve_boundary(m_p, m_q, m, m_s.optics, m_sol, beam_bottom, m_band, m_x);
+    solve_boundary(m_p, m_q, m, m_s.optics, m_sol, beam_bottom, reuse, m_band, m_x);
 }
 
 // Intensity at quadrature direction a, scaled depth t in layer n, current mode.
@@ -287,6 +335,7 @@ Result Solver::run() {
     setup();
     const bool beam = m_p.beam_flux > 0;
     const int modes = beam && !m_p.umu.empty() && !m_p.azimuth_mean ? m_N : 1;
+    m_mode_zero_key = mode_zero_key(m_p, m_s);
     const std::size_t nu = m_p.umu.size(), nphi = m_p.phi_deg.size();
     std::vector<double> im, cos_m(nphi);
     int converged = 0;
@@ -322,6 +371,11 @@ Result Solver::run() {
     if (beam && m_p.delta_m && m_p.intensity_correction && peaked && nu > 0) {
         intensity_correction();
         if (m_p.secondary_correction) secondary_correction();
+    }
+    if (modes == 1) {  // the solve's mode 0 stays for the next one (ModeZero)
+        t_mode_zero.key = std::move(m_mode_zero_key);
+        std::swap(t_mode_zero.sol, m_sol);
+        std::swap(t_mode_zero.band, m_band);
     }
     return std::move(m_result);
 }

@@ -111,6 +111,7 @@ private:
     detail::Scratch m_scratch;
     linalg::BandMatrix m_band;
     std::vector<double> m_x;  // boundary-value solution of the current mode
+    std::vector<double> m_mode_zero_key;  // what mode 0's system depends on (ModeZero)
     std::vector<double> m_lam, m_lam0;
     std::vector<UserSource> m_us, m_us_down;  // per layer, for +|mu| and -|mu|
     std::vector<std::ptrdiff_t> m_mirror;     // index of -umu[u] in umu, or -1

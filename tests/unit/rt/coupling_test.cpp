@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <thread>
 #include <vector>
 
 #include "core/error.hpp"
@@ -89,6 +90,41 @@ TEST(SurfaceCoupling, ConservesEnergyInAConservativeRayleighAtmosphere) {
 
 TEST(SurfaceCoupling, RejectsALevelOutsideTheColumn) {
     EXPECT_THROW(surface_coupling(hazy_column(), 0.5, {1.0}), Error);
+}
+
+// The solver keeps a single-mode solve's mode 0 for a following solve of the same
+// layers (build_radiance's coupling after its azimuth-mean solar solve): the coupling
+// terms are the same bits whether solved first on a fresh thread, after a solar solve
+// of the same column (reused) or after one of another column (not reused).
+TEST(SurfaceCoupling, TheSameAfterASolveOfTheSameOrAnotherColumn) {
+    Problem p = hazy_column();
+    p.streams = 8;
+    p.beam_flux = 1.7;
+    p.beam_mu0 = 0.55;
+    p.utau = {0.05, 0.4};
+    p.umu = {-0.5, 0.6, 1.0};
+    p.phi_deg = {0};
+    p.azimuth_mean = true;
+    const std::vector<double> mus{0.6, 1.0};
+    SurfaceCoupling fresh;
+    std::thread([&] { fresh = surface_coupling(p, 0.05, mus); }).join();
+    auto same = [&](const SurfaceCoupling& c) {
+        EXPECT_EQ(c.spherical_albedo, fresh.spherical_albedo);
+        EXPECT_EQ(c.direct_tau, fresh.direct_tau);
+        EXPECT_EQ(c.diffuse_up, fresh.diffuse_up);
+    };
+    SurfaceCoupling reused, other;
+    std::thread([&] {
+        (void)solve(p);  // the same column's solar solve, mode 0 only
+        reused = surface_coupling(p, 0.05, mus);
+        Problem q = hazy_column(1.5);
+        q.streams = 8, q.beam_flux = 1, q.beam_mu0 = 0.55, q.utau = {0.05};
+        q.umu = {1.0}, q.phi_deg = {0}, q.azimuth_mean = true;
+        (void)solve(q);
+        other = surface_coupling(p, 0.05, mus);
+    }).join();
+    same(reused);
+    same(other);
 }
 
 }  // namespace
