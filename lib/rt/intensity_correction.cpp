@@ -146,7 +146,9 @@ constexpr int kMeanAzimuths = 360;
 std::vector<double> legendre(double x, std::size_t n) {
     std::vector<double> p(n);
     for (std::size_t l = 0; l < n; ++l)
-        p[l] = l == 0 ? 1.0 : l == 1 ? x : ((2.0 * l - 1) * x * p[l - 1] - (l - 1.0) * p[l - 2]) / l;
+        p[l] = l == 0   ? 1.0
+               : l == 1 ? x
+                        : ((2.0 * l - 1) * x * p[l - 1] - (l - 1.0) * p[l - 2]) / l;
     return p;
 }
 

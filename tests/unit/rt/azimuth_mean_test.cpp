@@ -32,7 +32,8 @@ Problem problem(double g, bool exact) {
     for (double share : w) {
         Layer l{0.4, 0.95, {}};
         const std::vector<double> hg = henyey_greenstein(g, moments);
-        for (int k = 0; k < moments; ++k) l.pmom.push_back(share * hg[k] + (k == 0 ? 1 - share : 0));
+        for (int k = 0; k < moments; ++k)
+            l.pmom.push_back(share * hg[k] + (k == 0 ? 1 - share : 0));
         p.layers.push_back(l);
     }
     if (exact) {
