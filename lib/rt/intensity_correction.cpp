@@ -2,6 +2,7 @@
 // beam's single scattering with the exact phase function) and IMS (secondary scattering
 // within the forward peak).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "rt/solver.hpp"
@@ -137,10 +138,21 @@ void Solver::add_exact_correction(std::size_t u, const std::vector<double>& e,
 namespace {
 
 // Nodes of the midpoint rule in azimuth over [0, pi] for an exact phase function's
-// azimuthal mean (Gauss-Chebyshev in the cosine of the scattering angle), 0.5 deg apart.
+// azimuthal mean (Gauss-Chebyshev in the cosine of the scattering angle), 1 deg apart.
 // On LOWTRAN 7's Mie functions (ln P piecewise linear in angle) the Hawkeye tables change
-// by 2e-7 from 360 to 1440 nodes (1.4e-5 with 180); tests/unit/rt/azimuth_mean_test.cpp.
-constexpr int kMeanAzimuths = 360;
+// by at most 1.4e-5 from 180 to 1440 nodes (9e-5 with 90, 2e-7 with 360), a
+// seven-hundredth of --streams auto's default 1 %; tests/unit/rt/azimuth_mean_test.cpp.
+constexpr int kMeanAzimuths = 180;
+
+// cos((k + 1/2) pi / kMeanAzimuths), k < kMeanAzimuths: the nodes' cosines, made once.
+const std::array<double, kMeanAzimuths>& mean_azimuth_cosines() {
+    static const std::array<double, kMeanAzimuths> c = [] {
+        std::array<double, kMeanAzimuths> v{};
+        for (int k = 0; k < kMeanAzimuths; ++k) v[k] = std::cos((k + 0.5) * kPi / kMeanAzimuths);
+        return v;
+    }();
+    return c;
+}
 
 // Legendre polynomials P_0 .. P_{n-1} at x.
 std::vector<double> legendre(double x, std::size_t n) {
@@ -167,8 +179,9 @@ void Solver::add_mean_correction(std::size_t u, const std::vector<double>& e, st
     const double sines = std::sqrt((1 - mu * mu) * (1 - mu0 * mu0));
     // At mu = +-1 (or the beam at the zenith) the scattering angle is one for every azimuth.
     const int nodes = sines > 0 ? kMeanAzimuths : 1;
+    const std::array<double, kMeanAzimuths>& cosines = mean_azimuth_cosines();
     for (int k = 0; k < nodes && nc > 0; ++k) {
-        const double cs = -mu * mu0 + sines * std::cos((k + 0.5) * kPi / nodes);
+        const double cs = -mu * mu0 + sines * (sines > 0 ? cosines[k] : 0.0);
         m_p.exact_phase.evaluate(std::clamp(cs, -1.0, 1.0), v.data());
         for (std::size_t c = 0; c < nc; ++c) mean[c] += v[c] / nodes;
     }
