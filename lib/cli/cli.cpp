@@ -265,8 +265,8 @@ void Cli::add_scene_input_options() {
         "the land-use classes to .mat ids (odb(5) MAP FILES)");
     // 0 to 2^24, the range of MATERIAL_ID in every format (mat(5); io::kMaxMaterialId).
     add_number("material-id", "N", integers(0, 16777216),
-               "one .mat id for every face of a mesh scene, or for a DEM scene's terrain\n"
-               "                    (0-16777216)");
+               "one .mat id for every face of a mesh scene, or for a DEM scene's terrain "
+               "(0-16777216)");
 }
 
 void Cli::add_creation_option() {

@@ -18,8 +18,8 @@ int main(int argc, char** argv) {
     tool.add_required_output_option(
         "PATTERN", "write band N to PATTERN with %d replaced by N (e.g. scene-%d.rad); required");
     tool.add_number_or("streams", "auto", "N|auto", cli::integers(4, 64),
-                       "discrete ordinates of the solver (even, 4-64), or auto: per band\n"
-                       "                    the fewest that agree with twice as many", "16");
+                       "discrete ordinates of the solver (even, 4-64), or auto: per band "
+                       "the fewest that agree with twice as many", "16");
     tool.add_number("stream-tolerance", "REL", cli::reals(0, 1, true),
                     "--streams auto: relative error allowed (> 0 and <= 1)", "0.01");
     tool.add_number("sky-zenith-step", "DEG", cli::reals(0, 90, true),
@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
     tool.add_number("upwelled-azimuth-step", "DEG", cli::reals(0, 360, true),
                     "upwelled path-radiance grid: azimuth step (divides 360)", "10");
     tool.add_number("view-azimuth", "DEG", cli::reals(-360, 360),
-                    "azimuth of positive view angles, clockwise from north, -360 to 360\n"
-                    "                    (default: the deck's PSIPO)");
+                    "azimuth of positive view angles, clockwise from north, -360 to 360 "
+                    "(default: the deck's PSIPO)");
     tool.add_number("top", "KM", cli::positive(1000),
                     "top of the modelled atmosphere (> 0, <= 1000)", "100");
     tool.add_number("merge-tau", "TAU", cli::reals(0, 1),
@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
     tool.add_options()("write-decks", cli::po::value<std::string>()->value_name("DIR"),
                        "write a LOWTRAN 7 deck per path the tables need and DIR/runs.t7m, no tables")(
         "from-tape7", cli::po::value<std::string>()->value_name("LIST"),
-        "assemble the tables from the TAPE7s of the run list LIST (.t7m, or a\n"
-        "                    directory holding runs.t7m) instead of solving")(
+        "assemble the tables from the TAPE7s of the run list LIST (.t7m, or a "
+        "directory holding runs.t7m) instead of solving")(
         "data-dir", cli::po::value<std::string>()->value_name("DIR"),
                        "reference data (default: $SIGCHAIN_DATA, else the build's data/)");
     tool.add_threads_option();

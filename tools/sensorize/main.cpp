@@ -174,8 +174,8 @@ int main(int argc, char** argv) {
     tool.add_number("psf-sigma", "PX", cli::positive(),
                     "Gaussian point-spread function, sigma in pixels (> 0)");
     tool.add_number("mtf-fnumber", "N", cli::positive(1000),
-                    "MTF: diffraction of a circular aperture of f-number N, > 0, <= 1000\n"
-                    "                    (needs --mtf-pitch)");
+                    "MTF: diffraction of a circular aperture of f-number N, > 0, <= 1000 "
+                    "(needs --mtf-pitch)");
     tool.add_number("mtf-pitch", "UM", cli::positive(10000),
                     "MTF: detector pitch, micrometres (> 0, <= 10000)");
     tool.add_number("mtf-fill", "F", cli::reals(0, 1, true),

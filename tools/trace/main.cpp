@@ -124,8 +124,8 @@ int main(int argc, char** argv) {
     tool.add_threads_option();
     tool.add_creation_option();
     tool.add_scene_input_options();
-    tool.add_tile_option("render the K-th of N equal parts of the rows (1 <= K <= N),\n"
-                         "                    for merge_tiles");
+    tool.add_tile_option("render the K-th of N equal parts of the rows (1 <= K <= N), "
+                         "for merge_tiles");
     tool.add_strict_option(
         "--tmp keys that match no facet, or facets without a temperature, are an error");
     tool.add_options()("sampling",
@@ -133,12 +133,12 @@ int main(int argc, char** argv) {
                        "hemisphere sampling: dirsig, golfball or montecarlo")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<std::string>()->value_name("N|auto"),
-        "secondary hits followed (default auto: as deep as an estimate says the\n"
-        "                    scene needs; 1: lit by the sun and an open sky; N > 1:\n"
-        "                    paths N hits deep; 0: other facets are black)")(
+        "secondary hits followed (default auto: as deep as an estimate says the "
+        "scene needs; 1: lit by the sun and an open sky; N > 1: "
+        "paths N hits deep; 0: other facets are black)")(
         "background", cli::po::value<std::string>()->value_name("WHAT"),
-        "what rays below the horizon see beyond the scene: mean (of the scene seen\n"
-        "                    from above; default), none, or a MATERIAL_ID of the .mat")(
+        "what rays below the horizon see beyond the scene: mean (of the scene seen "
+        "from above; default), none, or a MATERIAL_ID of the .mat")(
         "rows", cli::po::value<std::string>()->value_name("A:B"), "render rows A to B-1 only")(
         "truth", cli::po::value<std::string>()->value_name("FILE"),
         "also write the truth layers to FILE")("tmp",
@@ -147,8 +147,8 @@ int main(int argc, char** argv) {
         "allow-degenerate", "skip degenerate facets with a warning instead of failing")(
         "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
         "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
-        "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT\n"
-        "                    FILE; none: write no georeferencing)")(
+        "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT "
+        "FILE; none: write no georeferencing)")(
         "igm", cli::po::value<std::string>()->value_name("FILE.tif"),
         "write each pixel's ground position (IGM: map and scene coordinates)")(
         "glt", cli::po::value<std::string>()->value_name("FILE.tif"),
@@ -156,34 +156,34 @@ int main(int argc, char** argv) {
         "shadow-history", "write the facets' sun/shadow history and sky view (.shd) instead")(
         "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
         "uncertainty", cli::po::value<std::string>()->value_name("FILE"),
-        "with --truth: add the layers uncertainty_BAND, propagated from the\n"
-        "                    input uncertainties in FILE (.unc)")(
+        "with --truth: add the layers uncertainty_BAND, propagated from the "
+        "input uncertainties in FILE (.unc)")(
         "convergence", cli::po::value<std::string>()->value_name("MIN,MAX,T"),
-        "primary samples in batches of MIN until the relative standard error\n"
-        "                    is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)")(
+        "primary samples in batches of MIN until the relative standard error "
+        "is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)")(
         "convergence-error", cli::po::value<std::string>()->value_name("relative|absolute|rms"),
-        "--convergence's T bounds standard error / |mean| (relative, the default),\n"
-        "                    the standard error in W cm-2 sr-1 um-1 (absolute), or\n"
-        "                    standard error x sqrt(MIN / samples) (rms: least RMS per sample)");
+        "--convergence's T bounds standard error / |mean| (relative, the default), "
+        "the standard error in W cm-2 sr-1 um-1 (absolute), or "
+        "standard error x sqrt(MIN / samples) (rms: least RMS per sample)");
     tool.add_number("samples-per-pixel", "N", cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
     tool.add_number("hemisphere-samples", "N", cli::integers(1, 1000000),
-                    "montecarlo: rays per hit; dirsig: diffuse pattern size (1-1000000;\n"
-                    "                    default 64)");
+                    "montecarlo: rays per hit; dirsig: diffuse pattern size (1-1000000; "
+                    "default 64)");
     tool.add_number("max-transmissions", "N", cli::integers(0, 1000),
                     "transmissive facets followed per ray (0-1000; default 8)");
     tool.add_number("adjacency-radius", "M", cli::positive(1e7),
-                    "radius of the environment whose mean reflectance couples (> 0;\n"
-                    "                    default 1000 m)");
+                    "radius of the environment whose mean reflectance couples (> 0; "
+                    "default 1000 m)");
     tool.add_number("history-hours", "H", cli::positive(8760),
-                    "--shadow-history: hours of history before the scene time (> 0, <= 8760;\n"
-                    "                    default 24)");
+                    "--shadow-history: hours of history before the scene time (> 0, <= 8760; "
+                    "default 24)");
     tool.add_number("history-step-minutes", "M", cli::positive(1440),
-                    "--shadow-history: time step, dividing the history (> 0, <= 1440;\n"
-                    "                    default 15)");
+                    "--shadow-history: time step, dividing the history (> 0, <= 1440; "
+                    "default 15)");
     tool.add_number("points-per-facet", "N", cli::integers(1, 1000000),
-                    "--shadow-history: sample points per facet (1-1000000; default 1: its\n"
-                    "                    centroid)");
+                    "--shadow-history: sample points per facet (1-1000000; default 1: its "
+                    "centroid)");
     tool.add_number("sky-rays", "N", cli::integers(1, 1000000),
                     "--shadow-history: sky-view rays per point (1-1000000; default 256)");
     // -o is read as given (not cli::output_path) so that the jobs name what is missing:
