@@ -178,12 +178,12 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
     band.solve(x.data());
 }
 
-// Mode 0 of the last solve on this thread that solved mode 0 alone (no beam, or
-// Problem::azimuth_mean): its layers' homogeneous solutions and the factors of its
-// boundary-value system, with what they depend on (the key: streams, surface albedo and
-// every scaled layer's optical depth, albedo and moments). build_radiance's coupling
-// solve follows its solar solve on the same layers: it takes them instead of solving
-// them again, bit for bit the same numbers.
+// Mode 0 of the last solve on this thread: its layers' homogeneous solutions and the
+// factors of its boundary-value system, with what they depend on (the key: streams,
+// surface albedo and every scaled layer's optical depth, albedo and moments).
+// build_radiance's coupling solve follows its solar solve on the same layers: it takes
+// them instead of solving them again, bit for bit the same numbers. A solve of mode 0
+// alone hands its own over (moved); one of several modes leaves a copy.
 struct ModeZero {
     std::vector<double> key;
     std::vector<LayerSolution> sol;
@@ -341,6 +341,11 @@ Result Solver::run() {
     int converged = 0;
     for (int m = 0; m < modes; ++m) {
         solve_mode(m);
+        if (m == 0 && modes > 1) {  // mode 0 kept for the next solve (ModeZero), copied
+            t_mode_zero.key = m_mode_zero_key;
+            t_mode_zero.sol = m_sol;
+            t_mode_zero.band = m_band;
+        }
         if (m == 0) fluxes();
         if (nu == 0) continue;
         user_intensities(m, im);

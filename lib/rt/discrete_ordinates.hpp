@@ -124,7 +124,7 @@ struct Result {
 // IMS term (eqs. 14-15, in DISORT's form: Stamnes et al. 2000, DISORT report v1.1,
 // eqs. A7-A13), which matters within a few degrees of the beam direction for strongly
 // peaked phase functions. Reentrant: concurrent calls
-// share nothing (a thread keeps its last single-mode solve's mode 0 for its next solve of
+// share nothing (a thread keeps its last solve's mode 0 for its next solve of
 // the same layers without sources, bit for bit what solving it again gives). Cost for
 // 35 layers, 16 streams, 110 umu, 40 azimuths: ~8 ms of one core (bench/bench_rt: 2.1 /
 // 8.0 / 52 ms for 8 / 16 / 32 streams).
