@@ -1,6 +1,7 @@
 // Parse throughput of the largest text formats (.gdb geometry, .ems curves):
 // prints facets or values per second. Scenes of ~10^5 facets must load in well
-// under a second.
+// under a second. BM_ParseGdb/N/T: N facets on T threads (0: parse_gdb_serial, the
+// reference; files from kGdbParallelBytes on are parsed in pieces).
 #include <benchmark/benchmark.h>
 
 #include <sstream>
@@ -31,15 +32,23 @@ std::string make_gdb(int n) {
 
 void BM_ParseGdb(benchmark::State& state) {
     auto facets = static_cast<int>(state.range(0));
+    sigchain::ParallelOptions parallel;
+    parallel.threads = static_cast<unsigned>(state.range(1));
     std::string text = make_gdb(facets);
     for (auto _ : state) {
         auto in = sigchain::TextInput::from_string(text, "bench.gdb");
-        auto gdb = sigchain::io::parse_gdb(in);
+        auto gdb = parallel.threads ? sigchain::io::parse_gdb(in, parallel)
+                                    : sigchain::io::parse_gdb_serial(in);
         benchmark::DoNotOptimize(gdb);
     }
     state.SetItemsProcessed(state.iterations() * facets);
     state.SetBytesProcessed(state.iterations() * static_cast<long>(text.size()));
 }
-BENCHMARK(BM_ParseGdb)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseGdb)
+    ->Args({10000, 0})
+    ->Args({100000, 0})
+    ->Args({100000, 1})
+    ->Args({100000, 2})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

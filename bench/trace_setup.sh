@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # trace's set-up time on the hawkeye scene, two trace programs side by side in one run.
-#   bench/trace_setup.sh TRACE_A TRACE_B [RUNS]
+#   [THREADS=N] bench/trace_setup.sh TRACE_A TRACE_B [RUNS]
 # Builds the hawkeye scene's inputs once (data/scenes/hawkeye, the nadir view at 8 x 8
 # pixels, with the tools beside TRACE_B), then runs TRACE_A and TRACE_B in turn RUNS
 # times (default 7) with -v and prints, per program, the median of trace -v's set-up,
 # scene-files, Embree-build and render seconds and of the whole process's wall time, and
 # the ratios A/B of the medians. The two cubes must be the same bytes (else exit 1).
+# THREADS=N runs both with --threads N (default: trace's own default, all cores).
 set -euo pipefail
 [ $# -ge 2 ] || { echo "usage: $0 TRACE_A TRACE_B [RUNS]" >&2; exit 2; }
-A=$(realpath "$1") B=$(realpath "$2") RUNS=${3:-7}
+A=$(realpath "$1") B=$(realpath "$2") RUNS=${3:-7} THREADS=${THREADS:-0}
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 H=$SRC/data/scenes/hawkeye
 BIN=$(dirname "$B")
@@ -24,7 +25,7 @@ args=("$W/nadir.adv" "$O/hawkeye.snd" "$W/out/scene-4/hawkeye.odb" hawkeye.mat
 run() {  # PROGRAM OUT.img -> "setup scene build render wall"
     local t0 t1 line
     t0=$(date +%s.%N)
-    line=$(cd "$H" && "$1" -v "${args[@]}" -o "$2" 2>&1 | grep 'set-up ')
+    line=$(cd "$H" && "$1" -v --threads "$THREADS" "${args[@]}" -o "$2" 2>&1 | grep 'set-up ')
     t1=$(date +%s.%N)
     sed -E 's/.*set-up ([0-9.]+) s:.*scene files ([0-9.]+) s, Embree build ([0-9.]+) s.*render ([0-9.]+) s.*/\1 \2 \3 \4/' \
         <<< "$line" | tr -d '\n'
@@ -49,4 +50,4 @@ for c in 1 2 3 4 5; do
     printf ' %10.2f' "$(echo "$(median "$W/a.txt" $c) / $(median "$W/b.txt" $c)" | bc -l)"
 done
 echo
-echo "($RUNS runs each, alternating; seconds, medians; the cubes are identical)"
+echo "($RUNS runs each, alternating, --threads $THREADS; seconds, medians; the cubes are identical)"

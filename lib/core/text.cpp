@@ -170,10 +170,13 @@ std::vector<std::string_view> split_fields(std::string_view text, bool commas_to
     return out;
 }
 
-LineCursor::LineCursor(const TextInput& input, Mode mode) : m_input(input) {
-    std::string_view all = input.text();
+LineCursor::LineCursor(const TextInput& input, Mode mode)
+    : LineCursor(input, input.text(), 1, mode) {}
+
+LineCursor::LineCursor(const TextInput& input, std::string_view all, int first_line, Mode mode)
+    : m_input(input) {
     m_lines.reserve(static_cast<std::size_t>(std::count(all.begin(), all.end(), '\n')) + 1);
-    int number = 0;
+    int number = first_line - 1;
     std::size_t start = 0;
     while (start < all.size()) {
         auto end = all.find('\n', start);

@@ -70,6 +70,11 @@ class LineCursor {
 public:
     enum class Mode { Significant, Raw };
     explicit LineCursor(const TextInput& input, Mode mode = Mode::Significant);
+    // The lines of `part` only: a view into input.text() that begins a line, numbered
+    // from `first_line` (the file's number of that line), for a file parsed in pieces
+    // (io::parse_gdb). at_end() and "unexpected end of file" refer to the end of `part`.
+    LineCursor(const TextInput& input, std::string_view part, int first_line,
+               Mode mode = Mode::Significant);
 
     bool at_end() const { return m_pos >= m_lines.size(); }
     // The next line without consuming it; throws "unexpected end of file, expected

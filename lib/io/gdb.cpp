@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/error.hpp"
 
@@ -181,24 +182,42 @@ void read_facet_geometry(LineCursor& c, GdbFacet& f) {
 }
 
 // `ids`: facet id -> the line it was first read on (a key of .shd, .tmp and trace must
-// name one facet).
-GdbFacet read_facet(LineCursor& c, int keyword_line, std::unordered_map<std::string, int>& ids) {
+// name one facet); null: not checked here (parse_gdb's pieces check them when joined).
+GdbFacet read_facet(LineCursor& c, int keyword_line, std::unordered_map<std::string, int>* ids) {
     GdbFacet f;
     f.line = keyword_line;
     f.name = read_text(c, "facet name");
     f.id = read_id(c, "facet id");
-    auto [it, fresh] = ids.emplace(f.id, c.where().line);
-    if (!fresh)
-        throw DataError(c.where(), "facet id " + f.id + " already used at line " +
-                                       std::to_string(it->second));
+    if (ids) {
+        auto [it, fresh] = ids->emplace(f.id, c.where().line);
+        if (!fresh)
+            throw DataError(c.where(), "facet id " + f.id + " already used at line " +
+                                           std::to_string(it->second));
+    }
     read_facet_attributes(c, f);
     read_facet_geometry(c, f);
     return f;
 }
 
+GdbObject read_object(LineCursor& c, int keyword_line) {
+    GdbObject obj;
+    obj.line = keyword_line;
+    obj.name = read_text(c, "object name");
+    obj.id = read_id(c, "object id");
+    return obj;
+}
+
+GdbPart read_part(LineCursor& c, int keyword_line) {
+    GdbPart part;
+    part.line = keyword_line;
+    part.name = read_text(c, "part name");
+    part.id = read_id(c, "part id");
+    return part;
+}
+
 }  // namespace
 
-Gdb parse_gdb(const TextInput& in) {
+Gdb parse_gdb_serial(const TextInput& in) {
     Gdb gdb;
     gdb.file = in.name();
     LineCursor c(in);
@@ -208,32 +227,180 @@ Gdb parse_gdb(const TextInput& in) {
         const Line& line = c.next(kEndWhat);
         if (line.text == "END") break;
         if (line.text == "OBJECT") {
-            GdbObject obj;
-            obj.line = line.number;
-            obj.name = read_text(c, "object name");
-            obj.id = read_id(c, "object id");
-            gdb.objects.push_back(std::move(obj));
+            gdb.objects.push_back(read_object(c, line.number));
         } else if (line.text == "PART") {
             if (gdb.objects.empty())
                 throw DataError(c.where(line),
                                 "expected OBJECT before PART, found PART outside an OBJECT");
-            GdbPart part;
-            part.line = line.number;
-            part.name = read_text(c, "part name");
-            part.id = read_id(c, "part id");
-            gdb.objects.back().parts.push_back(std::move(part));
+            gdb.objects.back().parts.push_back(read_part(c, line.number));
         } else if (line.text == "FACE") {
             if (gdb.objects.empty() || gdb.objects.back().parts.empty())
                 throw DataError(c.where(line),
                                 "expected PART before FACE, found FACE outside a PART");
             int number = line.number;
-            gdb.objects.back().parts.back().facets.push_back(read_facet(c, number, facet_ids));
+            gdb.objects.back().parts.back().facets.push_back(read_facet(c, number, &facet_ids));
         } else {
             throw DataError(c.where(line), "expected " + std::string(kEndWhat) + ", found " +
                                                sigchain::quoted(line.text));
         }
     }
     c.require_end("END");
+    return gdb;
+}
+
+namespace {
+
+// --- A large file in pieces ---
+//
+// The file is cut at lines "FACE" into pieces of about kPieceBytes, each parsed on its
+// own (its records: those whose keyword line is in it). Joined in order they are the
+// serial parse's result when every piece parsed whole (its last record ends where the
+// next piece begins), each piece's leading facets and parts have a part and an object
+// to join, facet ids are unique and END ends the file. Anything else (an error of the
+// file, or a cut the serial parse would not read as a record's start) is left to
+// parse_gdb_serial, which then names the first error in file order with its line (a
+// file with an error is read twice). Even on one thread the pieces are faster than the
+// serial parse (bench_parsers, 100000 facets: ~225 against ~340 ms): their line tables are
+// small and reused, and a part's facets are moved into memory reserved once.
+
+constexpr std::size_t kPieceBytes = std::size_t{1} << 18;
+
+struct Piece {
+    std::vector<GdbFacet> facets;  // before its first PART or OBJECT: the open part's
+    std::vector<GdbPart> parts;    // before its first OBJECT: the open object's
+    std::vector<GdbObject> objects;
+    bool has_lines = false;  // it has significant lines
+    bool ends = false;       // it holds END, with nothing after it
+    bool ok = false;         // parsed whole
+};
+
+// Where the pieces begin: 0, then the first line "FACE" from every kPieceBytes on.
+std::vector<std::size_t> piece_starts(std::string_view text) {
+    std::vector<std::size_t> starts{0};
+    std::size_t from = kPieceBytes;
+    while (from < text.size()) {
+        std::size_t k = text.find("\nFACE", from - 1);
+        while (k != std::string_view::npos) {
+            std::string_view rest = text.substr(k + 5, 2);
+            if (rest.empty() || rest[0] == '\n' || rest == "\r\n") break;
+            k = text.find("\nFACE", k + 1);
+        }
+        if (k == std::string_view::npos) break;
+        starts.push_back(k + 1);
+        from = k + 1 + kPieceBytes;
+    }
+    return starts;
+}
+
+void parse_piece(const TextInput& in, std::string_view text, int first_line, Piece& p) {
+    LineCursor c(in, text, first_line);
+    p.has_lines = !c.at_end();
+    try {
+        while (!c.at_end()) {
+            const Line& line = c.next(kEndWhat);
+            if (line.text == "END") {
+                p.ends = true;
+                p.ok = c.at_end();
+                return;
+            }
+            if (line.text == "OBJECT") {
+                p.objects.push_back(read_object(c, line.number));
+            } else if (line.text == "PART") {
+                (p.objects.empty() ? p.parts : p.objects.back().parts)
+                    .push_back(read_part(c, line.number));
+            } else if (line.text == "FACE") {
+                if (!p.objects.empty() && p.objects.back().parts.empty()) return;
+                auto& to = !p.objects.empty() ? p.objects.back().parts.back().facets
+                           : !p.parts.empty() ? p.parts.back().facets
+                                              : p.facets;
+                to.push_back(read_facet(c, line.number, nullptr));
+            } else {
+                return;
+            }
+        }
+        p.ok = true;
+    } catch (const DataError&) {
+        // parse_gdb_serial names it
+    }
+}
+
+template <class T>
+void append(std::vector<T>& to, std::vector<T>& from) {
+    to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
+}
+
+// The leading facets of pieces[i] and of the pieces after it that go to the same part.
+std::size_t leading_facets(const std::vector<Piece>& pieces, std::size_t i) {
+    std::size_t n = 0;
+    for (; i < pieces.size(); ++i) {
+        n += pieces[i].facets.size();
+        if (!pieces[i].parts.empty() || !pieces[i].objects.empty()) break;
+    }
+    return n;
+}
+
+// Joins pieces[i] to `gdb`; false where the serial parse would fail.
+bool join_piece(Gdb& gdb, std::vector<Piece>& pieces, std::size_t i, bool& ended) {
+    Piece& p = pieces[i];
+    if (ended) return !p.has_lines;
+    if (!p.ok) return false;
+    if (!p.facets.empty()) {
+        if (gdb.objects.empty() || gdb.objects.back().parts.empty()) return false;
+        auto& to = gdb.objects.back().parts.back().facets;
+        // Once for the part (not doubling as it grows): new memory costs page faults.
+        if (to.capacity() < to.size() + p.facets.size())
+            to.reserve(to.size() + leading_facets(pieces, i));
+        append(to, p.facets);
+    }
+    if (!p.parts.empty()) {
+        if (gdb.objects.empty()) return false;
+        append(gdb.objects.back().parts, p.parts);
+    }
+    append(gdb.objects, p.objects);
+    ended = p.ends;
+    return true;
+}
+
+bool unique_facet_ids(const Gdb& gdb) {
+    std::unordered_set<std::string_view> ids;
+    ids.reserve(gdb_facet_count(gdb));
+    for (const auto& obj : gdb.objects)
+        for (const auto& part : obj.parts)
+            for (const auto& f : part.facets)
+                if (!ids.insert(f.id).second) return false;
+    return true;
+}
+
+}  // namespace
+
+Gdb parse_gdb(const TextInput& in, const ParallelOptions& parallel) {
+    const std::string_view text = in.text();
+    if (text.size() < kGdbParallelBytes) return parse_gdb_serial(in);
+    const std::vector<std::size_t> starts = piece_starts(text);
+    const long n = static_cast<long>(starts.size());
+    if (n < 2) return parse_gdb_serial(in);
+    auto piece_text = [&](long i) {
+        const std::size_t end = i + 1 < n ? starts[i + 1] : text.size();
+        return text.substr(starts[i], end - starts[i]);
+    };
+    ParallelOptions opt;
+    opt.threads = parallel.threads;
+    std::vector<int> first_line(starts.size() + 1, 1);  // then each piece's line count
+    parallel_for(n, opt, [&](long i, unsigned) {
+        const std::string_view t = piece_text(i);
+        first_line[i + 1] = static_cast<int>(std::count(t.begin(), t.end(), '\n'));
+    });
+    for (long i = 0; i < n; ++i) first_line[i + 1] += first_line[i];
+    std::vector<Piece> pieces(starts.size());
+    parallel_for(n, opt, [&](long i, unsigned) {
+        parse_piece(in, piece_text(i), first_line[i], pieces[i]);
+    });
+    Gdb gdb;
+    gdb.file = in.name();
+    bool ended = false;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+        if (!join_piece(gdb, pieces, i, ended)) return parse_gdb_serial(in);
+    if (!ended || !unique_facet_ids(gdb)) return parse_gdb_serial(in);
     return gdb;
 }
 
@@ -274,108 +441,6 @@ std::size_t gdb_facet_count(const Gdb& gdb) {
     for (const auto& obj : gdb.objects)
         for (const auto& part : obj.parts) n += part.facets.size();
     return n;
-}
-
-// --- Problems (legal but degenerate geometry) ---
-
-namespace {
-
-// The largest distance between two vertices (0 when all coincide).
-double facet_size(const std::vector<Vec3>& v) {
-    double size = 0;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        for (std::size_t j = i + 1; j < v.size(); ++j)
-            size = std::max(size, geo::norm(geo::sub(v[i], v[j])));
-    return size;
-}
-
-void facet_problems(const GdbFacet& f, std::vector<std::string>& out) {
-    const auto& v = f.vertices;
-    double size = facet_size(v);
-    if (size == 0) {
-        out.push_back("all vertices coincide");
-        return;
-    }
-    for (std::size_t i = 0; i < v.size(); ++i)
-        for (std::size_t j = i + 1; j < v.size(); ++j)
-            if (geo::norm(geo::sub(v[i], v[j])) <= 1e-9 * size)
-                out.push_back("vertices " + std::to_string(i + 1) + " and " +
-                              std::to_string(j + 1) + " coincide");
-    Vec3 n = newell_normal(v);
-    double twice_area = geo::norm(n);
-    if (twice_area <= 1e-9 * size * size) {
-        out.push_back("zero area (collinear vertices)");
-        return;
-    }
-    Vec3 unit{n[0] / twice_area, n[1] / twice_area, n[2] / twice_area};
-    if (v.size() == 4) {
-        Vec3 centre{};
-        for (const auto& p : v)
-            for (int k = 0; k < 3; ++k) centre[k] += p[k] / 4;
-        double off = 0;
-        for (const auto& p : v) off = std::max(off, std::abs(geo::dot(geo::sub(p, centre), unit)));
-        if (off > kGdbPlanarTolerance * size)
-            out.push_back("non-planar quad (a vertex is " + format_number(off) +
-                          " from the plane, tolerance " +
-                          format_number(kGdbPlanarTolerance * size) + ")");
-    }
-    double c = std::min(1.0, std::abs(geo::dot(unit, f.normal)) / geo::norm(f.normal));
-    double off_deg = std::acos(c) * 180.0 / 3.14159265358979323846;
-    if (off_deg > kGdbNormalToleranceDeg)
-        out.push_back("normal is " + format_number(std::round(off_deg * 100) / 100) +
-                      " deg off the plane of the vertices");
-}
-
-std::string label(const std::string& kind, const std::string& name, const std::string& id) {
-    return kind + " " + sigchain::quoted(name) + " (" + id + ")";
-}
-
-}  // namespace
-
-Vec3 newell_normal(const std::vector<Vec3>& v) {
-    Vec3 n{};
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const Vec3& a = v[i];
-        const Vec3& b = v[(i + 1) % v.size()];
-        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    return n;
-}
-
-std::string polygon_degeneracy(const std::vector<Vec3>& v) {
-    double size = facet_size(v);
-    if (size == 0) return "all vertices coincide";
-    for (std::size_t i = 0; i < v.size(); ++i)
-        for (std::size_t j = i + 1; j < v.size(); ++j)
-            if (geo::norm(geo::sub(v[i], v[j])) <= 1e-9 * size)
-                return "vertices " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
-                       " coincide";
-    if (geo::norm(newell_normal(v)) <= 1e-9 * size * size) return "zero area (collinear vertices)";
-    return "";
-}
-
-std::vector<std::string> gdb_problems(const Gdb& gdb) {
-    std::vector<std::string> out;
-    for (const auto& obj : gdb.objects) {
-        std::string o = label("object", obj.name, obj.id);
-        if (obj.parts.empty())
-            out.push_back(SourceLocation{gdb.file, obj.line}.str() + ": " + o + ": no parts");
-        for (const auto& part : obj.parts) {
-            std::string p = o + ", " + label("part", part.name, part.id);
-            if (part.facets.empty())
-                out.push_back(SourceLocation{gdb.file, part.line}.str() + ": " + p + ": no facets");
-            for (const auto& f : part.facets) {
-                std::vector<std::string> found;
-                facet_problems(f, found);
-                for (const auto& what : found)
-                    out.push_back(SourceLocation{gdb.file, f.line}.str() + ": " + p + ", " +
-                                  label("facet", f.name, f.id) + ": " + what);
-            }
-        }
-    }
-    return out;
 }
 
 namespace {

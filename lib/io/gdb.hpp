@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "core/text.hpp"
 #include "geo/vec3.hpp"
 #include "io/mat.hpp"
@@ -63,10 +64,18 @@ inline constexpr double kGdbMaxCoordinate = 1e8;
 
 // Parses a whole .gdb; throws DataError ("FILE:LINE: ...") for bad input, a facet id
 // used twice ("facet id X already used at line M"), a vertex beyond kGdbMaxCoordinate
-// or a material id beyond kMaxMaterialId.
-Gdb parse_gdb(const TextInput& in);
+// or a material id beyond kMaxMaterialId. A file of kGdbParallelBytes or more is parsed
+// in pieces over `parallel.threads` threads (0: all cores); the result, and the error
+// (the first in file order), are parse_gdb_serial's for any thread count.
+inline constexpr std::size_t kGdbParallelBytes = std::size_t{1} << 20;
+Gdb parse_gdb(const TextInput& in, const ParallelOptions& parallel = {});
+// The whole file in one pass on the calling thread: parse_gdb's reference (smaller files
+// are parsed this way, and a file with an error again this way to name it).
+Gdb parse_gdb_serial(const TextInput& in);
 void write_gdb(std::ostream& out, const Gdb& gdb);
-inline Gdb read_gdb_file(const std::string& path) { return parse_gdb(TextInput::from_file(path)); }
+inline Gdb read_gdb_file(const std::string& path, const ParallelOptions& parallel = {}) {
+    return parse_gdb(TextInput::from_file(path), parallel);
+}
 
 // Geometric problems that are legal in a .gdb but that a consumer should know about:
 // facets whose vertices coincide, facets of zero area, quads that are not planar

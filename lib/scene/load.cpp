@@ -29,6 +29,12 @@ Affine to_scene(const io::Matrix4& m, double scale) {
     return a;
 }
 
+ParallelOptions parallel_of(const LoadOptions& o) {
+    ParallelOptions p;
+    p.threads = o.threads;
+    return p;
+}
+
 DegeneratePolicy policy_of(const LoadOptions& o) {
     if (!o.allow_degenerate) return DegeneratePolicy::Error;
     return o.keep_degenerate ? DegeneratePolicy::Report : DegeneratePolicy::Skip;
@@ -44,8 +50,8 @@ struct ObjectMesh {
 
 MeshData build_gdb(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
                    std::vector<std::string>* warnings) {
-    return mesh_from_gdb(io::read_gdb_file(io::resolve_odb_path(odb, obj.path)), policy_of(o),
-                         warnings);
+    return mesh_from_gdb(io::read_gdb_file(io::resolve_odb_path(odb, obj.path), parallel_of(o)),
+                         policy_of(o), warnings);
 }
 
 // A mesh file through Assimp (OBJ_FILENAME, MESH_FILENAME, a lone mesh).
@@ -140,7 +146,8 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
             const SourceLocation at{odb.file, obj.line};
             std::size_t mesh = 0;
             if (obj.source == io::OdbSource::Gdb) {
-                const io::Gdb gdb = io::read_gdb_file(io::resolve_odb_path(odb, obj.path));
+                const io::Gdb gdb =
+                    io::read_gdb_file(io::resolve_odb_path(odb, obj.path), parallel_of(options));
                 mesh = sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, at);
             } else {
                 mesh = sink.add_mesh(om.build(odb, obj, options, warnings), nullptr, at);
@@ -157,7 +164,7 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
 
 void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink& sink,
                   std::vector<std::string>* warnings) {
-    const io::Gdb gdb = io::read_gdb_file(path);
+    const io::Gdb gdb = io::read_gdb_file(path, parallel_of(options));
     // Line 0: a lone .gdb has no .odb object record; the location names the file.
     const std::size_t mesh =
         sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, {path, 0});

@@ -49,6 +49,9 @@ struct LoadOptions {
     bool allow_degenerate = false;
     // With allow_degenerate: keep them (still warned about) instead of skipping them.
     bool keep_degenerate = false;
+    // Threads a large .gdb is parsed with (io::parse_gdb; 0: all cores). The scene is
+    // the same for any count.
+    unsigned threads = 0;
 };
 
 struct LoadReport {

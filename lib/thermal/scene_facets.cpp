@@ -104,8 +104,9 @@ private:
 std::vector<SceneFacet> read_scene_facets(const std::string& path,
                                           const std::optional<scene::GeoOrigin>& origin,
                                           std::vector<std::string>* warnings,
-                                          const scene::SceneInput& input) {
+                                          const scene::SceneInput& input, unsigned threads) {
     scene::LoadOptions options;
+    options.threads = threads;
     options.input = input;
     options.origin = origin;
     options.allow_degenerate = true;  // every facet has a history (trace keeps them too)

@@ -31,9 +31,11 @@ struct SceneFacet {
 // polygon, mapped by the inverse transpose of each placement (the side faced is kept
 // under a mirroring one). DEM objects need `origin` (the .snd's latitude and
 // longitude). Throws IoError or DataError (a facet with no normal: zero area).
+// `threads`: a large .gdb's parse (io::parse_gdb; 0: all cores).
 std::vector<SceneFacet> read_scene_facets(const std::string& path,
                                           const std::optional<scene::GeoOrigin>& origin = {},
                                           std::vector<std::string>* warnings = nullptr,
-                                          const scene::SceneInput& input = {});
+                                          const scene::SceneInput& input = {},
+                                          unsigned threads = 0);
 
 }  // namespace sigchain::thermal

@@ -132,7 +132,8 @@ Inputs read_inputs(const ThermJob& job, const Reporter& reporter) {
     // DEM objects are placed about the .snd's point, as trace places them.
     const scene::GeoOrigin origin{in.snd.latitude_deg, in.snd.longitude_east_deg, 0.0};
     std::vector<std::string> degenerate;
-    in.facets = read_scene_facets(job.scene_path, origin, &degenerate, job.scene_input);
+    in.facets =
+        read_scene_facets(job.scene_path, origin, &degenerate, job.scene_input, job.threads);
     for (const std::string& m : degenerate) reporter.info(m);
     return in;
 }

@@ -423,7 +423,7 @@ io::Shd run_shadow_history(const ShadowJob& job, const Reporter& job_reporter) {
     // DEMs are placed about the .snd's point, as trace and therm place them.
     const scene::GeoOrigin origin{snd.latitude_deg, snd.longitude_east_deg, 0.0};
     const ShadowScene sc = load_shadow_scene(job.scene_path, 1.0, job.allow_degenerate, &load,
-                                             job.scene_input, origin);
+                                             job.scene_input, origin, job.options.threads);
     for (const auto& w : load.warnings) reporter.warn(w);
     // No line to name: an empty scene is a property of the whole file (or of every
     // object its .odb lists), not of one record.

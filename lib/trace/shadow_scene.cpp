@@ -132,13 +132,15 @@ private:
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
                               bool allow_degenerate, scene::LoadReport* report,
                               const scene::SceneInput& input,
-                              const std::optional<scene::GeoOrigin>& origin) {
+                              const std::optional<scene::GeoOrigin>& origin,
+                              unsigned threads) {
     scene::LoadOptions options;
     options.input = input;
     options.origin = origin;
     options.scene_meters_per_unit = scene_meters_per_unit;
     options.allow_degenerate = allow_degenerate;
     options.keep_degenerate = true;
+    options.threads = threads;
     std::vector<std::string> warnings;
     ShadowScene sc;
     ShadowSink sink(sc);

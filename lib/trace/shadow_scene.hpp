@@ -52,10 +52,12 @@ private:
 // Degenerate facets are an
 // error, or with allow_degenerate reported into `report` and kept as they are (a
 // zero-area facet is never hit; its history is that of its vertices' centroid), so
-// that therm finds every facet.
+// that therm finds every facet. `threads`: a large .gdb's parse (io::parse_gdb; 0: all
+// cores).
 ShadowScene load_shadow_scene(const std::string& path, double scene_meters_per_unit,
                               bool allow_degenerate, scene::LoadReport* report = nullptr,
                               const scene::SceneInput& input = {},
-                              const std::optional<scene::GeoOrigin>& origin = {});
+                              const std::optional<scene::GeoOrigin>& origin = {},
+                              unsigned threads = 0);
 
 }  // namespace sigchain::trace

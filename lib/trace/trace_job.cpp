@@ -197,6 +197,7 @@ scene::Scene read_scene(const TraceJob& job, const Setup& st,
     load.origin = scene::GeoOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg, 0.0};
     load.allow_degenerate = job.allow_degenerate;
     load.input = job.scene_input;
+    load.threads = job.threads;
     scene::Scene scene = scene::load_scene(job.scene_path, load, &report.load);
     for (const auto& w : report.load.warnings) reporter.warn(w);
     // No line to name: an empty scene is a property of the whole file (or of every

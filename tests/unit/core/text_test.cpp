@@ -29,6 +29,24 @@ TEST(Text, EndOfFileNamesWhatWasExpected) {
     }
 }
 
+TEST(Text, CursorOverAPartOfTheFile) {
+    auto in = TextInput::from_string("a\nb # c\n\nd\ne\nf\n", "t.txt");
+    const std::string_view all = in.text();
+    // Lines 2-4 ("b # c", "", "d"): numbered as in the file, ending where the part ends.
+    LineCursor c(in, all.substr(2, 9), 2);
+    EXPECT_EQ(c.next("b").number, 2);
+    const Line& d = c.next("d");
+    EXPECT_EQ(d.number, 4);
+    EXPECT_EQ(d.text, "d");
+    EXPECT_TRUE(c.at_end());
+    try {
+        c.next("e");
+        FAIL();
+    } catch (const DataError& e) {
+        EXPECT_STREQ(e.what(), "t.txt:4: unexpected end of file, expected e");
+    }
+}
+
 TEST(Text, NulByteIsBinary) {
     EXPECT_THROW(TextInput::from_string(std::string("1\n2\0", 4), "b"), DataError);
 }
