@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <functional>
 #include <numbers>
 #include <type_traits>
@@ -292,16 +293,24 @@ void append_sample(io::Rad& rad, io::RadSky& sky, const SampleResult& r) {
 // choice (stream_choice.hpp); `options` receives each band's solver options.
 std::vector<StreamChoice> band_streams(const SampleSetup& setup, const io::Snd& snd,
                                        std::vector<RadianceOptions>& options) {
-    // The bands' choices are independent: one band per thread.
+    // The bands' choices are independent: one band per thread. An error is the first
+    // band's to fail, whichever thread met it first.
     std::vector<StreamChoice> choices(snd.bands.size());
+    std::vector<std::exception_ptr> errors(snd.bands.size());
     const bool automatic = setup.options.streams == kAutoStreams;
     parallel_for(automatic ? static_cast<long>(snd.bands.size()) : 0, {setup.options.threads, {}},
                  [&](long b, unsigned) {
-                     const io::SndBand& band = snd.bands[static_cast<std::size_t>(b)];
-                     choices[static_cast<std::size_t>(b)] =
-                         choose_streams(setup, probe_wavenumbers(setup.column, band),
-                                        setup.options.stream_tolerance);
+                     const auto i = static_cast<std::size_t>(b);
+                     try {
+                         choices[i] = choose_streams(setup,
+                                                     probe_wavenumbers(setup.column, snd.bands[i]),
+                                                     setup.options.stream_tolerance);
+                     } catch (...) {
+                         errors[i] = std::current_exception();
+                     }
                  });
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
     for (StreamChoice& c : choices) {
         if (!automatic) c.streams = setup.options.streams;
         options.push_back(setup.options);
