@@ -37,18 +37,26 @@ struct ViewGeometry {
     }
 };
 
+// Azimuths of a sky cell that spans the whole ring: a degree apart, so that every
+// Fourier mode the solver has (fewer than 360) averages to 0 over them and the
+// corrections' aureole is resolved, as in the azimuth-mean solve; n of them would
+// alias modes n, 2n, ... into the ring's mean (17 % too bright at 0.45 um with n = 4).
+constexpr int kRingAzimuths = 360;
+
 // The subsamples of the sky cell [z0, z1] x [a0, a0 + da]: equal steps in cos(zenith)
-// and azimuth, so equal solid angles. A cell at azimuth A sends light travelling
-// toward A + 180, down.
+// and azimuth, so equal solid angles (n x n; n x kRingAzimuths for a whole ring unless
+// the solver gives azimuthal means, the same at every azimuth). A cell at azimuth A
+// sends light travelling toward A + 180, down.
 std::vector<Pending> cell_subsamples(Directions& d, double z0, double z1, double a0, double da,
                                      int n, double sun_azimuth_deg) {
     std::vector<Pending> subs;
+    const int na = da >= 360 && !d.azimuth_means_only ? std::max(n, kRingAzimuths) : n;
     for (int p = 0; p < n; ++p) {
         const double c0 = std::cos(z0 * kDeg), c1 = std::cos(z1 * kDeg);
         const double mu = c0 + (c1 - c0) * (p + 0.5) / n;
-        for (int q = 0; q < n; ++q) {
-            const double a = a0 + da * (q + 0.5) / n;
-            subs.push_back({-mu, wrap_degrees(a - sun_azimuth_deg), 1.0 / (n * n)});
+        for (int q = 0; q < na; ++q) {
+            const double a = a0 + da * (q + 0.5) / na;
+            subs.push_back({-mu, wrap_degrees(a - sun_azimuth_deg), 1.0 / (n * na)});
             d.umu.push_back(-mu);
             d.phi.push_back(wrap_degrees(a - sun_azimuth_deg));
         }
@@ -127,14 +135,15 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
         d.umu.push_back(view.mu(v));
         d.phi.push_back(view.phi(v));
     }
+    // Only means over azimuth: every sky cell a whole ring and every view at nadir.
+    const bool nadir = std::all_of(view_angles_deg.begin(), view_angles_deg.end(),
+                                   [](double v) { return v == 0; });
+    d.azimuth_means_only = std::lround(360.0 / o.sky_azimuth_step_deg) == 1 && nadir;
     const auto pending = add_sky(d, sun_azimuth_deg, o);
     add_upwelled(d, view_angles_deg, sun_azimuth_deg, o);
     sort_unique(d.umu);
     sort_unique(d.phi);
     index_directions(d, view_angles_deg, view, pending);
-    d.azimuth_means_only =
-        d.azimuth_count == 1 && std::all_of(view_angles_deg.begin(), view_angles_deg.end(),
-                                            [](double v) { return v == 0; });
     return d;
 }
 

@@ -353,8 +353,9 @@ Result Solver::run() {
         // (compared without a division per value).
         const double acc = m_p.azimuth_accuracy;
         bool small = true;
-        for (std::size_t f = 0; f < nphi; ++f)
-            cos_m[f] = std::cos(m * (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180);
+        for (std::size_t f = 0; f < nphi; ++f)  // cos(0) = 1 exactly
+            cos_m[f] =
+                m == 0 ? 1.0 : std::cos(m * (m_p.phi_deg[f] - m_p.beam_phi0_deg) * kPi / 180);
         for (std::size_t i = 0; i < m_pos.size(); ++i)
             for (std::size_t u = 0; u < nu; ++u) {
                 if (!m_pos[i].wants(m_p.umu[u])) continue;  // 0, and adds nothing

@@ -203,7 +203,7 @@ void Solver::intensity_correction() {
     const std::vector<double> a = exact_weights();
     std::vector<double> tn(m_L), e(npos * nmom), ex(npos * nc);
     CorrectionScratch wx;
-    wx.cos_dphi = cos_dphi();
+    if (!m_p.azimuth_mean) wx.cos_dphi = cos_dphi();  // azimuth means need no azimuths
     CorrectionScratch w;
     w.cos_dphi = wx.cos_dphi;
     w.cs.resize(nphi), w.p0.resize(nphi), w.p1.resize(nphi), w.corr.resize(npos * nphi);
@@ -280,7 +280,7 @@ void Solver::secondary_correction() {
     std::size_t nmom = 0;
     for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
     std::vector<double> g(nmom);
-    const std::vector<double> cosd = cos_dphi();
+    const std::vector<double> cosd = m_p.azimuth_mean ? std::vector<double>{} : cos_dphi();
     std::vector<char> aureole(nu);
     for (std::size_t u = 0; u < nu; ++u)
         aureole[u] = m_p.umu[u] < 0 &&
