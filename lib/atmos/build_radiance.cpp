@@ -443,12 +443,10 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         rep.notes.push_back(
             "IPH 2: aerosol scattering by LOWTRAN 7's Mie phase functions (delta-M, with "
             "the Nakajima-Tanaka TMS and IMS corrections)");
-    if (run.card1.imult == 0)
-        rep.notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
-    if (run.card1.surface_albedo > 0)
-        rep.notes.push_back("SALB " + format_number(run.card1.surface_albedo) +
-                            ": the sky includes the ground's reflection; no COUPLING terms "
-                            "(trace would add its own ground to the sky a second time)");
+    for (std::string& note : deck_notes(run)) rep.notes.push_back(std::move(note));
+    if (dirs.azimuth_means_only)
+        rep.notes.push_back("only means over azimuth tabulated (nadir views, whole-ring sky "
+                            "cells): the solver's Fourier modes above 0 are not solved");
     // Per band its streams (--streams auto: band_streams), the samples solved with them.
     std::vector<RadianceOptions> band_options;
     rep.band_streams = band_streams(setup, snd, band_options);

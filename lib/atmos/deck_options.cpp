@@ -109,6 +109,17 @@ DeckChoices deck_choices(const io::CdkRun& run) {
     return c;
 }
 
+std::vector<std::string> deck_notes(const io::CdkRun& run) {
+    std::vector<std::string> notes;
+    if (run.card1.imult == 0)
+        notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
+    if (run.card1.surface_albedo > 0)
+        notes.push_back("SALB " + format_number(run.card1.surface_albedo) +
+                        ": the sky includes the ground's reflection; no COUPLING terms "
+                        "(trace would add its own ground to the sky a second time)");
+    return notes;
+}
+
 std::vector<std::string> deck_refusals(const io::Cdk& deck) {
     std::vector<std::string> out;
     const std::size_t n = deck.runs.size();

@@ -20,6 +20,8 @@ struct DeckChoices {
 };
 
 DeckChoices deck_choices(const io::CdkRun& run);
+// What those choices mean for the tables, one note each (build_radiance -v).
+std::vector<std::string> deck_notes(const io::CdkRun& run);
 
 // Every reason build_radiance refuses the deck, one message each ("CARD 1 TBOUND
 // (columns 66-73) is 290: ..."), first run first; empty when the deck is accepted.

@@ -259,3 +259,18 @@ line_of() { sed -n "${2}p" "$1"; }
         fail "stderr: $stderr"
     sigchain-check w.rad
 }
+
+@test "-v says when only azimuthal means are solved (nadir views, whole-ring sky cells)" {
+    local one=(--sky-zenith-step 90 --sky-azimuth-step 360 --sky-subsamples 2 --upwelled-azimuth-step 360)
+    printf '1.0\n1\n18000 18100 100\n0 0 1\n9 30 95\n19\n5\n43.08333 77.66667\n' > nadir.snd
+    run -0 --separate-stderr build_radiance -v --streams 8 "${one[@]}" "$HAWKEYE" nadir.snd -o n.rad
+    [[ "$stderr" == *"only means over azimuth tabulated (nadir views, whole-ring sky cells)"* ]] ||
+        fail "stderr: $stderr"
+    sigchain-check n.rad
+    # A view off nadir needs every Fourier mode; so do sky cells narrower than a ring.
+    run -0 --separate-stderr build_radiance -v --streams 8 "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
+    [[ "$stderr" != *"only means over azimuth"* ]] || fail "stderr: $stderr"
+    run -0 --separate-stderr build_radiance -v --streams 8 --sky-zenith-step 90 --sky-azimuth-step 180 \
+        "$HAWKEYE" nadir.snd -o h.rad
+    [[ "$stderr" != *"only means over azimuth"* ]] || fail "stderr: $stderr"
+}
