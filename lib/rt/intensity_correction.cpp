@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "rt/quadrature.hpp"
 #include "rt/solver.hpp"
 
 namespace sigchain::rt::detail {
@@ -154,13 +155,10 @@ const std::array<double, kMeanAzimuths>& mean_azimuth_cosines() {
     return c;
 }
 
-// Legendre polynomials P_0 .. P_{n-1} at x.
+// Legendre polynomials P_0 .. P_{n-1} at x: the solver's normalised functions of mode 0.
 std::vector<double> legendre(double x, std::size_t n) {
     std::vector<double> p(n);
-    for (std::size_t l = 0; l < n; ++l)
-        p[l] = l == 0   ? 1.0
-               : l == 1 ? x
-                        : ((2.0 * l - 1) * x * p[l - 1] - (l - 1.0) * p[l - 2]) / l;
+    if (n > 0) normalized_legendre(0, static_cast<int>(n) - 1, x, p.data());
     return p;
 }
 
@@ -169,12 +167,12 @@ std::vector<double> legendre(double x, std::size_t n) {
 // Problem::azimuth_mean: adds the mean over azimuth of user cosine u's TMS correction to
 // its intensities at every azimuth. The moments' part by the addition theorem,
 // mean P_l(cos Theta) = P_l(mu) P_l(-mu0) (cos Theta = -mu mu0 + sin sin0 cos phi); the
-// exact phase functions' part (ex) by the midpoint rule in azimuth.
+// exact phase functions' part (ex) by the midpoint rule in azimuth. p0: P_l(-mu0).
 void Solver::add_mean_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
-                                 const std::vector<double>& ex) {
+                                 const std::vector<double>& ex, const std::vector<double>& p0) {
     const std::size_t nphi = m_p.phi_deg.size(), nc = m_p.exact_phase.components;
     const double mu = m_p.umu[u], mu0 = m_p.beam_mu0;
-    const std::vector<double> pu = legendre(mu, nmom), p0 = legendre(-mu0, nmom);
+    const std::vector<double> pu = legendre(mu, nmom);
     std::vector<double> mean(nc, 0.0), v(nc);
     const double sines = std::sqrt((1 - mu * mu) * (1 - mu0 * mu0));
     // At mu = +-1 (or the beam at the zenith) the scattering angle is one for every azimuth.
@@ -204,6 +202,8 @@ void Solver::intensity_correction() {
     std::vector<double> tn(m_L), e(npos * nmom), ex(npos * nc);
     CorrectionScratch wx;
     if (!m_p.azimuth_mean) wx.cos_dphi = cos_dphi();  // azimuth means need no azimuths
+    const std::vector<double> p0_mean =
+        m_p.azimuth_mean ? legendre(-m_p.beam_mu0, nmom) : std::vector<double>{};
     CorrectionScratch w;
     w.cos_dphi = wx.cos_dphi;
     w.cs.resize(nphi), w.p0.resize(nphi), w.p1.resize(nphi), w.corr.resize(npos * nphi);
@@ -225,7 +225,7 @@ void Solver::intensity_correction() {
         }
         if (!m_p.azimuth_mean) add_correction(u, e, nmom, w);
         if (nc == 0) {
-            if (m_p.azimuth_mean) add_mean_correction(u, e, nmom, ex);
+            if (m_p.azimuth_mean) add_mean_correction(u, e, nmom, ex, p0_mean);
             continue;
         }
         std::fill(ex.begin(), ex.end(), 0.0);
@@ -237,7 +237,7 @@ void Solver::intensity_correction() {
                     ex[i * nc + c] += a[n * nc + c] * tn[n];
         }
         if (m_p.azimuth_mean)
-            add_mean_correction(u, e, nmom, ex);
+            add_mean_correction(u, e, nmom, ex, p0_mean);
         else
             add_exact_correction(u, ex, wx);
     }
@@ -281,6 +281,9 @@ void Solver::secondary_correction() {
     for (const Layer& l : m_p.layers) nmom = std::max(nmom, l.pmom.size());
     std::vector<double> g(nmom);
     const std::vector<double> cosd = m_p.azimuth_mean ? std::vector<double>{} : cos_dphi();
+    const std::size_t n_spike = std::max<std::size_t>(nmom, m_N);  // the spike's series
+    const std::vector<double> p0_spike =
+        m_p.azimuth_mean ? legendre(-mu0, n_spike) : std::vector<double>{};
     std::vector<char> aureole(nu);
     for (std::size_t u = 0; u < nu; ++u)
         aureole[u] = m_p.umu[u] < 0 &&
@@ -309,12 +312,11 @@ void Solver::secondary_correction() {
             if (!aureole[u]) continue;
             const double x = amp * xi(-mu, mu0p, utau);
             if (m_p.azimuth_mean) {  // the spike's mean over azimuth: addition theorem
-                const std::size_t n = std::max<std::size_t>(nmom, m_N);
-                const std::vector<double> pu = legendre(mu, n), p0 = legendre(-mu0, n);
-                double spike = 1 + 3 * pu[1] * p0[1];
-                for (std::size_t k = 2; k < n; ++k) {
+                const std::vector<double> pu = legendre(mu, n_spike);
+                double spike = 1 + 3 * pu[1] * p0_spike[1];
+                for (std::size_t k = 2; k < n_spike; ++k) {
                     const double gk = k < static_cast<std::size_t>(m_N) ? 1 : g[k];
-                    spike += gk * (2 - gk) * (2.0 * k + 1) * pu[k] * p0[k];
+                    spike += gk * (2 - gk) * (2.0 * k + 1) * pu[k] * p0_spike[k];
                 }
                 for (std::size_t f = 0; f < nphi; ++f)
                     m_result.levels[i].intensity[u * nphi + f] -= x * spike;

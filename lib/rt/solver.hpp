@@ -99,7 +99,7 @@ private:
     std::vector<double> cos_dphi() const;
     void add_exact_correction(std::size_t u, const std::vector<double>& e, CorrectionScratch& w);
     void add_mean_correction(std::size_t u, const std::vector<double>& e, std::size_t nmom,
-                             const std::vector<double>& ex);
+                             const std::vector<double>& ex, const std::vector<double>& p0);
     void secondary_correction();
 
     const Problem& m_p;
