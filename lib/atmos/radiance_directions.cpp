@@ -64,11 +64,10 @@ std::vector<Pending> cell_subsamples(Directions& d, double z0, double z1, double
     return subs;
 }
 
-// The sky cells (ring by ring, azimuth within a ring) and their subsamples.
+// The sky cells (ring by ring, azimuth within a ring; d.zenith_count x d.azimuth_count)
+// and their subsamples.
 std::vector<std::vector<Pending>> add_sky(Directions& d, double sun_azimuth_deg,
                                           const RadianceOptions& o) {
-    d.zenith_count = std::lround(90.0 / o.sky_zenith_step_deg);
-    d.azimuth_count = std::lround(360.0 / o.sky_azimuth_step_deg);
     const double dz = 90.0 / static_cast<double>(d.zenith_count);
     const double da = 360.0 / static_cast<double>(d.azimuth_count);
     const int n = std::max(1, o.sky_subsamples);
@@ -138,7 +137,9 @@ Directions directions(const std::vector<double>& view_angles_deg, double view_az
     // Only means over azimuth: every sky cell a whole ring and every view at nadir.
     const bool nadir = std::all_of(view_angles_deg.begin(), view_angles_deg.end(),
                                    [](double v) { return v == 0; });
-    d.azimuth_means_only = std::lround(360.0 / o.sky_azimuth_step_deg) == 1 && nadir;
+    d.zenith_count = std::lround(90.0 / o.sky_zenith_step_deg);
+    d.azimuth_count = std::lround(360.0 / o.sky_azimuth_step_deg);
+    d.azimuth_means_only = d.azimuth_count == 1 && nadir;
     const auto pending = add_sky(d, sun_azimuth_deg, o);
     add_upwelled(d, view_angles_deg, sun_azimuth_deg, o);
     sort_unique(d.umu);
