@@ -199,20 +199,24 @@ GdbFacet read_facet(LineCursor& c, int keyword_line, std::unordered_map<std::str
     return f;
 }
 
+// An OBJECT or PART record (T: GdbObject or GdbPart) after its keyword line: its name
+// and id, read as "<kind> name" and "<kind> id".
+template <class T>
+T read_named(LineCursor& c, int keyword_line, std::string_view name_what,
+             std::string_view id_what) {
+    T t;
+    t.line = keyword_line;
+    t.name = read_text(c, name_what);
+    t.id = read_id(c, id_what);
+    return t;
+}
+
 GdbObject read_object(LineCursor& c, int keyword_line) {
-    GdbObject obj;
-    obj.line = keyword_line;
-    obj.name = read_text(c, "object name");
-    obj.id = read_id(c, "object id");
-    return obj;
+    return read_named<GdbObject>(c, keyword_line, "object name", "object id");
 }
 
 GdbPart read_part(LineCursor& c, int keyword_line) {
-    GdbPart part;
-    part.line = keyword_line;
-    part.name = read_text(c, "part name");
-    part.id = read_id(c, "part id");
-    return part;
+    return read_named<GdbPart>(c, keyword_line, "part name", "part id");
 }
 
 }  // namespace
