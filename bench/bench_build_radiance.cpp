@@ -58,8 +58,8 @@ int main() {
     long samples = 0;
     for (const auto& b : snd.bands) samples += b.sample_count();
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    std::printf("build_radiance, the Hawkeye deck and scene node of White (1996): %zu bands, %ld samples, "
-                "%ld view angles, 18 x 36 sky, 16 streams\n",
+    std::printf("build_radiance, the Hawkeye deck and scene node of White (1996): %zu bands, "
+                "%ld samples, %ld view angles, 18 x 36 sky, 16 streams\n",
                 snd.bands.size(), samples, snd.view_angle_count());
     std::printf("  1 thread : %.3f s (best of 3; target < 2 s)\n", seconds_for(deck, snd, 1, 3));
     std::printf("  %u threads: %.3f s (best of 3)\n", cores, seconds_for(deck, snd, cores, 3));
