@@ -446,12 +446,23 @@ double AerosolModel::extinction_km1(double z_km, double wavelength_um) const {
     return sum;
 }
 
-AerosolLayerOptics AerosolModel::layer(double z_lo_km, double z_hi_km, double wavelength_um) const {
-    AerosolLayerOptics out;
+std::array<double, 4> AerosolModel::slab_columns055(double z_lo_km, double z_hi_km) const {
+    std::array<double, 4> out{};
     if (!(z_hi_km > z_lo_km)) return out;
+    for (int r = 0; r < kRegions; ++r) out[r] = region_column055(r, z_lo_km, z_hi_km);
+    return out;
+}
+
+AerosolLayerOptics AerosolModel::layer(double z_lo_km, double z_hi_km, double wavelength_um) const {
+    return layer(slab_columns055(z_lo_km, z_hi_km), wavelength_um);
+}
+
+AerosolLayerOptics AerosolModel::layer(const std::array<double, 4>& columns055,
+                                       double wavelength_um) const {
+    AerosolLayerOptics out;
     double scat = 0, scat_g = 0;
     for (int r = 0; r < kRegions; ++r) {
-        const double column = region_column055(r, z_lo_km, z_hi_km);
+        const double column = columns055[r];
         if (column <= 0) continue;
         const auto [ext, abs, g] = region_optics(r, wavelength_um);
         out.tau_ext += column * ext;

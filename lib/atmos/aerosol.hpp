@@ -43,6 +43,11 @@ public:
     // The slab [z_lo_km, z_hi_km] at a wavelength: optical depth integrated over
     // altitude; ssa and g extinction- and scattering-weighted over the slab.
     AerosolLayerOptics layer(double z_lo_km, double z_hi_km, double wavelength_um) const;
+    // The same from the slab's slab_columns055 (which do not depend on the wavelength:
+    // a caller with fixed slabs integrates them once).
+    AerosolLayerOptics layer(const std::array<double, 4>& columns055, double wavelength_um) const;
+    // Each region's 0.55-um optical depth of the slab [z_lo_km, z_hi_km] (0 when empty).
+    std::array<double, 4> slab_columns055(double z_lo_km, double z_hi_km) const;
 
     // Surface meteorological range (km) the model was built for (VIS, or the model's
     // default when the deck's VIS is 0).

@@ -135,6 +135,25 @@ TEST(AtmosAerosol, TableOpticsAtTabulatedHumidity) {
     EXPECT_NEAR(wet.extinction_km1(0.5, 1.06) / wet.extinction_km1(0.5, 0.55), 0.43228, 1e-9);
 }
 
+// A slab's 0.55-um columns do not depend on the wavelength: layer() from the columns
+// integrated once gives the same optics, bit for bit, as integrating the slab again;
+// an empty slab has none.
+TEST(AtmosAerosol, SlabColumnsGiveTheSameLayer) {
+    const auto m = AerosolModel::from_deck(card2(5, 23, 1), uniform_rh(60), kData);
+    for (const auto& [lo, hi] : {std::pair{0.0, 0.3}, {1.7, 2.4}, {11.0, 30.0}, {0.0, 100.0}}) {
+        const auto columns = m.slab_columns055(lo, hi);
+        for (double um : {0.45, 0.86, 10.6}) {
+            const AerosolLayerOptics a = m.layer(lo, hi, um), b = m.layer(columns, um);
+            EXPECT_EQ(a.tau_ext, b.tau_ext) << lo << " " << um;
+            EXPECT_EQ(a.ssa, b.ssa) << lo << " " << um;
+            EXPECT_EQ(a.g, b.g) << lo << " " << um;
+            EXPECT_EQ(a.tau_scat_region, b.tau_scat_region) << lo << " " << um;
+            EXPECT_GT(a.tau_ext, 0) << lo << " " << um;
+        }
+    }
+    for (double c : m.slab_columns055(3, 3)) EXPECT_EQ(c, 0);
+}
+
 TEST(AtmosAerosol, EveryModelGivesPhysicalOptics) {
     for (int ihaze : {1, 2, 3, 4, 5, 6, 8, 9, 10}) {
         for (int ivulcn : {0, 2, 3, 8}) {

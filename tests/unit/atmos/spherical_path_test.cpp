@@ -139,3 +139,28 @@ TEST(Atmos_SphericalPath, SunAtNinetyDegreesIsSeenGrazing) {
     // A level at the top sees the sun with no atmosphere in between.
     EXPECT_TRUE(trace_to_sun(s, s.z_km.size() - 1, 45 * kDeg).reaches);
 }
+
+// trace_to_sun traces only the bisection's midpoints near the root, deciding the others
+// from the refraction traced so far: the same ray, bit for bit, as tracing every
+// midpoint (the plain bisection, written out here with trace_up, which traces the same
+// path), at every level and from the zenith to the horizon.
+TEST(Atmos_SphericalPath, SunRayEqualsThePlainBisectionBitForBit) {
+    const Shells s = standard_shells();
+    const std::size_t top = s.z_km.size() - 1;
+    for (std::size_t level : {std::size_t{0}, std::size_t{37}, std::size_t{150}, top - 1})
+        for (double deg : {0.0, 10.0, 53.17794587288526, 80.0, 89.5, 90.0}) {
+            const double zenith = deg * kDeg;
+            double a = 0, b = std::numbers::pi / 2;
+            for (int it = 0; it < 60 && b - a > 1e-12; ++it) {
+                const double m = 0.5 * (a + b);
+                const Ray r = trace_up(s, level, top, m);
+                (r.zenith_rad + r.refraction_rad > zenith ? b : a) = m;
+            }
+            const Ray plain = trace_up(s, level, top, 0.5 * (a + b));
+            const Ray fast = trace_to_sun(s, level, zenith);
+            ASSERT_TRUE(fast.reaches) << level << " " << deg;
+            EXPECT_EQ(fast.zenith_rad, plain.zenith_rad) << level << " " << deg;
+            EXPECT_EQ(fast.refraction_rad, plain.refraction_rad) << level << " " << deg;
+            EXPECT_EQ(fast.air_mass, plain.air_mass) << level << " " << deg;
+        }
+}
