@@ -67,6 +67,9 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
             aerosol_user->regions[r].reset();
     const io::CdkUserOptics* user = aerosol_user ? &*aerosol_user : nullptr;
     m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g, user));
+    for (std::size_t k = 0; k + 1 < m_profile.size(); ++k)
+        m_aerosol055.push_back(
+            m_aerosol->slab_columns055(m_profile.z_km[k], m_profile.z_km[k + 1]));
     if (user)
         for (std::size_t r = 0; r < m_user_region.size(); ++r)
             m_user_region[r] = user->regions[r].has_value();
@@ -106,18 +109,35 @@ void split_mie(const AerosolLayerOptics& a, const std::array<bool, 4>& has, Laye
 
 }  // namespace
 
+bool ColumnModel::has_mie_phase(int region, double wavelength_um) const {
+    return m_mie && !m_user_region[static_cast<std::size_t>(region)] &&
+           m_mie->has_region(region, m_ihaze, wavelength_um);
+}
+
 std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
-    const double wavelength_um = 1e4 / nu_cm1;
+    std::vector<LayerOptics> out = layers_without_gas(nu_cm1);
     const std::vector<double> gas = m_gas->layer_absorption_depth(nu_cm1);
+    for (std::size_t k = 0; k < out.size(); ++k) out[k].tau_gas = std::max(0.0, gas[k]);
+    return out;
+}
+
+double ColumnModel::scattering_optical_depth(double nu_cm1) const {
+    double tau = 0;
+    for (const LayerOptics& l : layers_without_gas(nu_cm1))
+        tau += l.tau_rayleigh + l.tau_aerosol * l.ssa_aerosol;
+    return tau;
+}
+
+std::vector<LayerOptics> ColumnModel::layers_without_gas(double nu_cm1) const {
+    const double wavelength_um = 1e4 / nu_cm1;
     std::array<bool, 4> has{};
-    for (int r = 0; m_mie && r < 4; ++r) has[r] = mie_phase(r, wavelength_um).has_value();
+    for (int r = 0; m_mie && r < 4; ++r) has[r] = has_mie_phase(r, wavelength_um);
     std::vector<LayerOptics> out(m_profile.size() - 1);
     for (std::size_t k = 0; k + 1 < m_profile.size(); ++k) {
         LayerOptics& l = out[k];
         l.tau_rayleigh =
             rayleigh_optical_depth(wavelength_um, m_profile.p_mb[k + 1], m_profile.p_mb[k]);
-        AerosolLayerOptics a =
-            m_aerosol->layer(m_profile.z_km[k], m_profile.z_km[k + 1], wavelength_um);
+        AerosolLayerOptics a = m_aerosol->layer(m_aerosol055[k], wavelength_um);
         const double lo = m_profile.z_km[k], hi = m_profile.z_km[k + 1];
         // LOWTRAN 7 adds the cloud's, rain's and cirrus's coefficients to the aerosols'.
         if (m_cloud) a = combine(a, m_cloud->layer(lo, hi, wavelength_um));
@@ -127,7 +147,6 @@ std::vector<LayerOptics> ColumnModel::layers(double nu_cm1) const {
         l.ssa_aerosol = a.ssa;
         l.g_aerosol = a.g;
         if (m_mie) split_mie(a, has, l);
-        l.tau_gas = std::max(0.0, gas[k]);
     }
     return out;
 }

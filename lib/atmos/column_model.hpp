@@ -60,8 +60,14 @@ public:
     // and the boundary layer's humidity); none where it uses Henyey-Greenstein.
     std::optional<TabulatedPhase> mie_phase(int region, double wavelength_um) const;
 
+    // Whether mie_phase() gives a function (without building it).
+    bool has_mie_phase(int region, double wavelength_um) const;
+
     // Every layer (bottom first, profile().size() - 1 of them) at wavenumber nu.
     std::vector<LayerOptics> layers(double nu_cm1) const;
+    // The column's scattering optical depth at nu: the sum over layers() of tau_rayleigh
+    // + tau_aerosol ssa_aerosol (the same numbers, without the gas absorption).
+    double scattering_optical_depth(double nu_cm1) const;
 
     // Equivalent Beer's-law gas absorption depth of every layer (bottom first) such that
     // the vertical band-model transmittance from level `pivot` to every other level is
@@ -116,6 +122,7 @@ private:
     Profile m_profile;
     std::size_t m_sensor_level = 0;
     std::optional<AerosolModel> m_aerosol;
+    std::vector<std::array<double, 4>> m_aerosol055;  // per layer: slab_columns055
     std::optional<CloudModel> m_cloud;    // ICLD 1-10: the water cloud
     std::optional<RainModel> m_rain;      // ICLD 6-10, RAINRT
     std::optional<CirrusModel> m_cirrus;  // ICLD 18, 19
@@ -124,6 +131,7 @@ private:
     std::array<bool, 4> m_user_region{};      // CARD 2D IREG: Henyey-Greenstein with its ASYM
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
     std::unique_ptr<GasColumn> m_gas;         // is neither copied nor moved
+    std::vector<LayerOptics> layers_without_gas(double nu_cm1) const;
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                std::size_t level_i, std::size_t level_j, const Ray& ray) const;
     Shells m_shells;

@@ -55,6 +55,21 @@ std::size_t hg_index(std::vector<double>& gs, double g) {
 
 }  // namespace
 
+namespace {
+
+// MieOptics's grid angles (deg), capped at 180.
+const std::vector<double>& grid_angles() {
+    static const std::vector<double> angles = [] {
+        std::vector<double> a(MieOptics::kGridSize);
+        for (std::size_t i = 0; i < a.size(); ++i)
+            a[i] = std::min(180.0, MieOptics::grid_angle_deg(i));
+        return a;
+    }();
+    return angles;
+}
+
+}  // namespace
+
 double MieOptics::grid_angle_deg(std::size_t i) {
     return i <= 200 ? 0.1 * static_cast<double>(i) : 20 + 0.5 * static_cast<double>(i - 200);
 }
@@ -80,8 +95,8 @@ MieOptics mie_optics(const std::array<std::optional<TabulatedPhase>, 4>& regions
         m.chi[r] = phase_moments(*p, nmom, &integral, nmom <= 64 ? 16 : 64);
         const double scale = 4 * kPi / integral;  // average over the sphere 1
         m.grid[r].resize(n + 1);
-        for (std::size_t i = 0; i <= n; ++i)
-            m.grid[r][i] = scale * p->at(std::min(180.0, MieOptics::grid_angle_deg(i)));
+        p->at_ascending(grid_angles(), m.grid[r].data());
+        for (double& v : m.grid[r]) v *= scale;
     }
     return m;
 }

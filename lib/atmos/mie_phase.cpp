@@ -57,17 +57,31 @@ std::pair<std::size_t, double> bracket(const std::vector<double>& v, double x) {
     return {hi - 1, (x - v[hi - 1]) / (v[hi] - v[hi - 1])};
 }
 
+// ln P at the nodes where both ends of each interval are positive (PHASEF's ln-linear
+// interpolation), so that a value inside an interval is one exp instead of a pow:
+// exp(ln a + f (ln b - ln a)) = a (b / a)^f, equal to rounding.
+struct LogNodes {
+    std::vector<double> ln;         // ln P (0 where P <= 0)
+    std::vector<char> ln_interval;  // interval i is ln-linear (both ends > 0)
+    explicit LogNodes(const std::vector<double>& p) : ln(p.size(), 0.0), ln_interval(p.size(), 0) {
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (p[i] > 0) ln[i] = std::log(p[i]);
+        for (std::size_t i = 0; i + 1 < p.size(); ++i) ln_interval[i] = p[i] > 0 && p[i + 1] > 0;
+    }
+};
+
 // The value within interval i at fraction f for the moments: ln P linear in angle, but
 // in the intervals touching 0 and 180 deg ln P is quadratic in the distance from the
 // pole, flat there. A phase function is smooth on the sphere, so its slope in angle
 // vanishes at both poles; a kink there (ln-linear to the pole) would make a cusp whose
 // Legendre series converges only as N^-2.
-double moment_value(const TabulatedPhase& p, std::size_t i, double f) {
+double moment_value(const TabulatedPhase& p, const LogNodes& l, std::size_t i, double f) {
     const double a = p.p_sr1[i], b = p.p_sr1[i + 1];
-    if (!(a > 0 && b > 0)) return a + f * (b - a);
-    if (i == 0) return a * std::pow(b / a, f * f);
-    if (i + 2 == p.p_sr1.size()) return b * std::pow(a / b, (1 - f) * (1 - f));
-    return a * std::pow(b / a, f);
+    if (!l.ln_interval[i]) return a + f * (b - a);
+    const double la = l.ln[i], lb = l.ln[i + 1];
+    if (i == 0) return std::exp(la + f * f * (lb - la));
+    if (i + 2 == p.p_sr1.size()) return std::exp(lb + (1 - f) * (1 - f) * (la - lb));
+    return std::exp(la + f * (lb - la));
 }
 
 }  // namespace
@@ -75,6 +89,20 @@ double moment_value(const TabulatedPhase& p, std::size_t i, double f) {
 double TabulatedPhase::at(double angle) const {
     const auto [i, f] = bracket(angle_deg, angle);
     return log_lerp(p_sr1[i], p_sr1[i + 1], f);
+}
+
+void TabulatedPhase::at_ascending(const std::vector<double>& angles, double* out) const {
+    const LogNodes l(p_sr1);
+    std::size_t i = 0;
+    for (std::size_t k = 0; k < angles.size(); ++k) {
+        const double x = std::clamp(angles[k], angle_deg.front(), angle_deg.back());
+        // bracket()'s interval: the first node above x, at most the last one.
+        while (i + 2 < angle_deg.size() && !(angle_deg[i + 1] > x)) ++i;
+        const double f = (x - angle_deg[i]) / (angle_deg[i + 1] - angle_deg[i]);
+        const double a = p_sr1[i], b = p_sr1[i + 1];
+        out[k] = l.ln_interval[i] ? std::exp(l.ln[i] + f * (l.ln[i + 1] - l.ln[i]))
+                                  : a + f * (b - a);
+    }
 }
 
 namespace {
@@ -115,10 +143,11 @@ const MomentNodes& moment_nodes(const std::vector<double>& angle_deg, int nmom, 
 std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral,
                                   int gauss_points) {
     const MomentNodes& m = moment_nodes(p.angle_deg, nmom, gauss_points);
+    const LogNodes l(p.p_sr1);
     std::vector<double> chi(static_cast<std::size_t>(nmom) + 1, 0.0);
     double norm = 0;
     for (std::size_t node = 0; node < m.weight.size(); ++node) {
-        const double w = m.weight[node] * moment_value(p, node / m.per, m.fraction[node]);
+        const double w = m.weight[node] * moment_value(p, l, node / m.per, m.fraction[node]);
         const double* pk = &m.pk[node * chi.size()];
         norm += w;
         for (std::size_t k = 0; k < chi.size(); ++k) chi[k] += w * pk[k];
@@ -203,6 +232,12 @@ TabulatedPhase MiePhaseTable::model(int model, double wavelength_um) const {
     TabulatedPhase out{m_angles, {}};
     for (std::size_t k = 0; k < a.size(); ++k) out.p_sr1.push_back(log_lerp(a[k], b[k], f));
     return out;
+}
+
+bool MiePhaseTable::has_region(int region, int ihaze, double wavelength_um) const {
+    if (wavelength_um > m_wavelengths.back()) return false;
+    if (region != 0) return true;
+    return (ihaze >= 1 && ihaze <= 6) || ihaze == 8 || ihaze == 9;  // region()'s cases
 }
 
 std::optional<TabulatedPhase> MiePhaseTable::region(int region, int ihaze, int ivulcn, double rh,

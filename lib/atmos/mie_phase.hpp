@@ -18,6 +18,9 @@ struct TabulatedPhase {
     std::vector<double> angle_deg;
     std::vector<double> p_sr1;
     double at(double angle_deg) const;
+    // at() at each of `angles` (ascending, deg) into out: one logarithm per node and an
+    // exp per value instead of a search and a pow per value (equal to rounding).
+    void at_ascending(const std::vector<double>& angles, double* out) const;
 };
 
 // Legendre moments chi_0..chi_nmom of `p` in DISORT's convention,
@@ -73,6 +76,8 @@ public:
     // desert model (IHAZE 10) and above 40 um.
     std::optional<TabulatedPhase> region(int region, int ihaze, int ivulcn, double rh_percent,
                                          double wavelength_um) const;
+    // Whether region() gives a function (without building it).
+    bool has_region(int region, int ihaze, double wavelength_um) const;
 
 private:
     std::vector<double> m_angles;                  // 34

@@ -65,12 +65,6 @@ double coupling_difference(const SampleResult& a, const SampleResult& b) {
     return worst;
 }
 
-double column_scattering(const std::vector<LayerOptics>& layers) {
-    double tau = 0;
-    for (const LayerOptics& l : layers) tau += l.tau_rayleigh + l.tau_aerosol * l.ssa_aerosol;
-    return tau;
-}
-
 // The probes solved at `streams` (the setup's options copied with them). A probe's
 // preparation (its column, Mie functions and gas terms) serves every order with the
 // same phase moments (every order up to kPhaseMoments): preps[p] is kept or remade.
@@ -112,7 +106,7 @@ std::vector<double> probe_wavenumbers(const ColumnModel& column, const io::SndBa
     long most = 0;
     double most_tau = -1;
     for (long s = 0; s < n; ++s) {
-        const double tau = column_scattering(column.layers(nu(s)));
+        const double tau = column.scattering_optical_depth(nu(s));
         if (tau > most_tau) {
             most_tau = tau;
             most = s;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <vector>
 
 #include "rt/discrete_ordinates.hpp"
 
@@ -71,6 +72,34 @@ TEST(MiePhase, MomentsOfAnIsotropicFunction) {
     EXPECT_NEAR(integral, 1, 1e-12);
     EXPECT_EQ(chi[0], 1);
     for (std::size_t k = 1; k < chi.size(); ++k) EXPECT_NEAR(chi[k], 0, 1e-12) << k;
+}
+
+// has_region tells, without building it, whether region() gives a function: every
+// region, IHAZE 0-10 and wavelengths within and beyond the tables' 40 um.
+TEST(MiePhase, HasRegionAgreesWithRegion) {
+    for (int region = 0; region < 4; ++region)
+        for (int ihaze = 0; ihaze <= 10; ++ihaze)
+            for (double um : {0.2, 0.55, 10.0, 40.0, 41.0})
+                EXPECT_EQ(table().has_region(region, ihaze, um),
+                          table().region(region, ihaze, 0, 50, um).has_value())
+                    << region << " " << ihaze << " " << um;
+}
+
+// at_ascending (one logarithm per node, an exp per value) against at() (a search and a
+// pow per value) at 1000 ascending angles and beyond both ends, for all 70 functions:
+// the same ln-linear interpolation, equal to rounding (1e-14 relative; the arguments
+// of exp are at most |ln P| ~ 10, so their rounding, 2e-15, sets the scale).
+TEST(MiePhase, AtAscendingEqualsAtToRounding) {
+    std::vector<double> angles{-1.0};
+    for (int i = 0; i <= 1000; ++i) angles.push_back(0.18 * i);
+    angles.push_back(181);
+    std::vector<double> out(angles.size());
+    for (int n = 1; n <= 70; ++n) {
+        const TabulatedPhase p = table().function(n);
+        p.at_ascending(angles, out.data());
+        for (std::size_t k = 0; k < angles.size(); ++k)
+            EXPECT_NEAR(out[k], p.at(angles[k]), 1e-14 * p.at(angles[k])) << n << " " << angles[k];
+    }
 }
 
 // The 16-point rule per interval (build_radiance's, for up to 64 moments) against the

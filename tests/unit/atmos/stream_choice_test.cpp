@@ -181,6 +181,21 @@ TEST(StreamChoice, ProbesAreTheCentreAndTheMostScatteringSample) {
     EXPECT_EQ(probe_wavenumbers(column, {18000, 18000, 1}).size(), 1u);
 }
 
+// The probes' scattering optical depth, formed without the gas absorption, is the same
+// number as the sum over the full layers (bit for bit: the choice of probe must not
+// change), at wavenumbers across the visible and the near infrared.
+TEST(StreamChoice, ScatteringDepthEqualsTheLayersSum) {
+    const io::Cdk deck = hawkeye_deck();
+    const ColumnModel column(deck.runs.front(), 1.0, options(16));
+    for (double nu : {10000.0, 14400.0, 18000.0, 22500.0, 25000.0}) {
+        double tau = 0;
+        for (const LayerOptics& l : column.layers(nu))
+            tau += l.tau_rayleigh + l.tau_aerosol * l.ssa_aerosol;
+        EXPECT_EQ(column.scattering_optical_depth(nu), tau) << nu;
+        EXPECT_GT(tau, 0) << nu;
+    }
+}
+
 TEST(StreamChoice, ToleranceOutOfRangeIsUsageError) {
     RadianceOptions o = options(kAutoStreams);
     EXPECT_NO_THROW(check_radiance_options(o));
