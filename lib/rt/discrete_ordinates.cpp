@@ -191,6 +191,17 @@ struct ModeZero {
 };
 thread_local ModeZero t_mode_zero;
 
+// The storage (not the values) of the last solve on this thread, lent to the next one:
+// its layer solutions, band matrix and scratch keep their capacity, so a solve of the
+// same size allocates nothing for them. Every value is written again before it is read
+// (solve_layer assigns each field of a layer's solution, BandMatrix::reset zeroes it).
+struct Spare {
+    std::vector<LayerSolution> sol;
+    linalg::BandMatrix band;
+    Scratch scratch;
+};
+thread_local Spare t_spare;
+
 std::vector<double> mode_zero_key(const Problem& p, const Scaled& s) {
     std::vector<double> key{static_cast<double>(p.streams), p.albedo};
     for (const LayerOptics& o : s.optics) {
@@ -204,6 +215,9 @@ std::vector<double> mode_zero_key(const Problem& p, const Scaled& s) {
 }  // namespace
 
 void Solver::setup() {
+    std::swap(m_sol, t_spare.sol);
+    std::swap(m_band, t_spare.band);
+    std::swap(m_scratch, t_spare.scratch);
     m_N = m_p.streams;
     m_L = static_cast<int>(m_p.layers.size());
     m_q.nn = m_N / 2;
@@ -383,6 +397,9 @@ Result Solver::run() {
         std::swap(t_mode_zero.sol, m_sol);
         std::swap(t_mode_zero.band, m_band);
     }
+    std::swap(m_sol, t_spare.sol);  // lent to the next solve (Spare)
+    std::swap(m_band, t_spare.band);
+    std::swap(m_scratch, t_spare.scratch);
     return std::move(m_result);
 }
 
