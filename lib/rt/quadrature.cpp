@@ -7,6 +7,14 @@
 namespace sigchain::rt {
 
 void gauss_half_range(int n, std::vector<double>& mu, std::vector<double>& weight) {
+    // Every solve asks its streams' rule again: each thread keeps the last one.
+    thread_local int last_n = -1;
+    thread_local std::vector<double> last_mu, last_weight;
+    if (n == last_n) {
+        mu = last_mu;
+        weight = last_weight;
+        return;
+    }
     mu.assign(n, 0.0);
     weight.assign(n, 0.0);
     for (int i = 0; i < n; ++i) {
@@ -31,6 +39,9 @@ void gauss_half_range(int n, std::vector<double>& mu, std::vector<double>& weigh
         mu[n - 1 - i] = 0.5 * (x + 1);
         weight[n - 1 - i] = 0.5 * w;
     }
+    last_n = n;
+    last_mu = mu;
+    last_weight = weight;
 }
 
 void normalized_legendre(int m, int lmax, double mu, double* out) {

@@ -3,10 +3,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "core/error.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
+#include "rt/quadrature.hpp"
 
 namespace sigchain::rt {
 namespace {
@@ -68,6 +70,24 @@ Problem beam_problem(double ssa, double g, int layers, int streams) {
     p.beam_flux = 2.5;
     p.beam_mu0 = 0.37;
     return p;
+}
+
+// The half-range Gauss rule integrates mu^k exactly on [0, 1] (1 / (k + 1) for
+// k < 2n), asked in any order (each thread keeps the last rule it made).
+TEST(Quadrature, GaussHalfRangeIsExactAndTheSameWhenAskedAgain) {
+    std::vector<double> mu8, w8, mu4, w4, again_mu, again_w;
+    gauss_half_range(8, mu8, w8);
+    gauss_half_range(4, mu4, w4);
+    gauss_half_range(8, again_mu, again_w);
+    EXPECT_EQ(again_mu, mu8);
+    EXPECT_EQ(again_w, w8);
+    for (int k = 0; k < 16; ++k) {
+        double s8 = 0, s4 = 0;
+        for (std::size_t i = 0; i < mu8.size(); ++i) s8 += w8[i] * std::pow(mu8[i], k);
+        for (std::size_t i = 0; i < mu4.size(); ++i) s4 += w4[i] * std::pow(mu4[i], k);
+        EXPECT_NEAR(s8, 1.0 / (k + 1), 1e-14) << k;
+        if (k < 8) EXPECT_NEAR(s4, 1.0 / (k + 1), 1e-14) << k;
+    }
 }
 
 TEST(Solver, ConservativeScatteringConservesEnergy) {
