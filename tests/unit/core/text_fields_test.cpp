@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -46,6 +47,35 @@ TEST(TextFields, SameLinesAndFieldsAsLineCursor) {
     }
     EXPECT_TRUE(r.at_end());
     EXPECT_EQ(r.line(), 9);
+}
+
+// Random texts of separators, other control bytes, comments and digits: the same
+// lines, fields and field-count messages as LineCursor.
+TEST(TextFields, RandomTextsReadAsLineCursorReadsThem) {
+    std::mt19937 random(2024);
+    const std::string alphabet = " \t\r\n\f\v#1.-e\x01\xe9";
+    for (int i = 0; i < 3000; ++i) {
+        std::string text;
+        const int size = static_cast<int>(random() % 60);
+        for (int k = 0; k < size; ++k) text += alphabet[random() % alphabet.size()];
+        const auto in = TextInput::from_string(text, "r.txt");
+        for (std::size_t count : {1U, 2U}) {
+            LineCursor c(in);
+            FieldReader r(in);
+            while (!c.at_end()) {
+                ASSERT_FALSE(r.at_end());
+                std::vector<std::string_view> want;
+                const std::string want_error = message_of([&] { want = c.fields(count, "f"); });
+                std::span<const std::string_view> got;
+                ASSERT_EQ(message_of([&] { got = r.fields(count, "f"); }), want_error);
+                ASSERT_EQ(r.line(), c.where().line);
+                if (want_error.empty()) {
+                    ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin(), want.end()));
+                }
+            }
+            ASSERT_TRUE(r.at_end());
+        }
+    }
 }
 
 TEST(TextFields, MessagesAreLineCursors) {
