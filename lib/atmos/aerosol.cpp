@@ -36,15 +36,10 @@ constexpr std::size_t k055 = 3;                       // row of 0.55 um in every
 
 Table read_table(const std::string& path, std::size_t columns, std::size_t rows) {
     const TextInput in = TextInput::from_file(path);
-    LineCursor cur(in);
+    FieldReader cur(in);
     cur.require_not_empty("a table row");
-    Table t;
-    while (!cur.at_end()) {
-        const auto f = cur.fields(columns, "a row of " + std::to_string(columns) + " numbers");
-        std::vector<double> row;
-        for (auto x : f) row.push_back(parse_double(x, cur.where(), "a table value"));
-        t.push_back(std::move(row));
-    }
+    Table t = read_number_rows(
+        cur, columns, "a row of " + std::to_string(columns) + " numbers", "a table value");
     if (rows && t.size() != rows)
         throw DataError(in.at(0), "expected " + std::to_string(rows) + " rows, found " +
                                       std::to_string(t.size()));

@@ -36,15 +36,10 @@ constexpr double kEquivalentLwc[5] = {7.683e-3, 4.509e-3, 5.272e-3, 4.177e-3, 7.
 std::vector<std::vector<double>> read_rows(const std::string& path, std::size_t columns,
                                            std::size_t rows) {
     const TextInput in = TextInput::from_file(path);
-    LineCursor cur(in);
+    FieldReader cur(in);
     cur.require_not_empty("a table row");
-    std::vector<std::vector<double>> t;
-    while (!cur.at_end()) {
-        const auto f = cur.fields(columns, "a row of " + std::to_string(columns) + " numbers");
-        std::vector<double> row;
-        for (auto x : f) row.push_back(parse_double(x, cur.where(), "a table value"));
-        t.push_back(std::move(row));
-    }
+    auto t = read_number_rows(
+        cur, columns, "a row of " + std::to_string(columns) + " numbers", "a table value");
     if (t.size() != rows)
         throw DataError(in.at(0), "expected " + std::to_string(rows) + " rows, found " +
                                       std::to_string(t.size()));

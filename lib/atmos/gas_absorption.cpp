@@ -43,49 +43,62 @@ constexpr std::array<std::string_view, kBandGases> kGasNames = {
 
 // ---- Table reading -------------------------------------------------------------------
 
-struct Row {
-    SourceLocation where;
-    std::vector<double> v;  // the numeric columns asked for, in order
+// The numeric columns asked for of a table's rows (row-major) and each row's line.
+struct Rows {
+    std::string path;
+    std::size_t width = 0;
+    std::vector<double> v;
+    std::vector<int> line;
+
+    std::size_t size() const { return line.size(); }
+    double at(std::size_t row, std::size_t c) const { return v[row * width + c]; }
+    SourceLocation where(std::size_t row) const { return {path, line[row]}; }
 };
 
 // Every significant line of `path` with exactly `columns` fields; parses the fields
 // whose indices are in `numeric` (others, e.g. a wavelength printed as 'inf', are
 // skipped).
-std::vector<Row> read_rows(const std::string& path, std::size_t columns,
-                           const std::vector<int>& numeric) {
+Rows read_rows(const std::string& path, std::size_t columns, const std::vector<int>& numeric) {
     const TextInput input = TextInput::from_file(path);
-    LineCursor cursor(input);
-    cursor.require_not_empty("table rows");
-    std::vector<Row> rows;
-    while (!cursor.at_end()) {
-        auto fields = cursor.fields(columns, "table row");
-        Row row{cursor.where(), {}};
-        for (int c : numeric) row.v.push_back(parse_double(fields[c], row.where, "table value"));
-        rows.push_back(std::move(row));
+    FieldReader reader(input);
+    reader.require_not_empty("table rows");
+    Rows rows{path, numeric.size(), {}, {}};
+    const auto lines = static_cast<std::size_t>(
+        std::count(input.text().begin(), input.text().end(), '\n') + 1);
+    rows.v.reserve(lines * rows.width);
+    rows.line.reserve(lines);
+    while (!reader.at_end()) {
+        const auto fields = reader.fields(columns, "table row");
+        for (int c : numeric) rows.v.push_back(reader.number(fields[c], "table value"));
+        rows.line.push_back(reader.line());
     }
     return rows;
 }
 
-// Checks that rows[i].v[0] == start + step * i (a regular grid).
-void require_grid(const std::vector<Row>& rows, double start, double step, std::size_t count,
-                  const std::string& path) {
-    // An extra row is named by its line; a missing one has none, so the file is named.
-    if (rows.size() != count)
-        throw DataError(
-            rows.size() > count ? rows[count].where : SourceLocation{path, 0},
-            "expected " + std::to_string(count) + " rows, found " + std::to_string(rows.size()));
-    for (std::size_t i = 0; i < rows.size(); ++i) {
+// Checks that column 0 of the first `count` rows is start + step * i (a regular grid).
+void check_grid(const Rows& rows, double start, double step, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
         double want = start + step * static_cast<double>(i);
-        if (std::abs(rows[i].v[0] - want) > 1e-6)
-            throw DataError(rows[i].where, "expected wavenumber " + format_number(want) +
-                                               ", found " + format_number(rows[i].v[0]));
+        if (std::abs(rows.at(i, 0) - want) > 1e-6)
+            throw DataError(rows.where(i), "expected wavenumber " + format_number(want) +
+                                               ", found " + format_number(rows.at(i, 0)));
     }
 }
 
-std::vector<double> column(const std::vector<Row>& rows, std::size_t c) {
+// Checks that there are `count` rows on that grid.
+void require_grid(const Rows& rows, double start, double step, std::size_t count) {
+    // An extra row is named by its line; a missing one has none, so the file is named.
+    if (rows.size() != count)
+        throw DataError(
+            rows.size() > count ? rows.where(count) : SourceLocation{rows.path, 0},
+            "expected " + std::to_string(count) + " rows, found " + std::to_string(rows.size()));
+    check_grid(rows, start, step, count);
+}
+
+std::vector<double> column(const Rows& rows, std::size_t c) {
     std::vector<double> out;
     out.reserve(rows.size());
-    for (const Row& r : rows) out.push_back(r.v[c]);
+    for (std::size_t r = 0; r < rows.size(); ++r) out.push_back(rows.at(r, c));
     return out;
 }
 
@@ -93,11 +106,11 @@ std::vector<double> column(const std::vector<Row>& rows, std::size_t c) {
 void read_band_constants(GasTables::Data& d, const std::string& dir) {
     const std::string path = dir + "band_model_constants.txt";
     const TextInput input = TextInput::from_file(path);
-    LineCursor cursor(input);
+    FieldReader reader(input);
     d.band_gas.fill(-1);
-    while (!cursor.at_end()) {
-        auto f = cursor.fields(10, "band constants row");
-        auto where = cursor.where();
+    while (!reader.at_end()) {
+        auto f = reader.fields(10, "band constants row");
+        auto where = reader.where();
         auto gas = std::find(kGasNames.begin(), kGasNames.end(), f[0]);
         if (gas == kGasNames.end())
             throw DataError(where, "expected a gas name, found " + quoted(f[0]));
@@ -119,75 +132,69 @@ void read_band_constants(GasTables::Data& d, const std::string& dir) {
 // band_model_GAS.txt: nu lambda Cprime band_id, 5 cm-1 steps, gaps between ranges.
 void read_band_grid(GasTables::Data& d, int gas, const std::string& dir) {
     const std::string path = dir + "band_model_" + std::string(kGasNames[gas]) + ".txt";
-    auto rows = read_rows(path, 4, {0, 2, 3});
+    const Rows rows = read_rows(path, 4, {0, 2, 3});
     auto& grid = d.grids[gas];
-    grid.nu0_cm1 = static_cast<int>(rows.front().v[0]);
-    double last = rows.front().v[0] - 5;
-    for (const Row& r : rows) {
-        double nu = r.v[0];
+    grid.nu0_cm1 = static_cast<int>(rows.at(0, 0));
+    double last = rows.at(0, 0) - 5;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        const double nu = rows.at(r, 0), cprime = rows.at(r, 1), band_id = rows.at(r, 2);
         if (nu <= last || std::fmod(nu, 5.0) != 0)
-            throw DataError(r.where,
+            throw DataError(rows.where(r),
                             "expected increasing multiples of 5 cm-1, found " + format_number(nu));
-        long id = std::lround(r.v[2]);
+        long id = std::lround(band_id);
         auto b = id - kFirstBandId;
-        if (r.v[2] != static_cast<double>(id) || b < 0 || b >= GasColumn::kBandCount ||
+        if (band_id != static_cast<double>(id) || b < 0 || b >= GasColumn::kBandCount ||
             d.band_gas[b] != gas)
-            throw DataError(r.where, "expected a band id of " + std::string(kGasNames[gas]) +
-                                         ", found " + format_number(r.v[2]));
+            throw DataError(rows.where(r), "expected a band id of " +
+                                               std::string(kGasNames[gas]) + ", found " +
+                                               format_number(band_id));
         auto index = static_cast<std::size_t>((nu - grid.nu0_cm1) / 5);
         grid.cprime.resize(index + 1, 0.0);
         grid.band.resize(index + 1, -1);
-        grid.cprime[index] = r.v[1];
+        grid.cprime[index] = cprime;
         grid.band[index] = static_cast<std::int8_t>(b);
         last = nu;
     }
 }
 
 void read_continua(GasTables::Data& d, const std::string& dir) {
-    std::string path = dir + "h2o_continuum.txt";
-    auto rows = read_rows(path, 4, {0, 1, 2, 3});
-    require_grid(rows, -20, 10, 2003, path);
+    Rows rows = read_rows(dir + "h2o_continuum.txt", 4, {0, 1, 2, 3});
+    require_grid(rows, -20, 10, 2003);
     d.h2o_self296 = column(rows, 1);
     d.h2o_self260 = column(rows, 2);
     d.h2o_foreign296 = column(rows, 3);
 
-    path = dir + "n2_continuum.txt";
-    rows = read_rows(path, 3, {0, 2});
-    require_grid(rows, 2080, 5, 133, path);
+    rows = read_rows(dir + "n2_continuum.txt", 3, {0, 2});
+    require_grid(rows, 2080, 5, 133);
     d.n2_km = column(rows, 1);
 
-    path = dir + "o2_continuum_1395_1760.txt";
-    rows = read_rows(path, 5, {0, 2, 3, 4});
-    require_grid(rows, 1395, 5, 74, path);
+    rows = read_rows(dir + "o2_continuum_1395_1760.txt", 5, {0, 2, 3, 4});
+    require_grid(rows, 1395, 5, 74);
     d.o2_s0 = column(rows, 1);
     d.o2_a = column(rows, 2);
     d.o2_b = column(rows, 3);
 
-    path = dir + "hno3_band_coefficients.txt";
-    rows = read_rows(path, 3, {0, 2});
+    rows = read_rows(dir + "hno3_band_coefficients.txt", 3, {0, 2});
     d.hno3.assign((1735 - 850) / 5 + 1, 0.0);
-    for (const Row& r : rows) {
-        double i = (r.v[0] - 850) / 5;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        double i = (rows.at(r, 0) - 850) / 5;
         if (i < 0 || i >= static_cast<double>(d.hno3.size()) || i != std::floor(i))
-            throw DataError(r.where, "expected a wavenumber 850-1735 cm-1 on a 5 cm-1 grid");
-        d.hno3[static_cast<std::size_t>(i)] = r.v[1];
+            throw DataError(rows.where(r), "expected a wavenumber 850-1735 cm-1 on a 5 cm-1 grid");
+        d.hno3[static_cast<std::size_t>(i)] = rows.at(r, 1);
     }
 }
 
 void read_ozone(GasTables::Data& d, const std::string& dir) {
-    std::string path = dir + "o3_visible_uv_band_coefficients.txt";
-    auto rows = read_rows(path, 4, {1, 3});
+    Rows rows = read_rows(dir + "o3_visible_uv_band_coefficients.txt", 4, {1, 3});
     // An extra row is named by its line; a missing one has none, so the file is named.
     if (rows.size() != 102)
-        throw DataError(rows.size() > 102 ? rows[102].where : SourceLocation{path, 0},
+        throw DataError(rows.size() > 102 ? rows.where(102) : SourceLocation{rows.path, 0},
                         "expected 102 rows");
-    std::vector<Row> visible(rows.begin(), rows.begin() + 56);
-    require_grid(visible, 13000, 200, 56, path);
-    for (int k = 0; k < 57; ++k) d.chappuis.push_back(rows[k].v[1]);  // C8(57) is at 27500
+    check_grid(rows, 13000, 200, 56);
+    for (std::size_t k = 0; k < 57; ++k) d.chappuis.push_back(rows.at(k, 1));  // C8(57) is at 27500
 
-    path = dir + "o3_hartley_huggins.txt";
-    rows = read_rows(path, 5, {0, 2, 3, 4});
-    require_grid(rows, 27370, 5, 2687, path);
+    rows = read_rows(dir + "o3_hartley_huggins.txt", 5, {0, 2, 3, 4});
+    require_grid(rows, 27370, 5, 2687);
     d.hh_c0 = column(rows, 1);
     d.hh_c1 = column(rows, 2);
     d.hh_c2 = column(rows, 3);

@@ -70,16 +70,9 @@ std::string find_model_file(int model, const std::string& data_dir) {
 // Rows of numbers of a '#'-commented table, each with exactly `columns` fields.
 std::vector<std::vector<double>> read_rows(const TextInput& in, std::size_t columns,
                                            std::string_view what) {
-    std::vector<std::vector<double>> rows;
-    LineCursor cur(in);
+    FieldReader cur(in);
     cur.require_not_empty(what);
-    while (!cur.at_end()) {
-        const auto fields = cur.fields(columns, what);
-        std::vector<double> row;
-        for (const auto f : fields) row.push_back(parse_double(f, cur.where(), what));
-        rows.push_back(std::move(row));
-    }
-    return rows;
+    return read_number_rows(cur, columns, what, what);
 }
 
 void read_trace_gases(Profile& p, const std::string& data_dir) {

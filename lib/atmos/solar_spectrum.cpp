@@ -33,14 +33,14 @@ void append(TextInput const& in, int line, double nu, double e, double dnu, auto
 SolarSpectrum SolarSpectrum::load(const std::string& data_dir) {
     const std::string path = data_dir + "/atmosphere/solar_lowtran7_extraterrestrial.txt";
     const TextInput in = TextInput::from_file(path);
-    LineCursor cur(in);
+    FieldReader cur(in);
     cur.require_not_empty("a solar row (nu lambda E table)");
     SolarSpectrum s;
     while (!cur.at_end()) {
         const auto f = cur.fields(4, "a solar row (nu lambda E table)");
-        const int line = cur.where().line;
-        const double nu = parse_double(f[0], cur.where(), "wavenumber");
-        const double e = parse_double(f[2], cur.where(), "irradiance");
+        const int line = cur.line();
+        const double nu = cur.number(f[0], "wavenumber");
+        const double e = cur.number(f[2], "irradiance");
         if (e < 0) throw DataError(cur.where(), "negative irradiance " + quoted(f[2]));
         if (f[3] == "A") {
             append(in, line, nu, e, 20.0, s.m_coarse);

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 
 #include <fcntl.h>
@@ -89,14 +90,14 @@ constexpr std::size_t kChunk = 1 << 16;
 
 // Reads `fd` to its end through `acc`.
 void read_fd(int fd, const std::string& name, TextAccumulator& acc) {
-    std::vector<char> buffer(kChunk);
+    const std::unique_ptr<char[]> buffer(new char[kChunk]);  // not zeroed: read() fills it
     while (true) {
-        ssize_t n = ::read(fd, buffer.data(), buffer.size());
+        ssize_t n = ::read(fd, buffer.get(), kChunk);
         if (n < 0 && errno == EINTR) continue;
         if (n < 0)
             throw IoError(SourceLocation{name, 0}.str() + ": read error: " + std::strerror(errno));
         if (n == 0) return;
-        acc.add(buffer.data(), static_cast<std::size_t>(n));
+        acc.add(buffer.get(), static_cast<std::size_t>(n));
     }
 }
 
@@ -210,19 +211,6 @@ const Line& LineCursor::next(std::string_view what) {
     return line;
 }
 
-std::vector<std::string_view> LineCursor::fields(std::size_t count, std::string_view what,
-                                                 bool commas_too) {
-    const Line& line = next(what);
-    auto f = split_fields(line.text, commas_too);
-    if (f.size() != count) {
-        throw DataError(where(line), "expected " + std::to_string(count) +
-                                         (count == 1 ? " field (" : " fields (") +
-                                         std::string(what) + "), found " +
-                                         std::to_string(f.size()) + ": " + quoted(line.text));
-    }
-    return f;
-}
-
 SourceLocation LineCursor::where() const {
     if (m_lines.empty()) return m_input.at(0);
     std::size_t i = m_pos == 0 ? 0 : m_pos - 1;
@@ -264,6 +252,7 @@ std::string quoted(std::string_view token) {
 
 double parse_double(std::string_view token, const SourceLocation& where, std::string_view what) {
     double value = 0;
+    if (try_parse_double(token, value)) return value;
     std::string_view t = token;
     if (!t.empty() && t.front() == '+') t.remove_prefix(1);
     auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);

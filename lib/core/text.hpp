@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <istream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -99,9 +100,48 @@ private:
     std::size_t m_pos = 0;
 };
 
+// Reads the significant lines of a TextInput as LineCursor (Mode::Significant) does, for
+// long tables: one line at a time, without a list of every line or an allocation per
+// line, and with the messages of LineCursor and parse_double.
+class FieldReader {
+public:
+    explicit FieldReader(const TextInput& input);
+
+    bool at_end() const { return m_next_line == 0; }
+    // Fails with "empty file, expected WHAT" if the input has no significant line.
+    void require_not_empty(std::string_view what) const;
+    // The next line split into exactly `count` fields, as LineCursor::fields (same
+    // message); valid until the next call.
+    std::span<const std::string_view> fields(std::size_t count, std::string_view what);
+    // Number of the line last returned by fields(), and its location.
+    int line() const { return m_line; }
+    SourceLocation where() const { return m_input.at(m_line); }
+    // parse_double(token, where(), what), building the location only for a message.
+    double number(std::string_view token, std::string_view what) const;
+
+private:
+    void advance();  // finds the next significant line after m_rest
+
+    const TextInput& m_input;
+    std::string_view m_rest;       // the text after the next significant line
+    std::string_view m_next_text;  // the next significant line (comment-stripped, trimmed)
+    int m_next_line = 0;           // its number, 0 at the end
+    int m_physical = 0;            // number of the last physical line scanned
+    int m_line = 0;
+    std::vector<std::string_view> m_fields;
+};
+
+// Every remaining line of `reader` as a row of exactly `columns` numbers:
+// reader.fields(columns, row_what), then reader.number(field, value_what) for each.
+std::vector<std::vector<double>> read_number_rows(FieldReader& reader, std::size_t columns,
+                                                  std::string_view row_what,
+                                                  std::string_view value_what);
+
 // Strict number parsing: the whole token must be a finite number in C-locale syntax.
 // `what` names the field in the message: "expected WHAT (a number), found 'abc'".
 double parse_double(std::string_view token, const SourceLocation& where, std::string_view what);
+// The value parse_double would return, or false where parse_double would throw.
+bool try_parse_double(std::string_view token, double& value);
 long parse_long(std::string_view token, const SourceLocation& where, std::string_view what);
 // A non-negative integer count.
 long parse_count(std::string_view token, const SourceLocation& where, std::string_view what);
