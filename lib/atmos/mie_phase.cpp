@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <string_view>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -22,23 +24,20 @@ double log_lerp(double a, double b, double f) {
     return a + f * (b - a);
 }
 
-// The rows of a whitespace table (comment lines skipped), each with `columns` fields.
-std::vector<std::vector<std::string>> read_rows(const std::string& path, std::size_t columns,
-                                                std::size_t rows) {
+// Calls row(reader, fields) for each line of a whitespace table (comment lines skipped),
+// each of `columns` fields; DataError unless there are `rows` lines. Messages name the
+// file and line (FieldReader's).
+template <class Row>
+void read_rows(const std::string& path, std::size_t columns, std::size_t rows, Row row) {
     const TextInput in = TextInput::from_file(path);
-    LineCursor cur(in);
-    cur.require_not_empty("a table row");
-    std::vector<std::vector<std::string>> out;
-    while (!cur.at_end()) {
-        const auto f = cur.fields(columns, "a row of " + std::to_string(columns) + " fields");
-        std::vector<std::string> row;
-        for (auto x : f) row.emplace_back(x);
-        out.push_back(std::move(row));
-    }
-    if (out.size() != rows)
+    FieldReader reader(in);
+    reader.require_not_empty("a table row");
+    const std::string what = "a row of " + std::to_string(columns) + " fields";
+    std::size_t count = 0;
+    for (; !reader.at_end(); ++count) row(reader, reader.fields(columns, what));
+    if (count != rows)
         throw DataError(in.at(0), "expected " + std::to_string(rows) + " rows, found " +
-                                      std::to_string(out.size()));
-    return out;
+                                      std::to_string(count));
 }
 
 // Legendre polynomials P_0..P_n at x into out.
@@ -194,29 +193,27 @@ double phase_from_moments(const std::vector<double>& chi, double angle_deg) {
 MiePhaseTable MiePhaseTable::load(const std::string& data_dir) {
     const std::string dir = data_dir + "/atmosphere/lowtran7/";
     MiePhaseTable t;
-    const auto phase = read_rows(dir + "aerosol_phase_functions_mie.txt", 71, 34);
     t.m_functions.assign(70, {});
-    const SourceLocation at{dir + "aerosol_phase_functions_mie.txt", 0};
-    for (const auto& row : phase) {
-        t.m_angles.push_back(parse_double(row[0], at, "an angle"));
-        for (std::size_t n = 0; n < 70; ++n)
-            t.m_functions[n].push_back(parse_double(row[n + 1], at, "a phase function value"));
-    }
-    const auto index = read_rows(dir + "aerosol_phase_function_index.txt", 29, 26);
-    t
-        .m_wavelengths = {0.2, 0.3,   0.55, 0.6943, 1.06, 1.536, 2,    2.5, 2.7,
-                          3,   3.2,   3.39, 5,      6,    7.2,   7.9,  8.7, 9.2,
-                          10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,  40};  // PHASEF's WAVE
-    const SourceLocation ix{dir + "aerosol_phase_function_index.txt", 0};
-    for (const auto& row : index) {
-        std::vector<int> numbers;
-        for (std::size_t w = 2; w < row.size(); ++w) {
-            const double v = parse_double(row[w], ix, "a phase function number");
-            if (!(v >= 1 && v <= 70)) throw DataError(ix, "phase function number outside 1-70");
-            numbers.push_back(static_cast<int>(v));
-        }
-        t.m_index.push_back(std::move(numbers));
-    }
+    read_rows(dir + "aerosol_phase_functions_mie.txt", 71, 34,
+              [&](const FieldReader& r, std::span<const std::string_view> row) {
+                  t.m_angles.push_back(r.number(row[0], "an angle"));
+                  for (std::size_t n = 0; n < 70; ++n)
+                      t.m_functions[n].push_back(r.number(row[n + 1], "a phase function value"));
+              });
+    t.m_wavelengths = {0.2, 0.3,  0.55,  0.6943, 1.06, 1.536, 2,    2.5,  2.7,
+                       3,   3.2,  3.39,  5,      6,    7.2,   7.9,  8.7,  9.2,
+                       10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,   40};  // PHASEF's WAVE
+    read_rows(dir + "aerosol_phase_function_index.txt", 29, 26,
+              [&](const FieldReader& r, std::span<const std::string_view> row) {
+                  std::vector<int> numbers;
+                  for (std::size_t w = 2; w < row.size(); ++w) {
+                      const double v = r.number(row[w], "a phase function number");
+                      if (!(v >= 1 && v <= 70))
+                          throw DataError(r.where(), "phase function number outside 1-70");
+                      numbers.push_back(static_cast<int>(v));
+                  }
+                  t.m_index.push_back(std::move(numbers));
+              });
     return t;
 }
 

@@ -4,12 +4,17 @@
 #include "atmos/mie_phase.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <set>
+#include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "rt/discrete_ordinates.hpp"
 
 namespace sigchain::atmos {
@@ -100,6 +105,46 @@ TEST(MiePhase, AtAscendingEqualsAtToRounding) {
         for (std::size_t k = 0; k < angles.size(); ++k)
             EXPECT_NEAR(out[k], p.at(angles[k]), 1e-14 * p.at(angles[k])) << n << " " << angles[k];
     }
+}
+
+// A damaged table is refused with its file and line: a value that is not a number on
+// the phase table's second row (line 23), a phase function number 71 on the index's
+// first row (line 19). The data folder is copied with one line changed.
+TEST(MiePhase, DamagedTablesNameTheirLine) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("mie_phase_test_" + std::to_string(::getpid()));
+    const fs::path tables = dir / "atmosphere" / "lowtran7";
+    auto damaged = [&](const std::string& name, int line, const std::string& from,
+                       const std::string& to) {
+        fs::remove_all(dir);
+        fs::create_directories(tables);
+        for (const char* f :
+             {"aerosol_phase_functions_mie.txt", "aerosol_phase_function_index.txt"})
+            fs::copy_file(kData + "/atmosphere/lowtran7/" + f, tables / f);
+        std::ifstream in(tables / name);
+        std::string text, l;
+        for (int n = 1; std::getline(in, l); ++n) {
+            if (n == line) l.replace(l.find(from), from.size(), to);
+            text += l + "\n";
+        }
+        in.close();
+        std::ofstream(tables / name) << text;
+        try {
+            (void)MiePhaseTable::load(dir.string());
+        } catch (const DataError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string value = damaged("aerosol_phase_functions_mie.txt", 23, "4.26047", "4.2x");
+    EXPECT_NE(value.find("aerosol_phase_functions_mie.txt:23:"), std::string::npos) << value;
+    EXPECT_NE(value.find("'4.2x'"), std::string::npos) << value;
+    const std::string number = damaged("aerosol_phase_function_index.txt", 19, "rural_RH0    3",
+                                       "rural_RH0   71");
+    EXPECT_NE(number.find("aerosol_phase_function_index.txt:19:"), std::string::npos) << number;
+    EXPECT_NE(number.find("outside 1-70"), std::string::npos) << number;
+    fs::remove_all(dir);
 }
 
 // The 16-point rule per interval (build_radiance's, for up to 64 moments) against the
