@@ -65,7 +65,9 @@ struct UserSource {
 // each Fourier mode m, solve_mode() solves every layer and the boundary-value problem,
 // fluxes() (m = 0) and user_intensities() evaluate it, and run() sums the modes with
 // cos(m (phi - phi0)) until they converge; intensity_correction() closes. One instance
-// per call, so solve() is reentrant (no shared state).
+// per call; what it keeps for the next call (the last mode 0, its storage) is the
+// calling thread's own (discrete_ordinates.cpp: ModeZero, Spare), so threads may solve
+// at once.
 class Solver {
 public:
     explicit Solver(const Problem& p) : m_p(p) {}
