@@ -5,7 +5,8 @@
 // rays: (1) the rays render() casts for golfball sampling (the primary rays, the 61
 // golf-ball rays about each hit's normal, the shadow rays to the sun from the primary
 // and secondary hits), (2) as many rays with uniformly random upward directions from
-// the primary hits; the ratios and the peak memory.
+// the primary hits, (3) the rays of (1) as packets of 8 neighbouring pixels (a
+// wavefront's grouping); the ratios and the peak memory.
 //
 // A plain program (not Google Benchmark): one long run, not repeated timings.
 // Usage: bench_trace [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]] (default 1001 3000 512).
