@@ -1,14 +1,18 @@
-// MPI through its C interface (Open MPI's libmpi; the C++ bindings are gone since MPI 3).
+// The MPI transport (mpi.hpp). MPI itself is called by the module sigchain_mpi
+// (mpi_module.cpp), which this file loads when the first Session starts
+// (mpi_module.hpp says why); the launcher's environment is read here.
 #include "core/mpi.hpp"
-
-#include <mpi.h>
 
 #include <chrono>
 #include <climits>
 #include <cstdlib>
+#include <mutex>
+#include <string>
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/module_loader.hpp"
+#include "core/mpi_module.hpp"
 
 namespace sigchain::mpi {
 
@@ -21,24 +25,31 @@ int env_int(std::initializer_list<const char*> names) {
     return -1;
 }
 
-void check(int status, const char* what) {
-    if (status == MPI_SUCCESS) return;
-    char text[MPI_MAX_ERROR_STRING];
-    int length = 0;
-    MPI_Error_string(status, text, &length);
-    throw IoError(std::string("MPI: ") + what + ": " + std::string(text, length));
+// The module's functions, loaded once per process (thread-safe); IoError
+// "MPI: cannot load the MPI module PATH: REASON" when it cannot be loaded.
+const mpi_module::Api& api() {
+    static std::once_flag once;
+    static LoadedModule<mpi_module::Api> loaded;
+    std::call_once(once, [] {
+        loaded = load_module<mpi_module::Api>(SIGCHAIN_MPI_MODULE_NAME, "sigchain_mpi_api",
+                                              "MPI", mpi_module::kApiVersion);
+    });
+    if (!loaded.api) throw IoError("MPI: " + loaded.error);
+    return *loaded.api;
 }
 
-Message take(const MPI_Status& probe) {
+// IoError "MPI: MPI_CALL: MPI's text" unless `ok`.
+void check(bool ok, const std::string& message) {
+    if (!ok) throw IoError("MPI: " + message);
+}
+
+Message take(const mpi_module::Pending& pending) {
     Message m;
-    m.source = probe.MPI_SOURCE;
-    m.tag = probe.MPI_TAG;
-    int count = 0;
-    check(MPI_Get_count(&probe, MPI_BYTE, &count), "MPI_Get_count");
-    m.bytes.resize(static_cast<std::size_t>(count));
-    check(MPI_Recv(m.bytes.data(), count, MPI_BYTE, m.source, m.tag, MPI_COMM_WORLD,
-                   MPI_STATUS_IGNORE),
-          "MPI_Recv");
+    m.source = pending.source;
+    m.tag = pending.tag;
+    m.bytes.resize(static_cast<std::size_t>(pending.count));
+    std::string message;
+    check(api().receive(pending, m.bytes.data(), message), message);
     return m;
 }
 
@@ -58,37 +69,37 @@ int launched_rank() {
 bool launched() { return env_int({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) > 0; }
 
 Session::Session() {
-    int provided = 0;
-    check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
-    // Errors are returned, not fatal, so that they become IoErrors with a message.
-    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
-    MPI_Comm_rank(MPI_COMM_WORLD, &m_rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &m_size);
+    std::string message;
+    check(api().init(m_rank, m_size, message), message);
 }
 
-Session::~Session() { MPI_Finalize(); }
+// Only a Session whose constructor returned is destroyed: the module is loaded.
+Session::~Session() { api().finalize(); }
 
 void send(int to, int tag, const void* data, std::size_t bytes) {
     if (bytes > static_cast<std::size_t>(INT_MAX))
         throw IoError("MPI: a message of " + std::to_string(bytes) +
                       " bytes exceeds the 2^31 - 1 of one message");
-    check(MPI_Send(data, static_cast<int>(bytes), MPI_BYTE, to, tag, MPI_COMM_WORLD), "MPI_Send");
+    std::string message;
+    check(api().send(to, tag, data, static_cast<int>(bytes), message), message);
 }
 
 Message receive_any(int tag) {
     for (;;) {
-        int ready = 0;
-        MPI_Status probe;
-        check(MPI_Iprobe(MPI_ANY_SOURCE, tag, MPI_COMM_WORLD, &ready, &probe), "MPI_Iprobe");
-        if (ready) return take(probe);
+        bool ready = false;
+        mpi_module::Pending pending;
+        std::string message;
+        check(api().iprobe(tag, ready, pending, message), message);
+        if (ready) return take(pending);
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
 }
 
 Message receive(int from, int tag) {
-    MPI_Status probe;
-    check(MPI_Probe(from, tag, MPI_COMM_WORLD, &probe), "MPI_Probe");
-    return take(probe);
+    mpi_module::Pending pending;
+    std::string message;
+    check(api().probe(from, tag, pending, message), message);
+    return take(pending);
 }
 
 }  // namespace sigchain::mpi

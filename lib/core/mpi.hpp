@@ -1,6 +1,7 @@
 // The message transport of the farm over MPI ranks (lib/core/farm_mpi.cpp): MPI's
 // set-up, byte messages between ranks, and the job's abort. Built only with
 // SIGCHAIN_MPI (CMake finds MPI: Open MPI on Debian 12); nothing else includes it.
+// MPI itself is loaded only when the first Session starts (mpi_module.hpp).
 // Thread-safety: MPI is initialised with MPI_THREAD_FUNNELED, so only the thread that
 // made the Session may call these functions (the render's worker threads never do).
 #pragma once

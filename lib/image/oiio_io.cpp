@@ -3,15 +3,15 @@
 // called by the module sigchain_oiio (oiio_module.cpp), which this file loads on the
 // first such image (oiio_module.hpp says why); the checks, the temporary folder and the
 // rename stay here.
-#include <dlfcn.h>
-
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/module_loader.hpp"
 #include "core/output.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
@@ -23,57 +23,15 @@ namespace {
 using oiio::Sample;
 using oiio::Status;
 
-// The module's candidate paths, in order: LIBDIR/sigchain beside the running program's
-// bin folder (an installed copy, and the build tree's bin/), then the build tree's
-// folder (unit tests and benchmarks, whose programs live elsewhere in the build tree).
-// Both are fixed when sigchain is configured (CMakeLists.txt).
-std::vector<std::string> module_paths() {
-    std::vector<std::string> paths;
-    std::error_code ec;
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec)
-        paths.push_back((exe.parent_path() / SIGCHAIN_OIIO_MODULE_FROM_BINDIR /
-                         SIGCHAIN_OIIO_MODULE_NAME).lexically_normal().string());
-    paths.push_back(SIGCHAIN_OIIO_MODULE_BUILD_DIR "/" SIGCHAIN_OIIO_MODULE_NAME);
-    return paths;
-}
-
-struct Module {
-    const oiio::Api* api = nullptr;
-    std::string error;  // why api is null
-};
-
-// dlopens the first candidate that exists (the first one when none does, for dlerror's
-// message) and checks that it was built with this Api.
-Module load_module() {
-    const std::vector<std::string> paths = module_paths();
-    std::string path = paths.front();
-    std::error_code ec;
-    for (const std::string& p : paths)
-        if (std::filesystem::exists(p, ec)) {
-            path = p;
-            break;
-        }
-    const std::string failed = "cannot load the OpenImageIO module " + path + ": ";
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) return {nullptr, failed + dlerror()};
-    using Entry = const oiio::Api* (*)();
-    const auto entry = reinterpret_cast<Entry>(dlsym(handle, "sigchain_oiio_api"));
-    if (!entry) return {nullptr, failed + dlerror()};
-    const oiio::Api* api = entry();
-    if (!api || api->size != sizeof(oiio::Api) || api->version != oiio::kApiVersion)
-        return {nullptr, failed + "built for another interface (version " +
-                             std::to_string(api ? api->version : 0) + ", expected " +
-                             std::to_string(oiio::kApiVersion) + ")"};
-    return {api, {}};
-}
-
 // The module's functions, loaded once per process (thread-safe); IoError
 // "IMAGE: cannot load the OpenImageIO module PATH: REASON" when it cannot be loaded.
 const oiio::Api& module_for(const std::string& image_path) {
     static std::once_flag once;
-    static Module module;
-    std::call_once(once, [] { module = load_module(); });
+    static LoadedModule<oiio::Api> module;
+    std::call_once(once, [] {
+        module = load_module<oiio::Api>(SIGCHAIN_OIIO_MODULE_NAME, "sigchain_oiio_api",
+                                        "OpenImageIO", oiio::kApiVersion);
+    });
     if (!module.api) throw IoError(image_path + ": " + module.error);
     return *module.api;
 }

@@ -36,6 +36,10 @@ outside() {
         share/sigchain/data/atmosphere/lowtran7/aerosol_rural.txt; do
         [ -f "$p/$f" ] || fail "$f is not installed"
     done
+    # A build with MPI loads Open MPI through its module under a launcher.
+    if [ "${SIGCHAIN_MPI:-OFF}" = ON ]; then
+        [ -f "$p/lib/sigchain/sigchain_mpi.so" ] || fail "sigchain_mpi.so is not installed"
+    fi
 }
 
 @test "install: sigchain-config prints the installed folders and the version" {

@@ -18,7 +18,9 @@ inputs() {
 
 setup() {
     cd "$BATS_TEST_TMPDIR" || return 1
-    : "${SIGCHAIN_MPI:=$(ldd "$SIGCHAIN_BIN/trace" | grep -q libmpi && echo ON || echo OFF)}"
+    # A build with MPI has the module sigchain_mpi (lib/core/mpi_module.hpp).
+    local modules=("$SIGCHAIN_BIN"/../lib*/sigchain/sigchain_mpi.so)
+    : "${SIGCHAIN_MPI:=$([ -e "${modules[0]}" ] && echo ON || echo OFF)}"
     [ "$SIGCHAIN_MPI" = ON ] || skip "the build has no MPI (SIGCHAIN_MPI is off)"
     : "${SIGCHAIN_MPIEXEC:=mpirun}"
     # CI runs as root, which Open MPI refuses unless told.
@@ -130,4 +132,26 @@ mpi_trace() {
     assert_success
     run -0 cmp np3-1.rad one-1.rad
     run -0 cmp np3-2.rad one-2.rad
+}
+
+# Open MPI is loaded only when a launcher started the process: every MPI call is in the
+# module sigchain_mpi (lib/core/mpi_module.hpp), opened when the farm's Session starts.
+@test "no tool links MPI; an unloadable MPI module fails only a run under mpirun, naming it" {
+    run -0 readelf -d "$SIGCHAIN_BIN/trace" "$SIGCHAIN_BIN/therm" "$SIGCHAIN_BIN/build_radiance"
+    refute_output --partial libmpi
+    local modules=("$SIGCHAIN_BIN"/../lib*/sigchain/sigchain_mpi.so)
+    local rel=${modules[0]#"$SIGCHAIN_BIN/../"}
+    mkdir -p copy/bin "copy/$(dirname "$rel")"
+    cp "$SIGCHAIN_BIN/trace" copy/bin/
+    echo 'not a shared object' >"copy/$rel"
+    local m="$PWD/copy/$rel"
+    run -0 --separate-stderr copy/bin/trace -q $(inputs) -o one.img
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 2 \
+        copy/bin/trace -q $(inputs) -o np2.img
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
+    # dlerror() follows: "PATH: file too short" here.
+    [[ "$stderr" == *"trace: MPI: cannot load the MPI module $m: $m: "?* ]] ||
+        fail "stderr: $stderr"
+    [ ! -e np2.img ] && [ ! -e np2.hdr ]
+    assert_no_temp_files .
 }
