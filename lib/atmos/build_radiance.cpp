@@ -205,8 +205,8 @@ void unpack(const FarmBytes& bytes, SampleResult* r, long count) {
 // Returns false on an MPI worker, which has no results.
 // Sample i is solved with setups[setup_of[i]] (its band's streams).
 bool solve_samples(const std::vector<SampleSetup>& setups, const std::vector<std::size_t>& setup_of,
-                   const std::vector<double>& nus, const std::vector<const SampleResult*>& known,
-                   const Reporter& reporter, std::vector<SampleResult>& results) {
+                   const std::vector<double>& nus, const Reporter& reporter,
+                   std::vector<SampleResult>& results) {
     results.assign(nus.size(), {});
     const ProgressScope bar(reporter, "spectral samples");
     const auto solve = [&](long begin, long end, SampleResult* out,
@@ -214,7 +214,7 @@ bool solve_samples(const std::vector<SampleSetup>& setups, const std::vector<std
         const unsigned threads = setups.front().options.threads;
         parallel_for(end - begin, {threads, progress}, [&](long i, unsigned) {
             const auto k = static_cast<std::size_t>(begin + i);
-            out[i] = known[k] ? *known[k] : solve_sample(setups[setup_of[k]], nus[k]);
+            out[i] = solve_sample(setups[setup_of[k]], nus[k]);
         });
     };
     const long n = static_cast<long>(nus.size());
@@ -458,16 +458,9 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                           distance_factor, phase_moments(n), setup.deck, setup.mie});
         setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
     }
-    // --streams auto solved its probe samples with the band's setup already.
     const std::vector<double> nus = sample_wavenumbers(snd);
-    std::vector<const SampleResult*> known(nus.size(), nullptr);
-    for (std::size_t k = 0; k < nus.size(); ++k) {
-        const StreamChoice& c = rep.band_streams[setup_of[k]];
-        for (std::size_t p = 0; p < c.probe_results.size(); ++p)
-            if (c.probe_wavenumbers[p] == nus[k]) known[k] = &c.probe_results[p];
-    }
     std::vector<SampleResult> results;
-    if (!solve_samples(setups, setup_of, nus, known, reporter, results)) return {};
+    if (!solve_samples(setups, setup_of, nus, reporter, results)) return {};
 
     const Profile& prof = column.profile();
     const double height_km = prof.z_km[column.sensor_level()] - prof.bottom_km();

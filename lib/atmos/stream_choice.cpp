@@ -65,13 +65,17 @@ double coupling_difference(const SampleResult& a, const SampleResult& b) {
     return worst;
 }
 
-// The probes solved at `streams` (the setup's options copied with them). A probe's
-// preparation (its column, Mie functions and gas terms) serves every order with the
+// The probes solved at `streams` (the setup's options copied with them), each with one
+// equivalent gas depth (max_gas_terms 1): the difference between N and 2N streams is the
+// error of the scattering, which a sample's exponential-sum terms share, and one depth
+// is one column solve where the terms are several (2.2 per Hawkeye sample). A probe's
+// preparation (its column, Mie functions and gas depth) serves every order with the
 // same phase moments (every order up to kPhaseMoments): preps[p] is kept or remade.
 std::vector<SampleResult> solve_probes(const SampleSetup& base, const std::vector<double>& probes,
                                        int streams, std::vector<SamplePrep>& preps) {
     RadianceOptions o = base.options;
     o.streams = streams;
+    o.max_gas_terms = 1;
     SampleSetup s{base.column,
                   base.dirs,
                   base.solar,
@@ -146,7 +150,6 @@ StreamChoice choose_streams(const SampleSetup& setup, const std::vector<double>&
         choice.check_streams = 2 * n;
         choice.estimated_error = kErrorPerDifference * worst;
         choice.within_tolerance = choice.estimated_error <= tolerance;
-        choice.probe_results = low;
         if (choice.within_tolerance) break;
         solved.erase(n);  // no longer needed: the next comparisons are of higher orders
     }

@@ -2,7 +2,8 @@
 // entries its tables hold (man build_radiance(1), STREAMS). Internal to lib/atmos.
 //
 // The rule: for N = 4, 6, 8, 12, 16, 24, 32 in turn, the band's probe samples (its
-// centre sample and its most scattering one) are solved with N and with 2N streams;
+// centre sample and its most scattering one) are solved, each with one equivalent gas
+// depth, with N and with 2N streams;
 // N's error is estimated as twice the largest relative difference of its tables from
 // 2N's (an error falling at least as 1/N: stream_choice.cpp), and the first N whose
 // estimate is within the tolerance is the band's (the estimate is checked against 32
@@ -27,9 +28,6 @@ struct StreamChoice {
     double estimated_error = 0;             // twice the largest table_difference from 2N
     bool within_tolerance = true;           // false: no candidate agreed; the largest is used
     std::vector<double> probe_wavenumbers;  // cm-1, the samples compared
-    // The probes solved at `streams`: the same as the band's own solve of those samples
-    // (the same setup), so build_radiance takes them instead of solving them again.
-    std::vector<SampleResult> probe_results;
 };
 
 // The band's probe samples (cm-1): its centre sample and the sample with the largest
