@@ -178,6 +178,46 @@ struct BareResult {
     double cpu_seconds = 0;  // CPU time of all threads
 };
 
+// The result of a loop started at t0 (wall) and c0 (CPU seconds) that cast `rays`.
+BareResult finish(Clock::time_point t0, double c0, std::uint64_t rays) {
+    BareResult out;
+    out.seconds = seconds_since(t0);
+    out.cpu_seconds = cpu_seconds() - c0;
+    out.rays = rays;
+    return out;
+}
+
+// A hit's golf-ball frame (golfball.hpp): the normal n, x and y across it, and the
+// rotation (cos, sin) that turns azimuth 0 to the mirror direction of the view d.
+struct GolfFrame {
+    geo::Vec3 n, x, y;
+    double cr = 1, sr = 0;
+};
+
+GolfFrame golf_frame(const geo::Vec3& n, const geo::Vec3& d) {
+    GolfFrame f;
+    f.n = n;
+    f.x = geo::cross({0, 0, 1}, n);
+    f.x = geo::dot(f.x, f.x) < 1e-12 ? geo::Vec3{1, 0, 0} : geo::unit(f.x);
+    f.y = geo::cross(n, f.x);
+    const double dn = geo::dot(d, n);
+    const geo::Vec3 m{d[0] - 2 * dn * n[0], d[1] - 2 * dn * n[1], d[2] - 2 * dn * n[2]};
+    const double phi0 = std::atan2(geo::dot(m, f.y), geo::dot(m, f.x));
+    f.cr = std::cos(phi0);
+    f.sr = std::sin(phi0);
+    return f;
+}
+
+// Golf-ball ray g of the frame f, in world coordinates.
+geo::Vec3 golf_direction(const trace::GolfRay& g, const GolfFrame& f) {
+    const double cp = g.cos_phi * f.cr - g.sin_phi * f.sr;
+    const double sp = g.sin_phi * f.cr + g.cos_phi * f.sr;
+    geo::Vec3 w;
+    for (int a = 0; a < 3; ++a)
+        w[a] = g.sin_theta * (cp * f.x[a] + sp * f.y[a]) + g.cos_theta * f.n[a];
+    return w;
+}
+
 // Casts `primary` rays through the pixels (spp per pixel, jittered), then spreads
 // `hemisphere` intersection rays (random upward directions) and `shadow` occlusion
 // rays (toward the sun) evenly over the primary hits.
@@ -231,11 +271,7 @@ BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint
                 rtcOccluded1(b.top, &ctx, &rh.ray);
             }
         });
-    BareResult out;
-    out.seconds = seconds_since(t0);
-    out.cpu_seconds = cpu_seconds() - c0;
-    out.rays = primary + hemisphere + shadow;
-    return out;
+    return finish(t0, c0, primary + hemisphere + shadow);
 }
 
 // World-space unit normal of a hit, turned toward the ray direction `d` (trees are
@@ -291,19 +327,9 @@ BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::
             rtcOccluded1(b.top, &ctx, &sr.ray);
             ++rays;
         }
-        geo::Vec3 x = geo::cross({0, 0, 1}, n);
-        x = geo::dot(x, x) < 1e-12 ? geo::Vec3{1, 0, 0} : geo::unit(x);
-        const geo::Vec3 y = geo::cross(n, x);
-        const double dn = geo::dot(d, n);
-        const geo::Vec3 m{d[0] - 2 * dn * n[0], d[1] - 2 * dn * n[1], d[2] - 2 * dn * n[2]};
-        const double phi0 = std::atan2(geo::dot(m, y), geo::dot(m, x));
-        const double cr = std::cos(phi0), sr0 = std::sin(phi0);
+        const GolfFrame frame = golf_frame(n, d);
         for (const trace::GolfRay& g : golf) {
-            const double cp = g.cos_phi * cr - g.sin_phi * sr0;
-            const double sp = g.sin_phi * cr + g.cos_phi * sr0;
-            geo::Vec3 w;
-            for (int a = 0; a < 3; ++a)
-                w[a] = g.sin_theta * (cp * x[a] + sp * y[a]) + g.cos_theta * n[a];
+            const geo::Vec3 w = golf_direction(g, frame);
             RTCRayHit hr = make_ray(o, w, 0.0f);
             rtcIntersect1(b.top, &ctx, &hr);
             ++rays;
@@ -318,11 +344,7 @@ BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::
         }
         total += rays;
     });
-    BareResult out;
-    out.seconds = seconds_since(t0);
-    out.cpu_seconds = cpu_seconds() - c0;
-    out.rays = total;
-    return out;
+    return finish(t0, c0, total);
 }
 
 // The same rays cast as a wavefront would: 8 neighbouring pixels of a row at a time, so
@@ -380,8 +402,8 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
             return one;
         };
         // Primary rays.
-        geo::Vec3 d[kLanes], o[kLanes], n[kLanes], x[kLanes], y[kLanes];
-        double cr[kLanes], sr0[kLanes];
+        geo::Vec3 d[kLanes], o[kLanes];
+        GolfFrame frame[kLanes];
         bool lane_hit[kLanes] = {};
         for (int l = 0; l < kLanes; ++l) {
             const std::size_t p = group * kLanes + l;
@@ -402,23 +424,15 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
             shadow_valid[l] = 0;
             if (!valid[l] || rh.hit.geomID[l] == RTC_INVALID_GEOMETRY_ID) continue;
             lane_hit[l] = true;
-            n[l] = hit_normal(hit_of(l), trees, d[l]);
+            const geo::Vec3 n = hit_normal(hit_of(l), trees, d[l]);
             for (int a = 0; a < 3; ++a)
-                o[l][a] = cam.position[a] + rh.ray.tfar[l] * d[l][a] + eps * n[l][a];
-            if (geo::dot(n[l], sun) > 0) {
+                o[l][a] = cam.position[a] + rh.ray.tfar[l] * d[l][a] + eps * n[a];
+            if (geo::dot(n, sun) > 0) {
                 set(sr, l, o[l], sun);
                 shadow_valid[l] = -1;
                 ++rays;
             }
-            x[l] = geo::cross({0, 0, 1}, n[l]);
-            x[l] = geo::dot(x[l], x[l]) < 1e-12 ? geo::Vec3{1, 0, 0} : geo::unit(x[l]);
-            y[l] = geo::cross(n[l], x[l]);
-            const double dn = geo::dot(d[l], n[l]);
-            const geo::Vec3 m{d[l][0] - 2 * dn * n[l][0], d[l][1] - 2 * dn * n[l][1],
-                              d[l][2] - 2 * dn * n[l][2]};
-            const double phi0 = std::atan2(geo::dot(m, y[l]), geo::dot(m, x[l]));
-            cr[l] = std::cos(phi0);
-            sr0[l] = std::sin(phi0);
+            frame[l] = golf_frame(n, d[l]);
         }
         occluded(shadow_valid, b.top, &ctx, &sr);
         // The i-th golf-ball ray of every hit, then the shadow rays from their hits.
@@ -427,11 +441,7 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
             for (int l = 0; l < kLanes; ++l) {
                 valid[l] = lane_hit[l] ? -1 : 0;
                 if (!lane_hit[l]) continue;
-                const double cp = g.cos_phi * cr[l] - g.sin_phi * sr0[l];
-                const double sp = g.sin_phi * cr[l] + g.cos_phi * sr0[l];
-                for (int a = 0; a < 3; ++a)
-                    w[l][a] =
-                        g.sin_theta * (cp * x[l][a] + sp * y[l][a]) + g.cos_theta * n[l][a];
+                w[l] = golf_direction(g, frame[l]);
                 set(rh.ray, l, o[l], w[l]);
                 rh.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
                 rh.hit.instID[0][l] = RTC_INVALID_GEOMETRY_ID;
@@ -454,11 +464,7 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
         }
         total += rays;
     });
-    BareResult out;
-    out.seconds = seconds_since(t0);
-    out.cpu_seconds = cpu_seconds() - c0;
-    out.rays = total;
-    return out;
+    return finish(t0, c0, total);
 }
 
 }  // namespace
