@@ -458,9 +458,8 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                           distance_factor, phase_moments(n), setup.deck, setup.mie});
         setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
     }
-    const std::vector<double> nus = sample_wavenumbers(snd);
     std::vector<SampleResult> results;
-    if (!solve_samples(setups, setup_of, nus, reporter, results)) return {};
+    if (!solve_samples(setups, setup_of, sample_wavenumbers(snd), reporter, results)) return {};
 
     const Profile& prof = column.profile();
     const double height_km = prof.z_km[column.sensor_level()] - prof.bottom_km();

@@ -84,9 +84,7 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
 }
 
 std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double wavelength_um) const {
-    if (!m_mie) return std::nullopt;
-    // LOWTRAN 7's Mie tables belong to its own models, not to CARD 2D's coefficients.
-    if (m_user_region[static_cast<std::size_t>(region)]) return std::nullopt;
+    if (!has_mie_phase(region, wavelength_um)) return std::nullopt;
     return m_mie->region(region, m_ihaze, m_ivulcn, m_aerosol->boundary_layer_rh_percent(),
                          wavelength_um);
 }
@@ -109,6 +107,7 @@ void split_mie(const AerosolLayerOptics& a, const std::array<bool, 4>& has, Laye
 
 }  // namespace
 
+// LOWTRAN 7's Mie tables belong to its own models, not to CARD 2D's coefficients.
 bool ColumnModel::has_mie_phase(int region, double wavelength_um) const {
     return m_mie && !m_user_region[static_cast<std::size_t>(region)] &&
            m_mie->has_region(region, m_ihaze, wavelength_um);

@@ -53,10 +53,6 @@ std::size_t hg_index(std::vector<double>& gs, double g) {
     return gs.size() - 1;
 }
 
-}  // namespace
-
-namespace {
-
 // MieOptics's grid angles (deg), capped at 180.
 const std::vector<double>& grid_angles() {
     static const std::vector<double> angles = [] {

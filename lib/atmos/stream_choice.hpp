@@ -3,11 +3,11 @@
 //
 // The rule: for N = 4, 6, 8, 12, 16, 24, 32 in turn, the band's probe samples (its
 // centre sample and its most scattering one) are solved, each with one equivalent gas
-// depth, with N and with 2N streams;
-// N's error is estimated as twice the largest relative difference of its tables from
-// 2N's (an error falling at least as 1/N: stream_choice.cpp), and the first N whose
-// estimate is within the tolerance is the band's (the estimate is checked against 32
-// streams in tests/unit/atmos/stream_choice_test.cpp).
+// depth, with N and with 2N streams; N's error is estimated as twice the largest
+// relative difference of its tables from 2N's (an error falling at least as 1/N:
+// stream_choice.cpp), and the first N whose estimate is within the tolerance is the
+// band's (the estimate is checked against 32 streams in
+// tests/unit/atmos/stream_choice_test.cpp).
 #pragma once
 
 #include <array>
