@@ -62,6 +62,91 @@ ExpSum single_term(double a, double x) {
     return s;
 }
 
+// A fit's range and sample points: [lo, hi] is [x_lo, x_hi] clipped to where the band
+// model is more than tol / 10 from 1 and from 0; `single` is set where one term is the
+// fit (the model transparent or opaque over the range, or nothing left after the
+// clip). x: kPoints points evenly spaced in log x over [lo, hi]; model: exp(-x^a) there.
+struct FitRange {
+    double lo = 0, hi = 0;
+    bool single = false;
+    ExpSum single_fit;
+    std::vector<double> x, model;
+};
+
+FitRange fit_range(double a, double x_lo, double x_hi, double tol) {
+    if (!(a > 0 && a <= 1) || !(x_lo >= 0 && x_hi > x_lo) || !(tol > 0 && tol < 1))
+        throw std::invalid_argument("fit_band_model: bad arguments");
+    FitRange r;
+    r.lo = std::max(x_lo, std::pow(-std::log1p(-kClip * tol), 1 / a));
+    r.hi = std::min(x_hi, std::pow(-std::log(kClip * tol), 1 / a));
+    r.single = true;
+    if (band_model(a, x_hi) >= 1 - tol)
+        r.single_fit = single_term(a, x_hi);  // transparent
+    else if (band_model(a, x_lo) <= tol)
+        r.single_fit = single_term(a, x_lo);  // opaque
+    else if (!(r.hi > r.lo))
+        r.single_fit = single_term(a, r.lo);
+    else
+        r.single = false;
+    if (r.single) return r;
+    r.x.resize(kPoints);
+    r.model.resize(kPoints);
+    for (int p = 0; p < kPoints; ++p) {
+        r.x[p] = r.lo * std::pow(r.hi / r.lo, static_cast<double>(p) / (kPoints - 1));
+        r.model[p] = band_model(a, r.x[p]);
+    }
+    return r;
+}
+
+// The fit with `terms` candidate k_i over the range r (not single) of [x_lo, ...].
+ExpSum fit_terms(double a, double x_lo, const FitRange& r, int terms) {
+    if (terms < 1 || terms > 32) throw std::invalid_argument("fit_band_model: bad arguments");
+    const double lo = r.lo, hi = r.hi;
+    // Where the range starts inside the band model's drop (x_lo above the clip), an
+    // opaque term (exp(-k x_lo) = exp(-20)) holds the weight that vanishes before x_lo,
+    // so the weights still sum to 1 (a Planck source must keep its full weight).
+    const bool opaque = lo == x_lo && x_lo > 0;
+    const auto n = static_cast<std::size_t>(terms);
+    std::vector<double> k(n);
+    // The k_i: from the slowest decay the tail at hi needs (exp(-k x) matches the band
+    // model at x for k = x^(a - 1)) to the fastest the drop at lo needs (k ~ 1 / lo),
+    // widened by kWiden at both ends; one term matches the middle of the range.
+    const double k_lo = std::pow(hi, a - 1) / kWiden, k_hi = kWiden / lo;
+    for (std::size_t i = 0; i < n; ++i)
+        k[i] = n == 1 ? std::pow(std::sqrt(lo * hi), a - 1)  // matched mid-range
+                      : k_lo * std::pow(k_hi / k_lo, static_cast<double>(i) / (n - 1));
+    if (opaque) k.push_back(kOpaqueDepth / x_lo);
+    const std::size_t n_all = k.size();
+    const std::size_t rows = kPoints + 1;
+    std::vector<double> mat(rows * n_all), rhs(rows);
+    for (int p = 0; p < kPoints; ++p) {
+        rhs[p] = r.model[p];
+        for (std::size_t i = 0; i < n_all; ++i) mat[p * n_all + i] = std::exp(-k[i] * r.x[p]);
+    }
+    for (std::size_t i = 0; i < n_all; ++i) mat[kPoints * n_all + i] = kSumRowWeight;
+    rhs[kPoints] = kSumRowWeight;
+    const std::vector<double> w = nnls(mat, rhs, rows, n_all);
+    ExpSum s;
+    std::vector<std::size_t> kept;
+    double total = 0;
+    for (std::size_t i = 0; i < n_all; ++i)
+        if (w[i] > 0) {
+            s.weight.push_back(w[i]);
+            s.k.push_back(k[i]);
+            kept.push_back(i);
+            total += w[i];
+        }
+    for (double& v : s.weight) v /= total;  // exactly 1 (the row held it within ~1e-6)
+    // The sum at each point (ExpSum::operator(), its exponentials taken from the matrix).
+    for (int p = 0; p < kPoints; ++p) {
+        double t = 0;
+        for (std::size_t j = 0; j < kept.size(); ++j)
+            t += s.weight[j] * mat[p * n_all + kept[j]];
+        s.max_error = std::max(s.max_error, std::abs(t - r.model[p]));
+    }
+    return s;
+}
+
 }  // namespace
 
 double ExpSum::operator()(double x) const {
@@ -122,58 +207,19 @@ std::vector<double> nnls(const std::vector<double>& a, const std::vector<double>
 }
 
 ExpSum fit_band_model_terms(double a, double x_lo, double x_hi, double tol, int terms) {
-    if (!(a > 0 && a <= 1) || !(x_lo >= 0 && x_hi > x_lo) || !(tol > 0 && tol < 1) || terms < 1 ||
-        terms > 32)
-        throw std::invalid_argument("fit_band_model: bad arguments");
-    // Clip to where the band model is more than tol / 10 from 1 and from 0.
-    const double lo = std::max(x_lo, std::pow(-std::log1p(-kClip * tol), 1 / a));
-    const double hi = std::min(x_hi, std::pow(-std::log(kClip * tol), 1 / a));
-    if (band_model(a, x_hi) >= 1 - tol) return single_term(a, x_hi);  // transparent
-    if (band_model(a, x_lo) <= tol) return single_term(a, x_lo);      // opaque
-    if (!(hi > lo)) return single_term(a, lo);
-    // Where the range starts inside the band model's drop (x_lo above the clip), an
-    // opaque term (exp(-k x_lo) = exp(-20)) holds the weight that vanishes before x_lo,
-    // so the weights still sum to 1 (a Planck source must keep its full weight).
-    const bool opaque = lo == x_lo && x_lo > 0;
-    const auto n = static_cast<std::size_t>(terms);
-    std::vector<double> k(n);
-    // The k_i: from the slowest decay the tail at hi needs (exp(-k x) matches the band
-    // model at x for k = x^(a - 1)) to the fastest the drop at lo needs (k ~ 1 / lo),
-    // widened by kWiden at both ends; one term matches the middle of the range.
-    const double k_lo = std::pow(hi, a - 1) / kWiden, k_hi = kWiden / lo;
-    for (std::size_t i = 0; i < n; ++i)
-        k[i] = n == 1 ? std::pow(std::sqrt(lo * hi), a - 1)  // matched mid-range
-                      : k_lo * std::pow(k_hi / k_lo, static_cast<double>(i) / (n - 1));
-    if (opaque) k.push_back(kOpaqueDepth / x_lo);
-    const std::size_t n_all = k.size();
-    const std::size_t rows = kPoints + 1;
-    std::vector<double> xs(kPoints), mat(rows * n_all), rhs(rows);
-    for (int p = 0; p < kPoints; ++p) {
-        xs[p] = lo * std::pow(hi / lo, static_cast<double>(p) / (kPoints - 1));
-        rhs[p] = band_model(a, xs[p]);
-        for (std::size_t i = 0; i < n_all; ++i) mat[p * n_all + i] = std::exp(-k[i] * xs[p]);
-    }
-    for (std::size_t i = 0; i < n_all; ++i) mat[kPoints * n_all + i] = kSumRowWeight;
-    rhs[kPoints] = kSumRowWeight;
-    const std::vector<double> w = nnls(mat, rhs, rows, n_all);
-    ExpSum s;
-    double total = 0;
-    for (std::size_t i = 0; i < n_all; ++i)
-        if (w[i] > 0) {
-            s.weight.push_back(w[i]);
-            s.k.push_back(k[i]);
-            total += w[i];
-        }
-    for (double& v : s.weight) v /= total;  // exactly 1 (the row held it within ~1e-6)
-    for (double x : xs) s.max_error = std::max(s.max_error, std::abs(s(x) - band_model(a, x)));
-    return s;
+    if (terms < 1 || terms > 32) throw std::invalid_argument("fit_band_model: bad arguments");
+    const FitRange r = fit_range(a, x_lo, x_hi, tol);
+    return r.single ? r.single_fit : fit_terms(a, x_lo, r, terms);
 }
 
+// The range and its points are the same for every number of terms: made once.
 ExpSum fit_band_model(double a, double x_lo, double x_hi, double tol, int max_terms) {
     if (max_terms < 1) throw std::invalid_argument("fit_band_model: bad arguments");
+    const FitRange r = fit_range(a, x_lo, x_hi, tol);
+    if (r.single) return r.single_fit;
     ExpSum best;
     for (int n = 1; n <= max_terms; ++n) {
-        best = fit_band_model_terms(a, x_lo, x_hi, tol, n);
+        best = fit_terms(a, x_lo, r, n);
         if (best.max_error <= (1 - kClip) * tol) break;
     }
     return best;

@@ -134,23 +134,27 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
         double scat = 0;
         for (double v : sc) scat += v;
         l.ssa = l.tau > 0 ? std::clamp(scat / l.tau, 0.0, 1.0) : 0.0;
-        l.pmom.assign(static_cast<std::size_t>(moments) + 1, 0.0);
-        for (int k = 0; k <= moments; ++k) {
-            double m = 0;
-            for (std::size_t c = 0; c < sc.size(); ++c) {
-                if (sc[c] == 0) continue;
-                double chi = 0;
-                if (c == 0)
-                    chi = k < 3 ? rayleigh[k] : 0.0;
-                else if (c < kHg0)
-                    chi = k < static_cast<int>(mie.chi[c - kMie0].size()) ? mie.chi[c - kMie0][k]
-                                                                          : 0.0;
-                else
-                    chi = hg_moment(c - kHg0, k);
-                m += sc[c] * chi;
+        // Moment k sums scattering x chi_k over the components in component order; the
+        // components are taken one at a time, each over every moment.
+        std::vector<double>& pm = l.pmom;
+        pm.assign(static_cast<std::size_t>(moments) + 1, 0.0);
+        for (std::size_t c = 0; c < sc.size(); ++c) {
+            if (sc[c] == 0) continue;
+            const double w = sc[c];
+            if (c == 0) {
+                for (int k = 0; k <= moments; ++k) pm[k] += w * (k < 3 ? rayleigh[k] : 0.0);
+            } else if (c < kHg0) {
+                const std::vector<double>& chi = mie.chi[c - kMie0];
+                const int n = static_cast<int>(chi.size());
+                for (int k = 0; k <= moments; ++k) pm[k] += w * (k < n ? chi[k] : 0.0);
+            } else {
+                hg_moment(c - kHg0, 0);  // made on first use
+                const std::vector<double>& chi = hg_moments[c - kHg0];
+                for (int k = 0; k <= moments; ++k) pm[k] += w * chi[k];
             }
-            l.pmom[k] = scat > 0 ? m / scat : (k == 0 ? 1.0 : 0.0);
         }
+        for (int k = 0; k <= moments; ++k)
+            pm[k] = scat > 0 ? pm[k] / scat : (k == 0 ? 1.0 : 0.0);
         for (double& v : sc) v = scat > 0 ? v / scat : 0.0;
         scat_c.push_back(std::move(sc));
         out.push_back(std::move(l));

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "core/vector_clones.hpp"
 #include "rt/quadrature.hpp"
 
 namespace sigchain::atmos {
@@ -139,6 +140,7 @@ const MomentNodes& moment_nodes(const std::vector<double>& angle_deg, int nmom, 
 
 }  // namespace
 
+SIGCHAIN_VECTOR_CLONES
 std::vector<double> phase_moments(const TabulatedPhase& p, int nmom, double* integral,
                                   int gauss_points) {
     const MomentNodes& m = moment_nodes(p.angle_deg, nmom, gauss_points);

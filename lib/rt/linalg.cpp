@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/vector_clones.hpp"
+
 namespace sigchain::rt::linalg {
 
 bool cholesky(double* a, int n) {
@@ -74,6 +76,7 @@ void tridiagonalize(double* a, int n, double* q) {
 // (e[i] couples i and i + 1), chasing the bulge down with Givens rotations
 // G = [[c, s], [-s, c]] (T <- G^T T G). The rotations update the rows of Q^T, which are
 // contiguous, and Q^T is transposed back into v at the end.
+SIGCHAIN_VECTOR_CLONES
 void symmetric_eigen(double* a, int n, double* eval, double* v) {
     tridiagonalize(a, n, v);
     double d[128], e[128], qt[128 * 128];
@@ -219,6 +222,7 @@ bool BandMatrix::factor() {
     return true;
 }
 
+SIGCHAIN_VECTOR_CLONES
 void BandMatrix::solve(double* b) const {
     auto get = [&](int r, int c) { return m_ab[index(r, c)]; };
     for (int j = 0; j < m_n; ++j) {
