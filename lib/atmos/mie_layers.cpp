@@ -88,7 +88,9 @@ MieOptics mie_optics(const std::array<std::optional<TabulatedPhase>, 4>& regions
         if (!p) continue;
         m.has[r] = true;
         double integral = 0;
-        m.chi[r] = phase_moments(*p, nmom, &integral, nmom <= 64 ? 16 : 64);
+        // The fewest points per interval for the moments asked (mie_phase.hpp).
+        const int points = nmom <= 32 ? 8 : nmom <= 64 ? 16 : 64;
+        m.chi[r] = phase_moments(*p, nmom, &integral, points);
         const double scale = 4 * kPi / integral;  // average over the sphere 1
         m.grid[r].resize(n + 1);
         p->at_ascending(grid_angles(), m.grid[r].data());

@@ -163,6 +163,27 @@ TEST(MiePhase, SixteenPointRuleSufficesForSixtyFourMoments) {
     }
 }
 
+// build_radiance's moments (32 and fewer) take 8 points per interval: against the
+// 64-point rule over all 70 functions the moments differ by at most 1.6e-7 and the
+// integral by 6.3e-7 of itself (function 48, measured), so 3e-7 and 1e-6. The Hawkeye
+// deck's tables (one line of sight) move by 2.3e-9 at most: far below the 1 %
+// --streams auto allows, for 5 % fewer instructions in the run.
+TEST(MiePhase, EightPointRuleSufficesForThirtyTwoMoments) {
+    double worst = 0;
+    for (int n = 1; n <= 70; ++n) {
+        const TabulatedPhase p = table().function(n);
+        double i64 = 0, i8 = 0;
+        const auto a = phase_moments(p, 32, &i64);
+        const auto b = phase_moments(p, 32, &i8, 8);
+        EXPECT_NEAR(i8, i64, 1e-6 * i64) << n;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            EXPECT_NEAR(b[k], a[k], 3e-7) << n << " " << k;
+            worst = std::max(worst, std::abs(b[k] - a[k]));
+        }
+    }
+    EXPECT_GT(worst, 1e-9);  // a different rule indeed (not the 64-point one by mistake)
+}
+
 // The Legendre series of the truncated function, times (1 - f), against the table
 // (renormalised) at every tabulated angle outside the 16-deg cone, for all 70
 // functions with 512 moments: within 1 %, except five functions whose sharp glory
