@@ -147,41 +147,40 @@ TEST(MiePhase, DamagedTablesNameTheirLine) {
     fs::remove_all(dir);
 }
 
-// The 16-point rule per interval (build_radiance's, for up to 64 moments) against the
-// 64-point one, for all 70 functions as tabulated (forward peak included): a Gauss rule
+// A shorter rule's moments and integral against the 64-point rule's, for all 70
+// functions as tabulated (forward peak included); returns the largest moment difference.
+double rule_difference(int nmom, int points, double moment_tol, double integral_tol) {
+    double worst = 0;
+    for (int n = 1; n <= 70; ++n) {
+        const TabulatedPhase p = table().function(n);
+        double i64 = 0, ip = 0;
+        const auto a = phase_moments(p, nmom, &i64);
+        const auto b = phase_moments(p, nmom, &ip, points);
+        EXPECT_NEAR(ip, i64, integral_tol * i64) << n;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            EXPECT_NEAR(b[k], a[k], moment_tol) << n << " " << k;
+            worst = std::max(worst, std::abs(b[k] - a[k]));
+        }
+    }
+    return worst;
+}
+
+// The 16-point rule per interval (build_radiance's for 33 to 64 moments): a Gauss rule
 // of 16 points integrates polynomials of degree 31 exactly, and over the widest
 // interval (10 deg) P_64 and ln-linear P are far smoother than that, so they agree
 // to rounding: 1e-12.
 TEST(MiePhase, SixteenPointRuleSufficesForSixtyFourMoments) {
-    for (int n = 1; n <= 70; ++n) {
-        const TabulatedPhase p = table().function(n);
-        double i64 = 0, i16 = 0;
-        const auto a = phase_moments(p, 64, &i64);
-        const auto b = phase_moments(p, 64, &i16, 16);
-        EXPECT_NEAR(i16, i64, 1e-12 * i64) << n;
-        for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(b[k], a[k], 1e-12) << n << " " << k;
-    }
+    rule_difference(64, 16, 1e-12, 1e-12);
 }
 
-// build_radiance's moments (32 and fewer) take 8 points per interval: against the
-// 64-point rule over all 70 functions the moments differ by at most 1.6e-7 and the
-// integral by 6.3e-7 of itself (function 48, measured), so 3e-7 and 1e-6. The Hawkeye
-// deck's tables (one line of sight) move by 2.3e-9 at most: far below the 1 %
-// --streams auto allows, for 5 % fewer instructions in the run.
+// build_radiance's moments (32 and fewer) take 8 points per interval: the moments
+// differ by at most 1.6e-7 and the integral by 6.3e-7 of itself (function 48,
+// measured), so 3e-7 and 1e-6. The Hawkeye deck's tables (one line of sight) move by
+// 2.3e-9 at most: far below the 1 % --streams auto allows, for 5 % fewer instructions
+// in the run.
 TEST(MiePhase, EightPointRuleSufficesForThirtyTwoMoments) {
-    double worst = 0;
-    for (int n = 1; n <= 70; ++n) {
-        const TabulatedPhase p = table().function(n);
-        double i64 = 0, i8 = 0;
-        const auto a = phase_moments(p, 32, &i64);
-        const auto b = phase_moments(p, 32, &i8, 8);
-        EXPECT_NEAR(i8, i64, 1e-6 * i64) << n;
-        for (std::size_t k = 0; k < a.size(); ++k) {
-            EXPECT_NEAR(b[k], a[k], 3e-7) << n << " " << k;
-            worst = std::max(worst, std::abs(b[k] - a[k]));
-        }
-    }
-    EXPECT_GT(worst, 1e-9);  // a different rule indeed (not the 64-point one by mistake)
+    // A different rule indeed (not the 64-point one by mistake).
+    EXPECT_GT(rule_difference(32, 8, 3e-7, 1e-6), 1e-9);
 }
 
 // The Legendre series of the truncated function, times (1 - f), against the table
