@@ -29,6 +29,12 @@ setup() {
     export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
 }
 
+# The last run exited 0; else the test fails with its status and standard error (where
+# mpirun and the ranks say why; assert_success shows standard output only).
+assert_ran() {
+    [ "$status" -eq 0 ] || fail "status $status: $stderr"
+}
+
 # mpi_trace NP ARGS...: trace under mpirun with NP ranks, at most 60 s.
 mpi_trace() {
     local np="$1"
@@ -41,10 +47,10 @@ mpi_trace() {
     run -0 --separate-stderr trace -q --threads 2 $(inputs) --truth truth.img -o one.img
     mkdir np2 np3
     mpi_trace 2 -q --threads 1 $(inputs) --truth np2/truth.img -o np2/one.img
-    assert_success
+    assert_ran
     assert_equal "$stderr" ''
     mpi_trace 3 -q --threads 2 $(inputs) --truth np3/truth.img -o np3/one.img
-    assert_success
+    assert_ran
     for d in np2 np3; do
         run -0 cmp "$d/one.img" one.img
         run -0 cmp "$d/truth.img" truth.img
@@ -57,7 +63,7 @@ mpi_trace() {
 @test "mpirun -np 3 -v: 2 workers share 8 tiles (4 per worker); uneven tiles of 16 rows" {
     mkdir np3
     mpi_trace 3 -v --threads 1 $(inputs) -o np3/one.img
-    assert_success
+    assert_ran
     [[ "$stderr" == *"trace: MPI: 2 worker(s), 8 tiles of about 2 rows"* ]] || fail "$stderr"
     run -0 --separate-stderr trace -q $(inputs) -o one.img
     run -0 cmp np3/one.img one.img
@@ -66,7 +72,7 @@ mpi_trace() {
 @test "mpirun with --tile: the part is farmed and records its rows" {
     mkdir mpi
     mpi_trace 2 -q $(inputs) --tile 2/3 -o mpi/part2.img
-    assert_success
+    assert_ran
     run -0 --separate-stderr trace -q $(inputs) --tile 2/3 -o part2.img
     run -0 cmp mpi/part2.img part2.img
     run -0 cmp mpi/part2.hdr part2.hdr
@@ -100,7 +106,7 @@ mpi_trace() {
     run -0 --separate-stderr therm -q "${in[@]}" -o one.tmp
     run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
         "$SIGCHAIN_BIN/therm" -q --threads 1 "${in[@]}" -o np3.tmp
-    assert_success
+    assert_ran
     assert_equal "$stderr" ''
     run -0 cmp np3.tmp one.tmp
     # Standard input is read by rank 0 alone: refused.
@@ -119,7 +125,7 @@ mpi_trace() {
     run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
         "$SIGCHAIN_BIN/trace" --shadow-history -q --threads 1 --points-per-facet 4 "${in[@]}" \
         -o np3.shd
-    assert_success
+    assert_ran
     run -0 cmp np3.shd one.shd
 }
 
@@ -129,7 +135,7 @@ mpi_trace() {
     run -0 --separate-stderr build_radiance -q "${quick[@]}" "${in[@]}" -o 'one-%d.rad'
     run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
         "$SIGCHAIN_BIN/build_radiance" -q --threads 1 "${quick[@]}" "${in[@]}" -o 'np3-%d.rad'
-    assert_success
+    assert_ran
     run -0 cmp np3-1.rad one-1.rad
     run -0 cmp np3-2.rad one-2.rad
 }
