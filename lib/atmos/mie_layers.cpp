@@ -110,12 +110,12 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
     std::vector<rt::Layer> out;
     std::vector<std::vector<double>> scat_c;  // per output layer: scattering per component
     std::vector<std::vector<double>> hg_moments;  // g^k of each Henyey-Greenstein component
-    auto hg_moment = [&](std::size_t h, int k) {
+    auto hg_chi = [&](std::size_t h) -> const std::vector<double>& {  // made on first use
         for (std::size_t n = hg_moments.size(); n <= h; ++n) {
             hg_moments.emplace_back();
             for (int j = 0; j <= moments; ++j) hg_moments[n].push_back(std::pow(comp->hg_g[n], j));
         }
-        return hg_moments[h][static_cast<std::size_t>(k)];
+        return hg_moments[h];
     };
     for (std::size_t i = kept.size() - 1; i-- > 0;) {
         rt::Layer l;
@@ -150,8 +150,7 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
                 const int n = static_cast<int>(chi.size());
                 for (int k = 0; k <= moments; ++k) pm[k] += w * (k < n ? chi[k] : 0.0);
             } else {
-                hg_moment(c - kHg0, 0);  // made on first use
-                const std::vector<double>& chi = hg_moments[c - kHg0];
+                const std::vector<double>& chi = hg_chi(c - kHg0);
                 for (int k = 0; k <= moments; ++k) pm[k] += w * chi[k];
             }
         }

@@ -1,6 +1,6 @@
 // SIGCHAIN_VECTOR_CLONES: a hot numerical function compiled twice, for AVX2 and for
-// the x86-64 baseline (SSE2), the loader picking one by the CPU (GCC's and Clang's
-// target_clones, through glibc's ifunc). The clones give the same bits: AVX2 without
+// the x86-64 baseline (SSE2), the loader picking one by the CPU (GCC's target_clones,
+// through glibc's ifunc; Clang 14 accepts the attribute but may not clone). The clones give the same bits: AVX2 without
 // FMA only widens element-wise loops (4 doubles a step instead of 2); no sum is
 // reordered (no -ffast-math) and no multiply-add is fused (FMA is not enabled).
 // Elsewhere the attribute is empty.
