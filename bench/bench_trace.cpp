@@ -187,6 +187,20 @@ BareResult finish(Clock::time_point t0, double c0, std::uint64_t rays) {
     return out;
 }
 
+// What the golf-ball loops share: the sun, the golf-ball rays (matrix 0), the offset off
+// a hit (1e-6 of the scene's extent, as render() does), the rays cast so far, and the
+// clocks, started when the loop is made.
+struct GolfLoop {
+    explicit GolfLoop(double extent) : eps(1e-6 * extent) {}
+    const geo::Vec3 sun = geo::direction_from_degrees(kSunZenithDeg, kSunAzimuthDeg);
+    const std::vector<trace::GolfRay>& golf = trace::golfball_rays(0);
+    const double eps;
+    std::atomic<std::uint64_t> total{0};
+    const Clock::time_point t0 = Clock::now();
+    const double c0 = cpu_seconds();
+    BareResult finish() const { return ::finish(t0, c0, total); }
+};
+
 // A hit's golf-ball frame (golfball.hpp): the normal n, x and y across it, and the
 // rotation (cos, sin) that turns azimuth 0 to the mirror direction of the view d.
 struct GolfFrame {
@@ -298,12 +312,7 @@ geo::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& tree
 BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t spp,
                          const std::vector<scene::Affine>& trees, double extent, unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
-    const geo::Vec3 sun = geo::direction_from_degrees(kSunZenithDeg, kSunAzimuthDeg);
-    const auto& golf = trace::golfball_rays(0);
-    const double eps = 1e-6 * extent;
-    std::atomic<std::uint64_t> total{0};
-    const auto t0 = Clock::now();
-    const double c0 = cpu_seconds();
+    GolfLoop run(extent);
     bare_parallel_for(pixels * spp, threads, [&](std::size_t k) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
@@ -316,35 +325,35 @@ BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::
         RTCRayHit rh = make_ray(cam.position, d, 0.0f);
         rtcIntersect1(b.top, &ctx, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-            total += rays;
+            run.total += rays;
             return;
         }
         const geo::Vec3 n = hit_normal(rh, trees, d);
         geo::Vec3 o;
-        for (int a = 0; a < 3; ++a) o[a] = cam.position[a] + rh.ray.tfar * d[a] + eps * n[a];
-        if (geo::dot(n, sun) > 0) {
-            RTCRayHit sr = make_ray(o, sun, 0.0f);
+        for (int a = 0; a < 3; ++a) o[a] = cam.position[a] + rh.ray.tfar * d[a] + run.eps * n[a];
+        if (geo::dot(n, run.sun) > 0) {
+            RTCRayHit sr = make_ray(o, run.sun, 0.0f);
             rtcOccluded1(b.top, &ctx, &sr.ray);
             ++rays;
         }
         const GolfFrame frame = golf_frame(n, d);
-        for (const trace::GolfRay& g : golf) {
+        for (const trace::GolfRay& g : run.golf) {
             const geo::Vec3 w = golf_direction(g, frame);
             RTCRayHit hr = make_ray(o, w, 0.0f);
             rtcIntersect1(b.top, &ctx, &hr);
             ++rays;
             if (hr.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
             const geo::Vec3 nb = hit_normal(hr, trees, w);
-            if (geo::dot(nb, sun) <= 0) continue;
+            if (geo::dot(nb, run.sun) <= 0) continue;
             geo::Vec3 q;
-            for (int a = 0; a < 3; ++a) q[a] = o[a] + hr.ray.tfar * w[a] + eps * nb[a];
-            RTCRayHit sr = make_ray(q, sun, 0.0f);
+            for (int a = 0; a < 3; ++a) q[a] = o[a] + hr.ray.tfar * w[a] + run.eps * nb[a];
+            RTCRayHit sr = make_ray(q, run.sun, 0.0f);
             rtcOccluded1(b.top, &ctx, &sr.ray);
             ++rays;
         }
-        total += rays;
+        run.total += rays;
     });
-    return finish(t0, c0, total);
+    return run.finish();
 }
 
 // The same rays cast as a wavefront would: 8 neighbouring pixels of a row at a time, so
@@ -366,12 +375,7 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
                                  unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
     const std::size_t groups = (pixels + kLanes - 1) / kLanes;
-    const geo::Vec3 sun = geo::direction_from_degrees(kSunZenithDeg, kSunAzimuthDeg);
-    const auto& golf = trace::golfball_rays(0);
-    const double eps = 1e-6 * extent;
-    std::atomic<std::uint64_t> total{0};
-    const auto t0 = Clock::now();
-    const double c0 = cpu_seconds();
+    GolfLoop run(extent);
     bare_parallel_for(groups, threads, [&](std::size_t group) {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
@@ -426,9 +430,9 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
             lane_hit[l] = true;
             const geo::Vec3 n = hit_normal(hit_of(l), trees, d[l]);
             for (int a = 0; a < 3; ++a)
-                o[l][a] = cam.position[a] + rh.ray.tfar[l] * d[l][a] + eps * n[a];
-            if (geo::dot(n, sun) > 0) {
-                set(sr, l, o[l], sun);
+                o[l][a] = cam.position[a] + rh.ray.tfar[l] * d[l][a] + run.eps * n[a];
+            if (geo::dot(n, run.sun) > 0) {
+                set(sr, l, o[l], run.sun);
                 shadow_valid[l] = -1;
                 ++rays;
             }
@@ -436,7 +440,7 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
         }
         occluded(shadow_valid, b.top, &ctx, &sr);
         // The i-th golf-ball ray of every hit, then the shadow rays from their hits.
-        for (const trace::GolfRay& g : golf) {
+        for (const trace::GolfRay& g : run.golf) {
             geo::Vec3 w[kLanes];
             for (int l = 0; l < kLanes; ++l) {
                 valid[l] = lane_hit[l] ? -1 : 0;
@@ -452,19 +456,19 @@ BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& ca
                 shadow_valid[l] = 0;
                 if (!valid[l] || rh.hit.geomID[l] == RTC_INVALID_GEOMETRY_ID) continue;
                 const geo::Vec3 nb = hit_normal(hit_of(l), trees, w[l]);
-                if (geo::dot(nb, sun) <= 0) continue;
+                if (geo::dot(nb, run.sun) <= 0) continue;
                 geo::Vec3 q;
                 for (int a = 0; a < 3; ++a)
-                    q[a] = o[l][a] + rh.ray.tfar[l] * w[l][a] + eps * nb[a];
-                set(sr, l, q, sun);
+                    q[a] = o[l][a] + rh.ray.tfar[l] * w[l][a] + run.eps * nb[a];
+                set(sr, l, q, run.sun);
                 shadow_valid[l] = -1;
                 ++rays;
             }
             occluded(shadow_valid, b.top, &ctx, &sr);
         }
-        total += rays;
+        run.total += rays;
     });
-    return finish(t0, c0, total);
+    return run.finish();
 }
 
 }  // namespace
