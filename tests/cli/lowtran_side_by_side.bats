@@ -71,6 +71,7 @@ EOF
 
 @test "lowtran_side_by_side: a program that writes no TAPE7 fails with a message" {
     command -v gfortran > /dev/null || skip "gfortran not installed"
+    command -v python3 > /dev/null || skip "python3 not installed"
     printf '      PROGRAM NOTHING\n      END\n' > nothing.f
     run -1 --separate-stderr env RUNS=1 WORK="$PWD/w" sh "$SBS" "$BUILD" nothing.f
     [[ "$stderr" == *"LOWTRAN 7 wrote no "*"/lowtran/TAPE7"* ]]
