@@ -53,17 +53,6 @@ std::size_t hg_index(std::vector<double>& gs, double g) {
     return gs.size() - 1;
 }
 
-// MieOptics's grid angles (deg), capped at 180.
-const std::vector<double>& grid_angles() {
-    static const std::vector<double> angles = [] {
-        std::vector<double> a(MieOptics::kGridSize);
-        for (std::size_t i = 0; i < a.size(); ++i)
-            a[i] = std::min(180.0, MieOptics::grid_angle_deg(i));
-        return a;
-    }();
-    return angles;
-}
-
 }  // namespace
 
 double MieOptics::grid_angle_deg(std::size_t i) {
@@ -93,7 +82,9 @@ MieOptics mie_optics(const std::array<std::optional<TabulatedPhase>, 4>& regions
         m.chi[r] = phase_moments(*p, nmom, &integral, points);
         const double scale = 4 * kPi / integral;  // average over the sphere 1
         m.grid[r].resize(n + 1);
-        p->at_ascending(grid_angles(), m.grid[r].data());
+        // grid_angle_deg's two runs: 0.1 deg steps to 20 deg, 0.5 deg steps beyond.
+        p->at_steps(0, 0.1, 0, 201, m.grid[r].data());
+        p->at_steps(20, 0.5, 1, 321, m.grid[r].data() + 201);
         for (double& v : m.grid[r]) v *= scale;
     }
     return m;

@@ -91,18 +91,35 @@ double TabulatedPhase::at(double angle) const {
     return log_lerp(p_sr1[i], p_sr1[i + 1], f);
 }
 
-void TabulatedPhase::at_ascending(const std::vector<double>& angles, double* out) const {
+void TabulatedPhase::at_steps(double start_deg, double step_deg, std::size_t from, std::size_t to,
+                              double* out) const {
     const LogNodes l(p_sr1);
-    std::size_t i = 0;
-    for (std::size_t k = 0; k < angles.size(); ++k) {
-        const double x = std::clamp(angles[k], angle_deg.front(), angle_deg.back());
-        // bracket()'s interval: the first node above x, at most the last one.
-        while (i + 2 < angle_deg.size() && !(angle_deg[i + 1] > x)) ++i;
+    const std::size_t last = angle_deg.size() - 2;  // the last interval
+    // The value at x in interval i at fraction f, as at() forms it (by an exp of ln P).
+    auto value = [&](std::size_t i, double x) {
         const double f = (x - angle_deg[i]) / (angle_deg[i + 1] - angle_deg[i]);
         const double a = p_sr1[i], b = p_sr1[i + 1];
-        out[k] = l.ln_interval[i] ? std::exp(l.ln[i] + f * (l.ln[i + 1] - l.ln[i]))
-                                  : a + f * (b - a);
+        return l.ln_interval[i] ? std::exp(l.ln[i] + f * (l.ln[i + 1] - l.ln[i]))
+                                : a + f * (b - a);
+    };
+    auto angle = [&](std::size_t j) { return start_deg + static_cast<double>(j) * step_deg; };
+    std::size_t j = from;
+    for (; j < to && angle(j) < angle_deg.front(); ++j) out[j - from] = value(0, angle_deg.front());
+    // Interval i holds the angles below node i + 1 (bracket()'s), the last one its end too.
+    for (std::size_t i = 0; i <= last && j < to; ++i) {
+        auto inside = [&](double x) { return i < last ? x < angle_deg[i + 1] : x <= angle_deg[i + 1]; };
+        if (!inside(angle(j))) continue;
+        double v = value(i, angle(j));
+        out[j++ - from] = v;
+        if (!l.ln_interval[i]) {
+            for (; j < to && inside(angle(j)); ++j) out[j - from] = value(i, angle(j));
+            continue;
+        }
+        const double ratio =
+            std::exp((l.ln[i + 1] - l.ln[i]) * step_deg / (angle_deg[i + 1] - angle_deg[i]));
+        for (; j < to && inside(angle(j)); ++j) out[j - from] = v *= ratio;
     }
+    for (; j < to; ++j) out[j - from] = value(last, angle_deg.back());
 }
 
 namespace {

@@ -18,9 +18,14 @@ struct TabulatedPhase {
     std::vector<double> angle_deg;
     std::vector<double> p_sr1;
     double at(double angle_deg) const;
-    // at() at each of `angles` (ascending, deg) into out: one logarithm per node and an
-    // exp per value instead of a search and a pow per value (equal to rounding).
-    void at_ascending(const std::vector<double>& angles, double* out) const;
+    // at() at the angles start + j step (deg, clamped to the table), j from `from` to
+    // `to` - 1, into out[j - from]. Within a table interval (ln P linear in angle) the
+    // first value is an exp and each next one the last times exp(slope x step): one
+    // logarithm per node and two exps per interval instead of a search and a pow per
+    // value. Each product adds a rounding (~1 ulp a step), so the values are at() to
+    // within 1e-14 relative over 100 steps an interval (mie_phase_test).
+    void at_steps(double start_deg, double step_deg, std::size_t from, std::size_t to,
+                  double* out) const;
 };
 
 // Legendre moments chi_0..chi_nmom of `p` in DISORT's convention,

@@ -90,20 +90,26 @@ TEST(MiePhase, HasRegionAgreesWithRegion) {
                     << region << " " << ihaze << " " << um;
 }
 
-// at_ascending (one logarithm per node, an exp per value) against at() (a search and a
-// pow per value) at 1000 ascending angles and beyond both ends, for all 70 functions:
-// the same ln-linear interpolation, equal to rounding (1e-14 relative; the arguments
-// of exp are at most |ln P| ~ 10, so their rounding, 2e-15, sets the scale).
-TEST(MiePhase, AtAscendingEqualsAtToRounding) {
-    std::vector<double> angles{-1.0};
-    for (int i = 0; i <= 1000; ++i) angles.push_back(0.18 * i);
-    angles.push_back(181);
-    std::vector<double> out(angles.size());
-    for (int n = 1; n <= 70; ++n) {
-        const TabulatedPhase p = table().function(n);
-        p.at_ascending(angles, out.data());
-        for (std::size_t k = 0; k < angles.size(); ++k)
-            EXPECT_NEAR(out[k], p.at(angles[k]), 1e-14 * p.at(angles[k])) << n << " " << angles[k];
+// at_steps (one logarithm per node, two exps per interval, a product per value) against
+// at() (a search and a pow per value) for all 70 functions: 0.18 deg steps from before
+// 0 to beyond 180 deg (clamped at both ends), and the solver's grid (0.1 deg steps, up
+// to 20 steps an interval; 0.5 deg, up to 20). The same ln-linear interpolation: each
+// product adds ~1 ulp, so 1e-14 relative over up to 100 steps an interval.
+TEST(MiePhase, AtStepsEqualsAtToRounding) {
+    struct Run {
+        double start, step;
+        std::size_t from, to;
+    };
+    for (const Run& r : {Run{-1.08, 0.18, 0, 1012}, Run{0, 0.1, 0, 201}, Run{20, 0.5, 1, 321}}) {
+        std::vector<double> out(r.to - r.from);
+        for (int n = 1; n <= 70; ++n) {
+            const TabulatedPhase p = table().function(n);
+            p.at_steps(r.start, r.step, r.from, r.to, out.data());
+            for (std::size_t j = r.from; j < r.to; ++j) {
+                const double a = r.start + static_cast<double>(j) * r.step;
+                EXPECT_NEAR(out[j - r.from], p.at(a), 1e-14 * p.at(a)) << n << " " << a;
+            }
+        }
     }
 }
 
