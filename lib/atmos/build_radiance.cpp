@@ -35,6 +35,8 @@ constexpr double kDeg = std::numbers::pi / 180;
 RadianceOptions deck_solver_options(const io::CdkRun& run, const RadianceOptions& o) {
     RadianceOptions solved = o;
     if (run.card1.surface_albedo > 0) solved.coupling = false;
+    // Resolved once: the stream choice's probes are solved with a number of streams.
+    solved.merge_tau = merge_tau(o);
     return solved;
 }
 
@@ -429,6 +431,12 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const Directions dirs = directions(views, rep.view_azimuth_deg, rep.sun_azimuth_deg, o);
     const double distance_factor = 1 / (sun.earth_sun_distance_au * sun.earth_sun_distance_au);
     const RadianceOptions solved = deck_solver_options(run, o);
+    rep.merge_tau = *solved.merge_tau;
+    if (o.merge_tau)
+        rep.merge_rule = "--merge-tau";
+    else if (o.streams == kAutoStreams)
+        rep.merge_rule = "--streams auto at " + format_number(100 * o.stream_tolerance) +
+                         " %: 0.01 x sqrt(REL / 1 %)";
     const SampleSetup setup{column,
                             dirs,
                             solar,

@@ -30,6 +30,8 @@ struct RadianceReport {
     double ground_km = 0, sensor_km = 0;
     double visibility_km = 0;
     std::size_t layers = 0;
+    double merge_tau = 0;      // the solver merged thin layers up to this optical depth
+    std::string merge_rule;    // why that depth (--merge-tau, --streams auto), or empty
     long thermal_samples = 0;  // samples where layer emission was solved
     long gas_term_solves = 0;  // columns solved: one per sample, or its exponential-sum terms
     // Per band and spectral sample (in the .rad's order): the diffuse downward

@@ -2,6 +2,7 @@
 #include "atmos/build_radiance_job.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -29,6 +30,10 @@ void report_tables(const RadianceReport& report, const Reporter& reporter) {
                   format_number(report.sensor_km) + " km, " + std::to_string(report.layers) +
                   " layers, visibility " + format_number(report.visibility_km) +
                   " km, view azimuth " + format_number(report.view_azimuth_deg) + " deg");
+    char depth[32];
+    std::snprintf(depth, sizeof depth, "%.3g", report.merge_tau);
+    reporter.info("thin layers merged up to optical depth " + std::string(depth) +
+                  (report.merge_rule.empty() ? "" : " (" + report.merge_rule + ")"));
     for (std::size_t b = 0; b < report.band_streams.size(); ++b) {
         const StreamChoice& c = report.band_streams[b];
         std::string line =
@@ -84,7 +89,7 @@ void check_job(const BuildRadianceJob& job) {
     if (job.cdk_path == "-" && job.snd_path == "-")
         throw UsageError("only one input can be standard input");
     if (!(job.options.top_km > 0)) throw UsageError("--top must be > 0 km");
-    if (!(job.options.merge_tau >= 0 && job.options.merge_tau <= 1))
+    if (job.options.merge_tau && !(*job.options.merge_tau >= 0 && *job.options.merge_tau <= 1))
         throw UsageError("--merge-tau must be in [0, 1]");
     check_radiance_options(job.options);
 }

@@ -213,7 +213,7 @@ rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& 
     const std::size_t sensor_level = s.column.sensor_level();
     std::vector<double> planck;  // every level's
     for (double t : s.column.profile().t_k) planck.push_back(rt::planck_radiance(wavelength, t));
-    const std::vector<std::size_t> k = kept_levels(c, sensor_level, s.options.merge_tau, planck);
+    const std::vector<std::size_t> k = kept_levels(c, sensor_level, merge_tau(s.options), planck);
     rt::Problem th = prob;
     th.beam_flux = 0;
     th.beam_airmass.clear();  // its layers are not prob's
@@ -321,7 +321,7 @@ SampleResult solve_term(const SampleSetup& s, const std::vector<LayerOptics>& co
     SampleResult res;
     res.sample = sample;
     const std::vector<std::size_t> kept =
-        kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
+        kept_levels(col, s.column.sensor_level(), merge_tau(s.options));
     rt::Problem prob = base_problem(s, col, kept);
     Solutions sol;
     if (s.sun_up) sol.solar = solve_solar(s, sample, col, kept, prob);
@@ -416,7 +416,7 @@ SampleResult solve_sample(const SampleSetup& setup, const SamplePrep& p) {
     res.sample = sample;
 
     const std::vector<std::size_t> kept =
-        kept_levels(col, s.column.sensor_level(), s.options.merge_tau);
+        kept_levels(col, s.column.sensor_level(), merge_tau(s.options));
     rt::Problem prob = base_problem(s, col, kept);
     Solutions sol;
     if (s.sun_up) sol.solar = solve_solar(s, sample, col, kept, prob);

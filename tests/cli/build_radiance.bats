@@ -228,10 +228,21 @@ line_of() { sed -n "${2}p" "$1"; }
     [[ "$stderr" =~ "band 1: "[0-9]+" streams (auto: estimated error "[0-9.e-]+" % against "[0-9]+" streams at "[12]" samples)" ]] ||
         fail "stderr: $stderr"
     [[ "$stderr" == *"band 2: "* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"thin layers merged up to optical depth 0.01 (--streams auto at 1 %: 0.01 x sqrt(REL / 1 %))"* ]] ||
+        fail "stderr: $stderr"
     sigchain-check a-1.rad a-2.rad
+    # A looser tolerance merges thicker layers (their error grows as the depth squared).
+    run -0 --separate-stderr build_radiance -v --streams auto --stream-tolerance 0.05 "${one[@]}" \
+        "$HAWKEYE" "$DATA/small.snd" -o 'd-%d.rad'
+    [[ "$stderr" == *"thin layers merged up to optical depth 0.0224 (--streams auto at 5 %"* ]] ||
+        fail "stderr: $stderr"
+    run -0 --separate-stderr build_radiance -v --streams auto --stream-tolerance 0.05 --merge-tau 0.01 \
+        "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'e-%d.rad'
+    [[ "$stderr" == *"thin layers merged up to optical depth 0.01 (--merge-tau)"* ]] || fail "stderr: $stderr"
     # Without auto, -v names the fixed streams.
     run -0 --separate-stderr build_radiance -v --streams 8 "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'b-%d.rad'
     [[ "$stderr" == *"band 1: 8 streams"$'\n'* ]] || fail "stderr: $stderr"
+    [[ "$stderr" == *"thin layers merged up to optical depth 0.01"$'\n'* ]] || fail "stderr: $stderr"
     # Threads do not change the choice or the tables.
     build_radiance --streams auto --threads 2 "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'c-%d.rad'
     cmp a-1.rad c-1.rad

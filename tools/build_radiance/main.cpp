@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
     tool.add_number("top", "KM", cli::positive(1000),
                     "top of the modelled atmosphere (> 0, <= 1000)", "100");
     tool.add_number("merge-tau", "TAU", cli::reals(0, 1),
-                    "solver merges thin layers up to this optical depth (0-1; 0: never)", "0.01");
+                    "solver merges thin layers up to this optical depth (0-1; 0: never; "
+                    "default 0.01, with --streams auto 0.01 x sqrt(REL / 0.01))");
     tool.add_number("thermal-from", "UM", cli::reals(0, 1000),
                     "solve layer emission at wavelengths from UM up (0-1000)", "2.5");
     tool.add_options()("write-decks", cli::po::value<std::string>()->value_name("DIR"),
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
         if (vm.count("view-azimuth")) o.view_azimuth_deg = cli::real(vm, "view-azimuth");
         o.top_km = cli::real(vm, "top");
         o.thermal_min_wavelength_um = cli::real(vm, "thermal-from");
-        o.merge_tau = cli::real(vm, "merge-tau");
+        if (vm.count("merge-tau")) o.merge_tau = cli::real(vm, "merge-tau");
         o.threads = cli::threads(vm);
         atmos::run(job, ctx);
         return 0;

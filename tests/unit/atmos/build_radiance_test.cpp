@@ -277,6 +277,57 @@ TEST(BuildRadiance, MergingThinLayersChangesTheTablesBelowATenthOfAPercent) {
     std::printf("merged vs full solver layers: worst relative difference %.2e\n", worst);
 }
 
+// The merge depth by default: 0.01 with fixed streams and at --streams auto's default
+// 1 %; at a looser tolerance REL, 0.01 sqrt(REL / 1 %); a given --merge-tau as given.
+TEST(BuildRadiance, MergeDepthFollowsTheStreamTolerance) {
+    RadianceOptions o = options();
+    EXPECT_EQ(merge_tau(o), 0.01);
+    o.streams = kAutoStreams;
+    EXPECT_EQ(merge_tau(o), 0.01);
+    o.stream_tolerance = 0.05;
+    EXPECT_NEAR(merge_tau(o), 0.022360679774997897, 1e-17);
+    o.merge_tau = 0;
+    EXPECT_EQ(merge_tau(o), 0);
+}
+
+// At --stream-tolerance 5 % the merge depth (0.022) moves no table entry by more than a
+// twentieth of that tolerance against every profile level kept (the merging's error,
+// ~2.6 tau^2 = 1.3e-3 on this deck, is meant to stay near a fortieth): the sky, the path
+// radiance and transmission of every view, at 8 streams.
+TEST(BuildRadiance, MergeDepthAtALooseToleranceStaysWithinItsShare) {
+    RadianceOptions o = options();
+    o.sky_zenith_step_deg = 15;
+    o.sky_azimuth_step_deg = 30;
+    RadianceOptions automatic = o;
+    automatic.streams = kAutoStreams;
+    automatic.stream_tolerance = 0.05;
+    o.streams = 8;
+    const double depth = merge_tau(automatic);
+    o.merge_tau = depth;
+    const auto merged = build_radiance(hawkeye_deck(), small_snd(), o);
+    o.merge_tau = 0;
+    const auto full = build_radiance(hawkeye_deck(), small_snd(), o);
+    double worst = 0;
+    auto compare = [&](double a, double b) {
+        if (b > 0) worst = std::max(worst, std::abs(a / b - 1));
+    };
+    for (std::size_t b = 0; b < full.size(); ++b) {
+        for (std::size_t v = 0; v < full[b].views.size(); ++v)
+            for (std::size_t s = 0; s < full[b].samples.size(); ++s) {
+                compare(merged[b].views[v].path[s].scattered_radiance,
+                        full[b].views[v].path[s].scattered_radiance);
+                compare(merged[b].views[v].path[s].transmission, full[b].views[v].path[s].transmission);
+            }
+        for (std::size_t c = 0; c < full[b].sky->cells.size(); ++c)
+            for (std::size_t s = 0; s < full[b].samples.size(); ++s)
+                compare(merged[b].sky->cells[c].scattered_radiance[s],
+                        full[b].sky->cells[c].scattered_radiance[s]);
+    }
+    EXPECT_LT(worst, 0.05 / 20);
+    std::printf("merge depth %.4f vs every level: worst relative difference %.2e\n", depth,
+                worst);
+}
+
 }  // namespace
 }  // namespace sigchain::atmos
 
