@@ -15,35 +15,38 @@ constexpr double kWiden = 2.5;           // see fit_band_model_terms
 constexpr double kOpaqueDepth = 20.0;
 constexpr double kClip = 0.1;  // clip where within kClip tol of 1 or 0
 
-// Least squares on the columns `cols` of A (row-major rows x n) by modified
-// Gram-Schmidt QR: returns z (size cols.size()) minimising |A_P z - b|.
-std::vector<double> least_squares(const std::vector<double>& a, const std::vector<double>& b,
-                                  std::size_t rows, std::size_t n,
-                                  const std::vector<std::size_t>& cols) {
+// Least squares on the columns `cols` of A (column-major: column c at at[c * rows]) by
+// modified Gram-Schmidt QR: returns z (size cols.size()) minimising |A_P z - b|. Q is
+// kept column by column, so each pass runs over contiguous memory.
+std::vector<double> least_squares(const std::vector<double>& at, const std::vector<double>& b,
+                                  std::size_t rows, const std::vector<std::size_t>& cols) {
     const std::size_t p = cols.size();
     std::vector<double> q(rows * p), r(p * p, 0.0);
     for (std::size_t j = 0; j < p; ++j)
-        for (std::size_t i = 0; i < rows; ++i) q[i * p + j] = a[i * n + cols[j]];
+        std::copy_n(at.begin() + static_cast<long>(cols[j] * rows), rows,
+                    q.begin() + static_cast<long>(j * rows));
     for (std::size_t j = 0; j < p; ++j) {
+        double* qj = &q[j * rows];
         // Two Gram-Schmidt passes ("twice is enough", Giraud et al. 2005): the
         // exponentials are nearly collinear and one pass loses orthogonality.
         for (int pass = 0; pass < 2; ++pass)
             for (std::size_t l = 0; l < j; ++l) {
+                const double* ql = &q[l * rows];
                 double d = 0;
-                for (std::size_t i = 0; i < rows; ++i) d += q[i * p + l] * q[i * p + j];
+                for (std::size_t i = 0; i < rows; ++i) d += ql[i] * qj[i];
                 r[l * p + j] += d;
-                for (std::size_t i = 0; i < rows; ++i) q[i * p + j] -= d * q[i * p + l];
+                for (std::size_t i = 0; i < rows; ++i) qj[i] -= d * ql[i];
             }
         double norm = 0;
-        for (std::size_t i = 0; i < rows; ++i) norm += q[i * p + j] * q[i * p + j];
+        for (std::size_t i = 0; i < rows; ++i) norm += qj[i] * qj[i];
         norm = std::sqrt(norm);
         r[j * p + j] = norm;
         if (norm > 0)
-            for (std::size_t i = 0; i < rows; ++i) q[i * p + j] /= norm;
+            for (std::size_t i = 0; i < rows; ++i) qj[i] /= norm;
     }
     std::vector<double> z(p, 0.0);
     for (std::size_t j = 0; j < p; ++j)
-        for (std::size_t i = 0; i < rows; ++i) z[j] += q[i * p + j] * b[i];
+        for (std::size_t i = 0; i < rows; ++i) z[j] += q[j * rows + i] * b[i];
     for (std::size_t j = p; j-- > 0;) {  // back substitution R z = Q^T b
         for (std::size_t l = j + 1; l < p; ++l) z[j] -= r[j * p + l] * z[l];
         z[j] = r[j * p + j] > 0 ? z[j] / r[j * p + j] : 0.0;
@@ -161,13 +164,19 @@ std::vector<double> nnls(const std::vector<double>& a, const std::vector<double>
         throw std::invalid_argument("nnls: bad dimensions");
     std::vector<double> x(cols, 0.0), w(cols);
     std::vector<bool> passive(cols, false);
+    std::vector<double> at(rows * cols);  // A column-major
+    for (std::size_t i = 0; i < rows; ++i)
+        for (std::size_t j = 0; j < cols; ++j) at[j * rows + i] = a[i * cols + j];
+    std::vector<double> res(rows);
     auto gradient = [&] {  // w = A^T (b - A x)
-        std::vector<double> res(b);
+        std::copy(b.begin(), b.end(), res.begin());
         for (std::size_t i = 0; i < rows; ++i)
             for (std::size_t j = 0; j < cols; ++j) res[i] -= a[i * cols + j] * x[j];
         for (std::size_t j = 0; j < cols; ++j) {
-            w[j] = 0;
-            for (std::size_t i = 0; i < rows; ++i) w[j] += a[i * cols + j] * res[i];
+            const double* aj = &at[j * rows];
+            double s = 0;
+            for (std::size_t i = 0; i < rows; ++i) s += aj[i] * res[i];
+            w[j] = s;
         }
     };
     double scale = 0;  // tolerance on the gradient, relative to A and b
@@ -185,7 +194,7 @@ std::vector<double> nnls(const std::vector<double>& a, const std::vector<double>
             std::vector<std::size_t> p;
             for (std::size_t j = 0; j < cols; ++j)
                 if (passive[j]) p.push_back(j);
-            const std::vector<double> z = least_squares(a, b, rows, cols, p);
+            const std::vector<double> z = least_squares(at, b, rows, p);
             double alpha = 2;  // step toward z, limited by the first x_j reaching 0
             for (std::size_t l = 0; l < p.size(); ++l)
                 if (z[l] <= 0) alpha = std::min(alpha, x[p[l]] / (x[p[l]] - z[l]));
