@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace sigchain::atmos {
 
@@ -152,24 +154,47 @@ Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
         return hi;
     }
     // The refraction R(z) grows with z, from R(0) = 0 (C = 0) to R(pi/2): a midpoint m
-    // with m + R(a) above the true zenith (R traced at or below a), or m + R(b) below it
-    // (R traced at or above b), by more than kSure, falls the same way as a trace of m
-    // would, so only the midpoints near the root are traced. The same intervals as
-    // tracing every midpoint, bit for bit, with a few traces instead of 40.
+    // with m + R(p) above the true zenith for a traced p <= m, or m + R(q) below it for
+    // a traced q >= m, by more than kSure, falls the same way as a trace of m would, so
+    // only the midpoints near the root are traced. The same intervals as tracing every
+    // midpoint, bit for bit, with a few traces instead of 40.
     constexpr double kSure = 1e-13;  // rad: 400 times the rounding of m + R (2.2e-16)
-    double a = 0, b = std::numbers::pi / 2;
-    double r_below = 0, r_above = hi.refraction_rad;  // R traced at or below a, above b
+    const double t = true_zenith_rad, half_pi = std::numbers::pi / 2;
+    std::vector<std::pair<double, double>> traced{{0.0, 0.0}, {half_pi, hi.refraction_rad}};
+    auto refraction = [&](double z) {
+        const double r = seen(z).refraction_rad;
+        traced.emplace_back(z, r);
+        return r;
+    };
+    // Points bracketing the root first, by z_k+1 = t - R(z_k) from z_0 = t: the root z*
+    // (z* + R(z*) = t) lies above t - R(t) (R(z*) <= R(t)), below t - R(z1) for z1 below
+    // it, and so on, each pair closer by a factor dR/dz (~1e-4 away from the horizon):
+    // after four traces the bracket is within rounding, and the midpoints' bounds decide
+    // them all but the last few.
+    double z = std::min(t, half_pi);
+    double r = z == half_pi ? hi.refraction_rad : refraction(z);
+    for (int k = 0; k < 4; ++k) {
+        const double next = std::clamp(t - r, 0.0, half_pi);
+        if (std::abs(next - z) < kSure) break;
+        z = next;
+        r = refraction(z);
+    }
+    double a = 0, b = half_pi;
     for (int it = 0; it < 60 && b - a > 1e-12; ++it) {
         const double m = 0.5 * (a + b);
-        if (m + r_below > true_zenith_rad + kSure) {
+        double r_below = 0, r_above = hi.refraction_rad;  // R at traced points <= m, >= m
+        for (const auto& [zp, rp] : traced) {
+            if (zp <= m) r_below = std::max(r_below, rp);
+            if (zp >= m) r_above = std::min(r_above, rp);
+        }
+        if (m + r_below > t + kSure) {
             b = m;
-        } else if (m + r_above < true_zenith_rad - kSure) {
+        } else if (m + r_above < t - kSure) {
             a = m;
         } else {
-            const Ray r = seen(m);
-            const bool above = r.zenith_rad + r.refraction_rad > true_zenith_rad;
-            (above ? b : a) = m;
-            (above ? r_above : r_below) = r.refraction_rad;
+            const Ray rm = seen(m);
+            traced.emplace_back(m, rm.refraction_rad);
+            (rm.zenith_rad + rm.refraction_rad > t ? b : a) = m;
         }
     }
     return seen(0.5 * (a + b));
