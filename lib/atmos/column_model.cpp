@@ -81,6 +81,7 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
     m_shells = shells_from(m_profile);
+    m_shell_nodes = shell_nodes(m_shells);
 }
 
 std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double wavelength_um) const {
@@ -211,7 +212,7 @@ const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
     auto it = m_rays.find(key);
     if (it == m_rays.end())
         it = m_rays
-                 .emplace(key, trace_to_sun(m_shells, level, std::acos(std::clamp(mu0, -1.0, 1.0))))
+                 .emplace(key, trace_to_sun(m_shells, m_shell_nodes, level, std::acos(std::clamp(mu0, -1.0, 1.0))))
                  .first;
     return it->second;
 }

@@ -135,6 +135,7 @@ private:
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                std::size_t level_i, std::size_t level_j, const Ray& ray) const;
     Shells m_shells;
+    ShellNodes m_shell_nodes;  // for the sun's rays from every level
     mutable std::mutex m_ray_mutex;  // guards m_rays (node-based: references stay valid)
     mutable std::map<std::tuple<int, std::size_t, std::size_t, double>, Ray> m_rays;
 };

@@ -77,33 +77,34 @@ struct PathNodes {
     std::vector<double> nr2, dsum, rho, nr, dzdt, ndlnn, one_n;  // per node
 };
 
-PathNodes path_nodes(const Shells& s, std::size_t from, std::size_t to) {
+// Layer k's nodes q (from 16 k + q on) of `all`, and the terms that depend on the start
+// level `from`: n0 r0 and (n r - n0 r0)(n r + n0 r0).
+PathNodes path_nodes(const Shells& s, const ShellNodes& all, std::size_t from, std::size_t to) {
     PathNodes p;
     p.from = from;
     p.to = to;
     const double R = s.radius_km, z0 = s.z_km[from], N0 = s.refractivity[from];
     p.n0r0 = (1 + N0) * (R + z0);
-    for (std::size_t k = from; k < to; ++k) {
-        const double dz = s.z_km[k + 1] - s.z_km[k];
-        const double Na = s.refractivity[k], Nb = s.refractivity[k + 1];
-        const double dlnN = Na > 0 && Nb > 0 ? std::log(Nb / Na) / dz : 0.0;  // km-1
-        for (std::size_t q = 0; q < 16; ++q) {
-            const double t = kGauss.x[q], f = t * t;
-            const double z = s.z_km[k] + dz * f, dzdt = 2 * dz * t * kGauss.w[q];
-            const double N = exp_between(Na, Nb, f);
-            const double rho = exp_between(s.density[k], s.density[k + 1], f);
-            const double nr = (1 + N) * (R + z);
-            const double d = (z - z0) + (N - N0) * (R + z0) + N * (z - z0);  // n r - n0 r0
-            p.nr2.push_back(nr * nr);
-            p.dsum.push_back(d * (nr + p.n0r0));
-            p.rho.push_back(rho);
-            p.nr.push_back(nr);
-            p.dzdt.push_back(dzdt);
-            p.ndlnn.push_back(N * dlnN);
-            p.one_n.push_back(1 + N);
-        }
+    const auto first = static_cast<long>(16 * from), last = static_cast<long>(16 * to);
+    auto slice = [&](const std::vector<double>& v) {
+        return std::vector<double>(v.begin() + first, v.begin() + last);
+    };
+    p.nr2 = slice(all.nr2);
+    p.rho = slice(all.rho);
+    p.nr = slice(all.nr);
+    p.dzdt = slice(all.dzdt);
+    p.ndlnn = slice(all.ndlnn);
+    p.one_n = slice(all.one_n);
+    for (long i = first; i < last; ++i) {
+        const double z = all.z[i], N = all.n[i], nr = all.nr[i];
+        const double d = (z - z0) + (N - N0) * (R + z0) + N * (z - z0);  // n r - n0 r0
+        p.dsum.push_back(d * (nr + p.n0r0));
     }
     return p;
+}
+
+PathNodes path_nodes(const Shells& s, std::size_t from, std::size_t to) {
+    return path_nodes(s, shell_nodes(s), from, to);
 }
 
 Ray trace_nodes(const PathNodes& p, std::size_t levels, double zenith_rad) {
@@ -129,6 +130,32 @@ Ray trace_nodes(const PathNodes& p, std::size_t levels, double zenith_rad) {
 
 }  // namespace
 
+ShellNodes shell_nodes(const Shells& s) {
+    ShellNodes p;
+    const double R = s.radius_km;
+    for (std::size_t k = 0; k + 1 < s.z_km.size(); ++k) {
+        const double dz = s.z_km[k + 1] - s.z_km[k];
+        const double Na = s.refractivity[k], Nb = s.refractivity[k + 1];
+        const double dlnN = Na > 0 && Nb > 0 ? std::log(Nb / Na) / dz : 0.0;  // km-1
+        for (std::size_t q = 0; q < 16; ++q) {
+            const double t = kGauss.x[q], f = t * t;
+            const double z = s.z_km[k] + dz * f, dzdt = 2 * dz * t * kGauss.w[q];
+            const double N = exp_between(Na, Nb, f);
+            const double rho = exp_between(s.density[k], s.density[k + 1], f);
+            const double nr = (1 + N) * (R + z);
+            p.z.push_back(z);
+            p.n.push_back(N);
+            p.nr.push_back(nr);
+            p.nr2.push_back(nr * nr);
+            p.rho.push_back(rho);
+            p.dzdt.push_back(dzdt);
+            p.ndlnn.push_back(N * dlnN);
+            p.one_n.push_back(1 + N);
+        }
+    }
+    return p;
+}
+
 Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_rad) {
     const std::size_t levels = s.z_km.size();
     if (!(to > from && to < levels) || !(zenith_rad >= 0 && zenith_rad <= std::numbers::pi / 2))
@@ -137,6 +164,11 @@ Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_ra
 }
 
 Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
+    return trace_to_sun(s, shell_nodes(s), to, true_zenith_rad);
+}
+
+Ray trace_to_sun(const Shells& s, const ShellNodes& shell, std::size_t to,
+                 double true_zenith_rad) {
     const std::size_t top = s.z_km.size() - 1;
     if (to >= top) {  // at the top: no atmosphere above
         Ray ray;
@@ -146,7 +178,7 @@ Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
         return ray;
     }
     // z + R(z) increases with z: bisection on [0, pi/2] to 1e-12 rad.
-    const PathNodes nodes = path_nodes(s, to, top);
+    const PathNodes nodes = path_nodes(s, shell, to, top);
     auto seen = [&](double z) { return trace_nodes(nodes, s.z_km.size(), z); };
     Ray hi = seen(std::numbers::pi / 2);
     if (true_zenith_rad > hi.zenith_rad + hi.refraction_rad) {
