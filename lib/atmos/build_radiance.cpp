@@ -175,8 +175,11 @@ struct SampleScalars {
 FarmBytes pack(const SampleResult* r, long count) {
     FarmBytes out;
     for (long i = 0; i < count; ++i, ++r) {
-        const SampleScalars s{r->sample, r->ground_irradiance, r->spherical_albedo,
-                              r->diffuse_down, r->terms,
+        const SampleScalars s{r->sample,
+                              r->ground_irradiance,
+                              r->spherical_albedo,
+                              r->diffuse_down,
+                              r->terms,
                               static_cast<std::uint8_t>(r->thermal)};
         put_bytes(out, &s, sizeof s);
         put_series(out, r->path);
@@ -304,9 +307,9 @@ std::vector<StreamChoice> band_streams(const SampleSetup& setup, const io::Snd& 
                  [&](long b, unsigned) {
                      const auto i = static_cast<std::size_t>(b);
                      try {
-                         choices[i] = choose_streams(setup,
-                                                     probe_wavenumbers(setup.column, snd.bands[i]),
-                                                     setup.options.stream_tolerance);
+                         choices[i] =
+                             choose_streams(setup, probe_wavenumbers(setup.column, snd.bands[i]),
+                                            setup.options.stream_tolerance);
                      } catch (...) {
                          errors[i] = std::current_exception();
                      }
@@ -420,7 +423,20 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const io::CdkRun& run = deck.runs.front();
     check_deck(deck, o.cdk_path);
     RadianceReport rep;
-    const ColumnModel column(run, snd.sensor_altitude_km, o);
+    // The column is asked about the .snd's samples only (the stream choice's probes are
+    // among them): gas tables beyond are not read.
+    RadianceOptions column_options = o;
+    const std::vector<double> nus = sample_wavenumbers(snd);
+    if (!nus.empty())
+        column_options.wavenumbers_cm1.emplace(*std::min_element(nus.begin(), nus.end()),
+                                               *std::max_element(nus.begin(), nus.end()));
+    const ColumnModel column(run, snd.sensor_altitude_km, column_options);
+    if (!column.skipped_gas_tables().empty()) {
+        std::string names;
+        for (const std::string& n : column.skipped_gas_tables())
+            names += (names.empty() ? "" : ", ") + n;
+        rep.notes.push_back("gas tables not read (no sample within 100 cm-1 of them): " + names);
+    }
     report_column(column, snd, rep);
     const geo::SolarPosition sun = target_sun(snd, rep);
     const SolarSpectrum solar = SolarSpectrum::load(o.data_dir);
@@ -453,8 +469,9 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
             "the Nakajima-Tanaka TMS and IMS corrections)");
     for (std::string& note : deck_notes(run)) rep.notes.push_back(std::move(note));
     if (dirs.azimuth_means_only)
-        rep.notes.push_back("only means over azimuth tabulated (nadir views, whole-ring sky "
-                            "cells): the solver's Fourier modes above 0 are not solved");
+        rep.notes.push_back(
+            "only means over azimuth tabulated (nadir views, whole-ring sky "
+            "cells): the solver's Fourier modes above 0 are not solved");
     // Per band its streams (--streams auto: band_streams), the samples solved with them.
     std::vector<RadianceOptions> band_options;
     rep.band_streams = band_streams(setup, snd, band_options);
@@ -467,7 +484,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
     }
     std::vector<SampleResult> results;
-    if (!solve_samples(setups, setup_of, sample_wavenumbers(snd), reporter, results)) return {};
+    if (!solve_samples(setups, setup_of, nus, reporter, results)) return {};
 
     const Profile& prof = column.profile();
     const double height_km = prof.z_km[column.sensor_level()] - prof.bottom_km();

@@ -78,7 +78,10 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     if (run.card1.iemsct == 2 && run.geometry.iph == 2) m_mie = MiePhaseTable::load(o.data_dir);
     m_ihaze = run.card2.ihaze;
     m_ivulcn = run.card2.ivulcn;
-    m_gas_tables = std::make_unique<GasTables>(GasTables::load(o.data_dir));
+    m_gas_tables = std::make_unique<GasTables>(
+        o.wavenumbers_cm1
+            ? GasTables::load(o.data_dir, o.wavenumbers_cm1->first, o.wavenumbers_cm1->second)
+            : GasTables::load(o.data_dir));
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
     m_shells = shells_from(m_profile);
     m_shell_nodes = shell_nodes(m_shells);
@@ -212,7 +215,8 @@ const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
     auto it = m_rays.find(key);
     if (it == m_rays.end())
         it = m_rays
-                 .emplace(key, trace_to_sun(m_shells, m_shell_nodes, level, std::acos(std::clamp(mu0, -1.0, 1.0))))
+                 .emplace(key, trace_to_sun(m_shells, m_shell_nodes, level,
+                                            std::acos(std::clamp(mu0, -1.0, 1.0))))
                  .first;
     return it->second;
 }

@@ -50,6 +50,8 @@ public:
     ColumnModel& operator=(const ColumnModel&) = delete;
 
     const Profile& profile() const { return m_profile; }
+    // The gas tables not read (options.wavenumbers_cm1: none reach them).
+    const std::vector<std::string>& skipped_gas_tables() const { return m_gas_tables->skipped(); }
     std::size_t sensor_level() const { return m_sensor_level; }  // index into profile levels
     double visibility_km() const { return m_aerosol->visibility_km(); }
 
@@ -123,10 +125,10 @@ private:
     std::size_t m_sensor_level = 0;
     std::optional<AerosolModel> m_aerosol;
     std::vector<std::array<double, 4>> m_aerosol055;  // per layer: slab_columns055
-    std::optional<CloudModel> m_cloud;    // ICLD 1-10: the water cloud
-    std::optional<RainModel> m_rain;      // ICLD 6-10, RAINRT
-    std::optional<CirrusModel> m_cirrus;  // ICLD 18, 19
-    std::optional<MiePhaseTable> m_mie;   // IPH 2
+    std::optional<CloudModel> m_cloud;                // ICLD 1-10: the water cloud
+    std::optional<RainModel> m_rain;                  // ICLD 6-10, RAINRT
+    std::optional<CirrusModel> m_cirrus;              // ICLD 18, 19
+    std::optional<MiePhaseTable> m_mie;               // IPH 2
     int m_ihaze = 0, m_ivulcn = 0;
     std::array<bool, 4> m_user_region{};      // CARD 2D IREG: Henyey-Greenstein with its ASYM
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model
@@ -135,7 +137,7 @@ private:
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                std::size_t level_i, std::size_t level_j, const Ray& ray) const;
     Shells m_shells;
-    ShellNodes m_shell_nodes;  // for the sun's rays from every level
+    ShellNodes m_shell_nodes;        // for the sun's rays from every level
     mutable std::mutex m_ray_mutex;  // guards m_rays (node-based: references stay valid)
     mutable std::map<std::tuple<int, std::size_t, std::size_t, double>, Ray> m_rays;
 };

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -63,8 +64,8 @@ Rows read_rows(const std::string& path, std::size_t columns, const std::vector<i
     FieldReader reader(input);
     reader.require_not_empty("table rows");
     Rows rows{path, numeric.size(), {}, {}};
-    const auto lines = static_cast<std::size_t>(
-        std::count(input.text().begin(), input.text().end(), '\n') + 1);
+    const auto lines =
+        static_cast<std::size_t>(std::count(input.text().begin(), input.text().end(), '\n') + 1);
     rows.v.reserve(lines * rows.width);
     rows.line.reserve(lines);
     while (!reader.at_end()) {
@@ -102,8 +103,36 @@ std::vector<double> column(const Rows& rows, std::size_t c) {
     return out;
 }
 
-// band_model_constants.txt: gas band_id a n m w1 w2 w3 CC ranges.
-void read_band_constants(GasTables::Data& d, const std::string& dir) {
+// Whether [lo, hi] (cm-1) reaches within GasTables::kLoadMargin of d's range.
+bool wanted(const GasTables::Data& d, double lo, double hi) {
+    return hi >= d.nu_lo - GasTables::kLoadMargin && lo <= d.nu_hi + GasTables::kLoadMargin;
+}
+
+// band_model_constants.txt's last field: a band's wavenumber ranges, "A-B" (cm-1)
+// separated by ';'. Whether one of them is wanted().
+bool band_wanted(const GasTables::Data& d, std::string_view ranges, const SourceLocation& where) {
+    bool any = false;
+    while (true) {
+        const auto semi = ranges.find(';');
+        const std::string_view range = ranges.substr(0, semi);
+        const auto dash = range.find('-');
+        if (dash == std::string_view::npos || dash == 0)
+            throw DataError(where,
+                            "expected wavenumber ranges A-B[;C-D...], found " + quoted(range));
+        const double lo = parse_double(range.substr(0, dash), where, "a range's first wavenumber");
+        const double hi = parse_double(range.substr(dash + 1), where, "a range's last wavenumber");
+        if (!(lo <= hi))
+            throw DataError(where, "expected a range A-B with A <= B, found " + quoted(range));
+        any = any || wanted(d, lo, hi);
+        if (semi == std::string_view::npos) return any;
+        ranges.remove_prefix(semi + 1);
+    }
+}
+
+// band_model_constants.txt: gas band_id a n m w1 w2 w3 CC ranges. `read`: per gas,
+// whether one of its bands is wanted (its grid is to be read).
+void read_band_constants(GasTables::Data& d, const std::string& dir,
+                         std::array<bool, kBandGases>& read) {
     const std::string path = dir + "band_model_constants.txt";
     const TextInput input = TextInput::from_file(path);
     FieldReader reader(input);
@@ -122,6 +151,8 @@ void read_band_constants(GasTables::Data& d, const std::string& dir) {
         d.a[b] = parse_in_range(f[2], where, "band exponent a", 0.1, 1.0);
         d.n_p[b] = parse_double(f[3], where, "pressure exponent n");
         d.m_t[b] = parse_double(f[4], where, "temperature exponent m");
+        if (band_wanted(d, f[9], where))
+            read[static_cast<std::size_t>(gas - kGasNames.begin())] = true;
     }
     for (std::size_t b = 0; b < d.band_gas.size(); ++b)
         if (d.band_gas[b] < 0)
@@ -145,9 +176,8 @@ void read_band_grid(GasTables::Data& d, int gas, const std::string& dir) {
         auto b = id - kFirstBandId;
         if (band_id != static_cast<double>(id) || b < 0 || b >= GasColumn::kBandCount ||
             d.band_gas[b] != gas)
-            throw DataError(rows.where(r), "expected a band id of " +
-                                               std::string(kGasNames[gas]) + ", found " +
-                                               format_number(band_id));
+            throw DataError(rows.where(r), "expected a band id of " + std::string(kGasNames[gas]) +
+                                               ", found " + format_number(band_id));
         auto index = static_cast<std::size_t>((nu - grid.nu0_cm1) / 5);
         grid.cprime.resize(index + 1, 0.0);
         grid.band.resize(index + 1, -1);
@@ -157,30 +187,44 @@ void read_band_grid(GasTables::Data& d, int gas, const std::string& dir) {
     }
 }
 
+// Whether the table `name`, whose grid spans lo..hi cm-1, is to be read (else it is
+// recorded as skipped).
+bool read_table(GasTables::Data& d, const std::string& name, double lo, double hi) {
+    if (wanted(d, lo, hi)) return true;
+    d.skipped.push_back(name);
+    return false;
+}
+
 void read_continua(GasTables::Data& d, const std::string& dir) {
-    Rows rows = read_rows(dir + "h2o_continuum.txt", 4, {0, 1, 2, 3});
-    require_grid(rows, -20, 10, 2003);
-    d.h2o_self296 = column(rows, 1);
-    d.h2o_self260 = column(rows, 2);
-    d.h2o_foreign296 = column(rows, 3);
-
-    rows = read_rows(dir + "n2_continuum.txt", 3, {0, 2});
-    require_grid(rows, 2080, 5, 133);
-    d.n2_km = column(rows, 1);
-
-    rows = read_rows(dir + "o2_continuum_1395_1760.txt", 5, {0, 2, 3, 4});
-    require_grid(rows, 1395, 5, 74);
-    d.o2_s0 = column(rows, 1);
-    d.o2_a = column(rows, 2);
-    d.o2_b = column(rows, 3);
-
-    rows = read_rows(dir + "hno3_band_coefficients.txt", 3, {0, 2});
-    d.hno3.assign((1735 - 850) / 5 + 1, 0.0);
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        double i = (rows.at(r, 0) - 850) / 5;
-        if (i < 0 || i >= static_cast<double>(d.hno3.size()) || i != std::floor(i))
-            throw DataError(rows.where(r), "expected a wavenumber 850-1735 cm-1 on a 5 cm-1 grid");
-        d.hno3[static_cast<std::size_t>(i)] = rows.at(r, 1);
+    if (read_table(d, "h2o_continuum.txt", -20, 20000)) {
+        const Rows rows = read_rows(dir + "h2o_continuum.txt", 4, {0, 1, 2, 3});
+        require_grid(rows, -20, 10, 2003);
+        d.h2o_self296 = column(rows, 1);
+        d.h2o_self260 = column(rows, 2);
+        d.h2o_foreign296 = column(rows, 3);
+    }
+    if (read_table(d, "n2_continuum.txt", 2080, 2740)) {
+        const Rows rows = read_rows(dir + "n2_continuum.txt", 3, {0, 2});
+        require_grid(rows, 2080, 5, 133);
+        d.n2_km = column(rows, 1);
+    }
+    if (read_table(d, "o2_continuum_1395_1760.txt", 1395, 1760)) {
+        const Rows rows = read_rows(dir + "o2_continuum_1395_1760.txt", 5, {0, 2, 3, 4});
+        require_grid(rows, 1395, 5, 74);
+        d.o2_s0 = column(rows, 1);
+        d.o2_a = column(rows, 2);
+        d.o2_b = column(rows, 3);
+    }
+    if (read_table(d, "hno3_band_coefficients.txt", 850, 1735)) {
+        const Rows rows = read_rows(dir + "hno3_band_coefficients.txt", 3, {0, 2});
+        d.hno3.assign((1735 - 850) / 5 + 1, 0.0);
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            double i = (rows.at(r, 0) - 850) / 5;
+            if (i < 0 || i >= static_cast<double>(d.hno3.size()) || i != std::floor(i))
+                throw DataError(rows.where(r),
+                                "expected a wavenumber 850-1735 cm-1 on a 5 cm-1 grid");
+            d.hno3[static_cast<std::size_t>(i)] = rows.at(r, 1);
+        }
     }
 }
 
@@ -193,6 +237,7 @@ void read_ozone(GasTables::Data& d, const std::string& dir) {
     check_grid(rows, 13000, 200, 56);
     for (std::size_t k = 0; k < 57; ++k) d.chappuis.push_back(rows.at(k, 1));  // C8(57) is at 27500
 
+    if (!read_table(d, "o3_hartley_huggins.txt", 27370, 40800)) return;
     rows = read_rows(dir + "o3_hartley_huggins.txt", 5, {0, 2, 3, 4});
     require_grid(rows, 27370, 5, 2687);
     d.hh_c0 = column(rows, 1);
@@ -240,6 +285,7 @@ double chappuis(const std::vector<double>& c8, double nu) {
 using ContinuumCoefficients = std::array<double, GasColumn::kQuantityCount - GasColumn::kBandCount>;
 
 ContinuumCoefficients continuum_coefficients(const GasTables::Data& d, double nu) {
+    require_loaded(d, nu);
     ContinuumCoefficients c{};
     constexpr int q0 = GasColumn::kBandCount;
     if (nu < 20000.0) {
@@ -323,13 +369,35 @@ void check_profile(const Profile& p) {
 }  // namespace
 
 GasTables GasTables::load(const std::string& data_dir) {
+    return load(data_dir, -std::numeric_limits<double>::infinity(),
+                std::numeric_limits<double>::infinity());
+}
+
+GasTables GasTables::load(const std::string& data_dir, double nu_lo_cm1, double nu_hi_cm1) {
+    if (!(nu_lo_cm1 <= nu_hi_cm1)) throw std::invalid_argument("GasTables::load: empty range");
     auto d = std::make_shared<Data>();
+    d->nu_lo = nu_lo_cm1;
+    d->nu_hi = nu_hi_cm1;
     const std::string dir = data_dir + "/atmosphere/lowtran7/";
-    read_band_constants(*d, dir);
-    for (int g = 0; g < kBandGases; ++g) read_band_grid(*d, g, dir);
+    std::array<bool, kBandGases> grids{};
+    read_band_constants(*d, dir, grids);
+    for (int g = 0; g < kBandGases; ++g) {
+        if (grids[static_cast<std::size_t>(g)])
+            read_band_grid(*d, g, dir);
+        else
+            d->skipped.push_back("band_model_" + std::string(kGasNames[g]) + ".txt");
+    }
     read_continua(*d, dir);
     read_ozone(*d, dir);
     return GasTables(std::move(d));
+}
+
+const std::vector<std::string>& GasTables::skipped() const { return m_data->skipped; }
+
+void require_loaded(const GasTables::Data& d, double nu) {
+    if (!(nu >= d.nu_lo && nu <= d.nu_hi))
+        throw std::logic_error("gas tables: " + format_number(nu) +
+                               " cm-1 lies outside the range they were read for");
 }
 
 GasColumn::GasColumn(const GasTables& tables, const Profile& profile)
@@ -361,6 +429,7 @@ GasColumn::GasColumn(const GasTables& tables, const Profile& profile)
 // absorber's band at nu on the path lo..hi at cosine mu; 0 where LOWTRAN's T is 1.
 double GasColumn::band_optical_depth(int gas, double nu, std::size_t lo, std::size_t hi,
                                      double mu) const {
+    require_loaded(*m_tables, nu);
     const auto& grid = m_tables->grids[gas];
     double i = std::round((nu - grid.nu0_cm1) / 5.0);
     if (i < 0 || i >= static_cast<double>(grid.band.size())) return 0.0;
@@ -415,7 +484,7 @@ double GasColumn::transmittance_along(double nu, std::size_t i, std::size_t j,
     const auto c = continuum_coefficients(*m_tables, nu);
     double tau = 0.0;
     for (std::size_t q = 0; q < c.size(); ++q) tau += c[q] * slant(kBandCount + int(q));
-    for (int g = 0; g < kBandGases; ++g) {
+    for (int g = 0; g < kBandGases; ++g) {  // continuum_coefficients checked nu
         const auto& grid = m_tables->grids[g];
         const double x = std::round((nu - grid.nu0_cm1) / 5.0);
         if (x < 0 || x >= static_cast<double>(grid.band.size())) continue;

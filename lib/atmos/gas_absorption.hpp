@@ -51,8 +51,16 @@ namespace sigchain::atmos {
 // The tables, loaded once.
 class GasTables {
 public:
-    // Throws DataError naming the file and line of a bad table.
+    // Throws DataError naming the file and line of a bad table. With a wavenumber range
+    // (cm-1), only the tables that reach within kLoadMargin of it are read (a band
+    // model's grid when one of its bands' ranges in band_model_constants.txt does, a
+    // continuum or cross-section table by its fixed grid), and GasColumn then answers for
+    // wavenumbers in that range only (std::logic_error beyond).
     static GasTables load(const std::string& data_dir);
+    static GasTables load(const std::string& data_dir, double nu_lo_cm1, double nu_hi_cm1);
+    static constexpr double kLoadMargin = 100;  // cm-1, beyond any table's interpolation
+    // The files a ranged load did not read (names without the directory), in file order.
+    const std::vector<std::string>& skipped() const;
     // (implementation-defined members follow)
 
     // data_dir is the repository's data/ folder: the tables are read from

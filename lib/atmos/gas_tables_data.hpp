@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "atmos/gas_absorption.hpp"
@@ -31,6 +33,14 @@ struct GasTables::Data {
     std::vector<double> chappuis;             // C8(1..57), (atm-cm)^-1
     std::vector<double> hh_c0, hh_c1, hh_c2;  // o3_hartley_huggins.txt, 27370.. step 5
     std::vector<double> hno3;                 // hno3_band_coefficients.txt, 850..1735 step 5
+    // The wavenumbers the tables were read for (GasTables::load's range; all by default):
+    // a table reaching them is read, another may be empty.
+    double nu_lo = -std::numeric_limits<double>::infinity();
+    double nu_hi = std::numeric_limits<double>::infinity();
+    std::vector<std::string> skipped;  // files not read
 };
+
+// Throws std::logic_error unless the tables were read for nu (GasTables::load's range).
+void require_loaded(const GasTables::Data& d, double nu_cm1);
 
 }  // namespace sigchain::atmos

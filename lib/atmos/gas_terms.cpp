@@ -53,6 +53,7 @@ std::vector<Pair> pruned_product(const ExpSum& fa, const ExpSum& fb, double xa_c
 // Gas g's band at nu, its 10^C' and its scaled amount W in every layer (bottom first)
 // and in the column: band -1 when g has no band there.
 GasColumn::FitBand GasColumn::fit_band(int g, double nu) const {
+    require_loaded(*m_tables, nu);
     FitBand b;
     const auto& grid = m_tables->grids[g];
     const double i = std::round((nu - grid.nu0_cm1) / 5.0);

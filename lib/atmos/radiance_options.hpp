@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace sigchain::atmos {
 
@@ -15,14 +16,14 @@ inline constexpr double kDefaultStreamTolerance = 0.01;
 inline constexpr double kDefaultMergeTau = 0.01;
 
 struct RadianceOptions {
-    std::string data_dir;                    // reference data (core/data_dir.hpp)
-    std::string snd_path = "<snd>";          // named in messages about the scene node
-    std::string cdk_path = "<cdk>";          // and about the card deck
-    int streams = 16;                        // discrete ordinates (even, 4-64), or
-                                             // kAutoStreams: chosen per band (stream_choice.hpp)
-    double stream_tolerance = kDefaultStreamTolerance;  // --streams auto: relative
-                                             // error allowed, as estimated against
-                                             // twice as many streams
+    std::string data_dir;            // reference data (core/data_dir.hpp)
+    std::string snd_path = "<snd>";  // named in messages about the scene node
+    std::string cdk_path = "<cdk>";  // and about the card deck
+    int streams = 16;                // discrete ordinates (even, 4-64), or
+                                     // kAutoStreams: chosen per band (stream_choice.hpp)
+    // --streams auto: the relative error allowed, as estimated against twice as many
+    // streams.
+    double stream_tolerance = kDefaultStreamTolerance;
     double sky_zenith_step_deg = 5;          // downwelled hemisphere rings (90 / step rings)
     double sky_azimuth_step_deg = 10;        // cells per ring: 360 / step
     int sky_subsamples = 2;                  // per cell and axis: the cell's radiance is the
@@ -45,6 +46,10 @@ struct RadianceOptions {
                                              // turn it off to measure it)
     unsigned threads = 0;                    // worker threads (0: every core); results do
                                              // not depend on it
+    // The only wavenumbers (cm-1) the column is asked about (build_radiance: the .snd's
+    // samples): gas tables that do not reach them are not read (GasTables::load).
+    // Unset: every table.
+    std::optional<std::pair<double, double>> wavenumbers_cm1;
 };
 
 // The optical depth up to which the solver merges thin layers: options.merge_tau when

@@ -249,6 +249,15 @@ line_of() { sed -n "${2}p" "$1"; }
     cmp a-2.rad c-2.rad
 }
 
+@test "-v names the gas tables the .snd's wavenumbers do not need, which are not read" {
+    local one=(--sky-zenith-step 90 --sky-azimuth-step 360 --sky-subsamples 1 --upwelled-azimuth-step 360)
+    run -0 --separate-stderr build_radiance -v --streams 4 "${one[@]}" "$HAWKEYE" "$DATA/small.snd" -o 'g-%d.rad'
+    [[ "$stderr" == *"gas tables not read (no sample within 100 cm-1 of them): "*"band_model_CO2.txt, "*"o3_hartley_huggins.txt"* ]] ||
+        fail "stderr: $stderr"
+    [[ "$stderr" != *"h2o_continuum.txt"* ]] || fail "stderr: $stderr"  # it reaches 20000 cm-1
+    sigchain-check g-1.rad g-2.rad
+}
+
 @test "--streams takes auto or an even count, --stream-tolerance (0, 1]" {
     run -2 --separate-stderr build_radiance --streams automatic "$HAWKEYE" "$DATA/small.snd" -o 'o-%d.rad'
     [[ "$stderr" == *"--streams: automatic: must be auto or an integer from 4 to 64"* ]] || fail "stderr: $stderr"

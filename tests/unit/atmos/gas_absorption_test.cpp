@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -547,6 +548,79 @@ TEST(GasAbsorptionTables, BadTableNamesFileAndLine) {
     } catch (const DataError& e) {
         EXPECT_EQ(e.where().line, damaged);
         EXPECT_NE(e.where().file.find("n2_continuum.txt"), std::string::npos);
+    }
+    fs::remove_all(dir);
+}
+
+// A load for a range of wavenumbers (build_radiance's visible .snd: 14285-25000 cm-1)
+// reads the tables that reach within 100 cm-1 of it, skips the others (named), and
+// answers as the whole tables do, bit for bit, from the range's ends to its middle (the
+// water vapour bands, the oxygen A and B bands, the Chappuis band): transmittances,
+// layer depths and exponential-sum terms. Outside the range it refuses (a programming
+// error: build_radiance asks only for its samples). An infrared range reads the CO2
+// band model and skips the ultraviolet ozone table.
+TEST(GasAbsorptionTables, ARangedLoadReadsWhatReachesItAndAnswersAlike) {
+    const GasTables visible = GasTables::load(kDataDir, 14285, 25000);
+    const std::vector<std::string> skipped{
+        "band_model_CO2.txt",    "band_model_O3.txt",          "band_model_N2O.txt",
+        "band_model_CO.txt",     "band_model_CH4.txt",         "band_model_NO.txt",
+        "band_model_SO2.txt",    "band_model_NO2.txt",         "band_model_NH3.txt",
+        "n2_continuum.txt",      "o2_continuum_1395_1760.txt", "hno3_band_coefficients.txt",
+        "o3_hartley_huggins.txt"};
+    EXPECT_EQ(visible.skipped(), skipped);
+    EXPECT_TRUE(tables().skipped().empty());
+    const auto us = afgl("afgl_atmosphere_6_us_standard_1976.txt").profile;
+    const GasColumn part(visible, us), whole(tables(), us);
+    const std::size_t top = us.size() - 1;
+    for (double nu : {14285.0, 14450.0, 15850.0, 16500.0, 19995.0, 20000.0, 22000.0, 25000.0}) {
+        EXPECT_EQ(part.transmittance(nu, 0, top, 0.6), whole.transmittance(nu, 0, top, 0.6)) << nu;
+        EXPECT_EQ(part.layer_absorption_depth(nu), whole.layer_absorption_depth(nu)) << nu;
+        const auto a = part.absorption_terms(nu, 20, 0.005, 12),
+                   b = whole.absorption_terms(nu, 20, 0.005, 12);
+        EXPECT_EQ(a.weight, b.weight) << nu;
+        EXPECT_EQ(a.depth, b.depth) << nu;
+    }
+    EXPECT_THROW(part.transmittance(14284, 0, top, 1), std::logic_error);
+    EXPECT_THROW(part.layer_absorption_depth(25001), std::logic_error);
+    EXPECT_THROW(part.absorption_terms(2000, 20, 0.005, 12), std::logic_error);
+    const GasTables infrared = GasTables::load(kDataDir, 600, 1400);
+    const auto& ir = infrared.skipped();
+    EXPECT_EQ(std::count(ir.begin(), ir.end(), "band_model_CO2.txt"), 0);
+    EXPECT_EQ(std::count(ir.begin(), ir.end(), "o3_hartley_huggins.txt"), 1);
+    const GasColumn ir_part(infrared, us);
+    EXPECT_EQ(ir_part.transmittance(950, 0, top, 1), whole.transmittance(950, 0, top, 1));
+}
+
+// A band's wavenumber ranges in band_model_constants.txt (what a ranged load reads by)
+// must read A-B[;C-D...]: a damaged one is refused with its line.
+TEST(GasAbsorptionTables, BadBandRangesNameTheirLine) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(testing::TempDir()) / "gas_ranges";
+    fs::create_directories(dir / "atmosphere/lowtran7");
+    for (const auto& e : fs::directory_iterator(kDataDir + "/atmosphere/lowtran7"))
+        fs::copy_file(e.path(), dir / "atmosphere/lowtran7" / e.path().filename(),
+                      fs::copy_options::overwrite_existing);
+    const fs::path constants = dir / "atmosphere/lowtran7/band_model_constants.txt";
+    std::ifstream in(constants);
+    std::string text((std::istreambuf_iterator<char>(in)), {}), bad;
+    in.close();
+    int line = 0, damaged = 0;
+    std::istringstream lines(text);
+    for (std::string l; std::getline(lines, l);) {
+        ++line;
+        if (!damaged && !l.empty() && l[0] != '#') {
+            l.replace(l.rfind("0-345"), 5, "0~345");
+            damaged = line;
+        }
+        bad += l + "\n";
+    }
+    std::ofstream(constants) << bad;
+    try {
+        GasTables::load(dir.string(), 14285, 25000);
+        ADD_FAILURE() << "no error";
+    } catch (const DataError& e) {
+        EXPECT_EQ(e.where().line, damaged);
+        EXPECT_NE(std::string(e.what()).find("0~345"), std::string::npos) << e.what();
     }
     fs::remove_all(dir);
 }
