@@ -57,10 +57,11 @@ void validate(const Problem& p) {
         if (w > Problem::kWantBoth) bad("want: not 0-3");
 }
 
-Scaled scale_layers(const Problem& p) {
+// Into s, whose storage is reused: each layer's optics are reset to their defaults (its
+// moments' capacity kept) before they are set, so s holds what a new Scaled would.
+void scale_layers(const Problem& p, Scaled& s) {
     const int N = p.streams;
     const std::size_t L = p.layers.size();
-    Scaled s;
     s.optics.resize(L);
     s.f.assign(L, 0.0);
     s.tau_level.assign(L + 1, 0.0);
@@ -68,6 +69,9 @@ Scaled scale_layers(const Problem& p) {
     for (std::size_t n = 0; n < L; ++n) {
         const Layer& l = p.layers[n];
         LayerOptics& o = s.optics[n];
+        std::vector<double> g = std::move(o.g);
+        o = LayerOptics{};
+        o.g = std::move(g);
         auto mom = [&](int k) { return k < static_cast<int>(l.pmom.size()) ? l.pmom[k] : 0.0; };
         // f -> 1 (all scattering in the truncated peak) would divide by zero; such a
         // layer is kept just short of it (g* then carries no information anyway).
@@ -86,7 +90,6 @@ Scaled scale_layers(const Problem& p) {
                 o.dtau > 0 ? (p.planck_levels[n + 1] - p.planck_levels[n]) / o.dtau : 0;
         }
     }
-    return s;
 }
 
 std::vector<Position> locate(const Problem& p, const Scaled& s) {
@@ -199,11 +202,13 @@ struct Spare {
     std::vector<LayerSolution> sol;
     linalg::BandMatrix band;
     Scratch scratch;
+    Scaled scaled;  // scale_layers sets every value
 };
 thread_local Spare t_spare;
 
 std::vector<double> mode_zero_key(const Problem& p, const Scaled& s) {
     std::vector<double> key{static_cast<double>(p.streams), p.albedo};
+    key.reserve(2 + s.optics.size() * (2 + static_cast<std::size_t>(p.streams)));
     for (const LayerOptics& o : s.optics) {
         key.push_back(o.dtau);
         key.push_back(o.ssa);
@@ -218,11 +223,12 @@ void Solver::setup() {
     std::swap(m_sol, t_spare.sol);
     std::swap(m_band, t_spare.band);
     std::swap(m_scratch, t_spare.scratch);
+    std::swap(m_s, t_spare.scaled);
     m_N = m_p.streams;
     m_L = static_cast<int>(m_p.layers.size());
     m_q.nn = m_N / 2;
     gauss_half_range(m_q.nn, m_q.mu, m_q.weight);
-    m_s = scale_layers(m_p);
+    scale_layers(m_p, m_s);
     m_pos = locate(m_p, m_s);
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         const unsigned char w = m_p.want.empty() ? static_cast<unsigned char>(Problem::kWantBoth)
@@ -400,6 +406,7 @@ Result Solver::run() {
     std::swap(m_sol, t_spare.sol);  // lent to the next solve (Spare)
     std::swap(m_band, t_spare.band);
     std::swap(m_scratch, t_spare.scratch);
+    std::swap(m_s, t_spare.scaled);
     return std::move(m_result);
 }
 
