@@ -22,26 +22,76 @@ constexpr std::size_t kHg0 = 5;   // first Henyey-Greenstein component
 // at its steepest, 1.4 per deg in ln P at 0-2 deg, a chord 0.1 deg long departs from
 // it by under 0.3 %; beyond 20 deg the slopes stay under 0.1 per deg, under 0.04 % over
 // 0.5 deg), Henyey-Greenstein exactly.
+// Where a cosine falls on MieOptics' grid: node i and the weight w of node i + 1.
+struct GridPoint {
+    std::size_t i = 0;
+    double w = 0;
+};
+GridPoint grid_point(double x) {
+    const double a = MieOptics::grid_position(std::acos(x) * 180 / kPi);
+    const std::size_t i = std::min(static_cast<std::size_t>(a), MieOptics::kGridSize - 2);
+    return {i, std::clamp(a - static_cast<double>(i), 0.0, 1.0)};
+}
+
+// The grid points of the last few sets of cosines asked for a mean on this thread: the
+// TMS correction's azimuthal means ask the same cosines (those of the sun and the
+// tables' directions) in every solve of a run.
+const std::vector<GridPoint>& grid_points(const double* xs, int n) {
+    struct Entry {
+        std::vector<double> xs;
+        std::vector<GridPoint> points;
+    };
+    constexpr std::size_t kEntries = 8;
+    thread_local std::array<Entry, kEntries> cache;
+    thread_local std::size_t next = 0;
+    for (const Entry& e : cache)
+        if (e.xs.size() == static_cast<std::size_t>(n) && std::equal(e.xs.begin(), e.xs.end(), xs))
+            return e.points;
+    Entry& e = cache[next];
+    next = (next + 1) % kEntries;
+    e.xs.assign(xs, xs + n);
+    e.points.clear();
+    for (int k = 0; k < n; ++k) e.points.push_back(grid_point(xs[k]));
+    return e.points;
+}
+
 struct Components {
     std::array<double, 3> rayleigh{};
     std::array<const std::vector<double>*, 4> grid{};
     std::vector<double> hg_g;
+    double rayleigh_at(double x) const {
+        return 1 + 3 * rayleigh[1] * x + 5 * rayleigh[2] * (1.5 * x * x - 0.5);
+    }
+    double mie_at(std::size_t r, GridPoint p) const {  // region r's function, linear on the grid
+        if (!grid[r]) return 0;
+        const std::vector<double>& g = *grid[r];
+        return g[p.i] + p.w * (g[p.i + 1] - g[p.i]);
+    }
+    double hg_at(std::size_t h, double x) const {  // (1 - g^2) / (1 + g^2 - 2 g x)^1.5
+        const double g = hg_g[h];
+        return (1 - g * g) / std::pow(1 + g * g - 2 * g * x, 1.5);
+    }
     void evaluate(double x, double* out) const {
-        out[0] = 1 + 3 * rayleigh[1] * x + 5 * rayleigh[2] * (1.5 * x * x - 0.5);
-        const double a = MieOptics::grid_position(std::acos(x) * 180 / kPi);
+        out[0] = rayleigh_at(x);
+        const GridPoint p = grid_point(x);
+        for (std::size_t r = 0; r < 4; ++r) out[kMie0 + r] = mie_at(r, p);
+        for (std::size_t h = 0; h < hg_g.size(); ++h) out[kHg0 + h] = hg_at(h, x);
+    }
+    // ExactPhase::mean: each component's sum over k of its value at xs[k] / n, in k order
+    // (evaluate's numbers), the grid points kept between solves (grid_points).
+    void mean(const double* xs, int n, double* out) const {
+        const std::vector<GridPoint>& points = grid_points(xs, n);
+        out[0] = 0;
+        for (int k = 0; k < n; ++k) out[0] += rayleigh_at(xs[k]) / n;
         for (std::size_t r = 0; r < 4; ++r) {
-            if (!grid[r]) {
-                out[kMie0 + r] = 0;
-                continue;
-            }
-            const std::vector<double>& g = *grid[r];
-            const std::size_t i = std::min(static_cast<std::size_t>(a), g.size() - 2);
-            const double w = std::clamp(a - static_cast<double>(i), 0.0, 1.0);
-            out[kMie0 + r] = g[i] + w * (g[i + 1] - g[i]);
+            double& m = out[kMie0 + r];
+            m = 0;
+            for (int k = 0; k < n; ++k) m += mie_at(r, points[static_cast<std::size_t>(k)]) / n;
         }
-        for (std::size_t h = 0; h < hg_g.size(); ++h) {  // (1 - g^2) / (1 + g^2 - 2 g x)^1.5
-            const double g = hg_g[h];
-            out[kHg0 + h] = (1 - g * g) / std::pow(1 + g * g - 2 * g * x, 1.5);
+        for (std::size_t h = 0; h < hg_g.size(); ++h) {
+            double& m = out[kHg0 + h];
+            m = 0;
+            for (int k = 0; k < n; ++k) m += hg_at(h, xs[k]) / n;
         }
     }
 };
@@ -158,6 +208,7 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
         for (std::size_t n = 0; n < out.size(); ++n)
             std::copy(scat_c[n].begin(), scat_c[n].end(), exact->weights.begin() + n * nc);
         exact->evaluate = [comp](double x, double* v) { comp->evaluate(x, v); };
+        exact->mean = [comp](const double* xs, int n, double* v) { comp->mean(xs, n, v); };
     }
     return out;
 }

@@ -36,6 +36,12 @@ struct ExactPhase {
     std::size_t components = 0;  // 0: the moments are the phase function
     // Writes every component's value at cos_scat (in [-1, 1]) into out[0 .. components).
     std::function<void(double cos_scat, double* out)> evaluate;
+    // Optional: every component's mean over the n cosines cos_scat[0 .. n) into
+    // out[0 .. components), each the sum over k in order of evaluate(cos_scat[k]) / n:
+    // the same numbers as n calls of evaluate, for a phase function that can keep the
+    // work that depends on the cosines alone (the TMS correction's azimuthal means ask
+    // the same cosines in every solve with the same sun and directions).
+    std::function<void(const double* cos_scat, int n, double* out)> mean;
     std::vector<double> weights;  // [layer * components + c]
 };
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -86,6 +87,33 @@ TEST(MieLayers, ExactPhaseIsTheMixture) {
     // The moments are the same mixture's: chi_1 of the top layer is Rayleigh's (0).
     EXPECT_NEAR(layers[0].pmom[1], 0, 1e-15);
     EXPECT_NEAR(layers[2].pmom[1], (0.27 * m.chi[0][1]) / 0.29, 1e-12);
+}
+
+// ExactPhase::mean (the TMS correction's azimuthal means) is the sum of evaluate / n in
+// order, bit for bit: for two sets of cosines, each asked twice (the second time from
+// the grid points kept for it), with a Henyey-Greenstein component among them.
+TEST(MieLayers, MeanIsTheSumOfEvaluateBitForBit) {
+    const MieOptics m = optics(32);
+    rt::ExactPhase x;
+    mie_solver_layers(column(0.9), {0, 1, 2, 3}, m, 32, &x);
+    ASSERT_TRUE(x.mean);
+    std::vector<std::vector<double>> sets(2);
+    for (int k = 0; k < 180; ++k) {
+        const double c = std::cos((k + 0.5) * kPi / 180);
+        sets[0].push_back(std::clamp(-0.3 * 0.6 + 0.76 * c, -1.0, 1.0));
+        sets[1].push_back(std::clamp(0.5 * 0.6 + 0.69 * c, -1.0, 1.0));
+    }
+    for (int pass = 0; pass < 2; ++pass)
+        for (const auto& xs : sets) {
+            const int n = static_cast<int>(xs.size());
+            std::vector<double> want(x.components, 0.0), v(x.components), got(x.components);
+            for (double c : xs) {
+                x.evaluate(c, v.data());
+                for (std::size_t i = 0; i < v.size(); ++i) want[i] += v[i] / n;
+            }
+            x.mean(xs.data(), n, got.data());
+            EXPECT_EQ(got, want) << pass;
+        }
 }
 
 // Conservative scattering (omega = 1, no gas) with the IPH 2 layers in the solver, TMS
