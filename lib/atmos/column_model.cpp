@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "atmos/rayleigh.hpp"
 #include "core/error.hpp"
@@ -91,6 +92,53 @@ std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double waveleng
     if (!has_mie_phase(region, wavelength_um)) return std::nullopt;
     return m_mie->region(region, m_ihaze, m_ivulcn, m_aerosol->boundary_layer_rh_percent(),
                          wavelength_um);
+}
+
+void ColumnModel::mie_moments(int region, double wavelength_um, int nmom, int points,
+                              std::vector<double>& chi, double& integral) const {
+    const auto [lo, hi] = m_mie->wavelength_interval(wavelength_um);
+    const MieNodes* nodes = nullptr;
+    {
+        const std::lock_guard lock(m_mie_mutex);
+        const auto key = std::make_tuple(region, lo, nmom, points);
+        auto it = m_mie_nodes.find(key);
+        if (it == m_mie_nodes.end()) {
+            // Chebyshev points of the first kind on [lo, hi] and their barycentric weights
+            // (-1)^j sin((2j + 1) pi / 2K) (Berrut & Trefethen 2004, SIAM Rev. 46, 501, eq. 5.1).
+            MieNodes n;
+            constexpr int K = kMieNodes;
+            for (int j = 0; j < K; ++j) {
+                const double t = (2 * j + 1) * std::numbers::pi / (2 * K);
+                n.wavelength_um.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(t));
+                n.weight.push_back((j % 2 ? -1.0 : 1.0) * std::sin(t));
+                double in = 0;
+                n.chi.push_back(
+                    phase_moments(*mie_phase(region, n.wavelength_um.back()), nmom, &in, points));
+                n.integral.push_back(in);
+            }
+            it = m_mie_nodes.emplace(key, std::move(n)).first;
+        }
+        nodes = &it->second;  // a map's nodes stay where they are
+    }
+    // Below the first index wavelength the function is the first's (the interval's end).
+    const double x = std::clamp(wavelength_um, lo, hi);
+    chi.assign(static_cast<std::size_t>(nmom) + 1, 0.0);
+    integral = 0;
+    double den = 0;
+    for (std::size_t j = 0; j < nodes->wavelength_um.size(); ++j) {
+        if (x == nodes->wavelength_um[j]) {  // on a node: its own values
+            chi = nodes->chi[j];
+            integral = nodes->integral[j];
+            return;
+        }
+        const double c = nodes->weight[j] / (x - nodes->wavelength_um[j]);
+        den += c;
+        integral += c * nodes->integral[j];
+        for (std::size_t k = 0; k < chi.size(); ++k) chi[k] += c * nodes->chi[j][k];
+    }
+    integral /= den;
+    for (double& v : chi) v /= den;
+    chi[0] = 1;
 }
 
 namespace {

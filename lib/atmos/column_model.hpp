@@ -64,6 +64,17 @@ public:
 
     // Whether mie_phase() gives a function (without building it).
     bool has_mie_phase(int region, double wavelength_um) const;
+    // With has_mie_phase(): the Legendre moments chi_0..chi_nmom of mie_phase(region,
+    // wavelength) and its integral (phase_moments with `points` Gauss points per
+    // interval) by Chebyshev interpolation in the wavelength between the two index
+    // wavelengths it lies between (MiePhaseTable::wavelength_interval), where the
+    // function is smooth in it: kMieNodes nodes, their moments formed once per region,
+    // interval, nmom and points (thread-safe). Measured over LOWTRAN 7's visible and
+    // near-infrared intervals: within 4e-15 of phase_moments at the wavelength itself
+    // (8e-10 with 8 nodes; mie_layers_test.cpp).
+    void mie_moments(int region, double wavelength_um, int nmom, int points,
+                     std::vector<double>& chi, double& integral) const;
+    static constexpr int kMieNodes = 12;
 
     // Every layer (bottom first, profile().size() - 1 of them) at wavenumber nu.
     std::vector<LayerOptics> layers(double nu_cm1) const;
@@ -137,7 +148,14 @@ private:
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                std::size_t level_i, std::size_t level_j, const Ray& ray) const;
     Shells m_shells;
-    ShellNodes m_shell_nodes;        // for the sun's rays from every level
+    ShellNodes m_shell_nodes;  // for the sun's rays from every level
+    struct MieNodes {
+        std::vector<double> wavelength_um, weight;  // Chebyshev nodes, barycentric weights
+        std::vector<std::vector<double>> chi;       // per node
+        std::vector<double> integral;               // per node
+    };
+    mutable std::mutex m_mie_mutex;  // guards m_mie_nodes
+    mutable std::map<std::tuple<int, double, int, int>, MieNodes> m_mie_nodes;
     mutable std::mutex m_ray_mutex;  // guards m_rays (node-based: references stay valid)
     mutable std::map<std::tuple<int, std::size_t, std::size_t, double>, Ray> m_rays;
 };

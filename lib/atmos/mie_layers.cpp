@@ -113,29 +113,46 @@ double MieOptics::grid_position(double angle_deg) {
     return angle_deg <= 20 ? angle_deg / 0.1 : 200 + (angle_deg - 20) / 0.5;
 }
 
+namespace {
+
+// The fewest Gauss points per interval for the moments asked (mie_phase.hpp).
+int moment_points(int nmom) { return nmom <= 32 ? 8 : nmom <= 64 ? 16 : 64; }
+
+// Region r's grid from its function p and the function's integral.
+void form_grid(MieOptics& m, std::size_t r, const TabulatedPhase& p, double integral) {
+    const double scale = 4 * kPi / integral;  // average over the sphere 1
+    m.grid[r].resize(MieOptics::kGridSize);
+    // grid_angle_deg's two runs: 0.1 deg steps to 20 deg, 0.5 deg steps beyond.
+    p.at_steps(0, 0.1, 0, 201, m.grid[r].data());
+    p.at_steps(20, 0.5, 1, 321, m.grid[r].data() + 201);
+    for (double& v : m.grid[r]) v *= scale;
+}
+
+}  // namespace
+
 MieOptics mie_optics(const ColumnModel& column, double wavelength_um, int nmom) {
-    std::array<std::optional<TabulatedPhase>, 4> regions;
-    for (int r = 0; r < 4; ++r) regions[r] = column.mie_phase(r, wavelength_um);
-    return mie_optics(regions, nmom);
+    MieOptics m;
+    for (std::size_t r = 0; r < 4; ++r) {
+        const auto p = column.mie_phase(static_cast<int>(r), wavelength_um);
+        if (!p) continue;
+        m.has[r] = true;
+        double integral = 0;
+        column.mie_moments(static_cast<int>(r), wavelength_um, nmom, moment_points(nmom), m.chi[r],
+                           integral);
+        form_grid(m, r, *p, integral);
+    }
+    return m;
 }
 
 MieOptics mie_optics(const std::array<std::optional<TabulatedPhase>, 4>& regions, int nmom) {
     MieOptics m;
-    const std::size_t n = MieOptics::kGridSize - 1;
     for (std::size_t r = 0; r < 4; ++r) {
         const auto& p = regions[r];
         if (!p) continue;
         m.has[r] = true;
         double integral = 0;
-        // The fewest points per interval for the moments asked (mie_phase.hpp).
-        const int points = nmom <= 32 ? 8 : nmom <= 64 ? 16 : 64;
-        m.chi[r] = phase_moments(*p, nmom, &integral, points);
-        const double scale = 4 * kPi / integral;  // average over the sphere 1
-        m.grid[r].resize(n + 1);
-        // grid_angle_deg's two runs: 0.1 deg steps to 20 deg, 0.5 deg steps beyond.
-        p->at_steps(0, 0.1, 0, 201, m.grid[r].data());
-        p->at_steps(20, 0.5, 1, 321, m.grid[r].data() + 201);
-        for (double& v : m.grid[r]) v *= scale;
+        m.chi[r] = phase_moments(*p, nmom, &integral, moment_points(nmom));
+        form_grid(m, r, *p, integral);
     }
     return m;
 }
@@ -149,7 +166,7 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
     for (std::size_t r = 0; r < 4; ++r)
         if (mie.has[r]) comp->grid[r] = &mie.grid[r];
     std::vector<rt::Layer> out;
-    std::vector<std::vector<double>> scat_c;  // per output layer: scattering per component
+    std::vector<std::vector<double>> scat_c;      // per output layer: scattering per component
     std::vector<std::vector<double>> hg_moments;  // g^k of each Henyey-Greenstein component
     auto hg_chi = [&](std::size_t h) -> const std::vector<double>& {  // made on first use
         for (std::size_t n = hg_moments.size(); n <= h; ++n) {
@@ -195,8 +212,7 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
                 for (int k = 0; k <= moments; ++k) pm[k] += w * chi[k];
             }
         }
-        for (int k = 0; k <= moments; ++k)
-            pm[k] = scat > 0 ? pm[k] / scat : (k == 0 ? 1.0 : 0.0);
+        for (int k = 0; k <= moments; ++k) pm[k] = scat > 0 ? pm[k] / scat : (k == 0 ? 1.0 : 0.0);
         for (double& v : sc) v = scat > 0 ? v / scat : 0.0;
         scat_c.push_back(std::move(sc));
         out.push_back(std::move(l));

@@ -37,8 +37,8 @@ void read_rows(const std::string& path, std::size_t columns, std::size_t rows, R
     std::size_t count = 0;
     for (; !reader.at_end(); ++count) row(reader, reader.fields(columns, what));
     if (count != rows)
-        throw DataError(in.at(0), "expected " + std::to_string(rows) + " rows, found " +
-                                      std::to_string(count));
+        throw DataError(
+            in.at(0), "expected " + std::to_string(rows) + " rows, found " + std::to_string(count));
 }
 
 // Legendre polynomials P_0..P_n at x into out.
@@ -99,15 +99,16 @@ void TabulatedPhase::at_steps(double start_deg, double step_deg, std::size_t fro
     auto value = [&](std::size_t i, double x) {
         const double f = (x - angle_deg[i]) / (angle_deg[i + 1] - angle_deg[i]);
         const double a = p_sr1[i], b = p_sr1[i + 1];
-        return l.ln_interval[i] ? std::exp(l.ln[i] + f * (l.ln[i + 1] - l.ln[i]))
-                                : a + f * (b - a);
+        return l.ln_interval[i] ? std::exp(l.ln[i] + f * (l.ln[i + 1] - l.ln[i])) : a + f * (b - a);
     };
     auto angle = [&](std::size_t j) { return start_deg + static_cast<double>(j) * step_deg; };
     std::size_t j = from;
     for (; j < to && angle(j) < angle_deg.front(); ++j) out[j - from] = value(0, angle_deg.front());
     // Interval i holds the angles below node i + 1 (bracket()'s), the last one its end too.
     for (std::size_t i = 0; i <= last && j < to; ++i) {
-        auto inside = [&](double x) { return i < last ? x < angle_deg[i + 1] : x <= angle_deg[i + 1]; };
+        auto inside = [&](double x) {
+            return i < last ? x < angle_deg[i + 1] : x <= angle_deg[i + 1];
+        };
         if (!inside(angle(j))) continue;
         double v = value(i, angle(j));
         out[j++ - from] = v;
@@ -131,7 +132,7 @@ namespace {
 struct MomentNodes {
     std::vector<double> angle_deg;
     int nmom = -1, gauss_points = 0;
-    std::size_t per = 0;  // nodes per interval
+    std::size_t per = 0;                       // nodes per interval
     std::vector<double> fraction, weight, pk;  // per node; pk[node * (nmom + 1) + k]
 };
 
@@ -219,9 +220,10 @@ MiePhaseTable MiePhaseTable::load(const std::string& data_dir) {
                   for (std::size_t n = 0; n < 70; ++n)
                       t.m_functions[n].push_back(r.number(row[n + 1], "a phase function value"));
               });
-    t.m_wavelengths = {0.2, 0.3,  0.55,  0.6943, 1.06, 1.536, 2,    2.5,  2.7,
-                       3,   3.2,  3.39,  5,      6,    7.2,   7.9,  8.7,  9.2,
-                       10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,   40};  // PHASEF's WAVE
+    t
+        .m_wavelengths = {0.2, 0.3,   0.55, 0.6943, 1.06, 1.536, 2,    2.5, 2.7,
+                          3,   3.2,   3.39, 5,      6,    7.2,   7.9,  8.7, 9.2,
+                          10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,  40};  // PHASEF's WAVE
     read_rows(dir + "aerosol_phase_function_index.txt", 29, 26,
               [&](const FieldReader& r, std::span<const std::string_view> row) {
                   std::vector<int> numbers;
@@ -248,6 +250,11 @@ TabulatedPhase MiePhaseTable::model(int model, double wavelength_um) const {
     TabulatedPhase out{m_angles, {}};
     for (std::size_t k = 0; k < a.size(); ++k) out.p_sr1.push_back(log_lerp(a[k], b[k], f));
     return out;
+}
+
+std::pair<double, double> MiePhaseTable::wavelength_interval(double wavelength_um) const {
+    const std::size_t i = bracket(m_wavelengths, wavelength_um).first;
+    return {m_wavelengths[i], m_wavelengths[i + 1]};
 }
 
 bool MiePhaseTable::has_region(int region, int ihaze, double wavelength_um) const {

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sigchain::atmos {
@@ -84,6 +85,10 @@ public:
                                          double wavelength_um) const;
     // Whether region() gives a function (without building it).
     bool has_region(int region, int ihaze, double wavelength_um) const;
+    // The index wavelengths (um) whose functions model() and region() interpolate
+    // between at this wavelength: within them each is a smooth function of the
+    // wavelength (ln P linear in it, as PHASEF interpolates); clamped at the ends.
+    std::pair<double, double> wavelength_interval(double wavelength_um) const;
 
 private:
     std::vector<double> m_angles;                  // 34
