@@ -15,17 +15,36 @@ constexpr double kWiden = 2.5;           // see fit_band_model_terms
 constexpr double kOpaqueDepth = 20.0;
 constexpr double kClip = 0.1;  // clip where within kClip tol of 1 or 0
 
-// Least squares on the columns `cols` of A (column-major: column c at at[c * rows]) by
-// modified Gram-Schmidt QR: returns z (size cols.size()) minimising |A_P z - b|. Q is
-// kept column by column, so each pass runs over contiguous memory.
+// The QR factors of the columns of A last solved for in one nnls: Lawson and Hanson's
+// subproblems mostly add a column to the previous set, and modified Gram-Schmidt forms
+// column j from the columns before it alone, so the columns up to the first that
+// differs are the same numbers and are kept.
+struct QrCache {
+    std::vector<std::size_t> cols;  // the columns of A in q, in order
+    std::vector<double> q;          // rows x cols.size(), column by column
+    std::vector<double> r;          // R(l, j) at r[l * stride + j]
+    std::size_t stride = 0;         // A's column count
+};
+
+// Least squares on the columns `cols` (ascending) of A (column-major: column c at
+// at[c * rows]) by modified Gram-Schmidt QR: returns z (size cols.size()) minimising
+// |A_P z - b|. Q is kept column by column, so each pass runs over contiguous memory.
 std::vector<double> least_squares(const std::vector<double>& at, const std::vector<double>& b,
-                                  std::size_t rows, const std::vector<std::size_t>& cols) {
-    const std::size_t p = cols.size();
-    std::vector<double> q(rows * p), r(p * p, 0.0);
-    for (std::size_t j = 0; j < p; ++j)
+                                  std::size_t rows, const std::vector<std::size_t>& cols,
+                                  QrCache& c) {
+    const std::size_t p = cols.size(), n = c.stride;
+    std::size_t same = 0;
+    while (same < p && same < c.cols.size() && c.cols[same] == cols[same]) ++same;
+    c.cols = cols;
+    c.q.resize(rows * p);
+    auto& q = c.q;
+    auto& r = c.r;
+    for (std::size_t j = same; j < p; ++j) {
         std::copy_n(at.begin() + static_cast<long>(cols[j] * rows), rows,
                     q.begin() + static_cast<long>(j * rows));
-    for (std::size_t j = 0; j < p; ++j) {
+        for (std::size_t l = 0; l <= j; ++l) r[l * n + j] = 0;
+    }
+    for (std::size_t j = same; j < p; ++j) {
         double* qj = &q[j * rows];
         // Two Gram-Schmidt passes ("twice is enough", Giraud et al. 2005): the
         // exponentials are nearly collinear and one pass loses orthogonality.
@@ -34,13 +53,13 @@ std::vector<double> least_squares(const std::vector<double>& at, const std::vect
                 const double* ql = &q[l * rows];
                 double d = 0;
                 for (std::size_t i = 0; i < rows; ++i) d += ql[i] * qj[i];
-                r[l * p + j] += d;
+                r[l * n + j] += d;
                 for (std::size_t i = 0; i < rows; ++i) qj[i] -= d * ql[i];
             }
         double norm = 0;
         for (std::size_t i = 0; i < rows; ++i) norm += qj[i] * qj[i];
         norm = std::sqrt(norm);
-        r[j * p + j] = norm;
+        r[j * n + j] = norm;
         if (norm > 0)
             for (std::size_t i = 0; i < rows; ++i) qj[i] /= norm;
     }
@@ -48,8 +67,8 @@ std::vector<double> least_squares(const std::vector<double>& at, const std::vect
     for (std::size_t j = 0; j < p; ++j)
         for (std::size_t i = 0; i < rows; ++i) z[j] += q[j * rows + i] * b[i];
     for (std::size_t j = p; j-- > 0;) {  // back substitution R z = Q^T b
-        for (std::size_t l = j + 1; l < p; ++l) z[j] -= r[j * p + l] * z[l];
-        z[j] = r[j * p + j] > 0 ? z[j] / r[j * p + j] : 0.0;
+        for (std::size_t l = j + 1; l < p; ++l) z[j] -= r[j * n + l] * z[l];
+        z[j] = r[j * n + j] > 0 ? z[j] / r[j * n + j] : 0.0;
     }
     return z;
 }
@@ -168,6 +187,9 @@ std::vector<double> nnls(const std::vector<double>& a, const std::vector<double>
     for (std::size_t i = 0; i < rows; ++i)
         for (std::size_t j = 0; j < cols; ++j) at[j * rows + i] = a[i * cols + j];
     std::vector<double> res(rows);
+    QrCache qr;
+    qr.stride = cols;
+    qr.r.assign(cols * cols, 0.0);
     auto gradient = [&] {  // w = A^T (b - A x)
         std::copy(b.begin(), b.end(), res.begin());
         for (std::size_t i = 0; i < rows; ++i)
@@ -194,7 +216,7 @@ std::vector<double> nnls(const std::vector<double>& a, const std::vector<double>
             std::vector<std::size_t> p;
             for (std::size_t j = 0; j < cols; ++j)
                 if (passive[j]) p.push_back(j);
-            const std::vector<double> z = least_squares(at, b, rows, p);
+            const std::vector<double> z = least_squares(at, b, rows, p, qr);
             double alpha = 2;  // step toward z, limited by the first x_j reaching 0
             for (std::size_t l = 0; l < p.size(); ++l)
                 if (z[l] <= 0) alpha = std::min(alpha, x[p[l]] / (x[p[l]] - z[l]));
