@@ -284,12 +284,14 @@ void read_tables(const SampleSetup& s, const Solutions& sol, const std::vector<L
 }
 
 // The coupling terms of the sample (rt/coupling.hpp): one more solve, of the column
-// lit only by a ground of unit isotropic radiance, read at the sensor level.
-void read_coupling(const SampleSetup& s, const rt::Problem& prob, const rt::Result& solar,
+// lit only by a ground of unit isotropic radiance, read at the sensor level; prob (not
+// used after) gives its layers to that solve.
+void read_coupling(const SampleSetup& s, rt::Problem&& prob, const rt::Result& solar,
                    SampleResult& res) {
     std::vector<double> mus;
     for (double v : s.views_deg) mus.push_back(std::cos(v * kDeg));
-    const rt::SurfaceCoupling c = rt::surface_coupling(prob, prob.utau[0], mus);
+    const double sensor_tau = prob.utau[0];
+    const rt::SurfaceCoupling c = rt::surface_coupling(std::move(prob), sensor_tau, mus);
     res.spherical_albedo = c.spherical_albedo;
     res.diffuse_up = c.diffuse_up;
     // Diffuse transmittance of the beam: E_diffuse(ground) / (mu0 Es), dimensionless.
@@ -335,7 +337,7 @@ SampleResult solve_term(const SampleSetup& s, const std::vector<LayerOptics>& co
                 prob, nu);
     }
     read_tables(s, sol, col, nu, res);
-    if (s.options.coupling) read_coupling(s, prob, sol.solar, res);
+    if (s.options.coupling) read_coupling(s, std::move(prob), sol.solar, res);
     return res;
 }
 
@@ -426,7 +428,7 @@ SampleResult solve_sample(const SampleSetup& setup, const SamplePrep& p) {
         sol.thermal_up = solve_emission(s, col, prob, nu, s.column.sensor_level());
     }
     read_tables(s, sol, col, nu, res);
-    if (s.options.coupling) read_coupling(s, prob, sol.solar, res);
+    if (s.options.coupling) read_coupling(s, std::move(prob), sol.solar, res);
     return res;
 }
 

@@ -10,10 +10,13 @@
 
 namespace sigchain::rt {
 
-SurfaceCoupling surface_coupling(const Problem& atmosphere, double level_tau,
-                                 const std::vector<double>& up_mu) {
+namespace {
+
+// surface_coupling with the atmosphere's layers given (copied or moved).
+SurfaceCoupling coupling(const Problem& atmosphere, std::vector<Layer> layers, double level_tau,
+                         const std::vector<double>& up_mu) {
     Problem p;
-    p.layers = atmosphere.layers;
+    p.layers = std::move(layers);
     p.streams = atmosphere.streams;
     p.delta_m = atmosphere.delta_m;
     p.intensity_correction = atmosphere.intensity_correction;
@@ -47,6 +50,19 @@ SurfaceCoupling surface_coupling(const Problem& atmosphere, double level_tau,
         c.diffuse_up.push_back(std::clamp(at.intensity[i] - direct, 0.0, 1.0));
     }
     return c;
+}
+
+}  // namespace
+
+SurfaceCoupling surface_coupling(const Problem& atmosphere, double level_tau,
+                                 const std::vector<double>& up_mu) {
+    return coupling(atmosphere, atmosphere.layers, level_tau, up_mu);
+}
+
+SurfaceCoupling surface_coupling(Problem&& atmosphere, double level_tau,
+                                 const std::vector<double>& up_mu) {
+    std::vector<Layer> layers = std::move(atmosphere.layers);
+    return coupling(atmosphere, std::move(layers), level_tau, up_mu);
 }
 
 }  // namespace sigchain::rt

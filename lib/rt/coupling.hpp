@@ -32,5 +32,8 @@ struct SurfaceCoupling {
 // sigchain::Error as solve() does.
 SurfaceCoupling surface_coupling(const Problem& atmosphere, double level_tau,
                                  const std::vector<double>& up_mu);
+// The same taking `atmosphere` over: its layers are moved into the solve, not copied.
+SurfaceCoupling surface_coupling(Problem&& atmosphere, double level_tau,
+                                 const std::vector<double>& up_mu);
 
 }  // namespace sigchain::rt
