@@ -246,6 +246,30 @@ TEST(BuildRadiance, UpwelledGridAgreesWithTheViewPlane) {
 namespace sigchain::atmos {
 namespace {
 
+// The largest relative difference of `a` from `full` over every view's path radiance
+// and transmission and every sky cell's radiance.
+double worst_relative_difference(const std::vector<io::Rad>& a,
+                                 const std::vector<io::Rad>& full) {
+    double worst = 0;
+    auto compare = [&](double x, double ref) {
+        if (ref > 0) worst = std::max(worst, std::abs(x / ref - 1));
+    };
+    for (std::size_t b = 0; b < full.size(); ++b) {
+        for (std::size_t v = 0; v < full[b].views.size(); ++v)
+            for (std::size_t s = 0; s < full[b].samples.size(); ++s) {
+                compare(a[b].views[v].path[s].scattered_radiance,
+                        full[b].views[v].path[s].scattered_radiance);
+                compare(a[b].views[v].path[s].transmission,
+                        full[b].views[v].path[s].transmission);
+            }
+        for (std::size_t c = 0; c < full[b].sky->cells.size(); ++c)
+            for (std::size_t s = 0; s < full[b].samples.size(); ++s)
+                compare(a[b].sky->cells[c].scattered_radiance[s],
+                        full[b].sky->cells[c].scattered_radiance[s]);
+    }
+    return worst;
+}
+
 // Merging thin layers for the solver (merge_tau 0.01) keeps every single-scattering
 // term and loses only the attenuation order inside a merged slab, O(0.01^2) of the
 // slab's own contribution: the tables must agree with the unmerged solution within
@@ -257,22 +281,7 @@ TEST(BuildRadiance, MergingThinLayersChangesTheTablesBelowATenthOfAPercent) {
     const auto merged = build_radiance(hawkeye_deck(), small_snd(), o);
     o.merge_tau = 0;
     const auto full = build_radiance(hawkeye_deck(), small_snd(), o);
-    double worst = 0;
-    auto compare = [&](double a, double b) {
-        if (b > 0) worst = std::max(worst, std::abs(a / b - 1));
-    };
-    for (std::size_t b = 0; b < full.size(); ++b) {
-        for (std::size_t v = 0; v < full[b].views.size(); ++v)
-            for (std::size_t s = 0; s < full[b].samples.size(); ++s) {
-                compare(merged[b].views[v].path[s].scattered_radiance,
-                        full[b].views[v].path[s].scattered_radiance);
-                compare(merged[b].views[v].path[s].transmission, full[b].views[v].path[s].transmission);
-            }
-        for (std::size_t c = 0; c < full[b].sky->cells.size(); ++c)
-            for (std::size_t s = 0; s < full[b].samples.size(); ++s)
-                compare(merged[b].sky->cells[c].scattered_radiance[s],
-                        full[b].sky->cells[c].scattered_radiance[s]);
-    }
+    const double worst = worst_relative_difference(merged, full);
     EXPECT_LT(worst, 1e-3);
     std::printf("merged vs full solver layers: worst relative difference %.2e\n", worst);
 }
@@ -307,22 +316,7 @@ TEST(BuildRadiance, MergeDepthAtALooseToleranceStaysWithinItsShare) {
     const auto merged = build_radiance(hawkeye_deck(), small_snd(), o);
     o.merge_tau = 0;
     const auto full = build_radiance(hawkeye_deck(), small_snd(), o);
-    double worst = 0;
-    auto compare = [&](double a, double b) {
-        if (b > 0) worst = std::max(worst, std::abs(a / b - 1));
-    };
-    for (std::size_t b = 0; b < full.size(); ++b) {
-        for (std::size_t v = 0; v < full[b].views.size(); ++v)
-            for (std::size_t s = 0; s < full[b].samples.size(); ++s) {
-                compare(merged[b].views[v].path[s].scattered_radiance,
-                        full[b].views[v].path[s].scattered_radiance);
-                compare(merged[b].views[v].path[s].transmission, full[b].views[v].path[s].transmission);
-            }
-        for (std::size_t c = 0; c < full[b].sky->cells.size(); ++c)
-            for (std::size_t s = 0; s < full[b].samples.size(); ++s)
-                compare(merged[b].sky->cells[c].scattered_radiance[s],
-                        full[b].sky->cells[c].scattered_radiance[s]);
-    }
+    const double worst = worst_relative_difference(merged, full);
     EXPECT_LT(worst, 0.05 / 20);
     std::printf("merge depth %.4f vs every level: worst relative difference %.2e\n", depth,
                 worst);

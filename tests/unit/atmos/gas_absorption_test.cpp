@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -518,17 +519,18 @@ TEST(GasAbsorptionLowtranOutput, SeaLevelAmountsMatchTape6) {
 
 // ---- Tables and speed ------------------------------------------------------------------
 
-// A damaged table is reported with its file and line; a missing folder is an IoError.
-TEST(GasAbsorptionTables, BadTableNamesFileAndLine) {
+// The data folder copied to TempDir()/name with the first data line (not a comment)
+// of the lowtran7 table `file` changed by `damage`; returns that line's number.
+static int damaged_copy(const std::string& name, const std::string& file,
+                        const std::function<void(std::string&)>& damage) {
     namespace fs = std::filesystem;
-    EXPECT_THROW(GasTables::load("/nonexistent"), IoError);
-    const fs::path dir = fs::path(testing::TempDir()) / "gas_tables";
+    const fs::path dir = fs::path(testing::TempDir()) / name;
     fs::create_directories(dir / "atmosphere/lowtran7");
     for (const auto& e : fs::directory_iterator(kDataDir + "/atmosphere/lowtran7"))
         fs::copy_file(e.path(), dir / "atmosphere/lowtran7" / e.path().filename(),
                       fs::copy_options::overwrite_existing);
-    const fs::path n2 = dir / "atmosphere/lowtran7/n2_continuum.txt";
-    std::ifstream in(n2);
+    const fs::path path = dir / "atmosphere/lowtran7" / file;
+    std::ifstream in(path);
     std::string text((std::istreambuf_iterator<char>(in)), {}), bad;
     in.close();
     int line = 0, damaged = 0;
@@ -536,12 +538,22 @@ TEST(GasAbsorptionTables, BadTableNamesFileAndLine) {
     for (std::string l; std::getline(lines, l);) {
         ++line;
         if (!damaged && !l.empty() && l[0] != '#') {
-            l = "   2080  4.807692 2.93x-04";
+            damage(l);
             damaged = line;
         }
         bad += l + "\n";
     }
-    std::ofstream(n2) << bad;
+    std::ofstream(path) << bad;
+    return damaged;
+}
+
+// A damaged table is reported with its file and line; a missing folder is an IoError.
+TEST(GasAbsorptionTables, BadTableNamesFileAndLine) {
+    namespace fs = std::filesystem;
+    EXPECT_THROW(GasTables::load("/nonexistent"), IoError);
+    const fs::path dir = fs::path(testing::TempDir()) / "gas_tables";
+    const int damaged = damaged_copy("gas_tables", "n2_continuum.txt",
+                                     [](std::string& l) { l = "   2080  4.807692 2.93x-04"; });
     try {
         GasTables::load(dir.string());
         ADD_FAILURE() << "no error";
@@ -596,25 +608,9 @@ TEST(GasAbsorptionTables, ARangedLoadReadsWhatReachesItAndAnswersAlike) {
 TEST(GasAbsorptionTables, BadBandRangesNameTheirLine) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::path(testing::TempDir()) / "gas_ranges";
-    fs::create_directories(dir / "atmosphere/lowtran7");
-    for (const auto& e : fs::directory_iterator(kDataDir + "/atmosphere/lowtran7"))
-        fs::copy_file(e.path(), dir / "atmosphere/lowtran7" / e.path().filename(),
-                      fs::copy_options::overwrite_existing);
-    const fs::path constants = dir / "atmosphere/lowtran7/band_model_constants.txt";
-    std::ifstream in(constants);
-    std::string text((std::istreambuf_iterator<char>(in)), {}), bad;
-    in.close();
-    int line = 0, damaged = 0;
-    std::istringstream lines(text);
-    for (std::string l; std::getline(lines, l);) {
-        ++line;
-        if (!damaged && !l.empty() && l[0] != '#') {
-            l.replace(l.rfind("0-345"), 5, "0~345");
-            damaged = line;
-        }
-        bad += l + "\n";
-    }
-    std::ofstream(constants) << bad;
+    const int damaged = damaged_copy("gas_ranges", "band_model_constants.txt", [](std::string& l) {
+        l.replace(l.rfind("0-345"), 5, "0~345");
+    });
     try {
         GasTables::load(dir.string(), 14285, 25000);
         ADD_FAILURE() << "no error";
