@@ -42,8 +42,8 @@ void reduced_matrix(const Quadrature& q, int m, const double* sqrt_w, Scratch& s
     const auto& ddif = sc.b;
     auto& x = sc.c;
     auto& y = sc.mat;
-    x.assign(nn * nn, 0.0);
-    y.assign(nn * nn, 0.0);
+    x.resize(nn * nn);  // every entry is written below (as are yl's and cm's)
+    y.resize(nn * nn);
     for (int i = 0; i < nn; ++i)
         for (int j = 0; j < nn; ++j) {
             const double sw = sqrt_w[i] * sqrt_w[j];
@@ -55,7 +55,7 @@ void reduced_matrix(const Quadrature& q, int m, const double* sqrt_w, Scratch& s
         throw Error("discrete-ordinate solver: homogeneous problem not positive definite (mode " +
                     std::to_string(m) + ")");
     auto& yl = sc.work;  // Y L
-    yl.assign(nn * nn, 0.0);
+    yl.resize(nn * nn);
     for (int i = 0; i < nn; ++i)
         for (int j = 0; j < nn; ++j) {
             double s = 0;
@@ -63,7 +63,7 @@ void reduced_matrix(const Quadrature& q, int m, const double* sqrt_w, Scratch& s
             yl[i * nn + j] = s;
         }
     auto& cm = sc.v;
-    cm.assign(nn * nn, 0.0);
+    cm.resize(nn * nn);
     for (int i = 0; i < nn; ++i)
         for (int j = 0; j <= i; ++j) {
             double s = 0;
@@ -79,7 +79,7 @@ void eigenvectors(const Quadrature& q, const LayerOptics& o, const double* sqrt_
     const int nn = q.nn;
     const auto& x = sc.c;
     const auto& dsum = sc.a;
-    sc.s.assign(nn, 0.0);
+    sc.s.resize(nn);  // written for every j before it is read
     for (int j = 0; j < nn; ++j) {
         const double k = std::sqrt(std::max(sc.lam[j], 1e-300));
         out.k[j] = k;
@@ -296,10 +296,10 @@ void solve_layer(const Quadrature& q, int m, const LayerOptics& optics, const do
     const int nn = q.nn, n2 = 2 * nn, nl = n2;
     out.nn = nn;
     out.nl = nl;
-    out.k.assign(nn, 0.0);
-    out.exp_k.assign(nn, 0.0);
-    out.gp.assign(nn * nn, 0.0);
-    out.gm.assign(nn * nn, 0.0);
+    out.k.resize(nn);  // eigenvectors() writes every entry of these four
+    out.exp_k.resize(nn);
+    out.gp.resize(nn * nn);
+    out.gm.resize(nn * nn);
     homogeneous(q, m, optics, lam, out, scratch);
     // Scattering moments of every decaying solution (scatter_moments for each), folded
     // with Lambda_l(-mu) = (-1)^(l+m) Lambda_l(mu): w (G+ + G-) serves even l + m, w (G+ - G-)
