@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "atmos/rayleigh.hpp"
@@ -97,28 +98,29 @@ std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double waveleng
 void ColumnModel::mie_moments(int region, double wavelength_um, int nmom, int points,
                               std::vector<double>& chi, double& integral) const {
     const auto [lo, hi] = m_mie->wavelength_interval(wavelength_um);
+    const auto key = std::make_tuple(region, lo, nmom, points);
     const MieNodes* nodes = nullptr;
     {
         const std::lock_guard lock(m_mie_mutex);
-        const auto key = std::make_tuple(region, lo, nmom, points);
-        auto it = m_mie_nodes.find(key);
-        if (it == m_mie_nodes.end()) {
-            // Chebyshev points of the first kind on [lo, hi] and their barycentric weights
-            // (-1)^j sin((2j + 1) pi / 2K) (Berrut & Trefethen 2004, SIAM Rev. 46, 501, eq. 5.1).
-            MieNodes n;
-            constexpr int K = kMieNodes;
-            for (int j = 0; j < K; ++j) {
-                const double t = (2 * j + 1) * std::numbers::pi / (2 * K);
-                n.wavelength_um.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(t));
-                n.weight.push_back((j % 2 ? -1.0 : 1.0) * std::sin(t));
-                double in = 0;
-                n.chi.push_back(
-                    phase_moments(*mie_phase(region, n.wavelength_um.back()), nmom, &in, points));
-                n.integral.push_back(in);
-            }
-            it = m_mie_nodes.emplace(key, std::move(n)).first;
+        const auto it = m_mie_nodes.find(key);
+        if (it != m_mie_nodes.end()) nodes = &it->second;  // a map's nodes stay put
+    }
+    if (!nodes) {  // formed outside the lock (as the rays are: cached_ray)
+        // Chebyshev points of the first kind on [lo, hi] and their barycentric weights
+        // (-1)^j sin((2j + 1) pi / 2K) (Berrut & Trefethen 2004, SIAM Rev. 46, 501, eq. 5.1).
+        MieNodes n;
+        constexpr int K = kMieNodes;
+        for (int j = 0; j < K; ++j) {
+            const double t = (2 * j + 1) * std::numbers::pi / (2 * K);
+            n.wavelength_um.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(t));
+            n.weight.push_back((j % 2 ? -1.0 : 1.0) * std::sin(t));
+            double in = 0;
+            n.chi.push_back(
+                phase_moments(*mie_phase(region, n.wavelength_um.back()), nmom, &in, points));
+            n.integral.push_back(in);
         }
-        nodes = &it->second;  // a map's nodes stay where they are
+        const std::lock_guard lock(m_mie_mutex);
+        nodes = &m_mie_nodes.emplace(key, std::move(n)).first->second;
     }
     // Below the first index wavelength the function is the first's (the interval's end).
     const double x = std::clamp(wavelength_um, lo, hi);
@@ -257,33 +259,35 @@ double ColumnModel::sun_transmittance(double nu_cm1, const std::vector<LayerOpti
     return slant_transmittance(nu_cm1, layers, level, m_profile.size() - 1, ray);
 }
 
-const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
-    const auto key = std::make_tuple(0, level, std::size_t{0}, mu0);
+// The cached rays are traced outside the lock, so that threads needing different rays
+// trace them at once; a ray two threads traced together is the same ray (deterministic),
+// and the first one kept.
+const Ray& ColumnModel::cached_ray(const RayKey& key, const std::function<Ray()>& trace) const {
+    {
+        const std::lock_guard lock(m_ray_mutex);
+        const auto it = m_rays.find(key);
+        if (it != m_rays.end()) return it->second;
+    }
+    Ray ray = trace();
     const std::lock_guard lock(m_ray_mutex);
-    auto it = m_rays.find(key);
-    if (it == m_rays.end())
-        it = m_rays
-                 .emplace(key, trace_to_sun(m_shells, m_shell_nodes, level,
-                                            std::acos(std::clamp(mu0, -1.0, 1.0))))
-                 .first;
-    return it->second;
+    return m_rays.emplace(key, std::move(ray)).first->second;
 }
 
-// Snell's invariant n r sin z carries the zenith angle at level j down to level i
-// (past the horizon of level i: grazing there).
+const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
+    return cached_ray(std::make_tuple(0, level, std::size_t{0}, mu0), [&] {
+        return trace_to_sun(m_shells, m_shell_nodes, level, std::acos(std::clamp(mu0, -1.0, 1.0)));
+    });
+}
+
 const Ray& ColumnModel::view_ray(std::size_t i, std::size_t j, double mu) const {
-    const auto key = std::make_tuple(1, i, j, mu);
-    const std::lock_guard lock(m_ray_mutex);
-    auto it = m_rays.find(key);
-    if (it == m_rays.end()) {
+    return cached_ray(std::make_tuple(1, i, j, mu), [&] {
         const double R = m_shells.radius_km;
         const double nr_j = (1 + m_shells.refractivity[j]) * (R + m_shells.z_km[j]);
         const double nr_i = (1 + m_shells.refractivity[i]) * (R + m_shells.z_km[i]);
         const double sin_j = std::sqrt(std::max(0.0, 1 - mu * mu));
         const double zenith_i = std::asin(std::min(1.0, nr_j * sin_j / nr_i));
-        it = m_rays.emplace(key, trace_up(m_shells, i, j, zenith_i)).first;
-    }
-    return it->second;
+        return trace_up(m_shells, i, j, zenith_i);
+    });
 }
 
 }  // namespace sigchain::atmos

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -156,8 +157,10 @@ private:
     };
     mutable std::mutex m_mie_mutex;  // guards m_mie_nodes
     mutable std::map<std::tuple<int, double, int, int>, MieNodes> m_mie_nodes;
+    using RayKey = std::tuple<int, std::size_t, std::size_t, double>;
     mutable std::mutex m_ray_mutex;  // guards m_rays (node-based: references stay valid)
-    mutable std::map<std::tuple<int, std::size_t, std::size_t, double>, Ray> m_rays;
+    mutable std::map<RayKey, Ray> m_rays;
+    const Ray& cached_ray(const RayKey& key, const std::function<Ray()>& trace) const;
 };
 
 }  // namespace sigchain::atmos
