@@ -2,6 +2,7 @@
 #include "atmos/column_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -9,6 +10,7 @@
 #include "atmos/rayleigh.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "core/vector_clones.hpp"
 
 namespace sigchain::atmos {
 
@@ -95,8 +97,26 @@ std::optional<TabulatedPhase> ColumnModel::mie_phase(int region, double waveleng
                          wavelength_um);
 }
 
+namespace {
+
+// out[k] = sum over j in order of c[j] f[j][k], divided by den (f.size() <= kMieNodes).
+SIGCHAIN_VECTOR_CLONES
+void barycentric_sum(const double* c, const std::vector<std::vector<double>>& f, double den,
+                     double* out, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) out[k] = 0;
+    for (std::size_t j = 0; j < f.size(); ++j) {
+        const double* fj = f[j].data();
+        const double cj = c[j];
+        for (std::size_t k = 0; k < n; ++k) out[k] += cj * fj[k];
+    }
+    for (std::size_t k = 0; k < n; ++k) out[k] /= den;
+}
+
+}  // namespace
+
 void ColumnModel::mie_moments(int region, double wavelength_um, int nmom, int points,
-                              std::vector<double>& chi, double& integral) const {
+                              std::vector<double>& chi, double& integral,
+                              std::vector<double>* grid) const {
     const auto [lo, hi] = m_mie->wavelength_interval(wavelength_um);
     const auto key = std::make_tuple(region, lo, nmom, points);
     const MieNodes* nodes = nullptr;
@@ -115,32 +135,42 @@ void ColumnModel::mie_moments(int region, double wavelength_um, int nmom, int po
             n.wavelength_um.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(t));
             n.weight.push_back((j % 2 ? -1.0 : 1.0) * std::sin(t));
             double in = 0;
-            n.chi.push_back(
-                phase_moments(*mie_phase(region, n.wavelength_um.back()), nmom, &in, points));
+            const TabulatedPhase p = *mie_phase(region, n.wavelength_um.back());
+            n.chi.push_back(phase_moments(p, nmom, &in, points));
             n.integral.push_back(in);
+            n.grid.emplace_back(phase_grid::kSize);
+            phase_grid::normalized(p, in, n.grid.back().data());
         }
         const std::lock_guard lock(m_mie_mutex);
         nodes = &m_mie_nodes.emplace(key, std::move(n)).first->second;
     }
     // Below the first index wavelength the function is the first's (the interval's end).
     const double x = std::clamp(wavelength_um, lo, hi);
-    chi.assign(static_cast<std::size_t>(nmom) + 1, 0.0);
-    integral = 0;
-    double den = 0;
-    for (std::size_t j = 0; j < nodes->wavelength_um.size(); ++j) {
+    const std::size_t K = nodes->wavelength_um.size();
+    for (std::size_t j = 0; j < K; ++j)
         if (x == nodes->wavelength_um[j]) {  // on a node: its own values
             chi = nodes->chi[j];
             integral = nodes->integral[j];
+            if (grid) *grid = nodes->grid[j];
             return;
         }
-        const double c = nodes->weight[j] / (x - nodes->wavelength_um[j]);
-        den += c;
-        integral += c * nodes->integral[j];
-        for (std::size_t k = 0; k < chi.size(); ++k) chi[k] += c * nodes->chi[j][k];
+    // The barycentric formula: sum_j c_j f_j / sum_j c_j, c_j = w_j / (x - x_j).
+    std::array<double, kMieNodes> c{};
+    double den = 0;
+    for (std::size_t j = 0; j < K; ++j) {
+        c[j] = nodes->weight[j] / (x - nodes->wavelength_um[j]);
+        den += c[j];
     }
+    auto combine = [&](const std::vector<std::vector<double>>& f, std::vector<double>& out) {
+        out.resize(f.front().size());
+        barycentric_sum(c.data(), f, den, out.data(), out.size());
+    };
+    integral = 0;
+    for (std::size_t j = 0; j < K; ++j) integral += c[j] * nodes->integral[j];
     integral /= den;
-    for (double& v : chi) v /= den;
+    combine(nodes->chi, chi);
     chi[0] = 1;
+    if (grid) combine(nodes->grid, *grid);
 }
 
 namespace {

@@ -73,8 +73,11 @@ public:
     // interval, nmom and points (thread-safe). Measured over LOWTRAN 7's visible and
     // near-infrared intervals: within 4e-15 of phase_moments at the wavelength itself
     // (8e-10 with 8 nodes; mie_layers_test.cpp).
+    // With `grid`, also the function's normalized values on phase_grid (4 pi P /
+    // integral, phase_grid::normalized), interpolated alike (their nodes kept too).
     void mie_moments(int region, double wavelength_um, int nmom, int points,
-                     std::vector<double>& chi, double& integral) const;
+                     std::vector<double>& chi, double& integral,
+                     std::vector<double>* grid = nullptr) const;
     static constexpr int kMieNodes = 12;
 
     // Every layer (bottom first, profile().size() - 1 of them) at wavenumber nu.
@@ -154,6 +157,7 @@ private:
         std::vector<double> wavelength_um, weight;  // Chebyshev nodes, barycentric weights
         std::vector<std::vector<double>> chi;       // per node
         std::vector<double> integral;               // per node
+        std::vector<std::vector<double>> grid;      // per node: phase_grid::normalized
     };
     mutable std::mutex m_mie_mutex;  // guards m_mie_nodes
     mutable std::map<std::tuple<int, double, int, int>, MieNodes> m_mie_nodes;

@@ -105,13 +105,9 @@ std::size_t hg_index(std::vector<double>& gs, double g) {
 
 }  // namespace
 
-double MieOptics::grid_angle_deg(std::size_t i) {
-    return i <= 200 ? 0.1 * static_cast<double>(i) : 20 + 0.5 * static_cast<double>(i - 200);
-}
+double MieOptics::grid_angle_deg(std::size_t i) { return phase_grid::angle_deg(i); }
 
-double MieOptics::grid_position(double angle_deg) {
-    return angle_deg <= 20 ? angle_deg / 0.1 : 200 + (angle_deg - 20) / 0.5;
-}
+double MieOptics::grid_position(double angle_deg) { return phase_grid::position(angle_deg); }
 
 namespace {
 
@@ -120,12 +116,8 @@ int moment_points(int nmom) { return nmom <= 32 ? 8 : nmom <= 64 ? 16 : 64; }
 
 // Region r's grid from its function p and the function's integral.
 void form_grid(MieOptics& m, std::size_t r, const TabulatedPhase& p, double integral) {
-    const double scale = 4 * kPi / integral;  // average over the sphere 1
     m.grid[r].resize(MieOptics::kGridSize);
-    // grid_angle_deg's two runs: 0.1 deg steps to 20 deg, 0.5 deg steps beyond.
-    p.at_steps(0, 0.1, 0, 201, m.grid[r].data());
-    p.at_steps(20, 0.5, 1, 321, m.grid[r].data() + 201);
-    for (double& v : m.grid[r]) v *= scale;
+    phase_grid::normalized(p, integral, m.grid[r].data());
 }
 
 }  // namespace
@@ -133,13 +125,11 @@ void form_grid(MieOptics& m, std::size_t r, const TabulatedPhase& p, double inte
 MieOptics mie_optics(const ColumnModel& column, double wavelength_um, int nmom) {
     MieOptics m;
     for (std::size_t r = 0; r < 4; ++r) {
-        const auto p = column.mie_phase(static_cast<int>(r), wavelength_um);
-        if (!p) continue;
+        if (!column.has_mie_phase(static_cast<int>(r), wavelength_um)) continue;
         m.has[r] = true;
         double integral = 0;
         column.mie_moments(static_cast<int>(r), wavelength_um, nmom, moment_points(nmom), m.chi[r],
-                           integral);
-        form_grid(m, r, *p, integral);
+                           integral, &m.grid[r]);
     }
     return m;
 }

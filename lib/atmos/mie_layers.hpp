@@ -25,7 +25,7 @@ struct MieOptics {
     // The grid: 0.1 deg steps to 20 deg, where the forward peak is steep, 0.5 deg beyond.
     static double grid_angle_deg(std::size_t i);
     static double grid_position(double angle_deg);  // fractional index
-    static constexpr std::size_t kGridSize = 200 + 320 + 1;
+    static constexpr std::size_t kGridSize = phase_grid::kSize;
 };
 
 // The Mie functions of `column`'s regions at a wavelength, with nmom moments

@@ -123,6 +123,26 @@ void TabulatedPhase::at_steps(double start_deg, double step_deg, std::size_t fro
     for (; j < to; ++j) out[j - from] = value(last, angle_deg.back());
 }
 
+namespace phase_grid {
+
+double angle_deg(std::size_t i) {
+    return i <= 200 ? 0.1 * static_cast<double>(i) : 20 + 0.5 * static_cast<double>(i - 200);
+}
+
+double position(double angle_deg) {
+    return angle_deg <= 20 ? angle_deg / 0.1 : 200 + (angle_deg - 20) / 0.5;
+}
+
+void normalized(const TabulatedPhase& p, double integral, double* out) {
+    const double scale = 4 * kPi / integral;  // average over the sphere 1
+    // angle_deg's two runs: 0.1 deg steps to 20 deg, 0.5 deg steps beyond.
+    p.at_steps(0, 0.1, 0, 201, out);
+    p.at_steps(20, 0.5, 1, 321, out + 201);
+    for (std::size_t i = 0; i < kSize; ++i) out[i] *= scale;
+}
+
+}  // namespace phase_grid
+
 namespace {
 
 // The quadrature of phase_moments for one angle grid: per node (interval i, Gauss point

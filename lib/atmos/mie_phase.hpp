@@ -6,6 +6,7 @@
 // wavelengths in um, phase functions in sr-1 (integral over 4 pi sr = 1).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,6 +29,16 @@ struct TabulatedPhase {
     void at_steps(double start_deg, double step_deg, std::size_t from, std::size_t to,
                   double* out) const;
 };
+
+// The solver's grid of a phase function's values (mie_layers.hpp's MieOptics): 0.1 deg
+// steps to 20 deg, where the forward peak is steep, 0.5 deg beyond; 521 angles.
+namespace phase_grid {
+inline constexpr std::size_t kSize = 200 + 320 + 1;
+double angle_deg(std::size_t i);
+double position(double angle_deg);  // fractional index
+// 4 pi P / integral at every grid angle into out[0 .. kSize) (TabulatedPhase::at_steps).
+void normalized(const TabulatedPhase& p, double integral, double* out);
+}  // namespace phase_grid
 
 // Legendre moments chi_0..chi_nmom of `p` in DISORT's convention,
 // P(cos t) / (integral over 4 pi) = sum (2k+1) chi_k P_k(cos t) / (4 pi), chi_0 = 1:

@@ -120,10 +120,11 @@ TEST(MieLayers, MeanIsTheSumOfEvaluateBitForBit) {
 }
 
 // ColumnModel::mie_moments (Chebyshev interpolation in the wavelength between the index
-// wavelengths, 12 nodes) against phase_moments of the function at the wavelength itself,
-// for the Hawkeye deck's four regions at 0.35 to 1.2 um in 1 nm steps (the nodes of
-// five index intervals and far between them): the moments and the integral within 1e-13
-// (measured 4e-15 on the rural model; 8 nodes give 2e-10).
+// wavelengths, 12 nodes) against phase_moments and phase_grid::normalized of the function
+// at the wavelength itself, for the Hawkeye deck's four regions at 0.35 to 1.2 um in 1 nm
+// steps (the nodes of five index intervals and far between them): the moments and the
+// integral within 1e-13 (measured 4e-15 on the rural model; 8 nodes give 2e-10), the
+// grid's 521 values within 1e-12 of themselves.
 TEST(MieLayers, InterpolatedMomentsMatchTheFunctionsOwn) {
     const io::Cdk deck =
         io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/golden/control7/hawkeye.cdk");
@@ -131,24 +132,31 @@ TEST(MieLayers, InterpolatedMomentsMatchTheFunctionsOwn) {
     o.data_dir = kData;
     const ColumnModel column(deck.runs.front(), 1.0, o);
     ASSERT_TRUE(column.mie());
-    double worst = 0, worst_integral = 0;
+    double worst = 0, worst_integral = 0, worst_grid = 0;
     for (int nm = 350; nm <= 1200; ++nm) {
         const double um = nm / 1000.0;
         for (int r = 0; r < 4; ++r) {
             if (!column.has_mie_phase(r, um)) continue;
             double want_integral = 0, integral = 0;
-            const auto want = phase_moments(*column.mie_phase(r, um), 32, &want_integral, 8);
-            std::vector<double> chi;
-            column.mie_moments(r, um, 32, 8, chi, integral);
+            const TabulatedPhase p = *column.mie_phase(r, um);
+            const auto want = phase_moments(p, 32, &want_integral, 8);
+            std::vector<double> want_grid(phase_grid::kSize), chi, grid;
+            phase_grid::normalized(p, want_integral, want_grid.data());
+            column.mie_moments(r, um, 32, 8, chi, integral, &grid);
             ASSERT_EQ(chi.size(), want.size());
+            ASSERT_EQ(grid.size(), want_grid.size());
             for (std::size_t k = 0; k < chi.size(); ++k)
                 worst = std::max(worst, std::abs(chi[k] - want[k]));
             worst_integral = std::max(worst_integral, std::abs(integral / want_integral - 1));
+            for (std::size_t i = 0; i < grid.size(); ++i)
+                worst_grid = std::max(worst_grid, std::abs(grid[i] / want_grid[i] - 1));
         }
     }
     EXPECT_LT(worst, 1e-13);
     EXPECT_LT(worst_integral, 1e-13);
-    std::printf("interpolated Mie moments: worst %.2e, integral %.2e\n", worst, worst_integral);
+    EXPECT_LT(worst_grid, 1e-12);
+    std::printf("interpolated Mie moments: worst %.2e, integral %.2e, grid %.2e (relative)\n",
+                worst, worst_integral, worst_grid);
 }
 
 // Conservative scattering (omega = 1, no gas) with the IPH 2 layers in the solver, TMS
