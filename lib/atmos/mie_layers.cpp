@@ -17,19 +17,14 @@ constexpr double kPi = std::numbers::pi;
 constexpr std::size_t kMie0 = 1;  // component index of region 0; 0 is Rayleigh
 constexpr std::size_t kHg0 = 5;   // first Henyey-Greenstein component
 
-// The components' values at one cosine: Rayleigh from its moments, the Mie functions
-// linear between grid nodes (the tabulated function is ln-linear between its nodes;
-// at its steepest, 1.4 per deg in ln P at 0-2 deg, a chord 0.1 deg long departs from
-// it by under 0.3 %; beyond 20 deg the slopes stay under 0.1 per deg, under 0.04 % over
-// 0.5 deg), Henyey-Greenstein exactly.
-// Where a cosine falls on MieOptics' grid: node i and the weight w of node i + 1.
+// Where a cosine falls on the grid (phase_grid): node i and the weight w of node i + 1.
 struct GridPoint {
     std::size_t i = 0;
     double w = 0;
 };
 GridPoint grid_point(double x) {
-    const double a = MieOptics::grid_position(std::acos(x) * 180 / kPi);
-    const std::size_t i = std::min(static_cast<std::size_t>(a), MieOptics::kGridSize - 2);
+    const double a = phase_grid::position(std::acos(x) * 180 / kPi);
+    const std::size_t i = std::min(static_cast<std::size_t>(a), phase_grid::kSize - 2);
     return {i, std::clamp(a - static_cast<double>(i), 0.0, 1.0)};
 }
 
@@ -55,6 +50,11 @@ const std::vector<GridPoint>& grid_points(const double* xs, int n) {
     return e.points;
 }
 
+// The components' values at one cosine: Rayleigh from its moments, the Mie functions
+// linear between grid nodes (the tabulated function is ln-linear between its nodes;
+// at its steepest, 1.4 per deg in ln P at 0-2 deg, a chord 0.1 deg long departs from
+// it by under 0.3 %; beyond 20 deg the slopes stay under 0.1 per deg, under 0.04 % over
+// 0.5 deg), Henyey-Greenstein exactly.
 struct Components {
     std::array<double, 3> rayleigh{};
     std::array<const std::vector<double>*, 4> grid{};
@@ -105,20 +105,10 @@ std::size_t hg_index(std::vector<double>& gs, double g) {
 
 }  // namespace
 
-double MieOptics::grid_angle_deg(std::size_t i) { return phase_grid::angle_deg(i); }
-
-double MieOptics::grid_position(double angle_deg) { return phase_grid::position(angle_deg); }
-
 namespace {
 
 // The fewest Gauss points per interval for the moments asked (mie_phase.hpp).
 int moment_points(int nmom) { return nmom <= 32 ? 8 : nmom <= 64 ? 16 : 64; }
-
-// Region r's grid from its function p and the function's integral.
-void form_grid(MieOptics& m, std::size_t r, const TabulatedPhase& p, double integral) {
-    m.grid[r].resize(MieOptics::kGridSize);
-    phase_grid::normalized(p, integral, m.grid[r].data());
-}
 
 }  // namespace
 
@@ -142,7 +132,8 @@ MieOptics mie_optics(const std::array<std::optional<TabulatedPhase>, 4>& regions
         m.has[r] = true;
         double integral = 0;
         m.chi[r] = phase_moments(*p, nmom, &integral, moment_points(nmom));
-        form_grid(m, r, *p, integral);
+        m.grid[r].resize(phase_grid::kSize);
+        phase_grid::normalized(*p, integral, m.grid[r].data());
     }
     return m;
 }

@@ -21,11 +21,7 @@ namespace sigchain::atmos {
 struct MieOptics {
     std::array<bool, 4> has{};                // region has a Mie function here
     std::array<std::vector<double>, 4> chi;   // its moments chi_0 .. chi_nmom (chi_0 = 1)
-    std::array<std::vector<double>, 4> grid;  // 4 pi P / int P at grid_angle_deg(i)
-    // The grid: 0.1 deg steps to 20 deg, where the forward peak is steep, 0.5 deg beyond.
-    static double grid_angle_deg(std::size_t i);
-    static double grid_position(double angle_deg);  // fractional index
-    static constexpr std::size_t kGridSize = phase_grid::kSize;
+    std::array<std::vector<double>, 4> grid;  // 4 pi P / int P on phase_grid (mie_phase.hpp)
 };
 
 // The Mie functions of `column`'s regions at a wavelength, with nmom moments

@@ -240,10 +240,11 @@ MiePhaseTable MiePhaseTable::load(const std::string& data_dir) {
                   for (std::size_t n = 0; n < 70; ++n)
                       t.m_functions[n].push_back(r.number(row[n + 1], "a phase function value"));
               });
-    t
-        .m_wavelengths = {0.2, 0.3,   0.55, 0.6943, 1.06, 1.536, 2,    2.5, 2.7,
-                          3,   3.2,   3.39, 5,      6,    7.2,   7.9,  8.7, 9.2,
-                          10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,  40};  // PHASEF's WAVE
+    // clang-format off
+    t.m_wavelengths = {0.2, 0.3,  0.55,  0.6943, 1.06, 1.536, 2,    2.5,  2.7,
+                       3,   3.2,  3.39,  5,      6,    7.2,   7.9,  8.7,  9.2,
+                       10,  10.59, 12.5, 15,     17.2, 18.5,  21.3, 30,   40};  // PHASEF's WAVE
+    // clang-format on
     read_rows(dir + "aerosol_phase_function_index.txt", 29, 26,
               [&](const FieldReader& r, std::span<const std::string_view> row) {
                   std::vector<int> numbers;
