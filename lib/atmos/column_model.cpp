@@ -309,6 +309,8 @@ const Ray& ColumnModel::sun_ray(std::size_t level, double mu0) const {
     });
 }
 
+// Snell's invariant n r sin z carries the zenith angle at level j down to level i
+// (past the horizon of level i: grazing there).
 const Ray& ColumnModel::view_ray(std::size_t i, std::size_t j, double mu) const {
     return cached_ray(std::make_tuple(1, i, j, mu), [&] {
         const double R = m_shells.radius_km;
@@ -316,7 +318,7 @@ const Ray& ColumnModel::view_ray(std::size_t i, std::size_t j, double mu) const 
         const double nr_i = (1 + m_shells.refractivity[i]) * (R + m_shells.z_km[i]);
         const double sin_j = std::sqrt(std::max(0.0, 1 - mu * mu));
         const double zenith_i = std::asin(std::min(1.0, nr_j * sin_j / nr_i));
-        return trace_up(m_shells, i, j, zenith_i);
+        return trace_up(m_shells, m_shell_nodes, i, j, zenith_i);
     });
 }
 

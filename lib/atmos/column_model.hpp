@@ -72,7 +72,7 @@ public:
     // function is smooth in it: kMieNodes nodes, their moments formed once per region,
     // interval, nmom and points (thread-safe). Measured over LOWTRAN 7's visible and
     // near-infrared intervals: within 4e-15 of phase_moments at the wavelength itself
-    // (8e-10 with 8 nodes; mie_layers_test.cpp).
+    // (2e-10 with 8 nodes; mie_layers_test.cpp).
     // With `grid`, also the function's normalized values on phase_grid (4 pi P /
     // integral, phase_grid::normalized), interpolated alike (their nodes kept too).
     void mie_moments(int region, double wavelength_um, int nmom, int points,
@@ -152,7 +152,7 @@ private:
     double slant_transmittance(double nu_cm1, const std::vector<LayerOptics>& layers,
                                std::size_t level_i, std::size_t level_j, const Ray& ray) const;
     Shells m_shells;
-    ShellNodes m_shell_nodes;  // for the sun's rays from every level
+    ShellNodes m_shell_nodes;  // for the sun's and the views' rays
     struct MieNodes {
         std::vector<double> wavelength_um, weight;  // Chebyshev nodes, barycentric weights
         std::vector<std::vector<double>> chi;       // per node

@@ -103,10 +103,6 @@ PathNodes path_nodes(const Shells& s, const ShellNodes& all, std::size_t from, s
     return p;
 }
 
-PathNodes path_nodes(const Shells& s, std::size_t from, std::size_t to) {
-    return path_nodes(s, shell_nodes(s), from, to);
-}
-
 Ray trace_nodes(const PathNodes& p, std::size_t levels, double zenith_rad) {
     Ray ray;
     ray.zenith_rad = zenith_rad;
@@ -157,18 +153,22 @@ ShellNodes shell_nodes(const Shells& s) {
 }
 
 Ray trace_up(const Shells& s, std::size_t from, std::size_t to, double zenith_rad) {
+    return trace_up(s, shell_nodes(s), from, to, zenith_rad);
+}
+
+Ray trace_up(const Shells& s, const ShellNodes& nodes, std::size_t from, std::size_t to,
+             double zenith_rad) {
     const std::size_t levels = s.z_km.size();
     if (!(to > from && to < levels) || !(zenith_rad >= 0 && zenith_rad <= std::numbers::pi / 2))
         throw std::invalid_argument("trace_up: levels or zenith angle out of range");
-    return trace_nodes(path_nodes(s, from, to), levels, zenith_rad);
+    return trace_nodes(path_nodes(s, nodes, from, to), levels, zenith_rad);
 }
 
 Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
     return trace_to_sun(s, shell_nodes(s), to, true_zenith_rad);
 }
 
-Ray trace_to_sun(const Shells& s, const ShellNodes& shell, std::size_t to,
-                 double true_zenith_rad) {
+Ray trace_to_sun(const Shells& s, const ShellNodes& shell, std::size_t to, double true_zenith_rad) {
     const std::size_t top = s.z_km.size() - 1;
     if (to >= top) {  // at the top: no atmosphere above
         Ray ray;

@@ -50,11 +50,14 @@ Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad);
 
 // The parts of the rays' integrands that depend on the shells alone (not on the level
 // a ray starts from), at the Gauss nodes of every layer: made once, they serve
-// trace_to_sun from every level (the same ray, bit for bit, as without them).
+// trace_up and trace_to_sun from every level (the same ray, bit for bit, as without
+// them).
 struct ShellNodes {
     std::vector<double> z, n, nr, nr2, rho, dzdt, ndlnn, one_n;  // per node, 16 a layer
 };
 ShellNodes shell_nodes(const Shells& s);
+Ray trace_up(const Shells& s, const ShellNodes& nodes, std::size_t from, std::size_t to,
+             double zenith_rad);
 Ray trace_to_sun(const Shells& s, const ShellNodes& nodes, std::size_t to,
                  double true_zenith_rad);
 
