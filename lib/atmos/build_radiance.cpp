@@ -410,7 +410,8 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
         std::string names;
         for (const std::string& n : column.skipped_gas_tables())
             names += (names.empty() ? "" : ", ") + n;
-        rep.notes.push_back("gas tables not read (no sample within 100 cm-1 of them): " + names);
+        rep.notes.push_back("gas tables not read (no sample within " +
+                            format_number(GasTables::kLoadMargin) + " cm-1 of them): " + names);
     }
     report_column(column, snd, rep);
     const geo::SolarPosition sun = target_sun(snd, rep);

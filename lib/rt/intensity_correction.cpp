@@ -178,16 +178,16 @@ void Solver::add_mean_correction(std::size_t u, const std::vector<double>& e, st
     // At mu = +-1 (or the beam at the zenith) the scattering angle is one for every azimuth.
     const int nodes = sines > 0 ? kMeanAzimuths : 1;
     const std::array<double, kMeanAzimuths>& cosines = mean_azimuth_cosines();
-    if (m_p.exact_phase.mean && nc > 0) {
-        std::array<double, kMeanAzimuths> xs{};
-        for (int k = 0; k < nodes; ++k)
-            xs[k] = std::clamp(-mu * mu0 + sines * (sines > 0 ? cosines[k] : 0.0), -1.0, 1.0);
+    std::array<double, kMeanAzimuths> xs{};  // the scattering angles' cosines
+    for (int k = 0; k < nodes; ++k)
+        xs[k] = std::clamp(-mu * mu0 + sines * (sines > 0 ? cosines[k] : 0.0), -1.0, 1.0);
+    if (nc > 0 && m_p.exact_phase.mean) {
         m_p.exact_phase.mean(xs.data(), nodes, mean.data());
-    }
-    for (int k = 0; k < nodes && nc > 0 && !m_p.exact_phase.mean; ++k) {
-        const double cs = -mu * mu0 + sines * (sines > 0 ? cosines[k] : 0.0);
-        m_p.exact_phase.evaluate(std::clamp(cs, -1.0, 1.0), v.data());
-        for (std::size_t c = 0; c < nc; ++c) mean[c] += v[c] / nodes;
+    } else if (nc > 0) {
+        for (int k = 0; k < nodes; ++k) {
+            m_p.exact_phase.evaluate(xs[k], v.data());
+            for (std::size_t c = 0; c < nc; ++c) mean[c] += v[c] / nodes;
+        }
     }
     for (std::size_t i = 0; i < m_pos.size(); ++i) {
         double add = 0;
