@@ -10,6 +10,7 @@
 //
 // A plain program (not Google Benchmark): one long run, not repeated timings.
 // Usage: bench_trace [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]] (default 1001 3000 512).
+// With BENCH_PHASES set it also prints each phase's times to stderr (bench/trace_ceiling.sh).
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -39,6 +41,27 @@ using namespace sigchain::bench;
 
 constexpr double kSunZenithDeg = 35, kSunAzimuthDeg = 150;
 constexpr int kRepeats = 2;  // render and the golf-ball bare loop: best of this many runs
+
+// With BENCH_PHASES set in the environment, each timed phase prints "phase NAME START END"
+// (steady-clock seconds: CLOCK_MONOTONIC on Linux) to stderr on leaving its scope, so that
+// bench/trace_ceiling.sh can split a perf profile recorded with -k CLOCK_MONOTONIC.
+class Phase {
+public:
+    explicit Phase(const char* name) : m_name(name), m_t0(Clock::now()) {}
+    Phase(const Phase&) = delete;
+    Phase& operator=(const Phase&) = delete;
+    ~Phase() {
+        if (!std::getenv("BENCH_PHASES")) return;
+        auto secs = [](Clock::time_point t) {
+            return std::chrono::duration<double>(t.time_since_epoch()).count();
+        };
+        std::fprintf(stderr, "phase %s %.6f %.6f\n", m_name, secs(m_t0), secs(Clock::now()));
+    }
+
+private:
+    const char* m_name;
+    Clock::time_point m_t0;
+};
 
 double peak_memory_mib() {
     rusage usage{};
@@ -540,6 +563,7 @@ int main(int argc, char** argv) {
     trace::RenderResult result;
     double t_render = 1e300, c_render = 1e300;
     for (int rep = 0; rep < kRepeats; ++rep) {
+        const Phase phase("render");
         const auto t0 = Clock::now();
         const double c0 = cpu_seconds();
         result = trace::render(inputs, options);
@@ -552,6 +576,7 @@ int main(int argc, char** argv) {
     plain.adjacency = false;
     double t_plain = 1e300;
     for (int rep = 0; rep < kRepeats; ++rep) {
+        const Phase phase("render-without-adjacency");
         const auto t0 = Clock::now();
         trace::render(inputs, plain);
         t_plain = std::min(t_plain, seconds_since(t0));
@@ -578,23 +603,28 @@ int main(int argc, char** argv) {
             into.cpu_seconds = rep ? std::min(into.cpu_seconds, r.cpu_seconds) : r.cpu_seconds;
         };
         for (int rep = 0; rep < kRepeats; ++rep) {
+            std::optional<Phase> phase(std::in_place, "bare-golfball");
             best(g,
                  bare_golfball(bare, cam, static_cast<std::uint64_t>(options.samples_per_pixel),
                                tree_transforms(trees), kTerrainExtentM, threads),
                  rep);
+            phase.reset();
             if (options.samples_per_pixel != 1) continue;
+            const Phase packets("bare-golfball-packets8");
             best(gp,
                  bare_golfball_packets<8, RTCRayHit8, RTCRay8>(bare, cam, tree_transforms(trees),
                                                                kTerrainExtentM, threads),
                  rep);
 
         }
+        const Phase phase("bare-uniform");
         b = bare_loop(bare, cam, s.primary_rays, s.secondary_rays, s.shadow_rays, threads);
     }
     const double peak_bare_mib = peak_memory_mib();
     {
         BareScene bare;
         build_bare(bare, n, trees, true);
+        const Phase phase("bare-golfball-instanced");
         gi = bare_golfball(bare, cam, static_cast<std::uint64_t>(options.samples_per_pixel),
                            tree_transforms(trees), kTerrainExtentM, threads);
     }
