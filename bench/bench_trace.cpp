@@ -20,7 +20,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -603,12 +602,14 @@ int main(int argc, char** argv) {
             into.cpu_seconds = rep ? std::min(into.cpu_seconds, r.cpu_seconds) : r.cpu_seconds;
         };
         for (int rep = 0; rep < kRepeats; ++rep) {
-            std::optional<Phase> phase(std::in_place, "bare-golfball");
-            best(g,
-                 bare_golfball(bare, cam, static_cast<std::uint64_t>(options.samples_per_pixel),
-                               tree_transforms(trees), kTerrainExtentM, threads),
-                 rep);
-            phase.reset();
+            {
+                const Phase phase("bare-golfball");
+                best(g,
+                     bare_golfball(bare, cam,
+                                   static_cast<std::uint64_t>(options.samples_per_pixel),
+                                   tree_transforms(trees), kTerrainExtentM, threads),
+                     rep);
+            }
             if (options.samples_per_pixel != 1) continue;
             const Phase packets("bare-golfball-packets8");
             best(gp,

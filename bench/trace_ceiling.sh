@@ -8,8 +8,9 @@
 # then, for each render, its Embree samples over the bare golf-ball loop's (the same rays:
 # above 1, Embree itself runs slower inside render than in the bare loop), and the ceiling
 # bare / render-Embree: the ratio render / bare golf-ball would reach were all of render's
-# own work (shading, the sky lookup, the Scene wrapper) free. Last, the non-Embree
-# functions that take most of the first render's samples.
+# own work (shading, the sky lookup, the Scene wrapper) free, and how many of its own
+# samples a ratio of 0.9 would leave room for. Last, the non-Embree functions that take
+# most of the first render's samples.
 # Without perf (Debian's linux-perf) it says so and exits 0.
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: $0 BENCH_TRACE [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]]" >&2; exit 2; }
@@ -55,9 +56,15 @@ renders = [c for (name, _, _), c in zip(phases, counts) if name == "render"]
 if bare and renders:
     best_bare = min(bare)
     for i, (total, embree) in enumerate(renders):
+        if embree == 0:
+            print(f"render {i + 1}: no samples in libembree (Embree linked otherwise?)")
+            continue
         print(f"render {i + 1}: Embree inside render / whole bare golf-ball loop "
               f"{embree / best_bare:.2f}; ceiling with free shading {best_bare / embree:.2f}; "
               f"now {best_bare / total:.2f} (samples)")
+        budget = best_bare / 0.9 - embree  # render's own samples that 0.9 leaves room for
+        cut = f"a cut of {(total - embree) / budget:.1f} times" if budget > 0 else "out of reach even with free shading"
+        print(f"  own work {total - embree}; 0.9 leaves room for {budget:.0f}: {cut}")
 print("the first render's non-Embree samples, most first:")
 for name, n in own.most_common(14):
     print(f"  {n:7d}  {name}")
