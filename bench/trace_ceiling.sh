@@ -13,7 +13,8 @@
 # most of the first render's samples.
 # Without perf (Debian's linux-perf) it says so and exits 0.
 set -euo pipefail
-[ $# -ge 1 ] || { echo "usage: $0 BENCH_TRACE [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]]" >&2; exit 2; }
+usage="usage: $0 BENCH_TRACE [VERTICES_PER_SIDE [TREES [IMAGE_SIDE]]]"
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
 command -v perf > /dev/null || { echo "$0: perf not installed (linux-perf): skipped"; exit 0; }
 BENCH=$(realpath "$1")
 shift
@@ -63,7 +64,8 @@ if bare and renders:
               f"{embree / best_bare:.2f}; ceiling with free shading {best_bare / embree:.2f}; "
               f"now {best_bare / total:.2f} (samples)")
         budget = best_bare / 0.9 - embree  # render's own samples that 0.9 leaves room for
-        cut = f"a cut of {(total - embree) / budget:.1f} times" if budget > 0 else "out of reach even with free shading"
+        cut = (f"a cut of {(total - embree) / budget:.1f} times" if budget > 0
+               else "out of reach even with free shading")
         print(f"  own work {total - embree}; 0.9 leaves room for {budget:.0f}: {cut}")
 print("the first render's non-Embree samples, most first:")
 for name, n in own.most_common(14):
