@@ -16,7 +16,7 @@ for page in "$src"/man/*.scd; do
     fi
 done
 for tool in control7 build_radiance therm find_min_max_view_angle trace sensorize compare \
-            hawkeye_scene olinda_scene soho_scene merge_tiles \
+            hawkeye_scene olinda_scene soho_scene merge_tiles landsat_scene \
             sigchain-check; do
     [ -f "$src/man/$tool.1.scd" ] || { echo "FAIL: no man page for tool $tool"; fail=1; }
 done
