@@ -12,9 +12,11 @@
 #include "io/ext.hpp"
 #include "io/gdb.hpp"
 #include "io/mat.hpp"
+#include "io/mtl.hpp"
 #include "io/odb.hpp"
 #include "io/rad.hpp"
 #include "io/rsd.hpp"
+#include "io/rsr.hpp"
 #include "io/sen.hpp"
 #include "io/shd.hpp"
 #include "io/snd.hpp"
@@ -39,9 +41,11 @@ const std::vector<FormatHandler>& formats() {
             ext_format(),
             gdb_format(),
             mat_format(),
+            mtl_format(),
             odb_format(),
             rad_format(),
             rsd_format(),
+            rsr_format(),
             sen_format(),
             shd_format(),
             snd_format(),
