@@ -7,6 +7,8 @@
 #
 #   ANSWERS (+ .rsd) --control7--> out/DECK.cdk
 #   ADV + SCENE_GDB [, CARDS_ADV + CARDS_GDB] --find_min_max_view_angle--> out/*.view
+#   MTL (Landsat metadata, optional) --landsat_sensor--> out/landsat/NAME.snd and
+#       out/landsat/NAME-bK.sen, used as SND and SENS                   (MTL set)
 #   SND + out/*.view --(replace the view-angle line)--> out/NAME.snd, out/NAME.azimuth
 #   out/NAME.snd --(one band each)--> out/band-K.snd
 #   out/DECK.cdk + out/band-K.snd --build_radiance--> out/NAME-K.rad   (K = 1..BANDS)
@@ -43,6 +45,7 @@ THERM          ?= $(SIGCHAIN_BIN)/therm
 SENSORIZE      ?= $(SIGCHAIN_BIN)/sensorize
 COMPARE        ?= $(SIGCHAIN_BIN)/compare
 MERGE_TILES    ?= $(SIGCHAIN_BIN)/merge_tiles
+LANDSAT_SENSOR ?= $(SIGCHAIN_BIN)/landsat_sensor
 
 ## Options per stage (the tools' warnings show; -q in a FLAGS variable hides them) ---
 CONTROL7_FLAGS       ?=
@@ -55,6 +58,7 @@ CALIBRATE_FLAGS      ?=
 SENSORIZE_FLAGS      ?=
 PREVIEW_FLAGS        ?=
 COMPARE_FLAGS        ?=
+LANDSAT_SENSOR_FLAGS ?=
 
 ## The scene's files (a scene's Makefile sets these) --------------------------------
 NAME      ?= $(notdir $(CURDIR))
@@ -81,6 +85,26 @@ TARGET1   ?=
 TARGET2   ?=
 REFERENCE ?=
 CPT       ?=
+# A Landsat scene's metadata (mtl(5)): when set, landsat_sensor(1) makes the scene node and
+# the .sen files into out/landsat/ from it, and they replace SND and SENS. LANDSAT_BANDS
+# (comma-separated, e.g. 1,2,3,4) chooses the bands; by default landsat_sensor
+# --print-bands says which, asked once as this file is read (it reads the MTL and writes
+# nothing, so make -n stays harmless).
+MTL ?=
+ifneq ($(strip $(MTL)),)
+ifeq ($(origin LANDSAT_BANDS),undefined)
+LANDSAT_BANDS := $(shell $(LANDSAT_SENSOR) --print-bands $(LANDSAT_SENSOR_FLAGS) $(MTL))
+endif
+ifneq ($(if $(MAKECMDGOALS),$(filter-out clean help,$(MAKECMDGOALS)),all),)
+$(if $(strip $(LANDSAT_BANDS)),,$(error MTL=$(MTL): no bands from $(LANDSAT_SENSOR) \
+  --print-bands (its message is above); set LANDSAT_BANDS))
+endif
+LANDSAT_DIR := $(OUT)/landsat
+comma := ,
+SND   := $(LANDSAT_DIR)/$(NAME).snd
+SENS  := $(foreach b,$(subst $(comma), ,$(LANDSAT_BANDS)),$(LANDSAT_DIR)/$(NAME)-b$(b).sen)
+BANDS := $(words $(SENS))
+endif
 # Number of bands (from the .snd's second value line) and of row tiles.
 BANDS ?= $(shell awk '!/^[ \t]*(\#|$$)/ { if (++n == 2) { print $$1; exit } }' $(SND))
 TILES ?= 1
@@ -123,8 +147,10 @@ CMD_calibrate      = $(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1
 CMD_sensorize      = $(strip $(SENSORIZE) $(SENSORIZE_FLAGS))
 CMD_preview        = $(strip $(SENSORIZE) $(PREVIEW_FLAGS))
 CMD_compare        = $(strip $(COMPARE) $(COMPARE_FLAGS))
+CMD_landsat_sensor = $(strip $(LANDSAT_SENSOR) $(LANDSAT_SENSOR_FLAGS) --bands $(LANDSAT_BANDS) \
+  --name $(NAME))
 STAGES := control7 find_view build_radiance shadow therm trace calibrate sensorize \
-  preview compare
+  preview compare $(if $(strip $(MTL)),landsat_sensor)
 # $(call CMD_STAMP,STAGE): the file that records STAGE's command, a prerequisite of
 # what the stage makes. It is rewritten when this file is read, and only when the
 # command differs from the one recorded, so that BUILD_RADIANCE=..., TRACE_FLAGS=...
@@ -165,6 +191,13 @@ $(OUT) $(OUT)/calibrated:
 ## -> LOWTRAN 7 card deck.
 $(OUT)/%.cdk: %.answers $(RSD) $(call CMD_STAMP,control7) | $(OUT)
 	$(CMD_control7) --answers $< -o $@
+
+ifneq ($(strip $(MTL)),)
+## landsat_sensor: the Landsat scene's metadata -> its scene node and one .sen per band,
+## written as one set (the response tables come from the data directory or --rsr).
+$(SND) $(SENS) &: $(MTL) $(call CMD_STAMP,landsat_sensor) | $(OUT)
+	$(CMD_landsat_sensor) $(MTL) -o $(LANDSAT_DIR)
+endif
 
 ## find_min_max_view_angle: the view-angle range of a camera over its scene: the
 ## .snd line (--snd), then the full report (which names the look azimuth).
@@ -280,10 +313,13 @@ help:
 	@echo 'targets: all (counts, preview, report, thermal), rad, view, cube, counts,'
 	@echo '  preview, thermal, calibrate, report, clean, help'
 	@echo 'stages (programs): CONTROL7 BUILD_RADIANCE FIND_VIEW TRACE SHADOW THERM'
-	@echo '  SENSORIZE COMPARE; default $$(SIGCHAIN_BIN)/TOOL, SIGCHAIN_BIN=$(SIGCHAIN_BIN)'
+	@echo '  SENSORIZE COMPARE LANDSAT_SENSOR; default $$(SIGCHAIN_BIN)/TOOL, SIGCHAIN_BIN=$(SIGCHAIN_BIN)'
 	@echo 'options: CONTROL7_FLAGS BUILD_RADIANCE_FLAGS FIND_VIEW_FLAGS TRACE_FLAGS'
 	@echo '  SHADOW_FLAGS THERM_FLAGS CALIBRATE_FLAGS SENSORIZE_FLAGS PREVIEW_FLAGS'
-	@echo '  COMPARE_FLAGS (a changed program or option reruns its stage: out/STAGE.cmd.stamp)'
+	@echo '  COMPARE_FLAGS LANDSAT_SENSOR_FLAGS (a changed program or option reruns its'
+	@echo '  stage: out/STAGE.cmd.stamp)'
+	@echo 'Landsat: MTL=$(MTL) (landsat_sensor writes SND and SENS into out/landsat)'
+	@echo '  LANDSAT_SENSOR=$(LANDSAT_SENSOR) LANDSAT_BANDS=$(LANDSAT_BANDS)'
 	@echo 'this file: SCENE_MK=$(SCENE_MK_DIR)/scene.mk'
 	@echo 'scene: NAME=$(NAME) OUT=$(OUT) ANSWERS=$(ANSWERS) RSD=$(RSD) SND=$(SND)'
 	@echo '  ADV=$(ADV) SCENE_GDB=$(SCENE_GDB) SCENE_MAT=$(SCENE_MAT) MAT_FILES=$(MAT_FILES)'
