@@ -4,7 +4,7 @@ PREFIX  ?= /usr/local
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test man install demo fuzz bench chart clean
+.PHONY: all deps configure build test man install demo fuzz bench chart validate clean
 
 all: build
 
@@ -48,6 +48,13 @@ bench: build
 # copy; a few minutes; not part of `make test`).
 chart: build
 	@scripts/chart $(BUILD)
+
+# The validations on real images (White (1996), section 4.5): each validation scene's
+# Makefile, then docs/validation.md, its pictures and the README's results table,
+# all from that run (scripts/validation; about a minute on 2 cores).
+validate: deps configure
+	cmake --build $(BUILD) -j $(JOBS) --target tools
+	@JOBS=$(JOBS) scripts/validation $(BUILD)
 
 clean:
 	rm -rf $(BUILD)

@@ -98,17 +98,23 @@ void classify_step(const std::string& rules_path, const std::vector<std::string>
     const auto rasters = read_all(images);
     auto classes = classify(rules, pointers(rasters));
     const auto& first = rasters.front();
+    // Pixels no rule classifies stay 0; masked pixels take their neighbours' class (-1
+    // marks the first while the second are filled: it neither votes nor is filled).
     long hidden = 0;
+    for (int& k : classes)
+        if (k == 0) k = -1;
     if (!mask_path.empty()) {
         const auto mask = union_of({mask_path}, first.rows, first.columns);
         for (std::size_t i = 0; i < classes.size(); ++i)
             if (mask[i]) classes[i] = 0, ++hidden;
     }
-    std::map<int, std::string> names{{0, "unclassified"}};
+    std::map<int, std::string> names{{-1, "unclassified"}, {0, "masked"}};
     for (const auto& r : rules.rules) names[r.id] = r.name;
     report << "# class name fraction (before filling " << hidden << " masked pixels)\n";
     report_fractions(classes, names, report);
     fill_unclassified(classes, first.rows, first.columns);
+    for (int& k : classes)
+        if (k < 0) k = 0;
     write_class_raster(out_path, first.rows, first.columns, classes, first.geotransform,
                        first.crs);
 }
@@ -361,6 +367,74 @@ void pairs_step(const std::string& rules_path, const std::string& synthetic_path
         out << rule->name << " " << syn.data[b * syn.plane_size() + i] << " "
             << ref.data[b * syn.plane_size() + i] << "\n";
     }
+}
+
+namespace {
+
+// The value at fraction q of sorted values (nearest rank below).
+double quantile(const std::vector<double>& sorted, double q) {
+    return sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))];
+}
+
+}  // namespace
+
+void stats_step(const std::string& rules_path, const std::string& image_path,
+                const std::string& classes_path, const std::vector<std::string>& mask_paths,
+                std::ostream& out) {
+    const auto rules = read_class_rules(rules_path);
+    const auto img = image::read_image(image_path);
+    const auto cls = geo::read_geo_raster(classes_path, geo::Bands::First);
+    if (cls.rows != img.rows || cls.columns != img.columns)
+        throw DataError({classes_path, 0}, "the class map differs in size from " + image_path);
+    const auto classes = integers(cls);
+    const auto mask = union_of(mask_paths, img.rows, img.columns);
+    out << "# class band n mean std p01 median p99\n";
+    std::vector<std::pair<std::string, int>> scopes{{"all", 0}};
+    for (const auto& r : rules.rules) scopes.emplace_back(r.name, r.id);
+    for (const auto& [name, id] : scopes)
+        for (int b = 0; b < img.channels; ++b) {
+            std::vector<double> v;
+            for (std::size_t i = 0; i < img.plane_size(); ++i)
+                if (!mask[i] && classes[i] != 0 && (id == 0 || classes[i] == id))
+                    v.push_back(img.data[b * img.plane_size() + i]);
+            if (v.empty()) continue;
+            std::sort(v.begin(), v.end());
+            double sum = 0, sq = 0;
+            for (double x : v) sum += x;
+            const double mean = sum / v.size();
+            for (double x : v) sq += (x - mean) * (x - mean);
+            char line[256];
+            std::snprintf(line, sizeof line, "%s %d %zu %.3f %.3f %.1f %.1f %.1f\n",
+                          name.c_str(), b + 1, v.size(), mean, std::sqrt(sq / v.size()),
+                          quantile(v, 0.01), quantile(v, 0.5), quantile(v, 0.99));
+            out << line;
+        }
+}
+
+void crosstab_step(const std::string& rules_a, const std::string& classes_a,
+                   const std::string& rules_b, const std::string& classes_b,
+                   const std::vector<std::string>& mask_paths, std::ostream& out) {
+    const auto ra = read_class_rules(rules_a);
+    const auto rb = read_class_rules(rules_b);
+    const auto ca = geo::read_geo_raster(classes_a, geo::Bands::First);
+    const auto cb = geo::read_geo_raster(classes_b, geo::Bands::First);
+    if (ca.rows != cb.rows || ca.columns != cb.columns)
+        throw DataError({classes_b, 0}, "differs in size from " + classes_a);
+    const auto a = integers(ca), b = integers(cb);
+    const auto mask = union_of(mask_paths, ca.rows, ca.columns);
+    std::map<std::pair<int, int>, long> n;
+    std::map<int, long> total;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!mask[i] && a[i] != 0 && b[i] != 0) ++n[{a[i], b[i]}], ++total[a[i]];
+    out << "# class_a class_b n fraction_of_a\n";
+    for (const auto& x : ra.rules)
+        for (const auto& y : rb.rules) {
+            const long k = n[{x.id, y.id}];
+            char line[256];
+            std::snprintf(line, sizeof line, "%s %s %ld %.4f\n", x.name.c_str(), y.name.c_str(),
+                          k, total[x.id] ? double(k) / total[x.id] : 0.0);
+            out << line;
+        }
 }
 
 }  // namespace sigchain::landcover

@@ -87,4 +87,17 @@ void pairs_step(const std::string& rules_path, const std::string& synthetic_path
                 const std::vector<std::string>& mask_paths, int band, long step,
                 std::ostream& out);
 
+// Prints per class of `rules_path` (and "all") and band of `image_path` over the pixels
+// with a class and clear of every mask: n, mean, standard deviation, 1st percentile,
+// median, 99th percentile ("class band n mean std p01 median p99").
+void stats_step(const std::string& rules_path, const std::string& image_path,
+                const std::string& classes_path, const std::vector<std::string>& mask_paths,
+                std::ostream& out);
+
+// Prints the fraction of clear pixels of each pair (class of map A, class of map B):
+// "class_a class_b n fraction_of_a", how one date's land cover reads on another's.
+void crosstab_step(const std::string& rules_a, const std::string& classes_a,
+                   const std::string& rules_b, const std::string& classes_b,
+                   const std::vector<std::string>& mask_paths, std::ostream& out);
+
 }  // namespace sigchain::landcover

@@ -135,6 +135,14 @@ int run_landsat_scene(const std::vector<std::string>& a, const LandsatSceneOptio
              difference_step(a[1], a[2], static_cast<int>(whole(a[3], "BAND", 1, 1000)),
                              real(a[4], "RANGE"), o.masks, a[5]);
          }},
+        {"stats", [&] {
+             need(3);
+             stats_step(a[1], a[2], a[3], o.masks, out);
+         }},
+        {"crosstab", [&] {
+             need(4);
+             crosstab_step(a[1], a[2], a[3], a[4], o.masks, out);
+         }},
         {"pairs", [&] {
              need(6);
              pairs_step(a[1], a[2], a[3], a[4], o.masks,

@@ -22,7 +22,7 @@ struct LandsatSceneOptions {
 };
 
 // Runs one command ("classify", "mask", "terrain", "points", "fit", "ems", "score",
-// "side-by-side", "difference", "pairs"); data to `out`, reports to `report`. Throws
+// "side-by-side", "difference", "pairs", "stats", "crosstab"); data to `out`, reports to `report`. Throws
 // UsageError for a bad command line, DataError or IoError for bad files.
 int run_landsat_scene(const std::vector<std::string>& args, const LandsatSceneOptions& options,
                       std::ostream& out, std::ostream& report);

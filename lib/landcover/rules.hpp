@@ -60,9 +60,10 @@ std::vector<double> stacked_pixel(const std::vector<const geo::GeoRaster*>& imag
 // grids differ.
 std::vector<int> classify(const ClassRules& rules, const std::vector<const geo::GeoRaster*>& images);
 
-// Replaces each 0 in `classes` by the most frequent non-zero class among its 8
+// Replaces each 0 in `classes` by the most frequent positive class among its 8
 // neighbours, sweep after sweep until none is left (ties: lower class; a map with no
-// class at all is left as it is). Used where a mask hides the ground (clouds).
+// class at all is left as it is; negative values neither vote nor are filled). Used
+// where a mask hides the ground (clouds).
 void fill_unclassified(std::vector<int>& classes, long rows, long columns);
 
 }  // namespace sigchain::landcover

@@ -1,6 +1,7 @@
 // Rank-order correlation and RMS of a prediction against a real image, by scope.
 #include "landcover/score.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "compare/compare.hpp"
@@ -41,6 +42,15 @@ void pixel_values(const ScoreInput& in, int b, int cls, std::vector<double>& s,
         }
 }
 
+// Whether the pixel nearest a point (halves rounding up, as compare(1) takes it) is
+// masked; a point off the image is left to control_point_value's error.
+bool masked(const ScoreInput& in, double row, double column) {
+    const long r = static_cast<long>(std::floor(row + 0.5));
+    const long c = static_cast<long>(std::floor(column + 0.5));
+    if (r < 0 || c < 0 || r >= in.synthetic->rows || c >= in.synthetic->columns) return false;
+    return in.mask[static_cast<std::size_t>(r) * in.synthetic->columns + c] != 0;
+}
+
 }  // namespace
 
 std::vector<Score> score(const ScoreInput& in) {
@@ -62,6 +72,7 @@ std::vector<Score> score(const ScoreInput& in) {
             std::vector<double> s, r;
             for (const auto& p : in.points->points) {
                 const SourceLocation at{in.points_path, p.line};
+                if (masked(in, p.reference_row, p.reference_column)) continue;
                 s.push_back(compare::control_point_value(syn, b, p.synthetic_row,
                                                          p.synthetic_column, p.radius_px, at,
                                                          "synthetic image"));

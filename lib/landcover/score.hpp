@@ -29,7 +29,8 @@ struct ScoreInput {
     const image::Image* synthetic = nullptr;  // counts; band k is compared with band k
     const image::Image* reference = nullptr;
     std::vector<int> classes;  // per pixel, row-major; 0 = not scored
-    std::vector<int> mask;     // per pixel; non-zero = not scored (clouds, shadows, ...)
+    std::vector<int> mask;     // per pixel; non-zero = not scored (clouds, shadows, ...),
+                               // control points on such a pixel included
     const ClassRules* rules = nullptr;
     const io::Cpt* points = nullptr;  // may be null: no "points" rows
     std::string points_path;

@@ -115,3 +115,20 @@ Try 'landsat_scene --help'." ]
     run -0 gdalinfo s.png
     assert_line --partial "Size is 608, 300"
 }
+
+@test "landsat_scene: stats per class and the cross-tabulation of two class maps" {
+    printf '1 dark b4 < 60\n2 bright\n' > two.classes
+    run -0 landsat_scene classify two.classes - a.tif "$PA/etm_20021125.tif"
+    run -0 landsat_scene classify two.classes - b.tif "$PA/etm_20020720.tif"
+    run -0 landsat_scene stats two.classes "$PA/etm_20021125.tif" a.tif
+    assert_line --index 0 "# class band n mean std p01 median p99"
+    # By construction every "dark" pixel of November has b4 < 60 and every "bright" one
+    # b4 >= 60: the 99th percentile of one and the 1st of the other say so.
+    run -0 awk '$1 == "dark" && $2 == 4 && $8 < 60 { a = 1 } $1 == "bright" && $2 == 4 && $6 >= 60 { b = 1 }
+        $1 == "all" && $2 == 4 && $3 == 90000 { c = 1 } END { exit !(a && b && c) }' <<< "$output"
+    run -0 landsat_scene crosstab two.classes a.tif two.classes b.tif
+    # The four pairs' counts add up to every pixel, and each class's fractions to 1.
+    run -0 awk '!/^#/ { n += $3; f[$1] += $4 } END { exit !(n == 90000 &&
+        f["dark"] > 0.9999 && f["dark"] < 1.0001 && f["bright"] > 0.9999 && f["bright"] < 1.0001) }' \
+        <<< "$output"
+}

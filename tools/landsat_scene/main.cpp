@@ -24,7 +24,9 @@ constexpr const char* kUsage =
     "       landsat_scene score [--mask F]... [--points CPT] RULES SYN REF CLASSES.tif\n"
     "       landsat_scene side-by-side SYN REF R,G,B OUT.png\n"
     "       landsat_scene difference [--mask F]... SYN REF BAND RANGE OUT.png\n"
-    "       landsat_scene pairs [--mask F]... RULES SYN REF CLASSES.tif BAND STEP";
+    "       landsat_scene pairs [--mask F]... RULES SYN REF CLASSES.tif BAND STEP\n"
+    "       landsat_scene stats [--mask F]... RULES IMAGE CLASSES.tif\n"
+    "       landsat_scene crosstab [--mask F]... RULES_A CLASSES_A RULES_B CLASSES_B";
 
 }  // namespace
 

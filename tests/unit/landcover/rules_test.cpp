@@ -99,6 +99,10 @@ TEST(FillUnclassified, TakesTheNeighboursMajorityUntilNoneIsLeft) {
     lc::fill_unclassified(k, 3, 3);
     EXPECT_EQ(k[4], 2);
     EXPECT_EQ(k[8], 1);
+    // Negative values (pixels no rule classified) neither vote nor are filled.
+    std::vector<int> held{-1, 0, 3, -1};
+    lc::fill_unclassified(held, 2, 2);
+    EXPECT_EQ(held, (std::vector<int>{-1, 3, 3, -1}));
     std::vector<int> none(4, 0);
     lc::fill_unclassified(none, 2, 2);  // no class anywhere: left as it is
     EXPECT_EQ(none, std::vector<int>(4, 0));

@@ -80,6 +80,36 @@ TEST(Score, PointsRowFromTheControlPoints) {
         << out.str();
 }
 
+TEST(Score, PointsOnAMaskedPixelAreLeftOut) {
+    const auto rules = lc::parse_class_rules(sigchain::TextInput::from_string("1 a\n", "r"));
+    const auto syn = one_band({1, 2, 3, 4, 5, 6});
+    const auto ref = one_band({1, 2, 3, 4, 5, 255});  // a cloud at (1, 2)
+    sigchain::io::Cpt cpt;
+    for (int k = 0; k < 3; ++k)
+        cpt.points.push_back({"a_0" + std::to_string(k), 1.0, double(k), 1.0, double(k), 0.0,
+                              "", k + 1});
+    lc::ScoreInput in;
+    in.synthetic = &syn;
+    in.reference = &ref;
+    in.classes = std::vector<int>(6, 1);
+    in.mask = {0, 0, 0, 0, 0, 1};
+    in.rules = &rules;
+    in.points = &cpt;
+    in.points_path = "p.cpt";
+    in.bands = 1;
+    in.min_class_pixels = 100;
+    // Two points left: fewer than 3, no points row; the image row has 5 equal pixels.
+    const auto s = lc::score(in);
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_EQ(s[0].scope, "image");
+    EXPECT_DOUBLE_EQ(s[0].rms, 0.0);
+    cpt.points.push_back({"a_04", 0.0, 0.0, 0.0, 0.0, 0.0, "", 4});
+    const auto t = lc::score(in);
+    ASSERT_EQ(t[0].scope, "points");
+    EXPECT_EQ(t[0].n, 3);
+    EXPECT_DOUBLE_EQ(t[0].rms, 0.0);
+}
+
 TEST(Score, SizesMustAgree) {
     const auto rules = lc::parse_class_rules(sigchain::TextInput::from_string("1 a\n", "r"));
     const auto syn = one_band({1, 2, 3, 4, 5, 6});
