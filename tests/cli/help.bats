@@ -7,7 +7,7 @@ load test_helper
 # breaks and padding would land elsewhere).
 @test "every tool's --help: option descriptions continue in their own column" {
     for t in build_radiance compare control7 find_min_max_view_angle hawkeye_scene \
-        landsat_sensor merge_tiles olinda_scene sensorize sigchain-check soho_scene therm trace; do
+        landsat_scene landsat_sensor merge_tiles olinda_scene sensorize sigchain-check soho_scene therm trace; do
         run -0 "$t" --help
         bad=$(awk '
             /^Options:/ { on = 1; next }

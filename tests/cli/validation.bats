@@ -1,5 +1,7 @@
 #!/usr/bin/env bats
-# Tests: data/scenes/pennsylvania/Makefile and scripts/validation (make validate)
+# Tests: data/scenes/pennsylvania/Makefile and scripts/validation (make validate; the
+# Marburg and Olinda no-fit scenes' own checks are tests/cli/marburg.bats and
+# tests/cli/olinda_nofit.bats)
 # Also requires: landsat_sensor, landsat_scene, control7, build_radiance,
 # find_min_max_view_angle, trace, sensorize, gnuplot
 # The date-transfer validation on real Landsat-7 images runs from a clean copy and
@@ -21,8 +23,9 @@ setup() {
     mkdir -p repo/data/scenes repo/docs
     cp -r "$SIGCHAIN_SOURCE_DIR/scripts" "$SIGCHAIN_SOURCE_DIR/pipelines" repo/
     cp -r "$SIGCHAIN_SOURCE_DIR/data/spectra" repo/data/
-    cp -r "$SIGCHAIN_SOURCE_DIR/data/scenes/pennsylvania" repo/data/scenes/
-    rm -rf repo/data/scenes/pennsylvania/out
+    cp -r "$SIGCHAIN_SOURCE_DIR/data/scenes/pennsylvania" "$SIGCHAIN_SOURCE_DIR/data/scenes/marburg" \
+        "$SIGCHAIN_SOURCE_DIR/data/scenes/olinda" repo/data/scenes/
+    rm -rf repo/data/scenes/*/out
     printf '# x\n<!-- validation:begin -->\nstale\n<!-- validation:end -->\nkept\n' > repo/README.md
     run -0 env JOBS=2 repo/scripts/validation "$SIGCHAIN_BIN/.." repo/docs/validation.md
     v=repo/data/scenes/pennsylvania/out/validation.txt
@@ -50,6 +53,8 @@ setup() {
         $5 < 0.75 { print; bad = 1 } END { exit bad }' "$v"
     # The document and the README block come from that table.
     run -0 grep -c "^| \*\*July → November (transfer)\*\* |" repo/docs/validation.md
+    run -0 grep -c "^| \*\*ETM+ 2001 → OLI 2013 (transfer)\*\* | 0[.][0-9]" repo/docs/validation.md
+    run -0 grep -c "^| ocean (DEM mask) | [0-9]" repo/docs/validation.md
     run -0 grep -F "$(awk '$1 == "july/to-november" && $2 == "points" && $3 == 4 { printf "%.3f", $5 }' "$v")" \
         repo/README.md
     run -1 grep -c '^stale$' repo/README.md

@@ -67,15 +67,23 @@ trace                   history-step-minutes   0     1441                  real
 trace                   points-per-facet       0     1000001               int
 trace                   sky-rays               0     1000001               int
 trace                   material-id            -1    16777217              int
+landsat_sensor          altitude               -0.6  1000.5                real
+landsat_sensor          samples                1     100001                int
+landsat_sensor          increment              0     10001                 real
+landsat_sensor          threshold              0     1.1                   real
+landsat_scene           bands                  0     1001                  int
+landsat_scene           buffer                 -1    101                   int
+landsat_scene           pixel                  0     1000001               real
 '
 # Options with a value that is not a number (names, files, lists checked by their
 # own parsers).
 TEXT_OPTIONS='answer answers bands co data-dir output error-map plot format method origin
 sampling bounces background rows truth tmp psf preview card1 card2 target1 target2
 material-map landuse landuse-map crs write-decks from-tape7 mtf-smear mtf-electronics
-convergence convergence-error tile igm glt uncertainty uncertainty-output'
+convergence convergence-error tile igm glt uncertainty uncertainty-output rsr view-angles
+name gain target mask points cloud dark sun heights'
 TOOLS='build_radiance compare control7 find_min_max_view_angle hawkeye_scene merge_tiles
-olinda_scene sensorize sigchain-check soho_scene therm trace'
+olinda_scene sensorize sigchain-check soho_scene therm trace landsat_sensor landsat_scene'
 
 setup_file() {
     export CATALOGUE="$BATS_FILE_TMPDIR/catalogue"
