@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <set>
 
+#include "core/data_dir.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
 
@@ -20,6 +21,16 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
     const auto hi = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
     const double t = (at - x[hi - 1]) / (x[hi] - x[hi - 1]);
     return y[hi - 1] + t * (y[hi] - y[hi - 1]);
+}
+
+// A spectrum named relative to the materials file's folder, else to the data directory
+// (data/spectra/ holds the published ones, in the source tree and an installed copy).
+std::string spectrum_path(const std::filesystem::path& folder, const std::string& name) {
+    const auto local = folder / name;
+    if (std::filesystem::path(name).is_absolute() || std::filesystem::exists(local))
+        return local.string();
+    const auto shared = std::filesystem::path(data_dir()) / name;
+    return std::filesystem::exists(shared) ? shared.string() : local.string();
 }
 
 }  // namespace
@@ -83,7 +94,7 @@ std::vector<Material> read_materials(const std::string& path) {
             const double fr = parse_double(f[i], where, "a fraction");
             if (!(fr > 0 && fr <= 1)) throw DataError(where, "expected a fraction in (0, 1]");
             sum += fr;
-            const auto file = (folder / std::string(f[i + 1])).string();
+            const auto file = spectrum_path(folder, std::string(f[i + 1]));
             m.fractions.push_back(fr);
             m.spectra.push_back(read_spectrum(file));
         }

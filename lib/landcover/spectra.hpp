@@ -43,7 +43,9 @@ struct Material {
 };
 
 // materials(5): lines "NAME FRACTION SPECTRUM [FRACTION SPECTRUM ...]"; SPECTRUM paths
-// relative to the materials file's folder. Fractions in (0, 1], their sum at most 1.
+// relative to the materials file's folder, else to the data directory (data_dir():
+// "spectra/ecostress_grass.txt" finds the published spectra wherever the scene folder
+// is). Fractions in (0, 1], their sum at most 1.
 std::vector<Material> read_materials(const std::string& path);
 
 // Per-band scales of each class: "NAME s1 s2 ... sN" rows ('#' comments), N the number

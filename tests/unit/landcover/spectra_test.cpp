@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -91,6 +92,33 @@ TEST(Spectra, FractionsAboveOneAndMissingScalesAreErrors) {
     EXPECT_THROW(lc::write_material_ems(m, two_bands(), lc::read_scales(d.file("s.txt"), 2),
                                         d.path.string(), "test"),
                  sigchain::DataError);
+}
+
+TEST(Spectra, ASpectrumNotBesideTheMaterialsIsFoundInTheDataDirectory) {
+    TempDir d;
+    std::filesystem::create_directories(d.path / "data" / "spectra");
+    std::filesystem::create_directories(d.path / "scene");
+    std::ofstream(d.file("data/spectra/a.txt")) << "0.4 0.2\n1.0 0.2\n";
+    std::ofstream(d.file("scene/b.txt")) << "0.4 0.4\n1.0 0.4\n";
+    std::ofstream(d.file("scene/m.txt")) << "x 0.5 spectra/a.txt 0.5 b.txt\n";
+    const char* old = std::getenv("SIGCHAIN_DATA");
+    const std::string saved = old ? old : "";
+    ::setenv("SIGCHAIN_DATA", d.file("data").c_str(), 1);
+    const auto m = lc::read_materials(d.file("scene/m.txt"));
+    // 0.5 x 0.2 (from the data directory) + 0.5 x 0.4 (beside the materials file).
+    EXPECT_DOUBLE_EQ(m[0].at(0.5), 0.3);
+    EXPECT_EQ(m[0].spectra[0].path, d.file("data/spectra/a.txt"));
+    // Found in neither place: the error names the path beside the materials file.
+    std::ofstream(d.file("scene/n.txt")) << "x 0.5 spectra/none.txt\n";
+    try {
+        lc::read_materials(d.file("scene/n.txt"));
+        ADD_FAILURE() << "no error";
+    } catch (const sigchain::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(d.file("scene/spectra/none.txt")), std::string::npos)
+            << e.what();
+    }
+    if (old) ::setenv("SIGCHAIN_DATA", saved.c_str(), 1);
+    else ::unsetenv("SIGCHAIN_DATA");
 }
 
 TEST(Spectra, BandOfAWavelengthIsTheSpanHoldingItElseTheNearest) {
