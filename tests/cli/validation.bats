@@ -26,7 +26,8 @@ setup() {
     cp -r "$SIGCHAIN_SOURCE_DIR/data/scenes/pennsylvania" "$SIGCHAIN_SOURCE_DIR/data/scenes/marburg" \
         "$SIGCHAIN_SOURCE_DIR/data/scenes/olinda" repo/data/scenes/
     rm -rf repo/data/scenes/*/out
-    printf '# x\n<!-- validation:begin -->\nstale\n<!-- validation:end -->\nkept\n' > repo/README.md
+    printf '# x\n<!-- validation:begin -->\nstale\n<!-- validation:end -->\nkept\n<!-- olinda:begin -->\nold\n<!-- olinda:end -->\n' \
+        > repo/README.md
     run -0 env JOBS=2 repo/scripts/validation "$SIGCHAIN_BIN/.." repo/docs/validation.md
     v=repo/data/scenes/pennsylvania/out/validation.txt
     # Every render, scope and band is there (points under a mask of the scored date are
@@ -59,6 +60,11 @@ setup() {
         repo/README.md
     run -1 grep -c '^stale$' repo/README.md
     run -0 grep -c '^kept$' repo/README.md
+    # The Olinda self-fit's table, from its compare report.
+    run -1 grep -c '^old$' repo/README.md
+    roc=$(awk '/^band 1:/ { b = 1 } /^ROC / && b == 1 { printf "%.3f", $2; exit }' \
+        repo/data/scenes/olinda/out/olinda.report)
+    run -0 grep -c "^| 1 blue | $roc | " repo/README.md
     for p in side_by_side false_colour difference_b4 scatter_b4; do
         [ -s "repo/docs/images/validation/pennsylvania_july_to-november_$p.png" ]
     done
