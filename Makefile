@@ -51,7 +51,7 @@ chart: build
 
 # The validations on real images (White (1996), section 4.5): each validation scene's
 # Makefile, then docs/validation.md, its pictures and the README's results table,
-# all from that run (scripts/validation; about a minute on 2 cores).
+# all from that run (scripts/validation; a few minutes on 2 cores).
 validate: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target tools
 	@JOBS=$(JOBS) scripts/validation $(BUILD)
