@@ -61,11 +61,20 @@ std::vector<std::string> rest(const std::vector<std::string>& a, std::size_t fro
     return {a.begin() + static_cast<long>(std::min(from, a.size())), a.end()};
 }
 
+// The terms of an option (classes(5)'s syntax); a malformed one is a usage error.
+std::vector<Term> option_terms(const std::string& text, const char* option) {
+    try {
+        return parse_terms(text, {option, 0});
+    } catch (const DataError& e) {
+        throw UsageError(e.what());
+    }
+}
+
 CloudMaskRequest mask_request(const LandsatSceneOptions& o) {
     if (o.sun.empty()) throw UsageError("mask needs --sun ELEVATION,AZIMUTH");
     CloudMaskRequest rq;
-    rq.cloud = parse_terms(o.cloud, {"--cloud", 0});
-    rq.dark = parse_terms(o.dark, {"--dark", 0});
+    rq.cloud = option_terms(o.cloud, "--cloud");
+    rq.dark = option_terms(o.dark, "--dark");
     std::tie(rq.sun_elevation_deg, rq.sun_azimuth_deg) = pair_of(o.sun, "--sun");
     std::tie(rq.min_height_m, rq.max_height_m) = pair_of(o.heights, "--heights");
     if (!(rq.sun_elevation_deg > 0 && rq.sun_elevation_deg <= 90))
