@@ -1,6 +1,8 @@
 // True-colour previews of multi-band images (sensorize(1), --preview).
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 #include "image/image.hpp"
@@ -20,6 +22,19 @@ double percentile(std::vector<float> values, double fraction) {
     const auto k = static_cast<std::size_t>(std::lround(fraction * (values.size() - 1)));
     std::nth_element(values.begin(), values.begin() + k, values.end());
     return values[k];
+}
+
+// The stretch of one band: its 2nd and 98th percentiles, or its smallest and largest
+// finite values where those coincide (a small object on a uniform background, which
+// the percentiles miss); equal ends mean a uniform band.
+std::pair<double, double> stretch(const std::vector<float>& values) {
+    double lo = percentile(values, 0.02), hi = percentile(values, 0.98);
+    if (hi > lo) return {lo, hi};
+    lo = INFINITY;
+    hi = -INFINITY;
+    for (float v : values)
+        if (std::isfinite(v)) lo = std::min<double>(lo, v), hi = std::max<double>(hi, v);
+    return {lo, hi};
 }
 
 }  // namespace
@@ -56,9 +71,10 @@ Image true_colour_preview(const Image& image, const std::string& path) {
     for (int o = 0; o < 3; ++o) {
         const auto first = image.data.begin() + bands[o] * plane;
         const std::vector<float> values(first, first + plane);
-        const double lo = percentile(values, 0.02), hi = percentile(values, 0.98);
+        const auto [lo, hi] = stretch(values);
         for (std::size_t p = 0; p < plane; ++p) {
-            const double v = hi > lo ? (values[p] - lo) / (hi - lo) * 255 : 0;
+            // A uniform band is mid-grey, not black: it has a value, just no contrast.
+            const double v = hi > lo ? (values[p] - lo) / (hi - lo) * 255 : 128;
             rgb.data[o * plane + p] =
                 std::isfinite(v) ? static_cast<float>(std::lround(std::clamp(v, 0.0, 255.0))) : 0;
         }

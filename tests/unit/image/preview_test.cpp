@@ -42,3 +42,23 @@ TEST(Preview, TwoToNinetyEightPercentStretchPerBand) {
         EXPECT_EQ(rgb.at(c, 0, 100), 255);
     }
 }
+
+// A small bright object on a uniform background (fewer than 2 % of the pixels): the
+// 2nd and 98th percentiles are both the background, so the stretch falls back to the
+// band's smallest and largest values: background 0, object 255, not a black image.
+TEST(Preview, SmallObjectOnAUniformBackgroundFallsBackToMinMax) {
+    Image im(1, 101, 3);
+    im.wavelength_um = {0.45, 0.55, 0.65};
+    for (int c = 0; c < 3; ++c)
+        for (long x = 0; x < 101; ++x) im.at(c, 0, x) = x == 50 ? 90.0f : 10.0f;
+    const Image rgb = true_colour_preview(im, "p.png");
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(rgb.at(c, 0, 0), 0);
+        EXPECT_EQ(rgb.at(c, 0, 50), 255);
+    }
+    // A uniform band has no contrast at all: mid-grey.
+    for (int c = 0; c < 3; ++c)
+        for (long x = 0; x < 101; ++x) im.at(c, 0, x) = 7.0f;
+    const Image grey = true_colour_preview(im, "p.png");
+    EXPECT_EQ(grey.at(0, 0, 10), 128);
+}
