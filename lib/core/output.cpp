@@ -332,7 +332,15 @@ void install_output_signal_handlers() {
         action.sa_handler = on_terminating_signal;
         sigemptyset(&action.sa_mask);
         for (int sig : {SIGTERM, SIGINT, SIGHUP}) sigaddset(&action.sa_mask, sig);
-        for (int sig : {SIGTERM, SIGINT, SIGHUP}) ::sigaction(sig, &action, nullptr);
+        for (int sig : {SIGTERM, SIGINT, SIGHUP}) {
+            // A hangup the process inherited as ignored stays ignored (nohup(1)): the
+            // user asked for the run to outlive its terminal.
+            struct sigaction inherited {};
+            if (sig == SIGHUP && ::sigaction(sig, nullptr, &inherited) == 0 &&
+                inherited.sa_handler == SIG_IGN)
+                continue;
+            ::sigaction(sig, &action, nullptr);
+        }
         return true;
     }();
     (void)installed;

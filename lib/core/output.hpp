@@ -89,7 +89,8 @@ void commit_together(const std::vector<AtomicOutput*>& outputs);
 
 // Installs the handler of SIGTERM, SIGINT and SIGHUP that removes the run's
 // temporaries (files and folders registered above) and exits with status 128 +
-// the signal number. Cli::run calls it; calling it again does nothing.
+// the signal number; a SIGHUP inherited as ignored (nohup) stays ignored. Cli::run
+// calls it; calling it again does nothing.
 void install_output_signal_handlers();
 
 // Whether two paths name the same file: the same device and inode when both exist,
