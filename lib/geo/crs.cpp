@@ -5,7 +5,13 @@
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <filesystem>
 #include <mutex>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
 
 namespace sigchain::geo {
 
@@ -21,6 +27,32 @@ void gdal_init() {
 std::string gdal_message() {
     const char* m = CPLGetLastErrorMsg();
     return (m && *m) ? std::string(m) : std::string("unknown GDAL error");
+}
+
+void check_sidecars(const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path raster(path);
+    std::vector<std::pair<fs::path, bool>> sides;  // (side file, holds text)
+    for (const char* ext : {".prj", ".hdr", ".aux.xml", ".tfw", ".wld", ".aux", ".PRJ", ".HDR",
+                            ".TFW", ".WLD"})
+        sides.emplace_back(fs::path(raster).replace_extension(ext), true);
+    sides.emplace_back(fs::path(raster).replace_extension(".ovr"), false);
+    sides.emplace_back(fs::path(path + ".aux.xml"), true);
+    sides.emplace_back(fs::path(path + ".ovr"), false);
+    for (const auto& [side, text] : sides) {
+        if (side == raster) continue;  // the raster itself (an ENVI .hdr given as the cube)
+        std::error_code ec;
+        const auto status = fs::status(side, ec);
+        if (ec || !fs::exists(status)) continue;
+        if (!fs::is_regular_file(status))
+            throw DataError({side.string(), 0}, "not a regular file (a side file GDAL would "
+                                                "read with " + path + ")");
+        const auto bytes = fs::file_size(side, ec);
+        if (text && !ec && static_cast<long long>(bytes) > kMaxSidecarBytes)
+            throw DataError({side.string(), 0},
+                            std::to_string(bytes) + " bytes: larger than a side file of " + path +
+                                " may be (" + std::to_string(kMaxSidecarBytes >> 20) + " MiB)");
+    }
 }
 
 Crs Crs::from_ogr(const OGRSpatialReference* srs) {

@@ -94,4 +94,12 @@ void gdal_init();
 // GDAL's last error message on this thread, or "unknown GDAL error".
 std::string gdal_message();
 
+// The side files GDAL reads with a raster (PATH's .prj, .hdr, .aux.xml, .tfw, .wld,
+// .aux, .ovr and their upper-case forms, and PATH.aux.xml, PATH.ovr), checked before
+// GDAL opens PATH, since GDAL reads them whole and unbounded: each that exists must
+// be a regular file, and a text one (all but .ovr) at most kMaxSidecarBytes. Throws
+// DataError naming the side file and the raster (sigchain(7), Text files).
+inline constexpr long long kMaxSidecarBytes = 16LL << 20;  // 16 MiB
+void check_sidecars(const std::string& path);
+
 }  // namespace sigchain::geo

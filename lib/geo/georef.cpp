@@ -36,6 +36,7 @@ Crs crs_from_user(const std::string& text) {
 
 Crs raster_crs(const std::string& path) {
     gdal_init();
+    check_sidecars(path);
     std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(
         GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) throw IoError(path + ": cannot open: " + gdal_message());

@@ -31,6 +31,7 @@ bool GeoRaster::valid(double v) const { return std::isfinite(v) && !(nodata && v
 // The errors below name the file without a line: a raster is binary.
 GeoRaster read_geo_raster(const std::string& path, Bands bands) {
     gdal_init();
+    check_sidecars(path);
     Dataset ds(static_cast<GDALDataset*>(
         GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) throw IoError(path + ": cannot open the raster: " + gdal_message());

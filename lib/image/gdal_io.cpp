@@ -131,6 +131,7 @@ namespace detail {
 Image read_gdal(const std::string& path) {
     gdal_init();
     const std::string data_path = envi_data_file(path);
+    geo::check_sidecars(data_path);
     std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
         data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
@@ -165,6 +166,7 @@ std::string Provenance::item(const std::string& key) const {
 Provenance read_provenance(const std::string& path) {
     gdal_init();
     const std::string data_path = envi_data_file(path);
+    geo::check_sidecars(data_path);
     std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
         data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());

@@ -37,6 +37,7 @@ int TextureMap::curve_at(double x, double y) const {
 std::shared_ptr<const TextureMap> read_texture_map(const std::string& path,
                                                    const MaterialOptics& m) {
     geo::gdal_init();
+    geo::check_sidecars(path);
     std::unique_ptr<GDALDataset> ds(
         static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_ReadOnly)));
     if (!ds) texture_error(m, "cannot read TEXTURE_FILE " + path + ": " + geo::gdal_message());

@@ -189,6 +189,7 @@ void assemble_mesh(const std::string& path, const LoadOptions& options, SceneSin
 // Whether GDAL opens `path` as a raster (a DEM given as the scene).
 bool is_raster(const std::string& path) {
     geo::gdal_init();
+    geo::check_sidecars(path);
     GDALDatasetH d = GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr,
                                 nullptr, nullptr);
     if (d) GDALClose(d);

@@ -196,3 +196,32 @@ FORMATS="adv snd gdb odb mat ems ext rad tmp shd wth cdk sen cpt rsd brdf"
     [[ "$stderr" == *"twice.odb:5: 1 more instance(s) of the same object with the same placement (line 6)"* ]] ||
         { echo "stderr: $stderr"; return 1; }
 }
+
+# The side files GDAL reads with a raster (geo::check_sidecars): /dev/zero as a DEM's
+# .prj or a cube's ENVI .hdr had cost 12-22 s and 2 GB; a directory or an oversized
+# side file is refused at once, naming it.
+@test "a raster's side files: /dev/zero, a directory or a huge file is refused, naming it" {
+    # An ESRI ASCII grid DEM and its .prj.
+    printf 'ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 30\n1 2 3\n4 5 6\n7 8 9\n' > dem.asc
+    printf '1 all\n' > all.classes
+    ln -s /dev/zero dem.prj
+    run -1 --separate-stderr timeout 10 landsat_scene classify all.classes - c.tif dem.asc
+    [[ "$stderr" == "landsat_scene: dem.prj: not a regular file (a side file GDAL would read with dem.asc)" ]]
+    [ ! -e c.tif ]
+    rm dem.prj && mkdir dem.prj
+    run -1 --separate-stderr timeout 10 landsat_scene classify all.classes - c.tif dem.asc
+    [[ "$stderr" == "landsat_scene: dem.prj: not a regular file"* ]]
+    rmdir dem.prj && truncate -s 17M dem.prj
+    run -1 --separate-stderr timeout 10 landsat_scene classify all.classes - c.tif dem.asc
+    [[ "$stderr" == "landsat_scene: dem.prj: 17825792 bytes: larger than a side file of dem.asc may be (16 MiB)" ]]
+    # An ENVI cube whose header is /dev/zero.
+    cp "$CUBE/tiny.img" .
+    ln -s /dev/zero tiny.hdr
+    # (compare follows cmp and diff: trouble is exit 2.)
+    run -2 --separate-stderr timeout 10 compare --pixelwise tiny.img tiny.img
+    [[ "$stderr" == "compare: tiny.hdr: not a regular file"* ]]
+    run -1 --separate-stderr timeout 10 sensorize tiny.img "$CUBE/blue.sen" -o t.tif
+    [[ "$stderr" == "sensorize: tiny.hdr: not a regular file"* ]]
+    [ ! -e t.tif ]
+    assert_no_temp_files .
+}
