@@ -162,6 +162,22 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
     }
 }
 
+// The scene-argument options a kind of scene does not use are refused, not ignored:
+// `mesh` allows --material-map and --material-id, `dem` --material-id and --landuse
+// with --landuse-map, and a .gdb or .odb (neither) names its materials itself.
+void refuse_unused_options(const SceneInput& in, const std::string& path, bool mesh, bool dem) {
+    const std::string kind = mesh  ? "a mesh scene"
+                             : dem ? "a DEM scene"
+                                   : "a .gdb or .odb scene (it names its materials itself)";
+    auto refuse = [&](const char* option) {
+        throw UsageError(std::string(option) + " does not apply to " + path + ", " + kind);
+    };
+    if (!in.material_map.empty() && !mesh) refuse("--material-map");
+    if (in.material_id && !mesh && !dem) refuse("--material-id");
+    if (!in.landuse.empty() && !dem) refuse("--landuse");
+    if (!in.landuse_map.empty() && !dem) refuse("--landuse-map");
+}
+
 void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink& sink,
                   std::vector<std::string>* warnings) {
     const io::Gdb gdb = io::read_gdb_file(path, parallel_of(options));
@@ -241,16 +257,21 @@ void assemble_scene(const std::string& path, const LoadOptions& options, SceneSi
     if (!(options.scene_meters_per_unit > 0))
         throw std::invalid_argument("assemble_scene: scene_meters_per_unit must be positive");
     std::string ext = io::format_of_path(path);
+    if (ext == "gdb" || ext == "odb")
+        refuse_unused_options(options.input, path, false, false);
     if (ext == "gdb")
         assemble_gdb(path, options, sink, warnings);
     else if (ext == "odb")
         assemble_odb(path, options, sink, warnings);
-    else if (is_mesh_path(path))
+    else if (is_mesh_path(path)) {
+        refuse_unused_options(options.input, path, true, false);
         assemble_mesh(path, options, sink, warnings);
-    else if (!std::ifstream(path))
+    } else if (!std::ifstream(path))
         throw IoError(path + ": cannot open the scene");
-    else if (is_raster(path))
+    else if (is_raster(path)) {
+        refuse_unused_options(options.input, path, false, true);
         assemble_dem(path, options, sink, warnings);
+    }
     else
         throw UsageError(path +
                          ": the scene must be a .gdb or .odb file, a mesh (.obj .ply .gltf "

@@ -96,6 +96,26 @@ write_dem() {
     [ ! -e x.img ] || fail "an output cube was written"
 }
 
+@test "a scene option the scene does not use is refused, not ignored" {
+    write_plate
+    write_dem
+    run -2 --separate-stderr trace $(inputs "$SEED/box_on_plane.gdb") --material-id 1 -o x.img
+    [[ "$stderr" == "trace: --material-id does not apply to $SEED/box_on_plane.gdb, a .gdb or .odb scene (it names its materials itself)"* ]] ||
+        fail "stderr: $stderr"
+    run -2 --separate-stderr trace $(inputs "$SEED/box_on_plane.gdb") --material-map plate.map -o x.img
+    [[ "$stderr" == "trace: --material-map does not apply to "* ]] || fail "stderr: $stderr"
+    run -2 --separate-stderr trace $(inputs plate.obj) --material-id 1 --landuse t.asc \
+        --landuse-map plate.map -o x.img
+    [[ "$stderr" == "trace: --landuse does not apply to plate.obj, a mesh scene"* ]] ||
+        fail "stderr: $stderr"
+    run -2 --separate-stderr trace $(inputs t.asc) --material-id 1 --material-map plate.map -o x.img
+    [[ "$stderr" == "trace: --material-map does not apply to t.asc, a DEM scene"* ]] ||
+        fail "stderr: $stderr"
+    run -2 --separate-stderr find_min_max_view_angle "$DATA/box.adv" "$SEED/box_on_plane.gdb" \
+        --material-id 1
+    [ ! -e x.img ] || fail "an output cube was written"
+}
+
 @test "a material missing from the map and an unreadable mesh are bad data" {
     write_plate
     printf 'grass 1\n' > grass.map
