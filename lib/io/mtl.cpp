@@ -251,9 +251,13 @@ Mtl parse_mtl(const TextInput& in) {
     parse_date(keys, keys.require({"DATE_ACQUIRED", "ACQUISITION_DATE"}), mtl);
     mtl.time_gmt_hours = parse_time(keys, keys.require({"SCENE_CENTER_TIME", "SCENE_CENTER_SCAN_TIME"}));
     read_corners(keys, mtl);
-    double az = keys.number(keys.require({"SUN_AZIMUTH"}), -180, 360);
-    mtl.sun_azimuth_deg = az < 0 ? az + 360 : az;  // Landsat 8 files give -180 to 180
-    mtl.sun_elevation_deg = keys.number(keys.require({"SUN_ELEVATION"}), -90, 90);
+    // The sun is informational (sigchain computes it from the date, time and place): a
+    // hand-written file for an image with no metadata may leave it out.
+    if (const auto* e = keys.find("SUN_AZIMUTH")) {
+        const double az = keys.number(*e, -180, 360);
+        mtl.sun_azimuth_deg = az < 0 ? az + 360 : az;  // Landsat 8 files give -180 to 180
+    }
+    if (const auto* e = keys.find("SUN_ELEVATION")) mtl.sun_elevation_deg = keys.number(*e, -90, 90);
     if (const auto* e = keys.find("EARTH_SUN_DISTANCE")) mtl.earth_sun_distance_au = keys.number(*e, 0.9, 1.1);
     mtl.bands = read_bands(keys, mtl.format);
     return mtl;

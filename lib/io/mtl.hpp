@@ -77,8 +77,8 @@ struct Mtl {
     int year = 2000, month = 1, day = 1;  // DATE_ACQUIRED (GMT)
     double time_gmt_hours = 0;            // SCENE_CENTER_TIME, decimal hours GMT
     std::array<MtlCorner, 4> corners;     // UL, UR, LL, LR of the product
-    double sun_azimuth_deg = 0;    // clockwise from north, at the scene centre
-    double sun_elevation_deg = 0;  // above the horizon
+    std::optional<double> sun_azimuth_deg;    // clockwise from north, at the scene centre
+    std::optional<double> sun_elevation_deg;  // above the horizon (both informational)
     std::optional<double> earth_sun_distance_au;
     std::vector<MtlBand> bands;  // by band number ("1" < "2" < ... < "10")
     int end_line = 0;            // the line of END (missing values are reported there)

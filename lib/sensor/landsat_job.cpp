@@ -136,9 +136,10 @@ void summarise(const io::Mtl& mtl, const io::Snd& snd, const std::vector<BandPla
                     " " + fixed(100 * p.spectrum.captured_fraction, 3) + "% " + c.source);
     }
     const auto sun = geo::solar_position(io::scene_site(snd));
+    auto mtl_angle = [](const std::optional<double>& v) { return v ? fixed(*v, 3) : "-"; };
     report.info("sun at " + fixed(snd.latitude_deg, 5) + "," + fixed(snd.longitude_east_deg, 5) +
-                ": MTL elevation " + fixed(mtl.sun_elevation_deg, 3) + " azimuth " +
-                fixed(mtl.sun_azimuth_deg, 3) + "; NREL SPA elevation " +
+                ": MTL elevation " + mtl_angle(mtl.sun_elevation_deg) + " azimuth " +
+                mtl_angle(mtl.sun_azimuth_deg) + "; NREL SPA elevation " +
                 fixed(90 - sun.zenith_deg, 3) + " azimuth " + fixed(sun.azimuth_deg, 3) + " deg");
 }
 

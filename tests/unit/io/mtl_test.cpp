@@ -70,8 +70,8 @@ TEST(Mtl, MarburgEtmReadsEveryValueAsWritten) {
     const MtlCorner want[] = {{51.26868, 7.28558}, {51.26807, 10.75597}, {49.27295, 7.35580},
                               {49.27238, 10.68405}};
     for (int i = 0; i < 4; ++i) EXPECT_EQ(m.corners[i], want[i]) << i;
-    EXPECT_DOUBLE_EQ(m.sun_azimuth_deg, 144.05820926);
-    EXPECT_DOUBLE_EQ(m.sun_elevation_deg, 53.87765310);
+    EXPECT_DOUBLE_EQ(*m.sun_azimuth_deg, 144.05820926);
+    EXPECT_DOUBLE_EQ(*m.sun_elevation_deg, 53.87765310);
     EXPECT_DOUBLE_EQ(*m.earth_sun_distance_au, 1.0151738);
     std::vector<std::string> names;
     for (const auto& b : m.bands) names.push_back(b.name);
@@ -108,8 +108,8 @@ TEST(Mtl, MarburgOliReadsEveryValueAsWritten) {
     const MtlCorner want[] = {{51.34342, 7.42064}, {51.34001, 10.81471}, {49.18843, 7.49036},
                               {49.18527, 10.73461}};
     for (int i = 0; i < 4; ++i) EXPECT_EQ(m.corners[i], want[i]) << i;
-    EXPECT_DOUBLE_EQ(m.sun_azimuth_deg, 146.98479703);
-    EXPECT_DOUBLE_EQ(m.sun_elevation_deg, 58.99675180);
+    EXPECT_DOUBLE_EQ(*m.sun_azimuth_deg, 146.98479703);
+    EXPECT_DOUBLE_EQ(*m.sun_elevation_deg, 58.99675180);
     EXPECT_DOUBLE_EQ(*m.earth_sun_distance_au, 1.0166988);
     ASSERT_EQ(m.bands.size(), 11u);
     const double mult[] = {1.2147E-02, 1.2438E-02, 1.1462E-02, 9.6653E-03, 5.9147E-03, 1.4709E-03,
@@ -140,8 +140,8 @@ TEST(Mtl, PreCollectionFileRescalesFromLminLmaxAndQcal) {
     EXPECT_DOUBLE_EQ(m.time_gmt_hours, 23 + 55 / 60.0 + 11.6634891 / 3600);
     EXPECT_EQ(m.corners[0], (MtlCorner{-35.07, 144.87}));
     EXPECT_EQ(m.corners[3], (MtlCorner{-37.0, 147.59}));
-    EXPECT_DOUBLE_EQ(m.sun_azimuth_deg, 53.7730377);
-    EXPECT_DOUBLE_EQ(m.sun_elevation_deg, 41.5610274);
+    EXPECT_DOUBLE_EQ(*m.sun_azimuth_deg, 53.7730377);
+    EXPECT_DOUBLE_EQ(*m.sun_elevation_deg, 41.5610274);
     EXPECT_FALSE(m.earth_sun_distance_au);
     std::vector<std::string> names;
     for (const auto& b : m.bands) names.push_back(b.name);
@@ -179,10 +179,23 @@ TEST(Mtl, Collection2GroupsAndNegativeAzimuth) {
         "END_GROUP = LANDSAT_METADATA_FILE\nEND\n");
     EXPECT_EQ(m.format, MtlFormat::Collection2);
     EXPECT_EQ(m.spacecraft, "LANDSAT_9");
-    EXPECT_DOUBLE_EQ(m.sun_azimuth_deg, 360 - 150.5);
+    EXPECT_DOUBLE_EQ(*m.sun_azimuth_deg, 360 - 150.5);
     EXPECT_DOUBLE_EQ(m.time_gmt_hours, 15.5);
     ASSERT_EQ(m.bands.size(), 1u);
     EXPECT_DOUBLE_EQ(*m.bands[0].radiance_mult, 9.6653E-03);
+}
+
+// The sun is informational (sigchain computes it from the date, time and place): a
+// hand-written file for an image that recorded none may leave it out.
+TEST(Mtl, SunAnglesAreOptional) {
+    Mtl m = parse(minimal("", "SUN_ELEVATION"));
+    EXPECT_DOUBLE_EQ(*m.sun_azimuth_deg, 144.0);
+    EXPECT_FALSE(m.sun_elevation_deg);
+    std::string none = minimal("", "SUN_AZIMUTH");
+    none.erase(none.find("  SUN_ELEVATION"), std::string("  SUN_ELEVATION = 53.9\n").size());
+    m = parse(none);
+    EXPECT_FALSE(m.sun_azimuth_deg);
+    EXPECT_FALSE(m.sun_elevation_deg);
 }
 
 TEST(Mtl, CommentsAreIgnoredAlsoOverLinesButNotInsideQuotes) {
@@ -210,8 +223,6 @@ TEST(Mtl, MalformedInputNamesFileAndLine) {
     EXPECT_EQ(error_of("GROUP = L1_METADATA_FILE\n/* never closed\nEND\n"),
               "t.mtl:2: a /* comment is not closed by */");
     EXPECT_EQ(error_of(minimal() + "X = 1\n"), "t.mtl:18: unexpected content after END, found 'X = 1'");
-    EXPECT_EQ(error_of(minimal("", "SUN_ELEVATION")),
-              "t.mtl:16: missing SUN_ELEVATION (a required MTL value)");
     EXPECT_EQ(error_of(minimal("", "DATE_ACQUIRED")),
               "t.mtl:16: missing DATE_ACQUIRED or ACQUISITION_DATE (a required MTL value)");
     std::string bad_azimuth = minimal();
