@@ -160,10 +160,12 @@ std::string landsat_output_name(const LandsatJob& job) {
     return n;
 }
 
-std::vector<std::string> landsat_bands(const LandsatJob& job, const Reporter& report) {
-    const io::Mtl mtl = io::read_mtl_file(job.mtl_path);
+namespace {
+
+// The bands to write: --bands, else the file's reflective bands with both a calibration
+// and a response.
+std::vector<std::string> chosen_bands(const LandsatJob& job, const io::Mtl& mtl, Tables& tables) {
     if (!job.bands.empty()) return job.bands;
-    Tables tables(job, mtl);
     std::vector<std::string> out;
     for (const auto& b : mtl.bands) {
         int column = -1;
@@ -173,15 +175,24 @@ std::vector<std::string> landsat_bands(const LandsatJob& job, const Reporter& re
             out.push_back(b.name);
     }
     if (out.empty()) throw DataError({job.mtl_path, 0}, "no reflective band with both a calibration and a response");
-    (void)report;
     return out;
+}
+
+}  // namespace
+
+std::vector<std::string> landsat_bands(const LandsatJob& job) {
+    const io::Mtl mtl = io::read_mtl_file(job.mtl_path);
+    Tables tables(job, mtl);
+    const auto bands = chosen_bands(job, mtl, tables);
+    for (const auto& name : bands) plan_band(job, mtl, tables, name, Reporter{});  // its errors
+    return bands;
 }
 
 void run_landsat_job(const LandsatJob& job, const Reporter& report) {
     const io::Mtl mtl = io::read_mtl_file(job.mtl_path);
     Tables tables(job, mtl);
     std::vector<BandPlan> plans;
-    for (const auto& name : landsat_bands(job, report))
+    for (const auto& name : chosen_bands(job, mtl, tables))
         plans.push_back(plan_band(job, mtl, tables, name, report));
     const io::Snd snd = make_snd(job, mtl, plans);
     const std::string name = landsat_output_name(job);

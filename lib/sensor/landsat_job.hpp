@@ -30,7 +30,8 @@ struct LandsatJob {
 // The bands the job writes, in .snd order: the requested ones (each must have a calibration
 // and a response, else DataError), or by default every band with both that is reflective and
 // multispectral (no thermal, panchromatic or Landsat 8 cirrus band).
-std::vector<std::string> landsat_bands(const LandsatJob& job, const Reporter& report);
+// Reads the MTL and the tables; writes nothing.
+std::vector<std::string> landsat_bands(const LandsatJob& job);
 
 // Writes DIR/NAME.snd and DIR/NAME-bK.sen as one set (commit_together), DIR made if needed;
 // with a verbose reporter, the summary table (calibration, grid, captured area, the MTL's sun

@@ -57,6 +57,10 @@ OLI="$MARBURG/LC08_L1TP_195025_20130707_20170503_01_T1_MTL.txt"
     assert_output "1,2,3,4,5,7"
     run -0 --separate-stderr landsat_sensor --print-bands "$OLI"
     assert_output "1,2,3,4,5,6,7"
+    # Requested bands are checked as a run would check them: ETM+ has no band 9.
+    run -1 --separate-stderr landsat_sensor --print-bands --bands 1,9 "$ETM"
+    assert_output ""
+    [[ "$stderr" == *"band 9 has no radiance calibration"* ]]
     run -0 --separate-stderr landsat_sensor -v --gain 4=H --bands 4 "$ETM" -o out
     assert_output ""
     [[ "$stderr" == *"4 H 0.639763779527559 -5.739763779527559 "*"table (high gain, --gain)"* ]]

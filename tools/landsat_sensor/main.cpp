@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         const auto job = job_from(vm);
         if (vm.count("print-bands")) {
-            const auto bands = sensor::landsat_bands(job, ctx);
+            const auto bands = sensor::landsat_bands(job);
             for (std::size_t i = 0; i < bands.size(); ++i) std::cout << (i ? "," : "") << bands[i];
             std::cout << '\n';
             return 0;
