@@ -11,6 +11,7 @@
 #include "core/output.hpp"
 #include "geo/raster.hpp"
 #include "image/image.hpp"
+#include "image/layers.hpp"
 #include "io/cpt.hpp"
 #include "landcover/fit.hpp"
 #include "landcover/raster.hpp"
@@ -163,7 +164,13 @@ void terrain_step(const std::string& dem_path, const std::string& classes_path,
     auto gt = cls.geotransform;  // corner (0, 0) is the centre of the new grid's cell (0, 0)
     gt[0] -= gt[1] / 2;
     gt[3] -= gt[5] / 2;
-    write_float_raster(outdir + "/terrain.tif", cr, cc, corners, gt, cls.crs);
+    image::Layers terrain;
+    terrain.rows = cr, terrain.columns = cc;
+    terrain.names = {"height (m)"};
+    terrain.planes = {corners};
+    terrain.srs_wkt = cls.crs.wkt();
+    terrain.geotransform = gt;
+    image::write_layers(outdir + "/terrain.tif", terrain);
     write_class_raster(outdir + "/landuse.tif", cr, cc, landuse, gt, cls.crs);
     const auto p = geo::raster_placement(cls, classes_path);
     char line[256];

@@ -1,5 +1,5 @@
 // Class rasters: a land-use class map written as a one-band Byte GeoTIFF on a given
-// grid (and a Float64 one for terrain) (lib/geo/raster.hpp reads rasters and places them on WGS84).
+// grid (lib/geo/raster.hpp reads rasters and places them on WGS84).
 // Thread-safety: free functions on value types.
 #pragma once
 
@@ -16,11 +16,5 @@ namespace sigchain::landcover {
 void write_class_raster(const std::string& path, long rows, long columns,
                         const std::vector<int>& classes, const std::array<double, 6>& geotransform,
                         const geo::Crs& crs);
-
-// Writes `values` (rows * columns, row-major) as a one-band Float64 GeoTIFF, atomically.
-// Throws IoError.
-void write_float_raster(const std::string& path, long rows, long columns,
-                        const std::vector<double>& values,
-                        const std::array<double, 6>& geotransform, const geo::Crs& crs);
 
 }  // namespace sigchain::landcover

@@ -435,3 +435,22 @@ refused() {
     refused soho_scene hawkeye.snd -o hawkeye.snd
     refused olinda_scene preview g.pgm hawkeye.snd g.pgm
 }
+
+@test "landsat_scene: a write that fails with ENOSPC exits non-zero and leaves no output" {
+    command -v strace > /dev/null || skip "no strace (scripts/install-deps installs it)"
+    local pa="$SIGCHAIN_SOURCE_DIR/data/scenes/pennsylvania"
+    printf '1 all\n' > all.classes
+    run -0 landsat_scene classify all.classes - classes.tif "$pa/etm_20020720.tif"
+    # Every write from the first on fails (the GeoTIFFs' data, then the error message):
+    # before the class and terrain rasters checked GDAL's close, classify exited 0 with a
+    # truncated GeoTIFF on a full disk.
+    run strace -f -o /dev/null -e inject=write:error=ENOSPC:when=1+ \
+        landsat_scene terrain "$pa/dem.tif" classes.tif .
+    [ "$status" -ne 0 ] || fail "terrain exited 0 on a full disk"
+    [ ! -e terrain.tif ] && [ ! -e landuse.tif ]
+    run strace -f -o /dev/null -e inject=write:error=ENOSPC:when=1+ \
+        landsat_scene points all.classes classes.tif - 5 1 5 p
+    [ "$status" -ne 0 ] || fail "points exited 0 on a full disk"
+    [ ! -e p_fit.cpt ] && [ ! -e p_held.cpt ]
+    assert_no_temp_files .
+}
