@@ -151,13 +151,18 @@ void write_material_ems(const std::vector<Material>& materials, const io::Snd& s
         out << "\n1\n";
         for (int a = 0; a <= 90; ++a) out << "1\n";
         out << "CURVE_BEGIN\n" << std::setprecision(9);
-        for (double w : m.wavelengths_um()) {
-            const double nu = 1e4 / w;
-            bool near = false;
-            for (const auto& b : snd.bands)
-                near = near || (1e4 / b.max_wavenumber_cm1 - kMarginUm <= w &&
-                                w <= 1e4 / b.min_wavenumber_cm1 + kMarginUm);
-            if (!near || !(nu > 0)) continue;
+        // The material's own wavelengths within each band's window, and the window's ends
+        // (interpolated), so that every band is bracketed even by a sparse spectrum.
+        std::set<double> rows;
+        const auto own = m.wavelengths_um();
+        for (const auto& b : snd.bands) {
+            const double lo = 1e4 / b.max_wavenumber_cm1 - kMarginUm;
+            const double hi = 1e4 / b.min_wavenumber_cm1 + kMarginUm;
+            rows.insert({lo, hi});
+            rows.insert(std::lower_bound(own.begin(), own.end(), lo),
+                        std::upper_bound(own.begin(), own.end(), hi));
+        }
+        for (double w : rows) {
             const double s = scales.empty() ? 1.0 : scales.at(m.name)[band_of(snd, w)];
             out << w << " " << 1 - std::clamp(m.at(w) * s, 0.0, 1.0) << "\n";
         }

@@ -57,7 +57,8 @@ std::map<std::string, std::vector<double>> read_scales(const std::string& path, 
 std::size_t band_of(const io::Snd& snd, double wavelength_um);
 
 // Writes OUTDIR/NAME.ems for every material: one curve, emissivity 1 - reflectance x
-// scale(band) at the material's own wavelengths within 0.05 um of the .snd's bands,
+// scale(band) at the material's own wavelengths within 0.05 um of the .snd's bands and
+// at those windows' ends,
 // no fall-off (91 ones). Without scales (empty map) every scale is 1; a class missing
 // from a non-empty map is an error. Reflectance x scale is clamped to [0, 1].
 void write_material_ems(const std::vector<Material>& materials, const io::Snd& snd,

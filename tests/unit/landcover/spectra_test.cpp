@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -119,6 +120,33 @@ TEST(Spectra, ASpectrumNotBesideTheMaterialsIsFoundInTheDataDirectory) {
     }
     if (old) ::setenv("SIGCHAIN_DATA", saved.c_str(), 1);
     else ::unsetenv("SIGCHAIN_DATA");
+}
+
+TEST(Spectra, ASparseSpectrumStillBracketsEveryBand) {
+    // Points at 0.3 and 1.3 um only: none within 0.05 um of either band; the curve gets
+    // the windows' ends, interpolated, and no other row.
+    TempDir d;
+    std::ofstream(d.file("a.txt")) << "0.3 0.2\n1.3 0.6\n";
+    std::ofstream(d.file("m.txt")) << "x 1 a.txt\n";
+    lc::write_material_ems(lc::read_materials(d.file("m.txt")), two_bands(), {}, d.path.string(),
+                           "test");
+    std::ifstream in(d.file("x.ems"));
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string t = text.str();
+    const std::string curve = t.substr(t.find("CURVE_BEGIN"));
+    // Rows: 0.45 and 0.65 (band 1's window), 0.75 and 0.95 (band 2's: 1e4 / 11111 is
+    // 0.90001 um, so 0.950009); emissivity 1 - (0.2 + 0.4 (w - 0.3)).
+    std::istringstream rows(curve.substr(curve.find('\n') + 1));
+    std::vector<double> w;
+    double a = 0, e = 0;
+    while (rows >> a >> e) {
+        w.push_back(a);
+        EXPECT_NEAR(e, 1 - (0.2 + 0.4 * (a - 0.3)), 1e-8) << a;
+    }
+    ASSERT_EQ(w.size(), 4u) << curve;
+    EXPECT_DOUBLE_EQ(w[0], 0.45);
+    EXPECT_NEAR(w[3], 1e4 / 11111 + 0.05, 1e-8);
 }
 
 TEST(Spectra, BandOfAWavelengthIsTheSpanHoldingItElseTheNearest) {
