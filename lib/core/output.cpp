@@ -4,11 +4,14 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <pthread.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -124,6 +127,26 @@ public:
     CommitSection& operator=(const CommitSection&) = delete;
 };
 
+// Holds SIGTERM, SIGINT and SIGHUP off in this thread while a temporary is created and
+// registered: a signal arriving between the two would otherwise find a file or folder
+// the handler does not know of, and leave it behind. A signal that came meanwhile is
+// delivered when the mask is restored, with the temporary registered.
+class SignalHold {
+public:
+    SignalHold() {
+        sigset_t set;
+        sigemptyset(&set);
+        for (int sig : {SIGTERM, SIGINT, SIGHUP}) sigaddset(&set, sig);
+        ::pthread_sigmask(SIG_BLOCK, &set, &m_old);
+    }
+    ~SignalHold() { ::pthread_sigmask(SIG_SETMASK, &m_old, nullptr); }
+    SignalHold(const SignalHold&) = delete;
+    SignalHold& operator=(const SignalHold&) = delete;
+
+private:
+    sigset_t m_old;
+};
+
 // Test hook, not documented for users: SIGCHAIN_TEST_KILL_AT_RENAME=N[:SIG] raises
 // SIGKILL (or SIG: TERM, INT or HUP) before the N-th file operation (removal of an old
 // target, or rename) of the run's commits; N = 0 raises it as the first commit starts,
@@ -211,15 +234,64 @@ private:
 
 std::string errno_text(int e) { return std::strerror(e); }
 
+// Whether `name` is `base` + ".tmp." + six letters or digits (a temporary's name).
+bool is_temp_name_of(const char* name, const std::string& base) {
+    const std::size_t n = std::strlen(name);
+    if (n != base.size() + 11 || std::strncmp(name, base.c_str(), base.size()) != 0 ||
+        std::strncmp(name + base.size(), ".tmp.", 5) != 0)
+        return false;
+    for (std::size_t i = base.size() + 5; i < n; ++i)
+        if (!std::isalnum(static_cast<unsigned char>(name[i]))) return false;
+    return true;
+}
+
+// Removes the temporaries a killed run left beside `target` (SIGKILL runs no handler):
+// every TARGET.tmp.XXXXXX file or folder of this user that no live run holds locked
+// (each run holds its own temporaries under flock(2) until it ends). Symbolic links and
+// other users' files are left alone; failures are ignored (a temporary is only litter).
+void remove_stale_temps(const std::string& target) {
+    const std::filesystem::path t(target);
+    const std::string base = t.filename().string();
+    const std::string folder = t.has_parent_path() ? t.parent_path().string() : ".";
+    DIR* dir = ::opendir(folder.c_str());
+    if (!dir) return;
+    const int dfd = ::dirfd(dir);
+    while (const dirent* e = ::readdir(dir)) {
+        if (!is_temp_name_of(e->d_name, base)) continue;
+        struct stat st {};
+        if (::fstatat(dfd, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0 || st.st_uid != ::getuid())
+            continue;
+        const bool is_dir = S_ISDIR(st.st_mode);
+        if (!is_dir && !S_ISREG(st.st_mode)) continue;
+        const int fd = ::openat(dfd, e->d_name,
+                                O_RDONLY | O_NOFOLLOW | O_CLOEXEC | (is_dir ? O_DIRECTORY : 0));
+        if (fd < 0) continue;
+        if (::flock(fd, LOCK_EX | LOCK_NB) == 0) {  // no run holds it: its run is dead
+            if (is_dir)
+                remove_folder_raw((folder + "/" + e->d_name).c_str());
+            else
+                ::unlinkat(dfd, e->d_name, 0);
+        }
+        ::close(fd);
+    }
+    ::closedir(dir);
+}
+
 }  // namespace
 
 // ---- AtomicOutput ----
 
 AtomicOutput::AtomicOutput(std::string path) : m_path(std::move(path)) {
     if (m_path == "-") return;
+    remove_stale_temps(m_path);
+    const SignalHold hold;
     std::string name = m_path + ".tmp.XXXXXX";
     m_fd = ::mkostemp(name.data(), O_NOFOLLOW | O_CLOEXEC);
     if (m_fd < 0) throw IoError(m_path + ": cannot create: " + errno_text(errno));
+    // Locked while this object lives (remove_stale_temps): through a second descriptor
+    // of the same open file, so that finish() can close the first and check its error.
+    ::flock(m_fd, LOCK_EX | LOCK_NB);
+    m_lock = ::fcntl(m_fd, F_DUPFD_CLOEXEC, 0);
     m_temp = name;
     try {
         m_slot = register_temp(m_temp, kFile);
@@ -236,6 +308,7 @@ AtomicOutput::AtomicOutput(std::string path) : m_path(std::move(path)) {
 AtomicOutput::~AtomicOutput() {
     if (m_fd >= 0) ::close(m_fd);
     if (!m_committed && !m_temp.empty()) ::unlink(m_temp.c_str());
+    if (m_lock >= 0) ::close(m_lock);
     unregister_temp(m_slot);
 }
 
@@ -280,9 +353,14 @@ void write_atomically(const std::string& path, const std::function<void(std::ost
 // ---- TempDir ----
 
 TempDir::TempDir(const std::string& target) {
+    remove_stale_temps(target);
+    const SignalHold hold;
     std::string name = target + ".tmp.XXXXXX";
     if (!::mkdtemp(name.data())) throw IoError(target + ": cannot create: " + errno_text(errno));
     m_path = name;
+    // Held open and locked until the run ends, so that no other run takes it for litter.
+    m_lock = ::open(m_path.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (m_lock >= 0) ::flock(m_lock, LOCK_EX | LOCK_NB);
     try {
         m_slot = register_temp(m_path, kFolder);
     } catch (...) {
@@ -294,6 +372,7 @@ TempDir::TempDir(const std::string& target) {
 TempDir::~TempDir() {
     std::error_code ec;
     std::filesystem::remove_all(m_path, ec);
+    if (m_lock >= 0) ::close(m_lock);
     unregister_temp(m_slot);
 }
 
@@ -310,19 +389,46 @@ void commit_moves(const std::vector<Move>& moves) {
         return;
     }
     // The old set goes first, so that no prefix of the renames leaves old and new
-    // files together (output.hpp).
+    // files together (output.hpp). It is moved aside, not removed, so that a rename that
+    // fails (EXDEV, EIO, a full directory) puts it back: a failed run leaves the
+    // previous outputs as they were.
+    struct Aside {
+        std::string target, backup;
+    };
+    std::vector<Aside> aside;
+    std::vector<std::string> renamed;  // targets that hold a new file
+    const auto undo = [&](const std::string& why) {
+        std::string kept;
+        for (auto t = renamed.rbegin(); t != renamed.rend(); ++t) ::unlink(t->c_str());
+        for (auto a = aside.rbegin(); a != aside.rend(); ++a)
+            if (std::rename(a->backup.c_str(), a->target.c_str()) != 0)
+                kept += "; the previous " + a->target + " is kept as " + a->backup;
+        throw IoError(why + kept);
+    };
+    for (const Move& m : moves) remove_stale_temps(m.target);  // a killed commit's
     for (auto m = moves.rbegin(); m != moves.rend(); ++m) {  // the last (the key) first
         struct stat st {};
         if (::lstat(m->target.c_str(), &st) != 0) continue;
         test_kill_point();
-        if (::unlink(m->target.c_str()) != 0 && errno != ENOENT)
-            throw IoError(m->target + ": cannot replace: " + errno_text(errno));
+        // A name no other process can take, then the old file renamed over it.
+        std::string backup = m->target + ".tmp.XXXXXX";
+        const int fd = ::mkostemp(backup.data(), O_NOFOLLOW | O_CLOEXEC);
+        if (fd < 0) undo(m->target + ": cannot replace: " + errno_text(errno));
+        ::close(fd);
+        if (std::rename(m->target.c_str(), backup.c_str()) != 0) {
+            const int e = errno;
+            ::unlink(backup.c_str());
+            undo(m->target + ": cannot replace: " + errno_text(e));
+        }
+        aside.push_back({m->target, backup});
     }
     for (const Move& m : moves) {
         test_kill_point();
         if (std::rename(m.temp.c_str(), m.target.c_str()) != 0)
-            throw IoError(m.target + ": cannot rename from " + m.temp + ": " + errno_text(errno));
+            undo(m.target + ": cannot rename from " + m.temp + ": " + errno_text(errno));
+        renamed.push_back(m.target);
     }
+    for (const Aside& a : aside) ::unlink(a.backup.c_str());
 }
 
 void install_output_signal_handlers() {

@@ -17,7 +17,9 @@ namespace sigchain {
 // For path "-", stream() is std::cout and commit() flushes it.
 // The temporary is TARGET.tmp.XXXXXX in the target's folder, a name no other process
 // can predict, created with O_CREAT|O_EXCL|O_NOFOLLOW (never through a planted
-// symbolic link), mode 0666 less the umask as any new file.
+// symbolic link), mode 0666 less the umask as any new file. It is held under flock(2)
+// while the run lasts; a new output first removes the TARGET.tmp.XXXXXX files and
+// folders no run holds (what a SIGKILL left).
 class AtomicOutput {
 public:
     explicit AtomicOutput(std::string path);
@@ -39,6 +41,7 @@ private:
     std::string m_path;
     std::string m_temp;
     int m_fd = -1;
+    int m_lock = -1;  // the same open file, under flock(2) while this object lives
     int m_slot = -1;  // in the signal handler's list of temporaries
     std::unique_ptr<std::streambuf> m_buffer;
     std::unique_ptr<std::ostream> m_stream;
@@ -65,6 +68,7 @@ public:
 private:
     std::string m_path;
     int m_slot = -1;
+    int m_lock = -1;  // the folder, open under flock(2) while the run lasts
 };
 
 // One finished temporary and the name it takes.
@@ -76,12 +80,15 @@ struct Move {
 // Renames every temp onto its target as one output (cube(5), sigchain(7) OUTPUTS).
 // One file is renamed over its target (atomic). Several files (an ENVI .img and .hdr,
 // build_radiance's bands) are committed so that no interruption, even SIGKILL or a
-// power cut, leaves new and old files side by side: the existing targets are removed
-// first, the last one given first, then the temps are renamed in the order given. The
-// last file should be the one that makes the set readable (an ENVI header, the .odb
-// naming the .gdb files): it goes first and comes back last, so a kill in between
-// leaves an incomplete set that readers reject as missing, never a mixed one. SIGTERM, SIGINT and SIGHUP are held
-// off while this runs. Throws IoError.
+// power cut, leaves new and old files side by side: the existing targets are first
+// moved aside (renamed to TARGET.tmp.XXXXXX), the last one given first, then the temps
+// are renamed in the order given, then the old files removed. The last file should be
+// the one that makes the set readable (an ENVI header, the .odb naming the .gdb
+// files): it goes first and comes back last, so a kill in between leaves an incomplete
+// set that readers reject as missing, never a mixed one. A rename that fails puts the
+// old files back (a failed run leaves the previous outputs as they were; where even
+// that fails, the error names the file that holds each). SIGTERM, SIGINT and SIGHUP
+// are held off while this runs. Throws IoError.
 void commit_moves(const std::vector<Move>& moves);
 
 // Finishes each output and commits them as one (commit_moves), in the order given.

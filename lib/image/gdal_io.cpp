@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -123,6 +124,37 @@ void read_georeference(GDALDataset& ds, Image& image) {
         image.georef.geolocation_path = e;
 }
 
+// An ENVI data file holds exactly what its header describes: header offset + rows x
+// columns x bands samples. GDAL reads a short file's missing samples as zeros and ignores
+// a long file's surplus; either means the pair is not what was written (a truncated copy,
+// a header of another cube), so both are refused.
+void check_envi_size(GDALDataset& ds, const std::string& path, const std::string& data_path) {
+    GDALDriver* driver = ds.GetDriver();
+    if (!driver || std::string(driver->GetDescription()) != "ENVI") return;
+    long long offset = 0;
+    if (const char* o = ds.GetMetadataItem("header_offset", "ENVI")) offset = std::atoll(o);
+    const int bytes = GDALGetDataTypeSizeBytes(ds.GetRasterBand(1)->GetRasterDataType());
+    const long long want = offset + static_cast<long long>(ds.GetRasterXSize()) *
+                                        ds.GetRasterYSize() * ds.GetRasterCount() * bytes;
+    std::error_code ec;
+    const auto have = std::filesystem::file_size(data_path, ec);
+    if (ec) throw IoError(data_path + ": cannot read its size: " + ec.message());
+    if (static_cast<long long>(have) != want)
+        throw DataError({path, 0}, (data_path == path ? "the file" : data_path) + " holds " +
+                                       std::to_string(have) +
+                                       " bytes, but its header describes " +
+                                       std::to_string(want) + " (" +
+                                       std::to_string(ds.GetRasterYSize()) + " rows x " +
+                                       std::to_string(ds.GetRasterXSize()) + " columns x " +
+                                       std::to_string(ds.GetRasterCount()) + " bands x " +
+                                       std::to_string(bytes) + " bytes" +
+                                       (offset ? " after a " + std::to_string(offset) +
+                                                     "-byte offset" : std::string()) +
+                                       "): " + (static_cast<long long>(have) < want
+                                                    ? "truncated"
+                                                    : "more data than the header describes"));
+}
+
 }  // namespace
 
 namespace detail {
@@ -136,6 +168,7 @@ Image read_gdal(const std::string& path) {
         data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
     if (ds->GetRasterCount() < 1) throw DataError({path, 0}, "the image has no bands");
+    check_envi_size(*ds, path, data_path);
     Image image(ds->GetRasterYSize(), ds->GetRasterXSize(), ds->GetRasterCount());
     for (int c = 0; c < image.channels; ++c) {
         GDALRasterBand* band = ds->GetRasterBand(c + 1);

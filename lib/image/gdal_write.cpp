@@ -16,6 +16,7 @@
 #include "core/text.hpp"
 #include "geo/crs.hpp"
 #include "geo/georef.hpp"
+#include "image/gdal_output.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 #include "sigchain/version.hpp"
@@ -165,29 +166,6 @@ CPLStringList creation_options(const std::string& path, CubeFormat format,
     return list;
 }
 
-void write_planes(GDALDataset& ds, const Image& image, const std::string& path) {
-    for (int c = 0; c < image.channels; ++c) {
-        float* plane = const_cast<float*>(image.data.data() + c * image.plane_size());
-        if (ds.GetRasterBand(c + 1)->RasterIO(
-                GF_Write, 0, 0, static_cast<int>(image.columns), static_cast<int>(image.rows),
-                plane, static_cast<int>(image.columns), static_cast<int>(image.rows), GDT_Float32,
-                0, 0, nullptr) != CE_None)
-            throw IoError(path + ": write error: " + gdal_message());
-    }
-}
-
-// The written files' moves into place, the data file first and an ENVI header last
-// (the header makes the pair readable: commit_moves, cube(5)); other side files stay
-// in the temporary folder and go with it.
-std::vector<Move> output_moves(const std::vector<std::string>& files, const std::string& temp,
-                               const std::string& target) {
-    std::vector<Move> moves{{temp, target}};
-    for (const std::string& f : files)
-        if (f != temp && file_extension(f) == "hdr")
-            moves.push_back({f, std::filesystem::path(target).replace_extension(".hdr").string()});
-    return moves;
-}
-
 // Writes `image` with GDAL as `type` samples, atomically (cube(5)).
 void write_gdal(const std::string& path, const Image& image, GDALDataType type, CubeFormat format,
                 const WriteOptions& options) {
@@ -197,29 +175,13 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
     std::string target = path;
     if (file_extension(path) == "hdr")
         target = std::filesystem::path(path).replace_extension(".img").string();
-    const char* driver_name = format == CubeFormat::GeoTiff ? "GTiff" : "ENVI";
-    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
-    if (!driver) throw IoError(path + ": GDAL has no " + driver_name + " driver");
-    // GDAL opens its files itself: they go into a private folder beside the target.
-    const TempDir folder(target);
-    const std::string temp = folder.file(std::filesystem::path(target).filename().string());
-    std::vector<std::string> files;
-    std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(image.columns),
-                                                   static_cast<int>(image.rows), image.channels,
-                                                   type, co.List()));
-    if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
-    if (char** list = ds->GetFileList()) {
-        for (char** f = list; *f; ++f) files.emplace_back(*f);
-        CSLDestroy(list);
-    }
-    set_metadata(*ds, image, format, options);
-    set_georeference(*ds, image, format, path);
-    write_planes(*ds, image, path);
-    CPLErrorReset();
-    ds.reset();  // GDALClose: flushes data and writes the ENVI header
-    if (CPLGetLastErrorType() >= CE_Failure)
-        throw IoError(path + ": write error: " + gdal_message());
-    commit_moves(output_moves(files, temp, target));
+    GdalOutput out(target, format == CubeFormat::GeoTiff ? "GTiff" : "ENVI", image.columns,
+                   image.rows, image.channels, type, co.List());
+    set_metadata(out.dataset(), image, format, options);
+    set_georeference(out.dataset(), image, format, path);
+    for (int c = 0; c < image.channels; ++c)
+        out.write_band(c + 1, GDT_Float32, image.data.data() + c * image.plane_size());
+    out.commit();
 }
 
 }  // namespace
@@ -240,35 +202,20 @@ void write_geolocation(const std::string& path, long rows, long columns,
     const std::size_t n = static_cast<std::size_t>(rows) * columns;
     if (rows < 1 || columns < 1 || x.size() != n || y.size() != n)
         throw DataError({path, 0}, "geolocation arrays do not match the image's size");
-    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
-    if (!driver) throw IoError(path + ": GDAL has no GTiff driver");
-    // GDAL opens its file itself: it goes into a private folder beside the target.
-    const TempDir folder(path);
-    const std::string temp = folder.file(std::filesystem::path(path).filename().string());
     CPLStringList co;
     co.SetNameValue("INTERLEAVE", "BAND");
-    std::unique_ptr<GDALDataset> ds(driver->Create(temp.c_str(), static_cast<int>(columns),
-                                                   static_cast<int>(rows), 2, GDT_Float64,
-                                                   co.List()));
-    if (!ds) throw IoError(path + ": cannot create: " + gdal_message());
+    GdalOutput out(path, "GTiff", columns, rows, 2, GDT_Float64, co.List());
     // The arrays' own SRS: GDAL's SRC_GEOLOC_ARRAY transformer option reads it.
-    ds->SetProjection(srs_wkt.c_str());
+    out.dataset().SetProjection(srs_wkt.c_str());
     const std::vector<double>* planes[2] = {&x, &y};
     const char* names[2] = {"x (longitude)", "y (latitude)"};
     for (int b = 0; b < 2; ++b) {
-        GDALRasterBand* band = ds->GetRasterBand(b + 1);
+        GDALRasterBand* band = out.dataset().GetRasterBand(b + 1);
         band->SetDescription(names[b]);
         band->SetNoDataValue(nodata);
-        if (band->RasterIO(GF_Write, 0, 0, static_cast<int>(columns), static_cast<int>(rows),
-                           const_cast<double*>(planes[b]->data()), static_cast<int>(columns),
-                           static_cast<int>(rows), GDT_Float64, 0, 0, nullptr) != CE_None)
-            throw IoError(path + ": write error: " + gdal_message());
+        out.write_band(b + 1, GDT_Float64, planes[b]->data());
     }
-    CPLErrorReset();
-    ds.reset();
-    if (CPLGetLastErrorType() >= CE_Failure)
-        throw IoError(path + ": write error: " + gdal_message());
-    commit_moves({{temp, path}});
+    out.commit();
 }
 
 void copy_geolocation(const std::string& from, const std::string& path) {

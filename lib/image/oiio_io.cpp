@@ -77,6 +77,15 @@ void write_oiio(const std::string& path, const Image& image, Sample sample, cons
     const std::string temp = folder.file(std::filesystem::path(path).filename().string());
     // Netpbm is written plain (text): readable and diffable.
     check(module.write(path, temp, image, sample, pixels, netpbm, message), path, message);
+    // Read back: OpenImageIO 2.4's PNG writer does not report a failed write (a full
+    // disk left a 0-byte PNG and exit 0), so the samples on disk are what proves it:
+    // counts exactly; floats (which a format may quantise) by reading whole.
+    Image back;
+    if (module.read(temp, back, message) != Status::Ok || back.rows != image.rows ||
+        back.columns != image.columns || back.channels != image.channels ||
+        (sample != Sample::Float && back.data != image.data))
+        throw IoError(path + ": write error: the image did not reach the disk as written" +
+                      (message.empty() ? std::string(" (a full disk?)") : ": " + message));
     commit_moves({{temp, path}});
 }
 

@@ -133,6 +133,46 @@ TEST(CommitMoves, ReplacesASetWithTheKeyFileLast) {
     fs::remove_all(dir);
 }
 
+TEST(CommitMoves, AFailedRenamePutsTheOldSetBack) {
+    const fs::path dir = scratch("moves_back");
+    spit(dir / "c.img", "old img");
+    spit(dir / "c.hdr", "old hdr");
+    {
+        TempDir t((dir / "c.img").string());
+        spit(t.file("c.img"), "new img");
+        // The header's temporary is missing: its rename fails after the data's.
+        EXPECT_THROW(commit_moves({{t.file("c.img"), (dir / "c.img").string()},
+                                   {t.file("c.hdr"), (dir / "c.hdr").string()}}),
+                     IoError);
+    }
+    EXPECT_EQ(slurp(dir / "c.img"), "old img");
+    EXPECT_EQ(slurp(dir / "c.hdr"), "old hdr");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
+    fs::remove_all(dir);
+}
+
+TEST(AtomicOutput, RemovesWhatAKilledRunLeftButNotALiveRunsTemporaries) {
+    const fs::path dir = scratch("stale");
+    const std::string target = (dir / "out.txt").string();
+    spit(target + ".tmp.AbC123", "a killed run's file");
+    fs::create_directory(target + ".tmp.dEf456");
+    spit(target + ".tmp.dEf456/out.txt", "a killed run's folder");
+    spit(target + ".tmp.short", "not a temporary's name");
+    {
+        AtomicOutput live(target);  // removes the two leftovers, holds its own
+        const std::string mine = live.temp_path();
+        AtomicOutput other(target);  // a second writer leaves the first's alone
+        EXPECT_TRUE(fs::exists(mine));
+        EXPECT_FALSE(fs::exists(target + ".tmp.AbC123"));
+        EXPECT_FALSE(fs::exists(target + ".tmp.dEf456"));
+        EXPECT_TRUE(fs::exists(target + ".tmp.short"));
+        TempDir folder(target);  // nor does a folder
+        EXPECT_TRUE(fs::exists(mine));
+        EXPECT_TRUE(fs::exists(other.temp_path()));
+    }
+    fs::remove_all(dir);
+}
+
 TEST(CommitTogether, WritesEveryFileOrNone) {
     const fs::path dir = scratch("together");
     spit(dir / "b1", "old 1");

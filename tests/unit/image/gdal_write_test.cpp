@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "image/gdal_output.hpp"
 #include "image/image.hpp"
 #include "sigchain/version.hpp"
 
@@ -122,4 +123,35 @@ TEST_F(GdalWrite, EnviHeaderCarriesFwhmBandNamesUnitsAndProvenance) {
     EXPECT_NE(hdr.find("wavelength = {0.48, 0.56, 0.66, 0.83}"), std::string::npos) << hdr;
     EXPECT_NE(hdr.find("band names = {"), std::string::npos) << hdr;
     EXPECT_NE(hdr.find("data units = DC"), std::string::npos) << hdr;
+}
+
+TEST(GdalOutput, KnowsWhichCreationOptionsAreLossy) {
+    const auto lossy = [](std::initializer_list<const char*> kv) {
+        CPLStringList list;
+        for (const char* s : kv) list.AddString(s);
+        return GdalOutput::lossy(list.List());
+    };
+    EXPECT_FALSE(lossy({}));
+    EXPECT_FALSE(lossy({"COMPRESS=DEFLATE", "PREDICTOR=2"}));
+    EXPECT_TRUE(lossy({"COMPRESS=JPEG"}));
+    EXPECT_TRUE(lossy({"COMPRESS=WEBP"}));
+    EXPECT_FALSE(lossy({"COMPRESS=WEBP", "WEBP_LOSSLESS=YES"}));
+    EXPECT_FALSE(lossy({"COMPRESS=LERC"}));
+    EXPECT_TRUE(lossy({"COMPRESS=LERC_ZSTD", "MAX_Z_ERROR=0.5"}));
+    EXPECT_FALSE(lossy({"COMPRESS=JXL"}));
+    EXPECT_TRUE(lossy({"COMPRESS=JXL", "JXL_LOSSLESS=NO"}));
+}
+
+TEST_F(GdalWrite, ALossyGeoTiffIsReadBackButNotComparedSampleBySample) {
+    Image counts = four_bands();
+    for (float& v : counts.data) v = static_cast<float>(static_cast<int>(v * 37) % 256);
+    WriteOptions options;
+    options.creation_options = {"COMPRESS=JPEG", "JPEG_QUALITY=10"};
+    counts.channels = 1;
+    counts.data.resize(counts.plane_size());
+    counts.channel_names = {"gray"};
+    counts.wavelength_um = {0.5};
+    counts.fwhm_um = {0.1};
+    EXPECT_NO_THROW(write_counts(file("jpeg.tif"), counts, 8, options));
+    EXPECT_TRUE(std::filesystem::exists(file("jpeg.tif")));
 }
