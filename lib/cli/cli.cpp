@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <new>
 
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/output.hpp"
 #include "sigchain/version.hpp"
 
@@ -23,6 +25,9 @@ Context::Context(std::string tool, int verbosity, bool progress)
 
 void Context::warn(const std::string& message) const {
     if (m_verbosity >= 0) std::cerr << m_tool << ": warning: " << message << '\n';
+}
+void Context::alarm(const std::string& message) const {
+    std::cerr << m_tool << ": warning: " << message << '\n';
 }
 void Context::info(const std::string& message) const {
     if (m_verbosity >= 1) std::cerr << m_tool << ": " << message << '\n';
@@ -289,6 +294,26 @@ void Cli::print_help() const {
               << "See " << m_info.name << "(1).\n";
 }
 
+namespace {
+
+// "TOOL: MESSAGE" on stderr in one write, so that processes sharing the stream never
+// interleave it. Under an MPI launcher a worker rank says nothing of an error met
+// before its parts began (every rank reads the same inputs: rank 0 reports it) and
+// names itself in one met after ("TOOL: rank K: ...").
+void report_error(const std::string& tool, const std::string& message) {
+    if (farm_worker() && !farm_worker_working()) return;
+    const std::string rank = farm_worker() ? "rank " + std::to_string(farm_rank()) + ": " : "";
+    std::cerr.flush();
+    const std::string line = tool + ": " + rank + message + "\n";
+    for (std::size_t at = 0; at < line.size();) {
+        const ssize_t n = ::write(STDERR_FILENO, line.data() + at, line.size() - at);
+        if (n <= 0 && errno != EINTR) break;
+        if (n > 0) at += static_cast<std::size_t>(n);
+    }
+}
+
+}  // namespace
+
 int Cli::run(int argc, char** argv,
              const std::function<int(const po::variables_map&, Context&)>& body) {
     const std::string& tool = m_info.name;
@@ -316,22 +341,22 @@ int Cli::run(int argc, char** argv,
         ctx.set_command_args(provenance_args(argc, argv));
         return body(vm, ctx);
     } catch (const po::error& e) {
-        std::cerr << tool << ": " << e.what() << "\nTry '" << tool << " --help'.\n";
+        report_error(tool, e.what() + ("\nTry '" + tool + " --help'."));
         return 2;
     } catch (const UsageError& e) {
-        std::cerr << tool << ": " << e.what() << "\nTry '" << tool << " --help'.\n";
+        report_error(tool, e.what() + ("\nTry '" + tool + " --help'."));
         return 2;
     } catch (const NotImplemented& e) {
-        std::cerr << tool << ": " << e.what() << '\n';
+        report_error(tool, e.what());
         return 1;
     } catch (const Error& e) {
-        std::cerr << tool << ": " << e.what() << '\n';
+        report_error(tool, e.what());
         return 1;
     } catch (const std::bad_alloc&) {
-        std::cerr << tool << ": out of memory\n";
+        report_error(tool, "out of memory");
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << tool << ": internal error: " << e.what() << '\n';
+        report_error(tool, std::string("internal error: ") + e.what());
         return 1;
     }
 }

@@ -38,6 +38,7 @@ public:
     int verbosity() const { return m_verbosity; }
     bool progress_enabled() const { return m_progress; }
     void warn(const std::string& message) const override;  // "TOOL: warning: message" unless quiet
+    void alarm(const std::string& message) const override;  // "TOOL: warning: message" always
     void info(const std::string& message) const override;  // "TOOL: message" when verbose
     void note(const std::string& message) const override;  // "TOOL: message" unless quiet
     bool verbose() const override { return m_verbosity >= 1; }

@@ -9,6 +9,8 @@
 
 #include "core/error.hpp"
 #include "core/farm.hpp"
+
+#include <atomic>
 #include "core/mpi.hpp"
 
 namespace sigchain {
@@ -61,7 +63,10 @@ void read_range(const mpi::Message& m, long& begin, long& end) {
     end = static_cast<long>(range[1]);
 }
 
+std::atomic<bool> g_working{false};  // farm_worker_working()
+
 void work(const FarmJob& job) {
+    g_working = true;
     send_part(0, kTagResult, 0, 0, {});  // a request
     for (long sent = 1;; ++sent) {
         long begin = 0, end = 0;
@@ -104,6 +109,8 @@ void lead(const FarmJob& job, int size) {
 
 bool farm_available() { return mpi::launched() && mpi::launched_size() > 1; }
 bool farm_worker() { return farm_available() && mpi::launched_rank() > 0; }
+bool farm_worker_working() { return g_working; }
+int farm_rank() { return farm_available() ? mpi::launched_rank() : 0; }
 int farm_workers() { return farm_available() ? mpi::launched_size() - 1 : 0; }
 
 FarmRole run_farm(const FarmJob& job) {

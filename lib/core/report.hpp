@@ -16,6 +16,9 @@ public:
     // Something the user should know is wrong or approximate ("warning: ..."), shown
     // unless quiet.
     virtual void warn(const std::string& message) const { (void)message; }
+    // A warning shown even when quiet: a result that is almost surely not what the user
+    // wanted (a whole output zero), which a script running with -q must still see.
+    virtual void alarm(const std::string& message) const { warn(message); }
     // A result worth one line (shown unless quiet).
     virtual void note(const std::string& message) const { (void)message; }
     // What was done and what was skipped (shown with -v).

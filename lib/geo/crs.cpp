@@ -6,6 +6,8 @@
 #include <ogr_spatialref.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <system_error>
 #include <utility>
@@ -53,6 +55,32 @@ void check_sidecars(const std::string& path) {
                             std::to_string(bytes) + " bytes: larger than a side file of " + path +
                                 " may be (" + std::to_string(kMaxSidecarBytes >> 20) + " MiB)");
     }
+}
+
+void require_crs(const Crs& crs, const std::string& path, const std::string& what) {
+    namespace fs = std::filesystem;
+    if (!crs.empty()) return;
+    for (const char* ext : {".prj", ".PRJ"}) {
+        const fs::path prj = fs::path(path).replace_extension(ext);
+        std::error_code ec;
+        if (prj == fs::path(path) || !fs::is_regular_file(prj, ec)) continue;
+        std::ifstream in(prj, std::ios::binary);  // at most 16 MiB (check_sidecars)
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        const std::string why = " (so " + path + " has none)";
+        if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+            throw DataError({prj.string(), 0}, "the file is empty" + why);
+        OGRSpatialReference srs;
+        CPLErrorReset();
+        if (srs.SetFromUserInput(text.c_str()) != OGRERR_NONE || srs.IsEmpty())
+            throw DataError({prj.string(), 0},
+                            "not a coordinate reference system GDAL reads (ESRI or OGC WKT): " +
+                                gdal_message() + why);
+        throw DataError({prj.string(), 0},
+                        "a coordinate reference system, but GDAL's driver for " + path +
+                            " does not take it" + why);
+    }
+    throw DataError({path, 0}, what + " has no coordinate reference system");
 }
 
 Crs Crs::from_ogr(const OGRSpatialReference* srs) {

@@ -102,4 +102,10 @@ std::string gdal_message();
 inline constexpr long long kMaxSidecarBytes = 16LL << 20;  // 16 MiB
 void check_sidecars(const std::string& path);
 
+// Throws DataError when `crs` (read from the raster `path`) is empty: naming the
+// raster's .prj and why GDAL could not read it when there is one (GDAL drops a bad
+// .prj without a word, so the fault would be blamed on the raster), else
+// "PATH: WHAT has no coordinate reference system".
+void require_crs(const Crs& crs, const std::string& path, const std::string& what);
+
 }  // namespace sigchain::geo

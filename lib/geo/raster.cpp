@@ -2,10 +2,14 @@
 #include "geo/raster.hpp"
 
 #include <gdal_priv.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <memory>
 #include <numbers>
+
+#include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace sigchain::geo {
 
@@ -29,7 +33,19 @@ void read_band(GDALDataset& ds, int band, GeoRaster& r, const std::string& path)
 bool GeoRaster::valid(double v) const { return std::isfinite(v) && !(nodata && v == *nodata); }
 
 // The errors below name the file without a line: a raster is binary.
-GeoRaster read_geo_raster(const std::string& path, Bands bands) {
+// The machine's physical memory, bytes (0 when unknown).
+double physical_memory_bytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
+}
+
+std::string gib(double bytes) {
+    const double g = bytes / (1024.0 * 1024.0 * 1024.0);
+    return format_number(std::round(g * 10) / 10) + " GiB";
+}
+
+GeoRaster read_geo_raster(const std::string& path, Bands bands, double use_bytes_per_cell,
+                          const char* use) {
     gdal_init();
     check_sidecars(path);
     Dataset ds(static_cast<GDALDataset*>(
@@ -46,6 +62,17 @@ GeoRaster read_geo_raster(const std::string& path, Bands bands) {
     int has_nodata = 0;
     const double nodata = ds->GetRasterBand(1)->GetNoDataValue(&has_nodata);
     if (has_nodata) r.nodata = nodata;
+    // Refused before allocating: an out-of-memory error would name nothing.
+    const double cells = static_cast<double>(r.rows) * static_cast<double>(r.columns);
+    const double need = cells * (r.bands * sizeof(double) + use_bytes_per_cell);
+    const double have = physical_memory_bytes();
+    if (have > 0 && need > have)
+        throw DataError({path, 0}, std::to_string(r.columns) + " x " + std::to_string(r.rows) +
+                                       " cells need about " + gib(need) +
+                                       (use_bytes_per_cell > 0 ? std::string(" ") + use : "") +
+                                       ", more than this machine's " + gib(have) +
+                                       " of memory: crop it (gdal_translate -srcwin) or "
+                                       "coarsen it (gdalwarp -tr)");
     r.values.resize(static_cast<std::size_t>(r.bands) * r.rows * r.columns);
     for (int b = 0; b < r.bands; ++b) read_band(*ds, b, r, path);
     return r;
@@ -54,8 +81,7 @@ GeoRaster read_geo_raster(const std::string& path, Bands bands) {
 void require_north_up_with_crs(const GeoRaster& raster, const std::string& path) {
     if (raster.geotransform[2] != 0 || raster.geotransform[4] != 0)
         throw DataError({path, 0}, "rotated raster grids are not supported");
-    if (raster.crs.empty())
-        throw DataError({path, 0}, "the raster has no coordinate reference system");
+    require_crs(raster.crs, path, "the raster");
 }
 
 RasterPlacement raster_placement(const GeoRaster& raster, const std::string& path) {

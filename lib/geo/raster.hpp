@@ -32,8 +32,11 @@ struct GeoRaster {
 enum class Bands { First, All };
 
 // Reads a GDAL raster. Throws IoError (cannot open or read) or DataError (no band, no
-// geotransform). A raster has no lines: errors name the file alone.
-GeoRaster read_geo_raster(const std::string& path, Bands bands = Bands::All);
+// geotransform, or more cells than this machine's memory holds: the values as doubles
+// plus `use_bytes_per_cell` for what the caller builds from each cell, checked before
+// anything is allocated). A raster has no lines: errors name the file alone.
+GeoRaster read_geo_raster(const std::string& path, Bands bands = Bands::All,
+                          double use_bytes_per_cell = 0, const char* use = "");
 
 // Throws DataError unless the grid is north-up (no rotation terms) and has a CRS.
 void require_north_up_with_crs(const GeoRaster& raster, const std::string& path);

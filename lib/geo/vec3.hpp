@@ -11,6 +11,19 @@ namespace sigchain::geo {
 // A std::array, so that readers, Embree wrappers and images share its layout.
 using Vec3 = std::array<double, 3>;
 
+// The largest coordinate, in scene units, that a vertex, a camera or a platform may
+// have. Embree works in single precision: it asserts (aborts) on a ray origin beyond
+// about 1.8e18 and drops triangles with a vertex beyond it. 1e9 m is 2.6 times the
+// Moon's distance: far beyond any scene, far inside what Embree handles.
+inline constexpr double kMaxCoordinate = 1e9;
+
+// Whether every component of `p` is finite and within +-kMaxCoordinate.
+inline bool within_coordinate_limit(const Vec3& p) {
+    for (double c : p)
+        if (!(std::abs(c) <= kMaxCoordinate)) return false;
+    return true;
+}
+
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 inline Vec3 cross(const Vec3& a, const Vec3& b) {

@@ -14,8 +14,13 @@ geo::Vec3 parse_point(LineCursor& cur, const char* what) {
     auto f = cur.fields(3, what);
     SourceLocation at = cur.where();
     std::string w(what);
-    return {parse_double(f[0], at, w + " x"), parse_double(f[1], at, w + " y"),
-            parse_double(f[2], at, w + " z")};
+    const geo::Vec3 p{parse_double(f[0], at, w + " x"), parse_double(f[1], at, w + " y"),
+                      parse_double(f[2], at, w + " z")};
+    if (!geo::within_coordinate_limit(p))
+        throw DataError(at, w + " (" + format_number(p[0]) + ", " + format_number(p[1]) + ", " +
+                                format_number(p[2]) +
+                                ") lies beyond +-1e9 scene units (Embree's single precision)");
+    return p;
 }
 
 void parse_angles(LineCursor& cur, Adv& adv) {
@@ -292,6 +297,7 @@ Adv parse_adv(const TextInput& in) {
     Adv adv;
     parse_legacy(cur, adv);
     parse_keys(cur, adv);
+    check_sensor_keys(adv, in.name());
     return adv;
 }
 

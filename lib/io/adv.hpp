@@ -36,7 +36,8 @@ struct Adv {
     // Which optional keys were present (so a rewrite keeps a legacy file legacy).
     bool has_units = false, has_pixel_pitch = false, has_sensor = false, has_samples = false;
     // The platform and scanner keys of line and pushbroom sensors (adv(5), SCANNERS);
-    // each is written back when present. Checked against the sensor kind by trace.
+    // each is written back when present. Checked against the sensor kind by
+    // check_sensor_keys.
     std::string trajectory;                     // a .trj, relative to the .adv's folder
     std::optional<double> platform_speed_mps;   // straight flight from the camera point
     std::optional<double> platform_heading_deg; // clockwise from north (+y)
@@ -73,6 +74,15 @@ Adv parse_adv(const TextInput& in);
 // from its default. Numbers round-trip exactly.
 void write_adv(std::ostream& out, const Adv& adv);
 inline Adv read_adv_file(const std::string& path) { return parse_adv(TextInput::from_file(path)); }
+
+// The platform and scanner keys against the sensor kind (adv(5), SCANNERS): keys of
+// another kind refused, a kind's required keys present (pushbroom: line_period_s;
+// line: scan_half_angle_deg, scan_period_s; both: a trajectory or platform_speed_mps
+// with platform_heading_deg), jitter amplitude and frequency together, an integration
+// time within the line period, rows a multiple of detectors_per_scan. parse_adv runs
+// it; trace's sensor set-up too, for an Adv made in code. Throws DataError at the key's
+// line (a missing key at the sensor key's).
+void check_sensor_keys(const Adv& adv, const std::string& path);
 FormatHandler adv_format();
 
 // Metres per scene unit.

@@ -312,7 +312,10 @@ Material to_material(const RawEntry& e, const TextInput& in) {
     Material m;
     m.style = e.style;
     m.line = e.begin_line;
-    for (const auto& name : e.order) find_tag(name)->read(m, e.tags.at(name));
+    for (const auto& name : e.order) {
+        find_tag(name)->read(m, e.tags.at(name));
+        m.tag_lines.emplace(name, e.tags.at(name).where.line);
+    }
     for (const auto& t : kTags)
         if (t.required && !e.tags.count(t.name))
             throw DataError(in.at(e.end_line), "expected tag " + std::string(t.name) +

@@ -1,9 +1,11 @@
 // .mat material database (White (1996), fig. 4.34, DIRSIG 3; man mat(5)): tagged material entries.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/text.hpp"
@@ -57,6 +59,14 @@ struct Material {
     int specular_curve_line = 0;  // its line, for errors found with the .ems
     MaterialEntryStyle style = MaterialEntryStyle::BeginEnd;
     int line = 0;  // line of the entry's opening keyword
+    std::map<std::string, int, std::less<>> tag_lines;  // each tag's line
+
+    // The line of `tag`, or the entry's line when the tag is absent (errors about a
+    // file or value a tag names point at that tag).
+    int line_of(std::string_view tag) const {
+        const auto it = tag_lines.find(tag);
+        return it == tag_lines.end() ? line : it->second;
+    }
 };
 
 struct Mat {

@@ -234,6 +234,22 @@ bool is_lowtran(const std::vector<Line>& lines, std::size_t h, const std::string
     return !digits.empty() && digits.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
+// MODTRAN's echoed CARD 1 (its first line: the MODTRN and SPEED letters, in MODTRAN 5
+// and later BINARY and LYMOLC too, then MODEL, ITYPE, IEMSCT, IMULT, M1-M6, MDEF, ...,
+// TPTEMP, and SURREF last). Its layout differs between versions, so it is checked by
+// its blank-separated fields: each between the letters and SURREF is a finite number
+// (sigchain takes nothing from it, but a NaN there means the run was not what it says).
+void check_modtran_card1(const Line& line, const TextInput& in) {
+    const auto f = split_fields(line.text);
+    if (f.size() < 3 || !std::isalpha(static_cast<unsigned char>(f[0][0]))) return;  // no echo
+    for (std::size_t i = 1; i + 1 < f.size(); ++i) {
+        double v;
+        if (!try_parse_double(f[i], v))
+            throw DataError(in.at(line.number), "echoed CARD 1: expected a number, found " +
+                                                    quoted(std::string(f[i])));
+    }
+}
+
 }  // namespace
 
 Tape7 parse_tape7(const TextInput& in) {
@@ -255,6 +271,7 @@ Tape7 parse_tape7(const TextInput& in) {
         return t;
     }
     t.program = Tape7Program::Modtran;
+    if (h > 0) check_modtran_card1(lines[0], in);
     const ModtranColumns columns = modtran_columns(modtran_names(heading), in.at(lines[h].number));
     t.iemsct = modtran_iemsct(columns);
     std::size_t first = h + 1;  // a units line ("CM-1 ...") may follow the heading

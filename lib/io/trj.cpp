@@ -1,6 +1,8 @@
 // Reading and writing .trj platform trajectories (man trj(5)).
 #include "io/trj.hpp"
 
+#include <cmath>
+
 #include "io/header_lines.hpp"
 
 namespace sigchain::io {
@@ -31,6 +33,9 @@ void check_geodetic(const TrjRecord& r, const SourceLocation& at, std::string_vi
         throw DataError(at, "expected latitude (deg) from -90 to 90, found " + quoted(f[1]));
     if (r.position[1] < -360 || r.position[1] > 360)
         throw DataError(at, "expected longitude (deg) from -360 to 360, found " + quoted(f[2]));
+    if (!(std::abs(r.position[2]) <= geo::kMaxCoordinate))
+        throw DataError(at, "the height " + quoted(f[3]) +
+                                " lies beyond +-1e9 m (Embree's single precision)");
 }
 
 TrjRecord parse_record(const Line& line, const SourceLocation& at) {
@@ -75,7 +80,13 @@ Trj parse_trj(const TextInput& in) {
         const Line& line = cur.next("trajectory record");
         const SourceLocation at = cur.where(line);
         TrjRecord r = parse_record(line, at);
-        if (trj.geodetic) check_geodetic(r, at, line.text);
+        if (trj.geodetic)
+            check_geodetic(r, at, line.text);
+        else if (!geo::within_coordinate_limit(r.position))
+            throw DataError(at, "the position (" + format_number(r.position[0]) + ", " +
+                                    format_number(r.position[1]) + ", " +
+                                    format_number(r.position[2]) +
+                                    ") lies beyond +-1e9 scene units (Embree's single precision)");
         if (!trj.records.empty()) check_sequence(trj.records.back(), r, at);
         trj.records.push_back(r);
     }

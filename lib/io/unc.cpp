@@ -30,6 +30,10 @@ constexpr std::array<TermName, 8> kTerms{{
     {UncTerm::Specularity, "specularity", true, true},
 }};
 
+// The largest absolute sigma of L_us, W cm-2 sr-1 um-1: far above any path radiance
+// (the sun's whole exoatmospheric irradiance is about 0.2 W cm-2 um-1).
+constexpr double kMaxAbsoluteRadiance = 1;
+
 const TermName& term_info(UncTerm term) {
     for (const auto& t : kTerms)
         if (t.term == term) return t;
@@ -88,6 +92,19 @@ UncRow parse_row(const Line& line, const SourceLocation& at) {
         throw DataError(at, std::string(t->name) +
                                 " takes a relative sigma only (per cent: it is a spectrum), "
                                 "found an absolute one");
+    // Bounds where first-order propagation still means something, and where the squares
+    // of the truth cube stay finite (1e300 % made 474 infinities): a relative sigma up
+    // to 100 %, an absolute one up to the whole range of its input.
+    const double most = row.relative ? 100
+                        : row.term == UncTerm::SunZenith ? 90
+                        : row.term == UncTerm::UpwelledRadiance ? kMaxAbsoluteRadiance
+                                                                : 1;
+    if (row.sigma > most) {
+        std::string bound = format_number(most);
+        if (row.relative) bound += " %";
+        throw DataError(at, "expected sigma at most " + bound + " for " + std::string(t->name) +
+                                ", found " + format_number(row.sigma));
+    }
     return row;
 }
 

@@ -31,7 +31,7 @@ std::string label(const io::Material& m) {
     return "material '" + m.name + "' (" + std::to_string(m.id) + ")";
 }
 
-// Reads a curve file with `read`, turning its failure into an error at the entry's line.
+// Reads a curve file with `read`, turning its failure into an error at the tag's line.
 template <class T, class Read>
 const T& cached(std::map<std::string, T>& cache, const std::string& path, const io::Material& m,
                 const std::string& mat_path, const char* tag, Read read) {
@@ -44,13 +44,13 @@ const T& cached(std::map<std::string, T>& cache, const std::string& path, const 
         // The reader's message starts with the path, already in ours.
         std::string why = e.what();
         if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2);
-        throw IoError(SourceLocation{mat_path, m.line}.str() + ": " + prefix + why);
+        throw IoError(SourceLocation{mat_path, m.line_of(tag)}.str() + ": " + prefix + why);
     } catch (const Error& e) {
-        throw DataError({mat_path, m.line}, prefix + e.what());
+        throw DataError({mat_path, m.line_of(tag)}, prefix + e.what());
     }
 }
 
-// The table model's Brdf, one per TABLE_FILE (brdf(5)), read with the entry's line in
+// The table model's Brdf, one per TABLE_FILE (brdf(5)), read with TABLE_FILE's line in
 // its errors.
 Brdf table_brdf(const io::Material& m, const std::string& mat_path,
                 std::map<std::string, Brdf>& tables) {
@@ -190,6 +190,7 @@ MaterialLibrary MaterialLibrary::load(const io::Mat& mat, const std::string& mat
     for (const auto& m : mat.materials) {
         MaterialOptics o;
         o.id = m.id, o.name = m.name, o.mat_file = mat_path, o.line = m.line;
+        o.texture_line = m.line_of("TEXTURE_FILE");
         const io::Ems& ems = cached(ems_cache, resolve(mat_path, m.emissivity_file), m, mat_path,
                                     "EMISSIVITY_FILE", io::read_ems_file);
         for (std::size_t c = 0; c < ems.curves.size(); ++c) {

@@ -45,6 +45,7 @@ struct MaterialOptics {
     std::string name;
     std::string mat_file;  // for messages: "FILE:LINE: material 'NAME' (ID): ..."
     int line = 0;
+    int texture_line = 0;  // TEXTURE_FILE's line (0: the entry's), for the texture's errors
 
     // emissivity[c][k]: curve c of the .ems at grid sample k (curve 0 is the
     // material's own; further curves are texture curves).

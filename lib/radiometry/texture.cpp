@@ -15,7 +15,7 @@ namespace {
     std::string message = "material '" + m.name + "' (" + std::to_string(m.id) + "): " + what;
     // A material made in memory (tests) has no .mat and so no line to give.
     if (m.mat_file.empty()) throw DataError({"texture map", 0}, message);
-    throw DataError({m.mat_file, m.line}, message);
+    throw DataError({m.mat_file, m.texture_line ? m.texture_line : m.line}, message);
 }
 
 }  // namespace

@@ -1,8 +1,11 @@
 // DEM terrain: GDAL raster -> WGS84 (OGR) -> local east-north-up (GeographicLib).
 #include "scene/dem.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <unordered_map>
@@ -16,6 +19,11 @@ namespace sigchain::scene {
 namespace {
 
 using geo::GeoRaster;
+
+// Memory a DEM cell takes once meshed: two triangles with their facet records (origin
+// text, attributes, normal), the vertex and Embree's BVH; measured by
+// bench/dem_memory.sh (1002 bytes: peak RSS against cells, 300² and 1200² DEMs).
+constexpr double kBytesPerCell = 1000;
 
 // The errors in this file name the raster without a line: a raster is binary. The cell
 // concerned, where there is one, is named in the message instead.
@@ -86,8 +94,7 @@ private:
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 std::vector<std::uint32_t> cell_vertices(const DemSource& s, const GeoRaster& dem, MeshBuilder& b) {
-    if (dem.crs.empty())
-        throw DataError({s.dem_path, 0}, "the DEM has no coordinate reference system");
+    geo::require_crs(dem.crs, s.dem_path, "the DEM");
     const geo::Wgs84Transform to_wgs84(dem.crs, {s.dem_path, 0});
     const geo::LocalEnu enu(s.origin.latitude_deg, s.origin.longitude_east_deg, s.origin.height_m);
     const auto& gt = dem.geotransform;
@@ -117,13 +124,53 @@ std::vector<std::uint32_t> cell_vertices(const DemSource& s, const GeoRaster& de
     return index;
 }
 
+// An Esri ASCII grid (.asc) holds exactly rows x columns values after its header. GDAL
+// reads the first rows x columns values, ignores any after them and reads missing ones
+// as zero; either way the file is not the grid its header describes, so both are
+// refused, at the line where the count goes wrong.
+void check_ascii_grid(const std::string& path, long rows, long columns) {
+    if (ascii_lower(std::filesystem::path(path).extension().string()) != ".asc") return;
+    const TextInput in = TextInput::from_file(path);
+    const std::size_t want = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
+    std::size_t values = 0;
+    const std::string& text = in.text();
+    int line = 0;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t end = std::min(text.find('\n', at), text.size());
+        const std::string_view row(text.data() + at, end - at);
+        at = end + 1;
+        ++line;
+        for (std::string_view token : split_fields(row)) {
+            if (values == 0 && std::isalpha(static_cast<unsigned char>(token[0]))) break;  // header
+            double v;
+            if (!try_parse_double(token, v))
+                throw DataError({path, line}, "expected a height (a number), found '" +
+                                                  std::string(token) + "'");
+            if (++values > want)
+                throw DataError({path, line}, "more values than the header's " +
+                                                  std::to_string(columns) + " x " +
+                                                  std::to_string(rows) + " (trailing data?)");
+        }
+    }
+    if (values < want)
+        throw DataError({path, line}, "the file ends after " + std::to_string(values) +
+                                          " of the header's " + std::to_string(columns) + " x " +
+                                          std::to_string(rows) + " values (a truncated file?)");
+}
+
 }  // namespace
 
 MeshData read_dem_mesh(const DemSource& s, DegeneratePolicy policy,
                        std::vector<std::string>* warnings) {
-    const GeoRaster dem = geo::read_geo_raster(s.dem_path, geo::Bands::First);
+    const GeoRaster dem = geo::read_geo_raster(s.dem_path, geo::Bands::First, kBytesPerCell,
+                                               "as terrain (two triangles per cell)");
     if (dem.rows < 2 || dem.columns < 2)
         throw DataError({s.dem_path, 0}, "a DEM needs at least 2 x 2 cells");
+    if (!(dem.geotransform[1] > 0) || dem.geotransform[5] == 0)
+        throw DataError({s.dem_path, 0}, "the cell size is not positive (geotransform dx " +
+                                             format_number(dem.geotransform[1]) + ", dy " +
+                                             format_number(dem.geotransform[5]) + ")");
+    check_ascii_grid(s.dem_path, dem.rows, dem.columns);
     std::optional<LandUse> lu;
     if (!s.landuse_path.empty()) lu.emplace(s, dem);
     MeshBuilder b(policy, warnings);

@@ -3,6 +3,7 @@
 
 #include <gdal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <map>
@@ -27,6 +28,39 @@ Affine to_scene(const io::Matrix4& m, double scale) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) a[4 * r + c] = scale * m[4 * r + c];
     return a;
+}
+
+// The corners of the box of the vertices a mesh's triangles use (mesh units); none for
+// a mesh without triangles.
+std::vector<geo::Vec3> box_corners(const MeshData& m) {
+    if (m.triangles.empty()) return {};
+    const std::uint32_t i0 = m.triangles.front();
+    geo::Vec3 lo{m.vertices[3 * i0], m.vertices[3 * i0 + 1], m.vertices[3 * i0 + 2]}, hi = lo;
+    for (std::uint32_t i : m.triangles)
+        for (int r = 0; r < 3; ++r) {
+            lo[r] = std::min<double>(lo[r], m.vertices[3 * i + r]);
+            hi[r] = std::max<double>(hi[r], m.vertices[3 * i + r]);
+        }
+    std::vector<geo::Vec3> corners;
+    for (int k = 0; k < 8; ++k)
+        corners.push_back({k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]});
+    return corners;
+}
+
+// DataError at the .odb instance when its transform carries the mesh beyond what Embree
+// handles (geo::kMaxCoordinate): an affine map's extremes over a box are at its corners.
+void check_placement(const std::vector<geo::Vec3>& corners, const Affine& t,
+                     const SourceLocation& at) {
+    for (const geo::Vec3& c : corners) {
+        geo::Vec3 p;
+        for (int r = 0; r < 3; ++r)
+            p[r] = t[4 * r] * c[0] + t[4 * r + 1] * c[1] + t[4 * r + 2] * c[2] + t[4 * r + 3];
+        if (!geo::within_coordinate_limit(p))
+            throw DataError(at, "the instance places the object's vertex at (" +
+                                    format_number(p[0]) + ", " + format_number(p[1]) + ", " +
+                                    format_number(p[2]) +
+                                    "), beyond +-1e9 scene units (Embree's single precision)");
+    }
 }
 
 ParallelOptions parallel_of(const LoadOptions& o) {
@@ -137,28 +171,43 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
     io::Odb odb = io::read_odb_file(path);
     if (warnings)  // coincident copies (odb(5)): legal, but each is rendered again
         for (auto& w : io::odb_coincident_instances(odb)) warnings->push_back(std::move(w));
-    std::map<std::string, std::size_t> meshes;  // ObjectMesh::key -> mesh
+    struct Built {
+        std::size_t mesh;
+        std::vector<geo::Vec3> corners;  // of its box, for the placement check
+    };
+    std::map<std::string, Built> meshes;  // ObjectMesh::key -> mesh
     for (std::size_t k = 0; k < odb.objects.size(); ++k) {
         const io::OdbObject& obj = odb.objects[k];
         ObjectMesh om = object_mesh(odb, obj);
+        const SourceLocation at{odb.file, obj.line};
         auto it = meshes.find(om.key);
-        if (it == meshes.end()) {
-            const SourceLocation at{odb.file, obj.line};
+        if (it == meshes.end()) try {
             std::size_t mesh = 0;
+            std::vector<geo::Vec3> corners;
             if (obj.source == io::OdbSource::Gdb) {
                 const io::Gdb gdb =
                     io::read_gdb_file(io::resolve_odb_path(odb, obj.path), parallel_of(options));
-                mesh = sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, at);
+                MeshData data = mesh_from_gdb(gdb, policy_of(options), warnings);
+                corners = box_corners(data);
+                mesh = sink.add_mesh(std::move(data), &gdb, at);
             } else {
-                mesh = sink.add_mesh(om.build(odb, obj, options, warnings), nullptr, at);
+                MeshData data = om.build(odb, obj, options, warnings);
+                corners = box_corners(data);
+                mesh = sink.add_mesh(std::move(data), nullptr, at);
             }
-            it = meshes.emplace(om.key, mesh).first;
+            it = meshes.emplace(om.key, Built{mesh, std::move(corners)}).first;
+        } catch (const IoError& e) {
+            // A file the object names cannot be opened (missing, a folder): the .odb
+            // line that names it comes first.
+            throw IoError(at.str() + ": " + e.what());
         }
         double scale = io::meters_per_odb_unit(obj.units) / options.scene_meters_per_unit;
         auto placed = io::placements(obj);
-        for (std::size_t i = 0; i < placed.size(); ++i)
-            sink.place_in_units(it->second, placed[i], scale,
+        for (std::size_t i = 0; i < placed.size(); ++i) {
+            check_placement(it->second.corners, to_scene(placed[i], scale), at);
+            sink.place_in_units(it->second.mesh, placed[i], scale,
                                 std::to_string(k + 1) + "." + std::to_string(i + 1) + "/");
+        }
     }
 }
 

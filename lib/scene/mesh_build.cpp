@@ -38,7 +38,18 @@ bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
         throw DataError({origin.file, origin.line},
                         origin.description + ": a facet needs at least 3 vertices");
     m_polygon.clear();
-    for (std::uint32_t i : polygon) m_polygon.push_back(m_points.at(i));
+    for (std::uint32_t i : polygon) {
+        const geo::Vec3& p = m_points.at(i);
+        if (!geo::within_coordinate_limit(p))
+            throw DataError({origin.file, origin.line},
+                            (origin.description.empty() ? "" : origin.description + ": ") +
+                                "a vertex (" + format_number(p[0]) + ", " + format_number(p[1]) +
+                                ", " + format_number(p[2]) + ") is " +
+                                (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])
+                                     ? "beyond +-1e9 scene units (Embree's single precision)"
+                                     : "not finite"));
+        m_polygon.push_back(p);
+    }
     if (m_policy != DegeneratePolicy::Keep) {
         std::string why = io::polygon_degeneracy(m_polygon);
         if (!why.empty()) {

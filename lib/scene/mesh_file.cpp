@@ -8,10 +8,12 @@
 #include <array>
 #include <cctype>
 #include <fstream>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "scene/obj.hpp"
+#include "scene/ply.hpp"
 
 namespace sigchain::scene {
 
@@ -85,17 +87,21 @@ public:
         return m_builder.take();
     }
 
+    // Faces of every mesh walked, lines and points included.
+    std::size_t faces_read() const { return m_faces_read; }
+
 private:
     const MeshSource& m_source;
     const aiScene& m_scene;
     std::vector<ObjFace> m_obj;
     bool m_is_obj;
     MeshBuilder m_builder;
-    std::size_t m_mesh_number = 0, m_obj_next = 0;
+    std::size_t m_mesh_number = 0, m_obj_next = 0, m_faces_read = 0;
     std::vector<std::uint32_t> m_index, m_polygon;
 
     void mesh(const aiMesh& m, const Matrix& frame) {
         ++m_mesh_number;
+        m_faces_read += m.mNumFaces;
         m_index.clear();
         const bool copy = is_identity(frame);  // OBJ: the floats exactly as Assimp read them
         for (unsigned v = 0; v < m.mNumVertices; ++v) {
@@ -113,11 +119,18 @@ private:
             const aiFace& face = m.mFaces[f];
             if (face.mNumIndices < 3) continue;  // a line or a point
             ++face_number;
-            m_polygon.clear();
-            for (unsigned k = 0; k < face.mNumIndices; ++k)
-                m_polygon.push_back(m_index.at(face.mIndices[k]));
             FacetOrigin o = m_is_obj ? obj_origin(material, face.mNumIndices)
                                      : mesh_origin(m, material, face_number);
+            m_polygon.clear();
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                if (face.mIndices[k] >= m_index.size())
+                    throw DataError({o.file, o.line},
+                                    o.description + ": vertex index " +
+                                        std::to_string(face.mIndices[k]) +
+                                        " is out of range: the mesh has " +
+                                        std::to_string(m_index.size()) + " vertices");
+                m_polygon.push_back(m_index[face.mIndices[k]]);
+            }
             FacetAttributes a;
             a.material_id = material_id(material, o);
             m_builder.add_facet(m_polygon, a, std::move(o));
@@ -196,6 +209,10 @@ MeshData read_mesh_file(const MeshSource& source, DegeneratePolicy policy,
     // OBJ: the statements' numbering (ids, lines) and the checks Assimp does not make.
     std::vector<ObjFace> obj;
     if (ext == "obj") obj = scan_obj_faces(TextInput::from_file(source.path));
+    // PLY: the structure Assimp does not check (it hangs without end_header and drops
+    // the faces of a truncated body).
+    std::optional<PlyCounts> ply;
+    if (ext == "ply") ply = check_ply(source.path);
     Assimp::Importer importer;
     // No post-processing steps: they merge, reorder or split faces and vertices.
     const aiScene* scene = importer.ReadFile(source.path, 0);
@@ -205,7 +222,12 @@ MeshData read_mesh_file(const MeshSource& source, DegeneratePolicy policy,
     if (y_up(*scene, source.path, ext)) axes = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0};
     MeshWalk walk(source, *scene, std::move(obj), policy, warnings);
     walk.node(*scene->mRootNode, axes);
-    return walk.finish();
+    MeshData mesh = walk.finish();
+    if (ply && walk.faces_read() != ply->faces)
+        throw DataError({source.path, 0}, "Assimp read " + std::to_string(walk.faces_read()) +
+                                              " faces of the header's " +
+                                              std::to_string(ply->faces));
+    return mesh;
 }
 
 }  // namespace sigchain::scene

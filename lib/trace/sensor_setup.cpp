@@ -1,5 +1,5 @@
-// The sensor an .adv describes (sensor.hpp make_sensor; adv(5), SCANNERS): its keys
-// checked against the sensor kind, the platform's trajectory, the scanner geometry.
+// The sensor an .adv describes (sensor.hpp make_sensor; adv(5), SCANNERS): the platform's
+// trajectory and the scanner geometry (the keys checked by io::check_sensor_keys).
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -17,41 +17,17 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// What the checks below need to name a line of the .adv.
+// The .adv, its path (for the trajectory's folder) and the scene's geodetic origin.
 struct AdvAt {
     const io::Adv& adv;
     const std::string& path;
     std::optional<SceneOrigin> origin;
-    SourceLocation key(const std::string& name) const {
-        const auto it = adv.lines.keys.find(name);
-        return {path, it == adv.lines.keys.end() ? adv.lines.size : it->second};
-    }
-    // The line of the `sensor` key (or the size line): where a missing key is reported.
-    SourceLocation sensor() const { return key("sensor"); }
 };
 
-// Keys that belong to other sensor kinds are refused, not silently ignored.
-void refuse_keys(const AdvAt& at, std::initializer_list<const char*> names, const char* kind) {
-    for (const char* name : names)
-        if (at.adv.lines.keys.count(name))
-            throw DataError(at.key(name), std::string("expected no ") + name + " for a " + kind +
-                                              " sensor (adv(5), SCANNERS)");
-}
-
-template <class T>
-T require(const AdvAt& at, const std::optional<T>& v, const char* name, const char* kind) {
-    if (!v)
-        throw DataError(at.sensor(), std::string("expected a ") + name + " key for a " + kind +
-                                         " sensor (adv(5), SCANNERS)");
-    return *v;
-}
-
+// The keys were checked against the sensor kind (io::check_sensor_keys): the values a
+// kind needs are there.
 geom::Jitter jitter_of(const AdvAt& at) {
     const io::Adv& a = at.adv;
-    if (a.jitter_amplitude_deg.has_value() != a.jitter_frequency_hz.has_value())
-        throw DataError(
-            at.key(a.jitter_amplitude_deg ? "jitter_amplitude_deg" : "jitter_frequency_hz"),
-            "expected jitter_amplitude_deg and jitter_frequency_hz together");
     geom::Jitter j;
     if (a.jitter_amplitude_deg) {
         j.amplitude_deg = *a.jitter_amplitude_deg;
@@ -78,14 +54,10 @@ void place_geodetic(const AdvAt& at, const std::string& file, io::Trj& trj) {
 // The platform: the .trj the `trajectory` key names (relative to the .adv's folder), or a
 // straight flight from the camera point (line 2) at platform_speed_mps toward
 // platform_heading_deg, over [t0, t1].
-geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, double t1) {
+geom::Trajectory platform_of(const AdvAt& at, double t0, double t1) {
     const io::Adv& a = at.adv;
     const geom::Jitter jitter = jitter_of(at);
     if (!a.trajectory.empty()) {
-        refuse_keys(at,
-                    {"platform_speed_mps", "platform_heading_deg", "platform_roll_deg",
-                     "platform_pitch_deg"},
-                    "trajectory-carried");
         std::filesystem::path p(a.trajectory);
         if (p.is_relative()) p = std::filesystem::path(at.path).parent_path() / p;
         const std::string file = p.lexically_normal().string();
@@ -93,9 +65,8 @@ geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, doubl
         if (trj.geodetic) place_geodetic(at, file, trj);
         return geom::Trajectory(trj, file, jitter);
     }
-    const double speed_mps =
-        require(at, a.platform_speed_mps, "trajectory or platform_speed_mps", kind);
-    const double heading = require(at, a.platform_heading_deg, "platform_heading_deg", kind);
+    const double speed_mps = a.platform_speed_mps.value();
+    const double heading = a.platform_heading_deg.value();
     return geom::Trajectory::straight(a.camera, speed_mps / io::meters_per_unit(a.units), heading,
                                       a.platform_roll_deg.value_or(0),
                                       a.platform_pitch_deg.value_or(0), t0, t1, jitter);
@@ -103,53 +74,39 @@ geom::Trajectory platform_of(const AdvAt& at, const char* kind, double t0, doubl
 
 std::unique_ptr<Sensor> make_pushbroom(const AdvAt& at) {
     const io::Adv& a = at.adv;
-    refuse_keys(at,
-                {"scan_half_angle_deg", "scan_period_s", "detectors_per_scan", "scan_direction",
-                 "scan_line_corrector"},
-                "pushbroom");
     PushbroomGeometry g;
     g.lines = a.rows;
     g.detectors = a.columns;
     g.focal_length_mm = a.focal_length_mm;
     g.pitch_mm = a.pixel_pitch_um * 1e-3;
-    g.line_period_s = require(at, a.line_period_s, "line_period_s", "pushbroom");
+    g.line_period_s = a.line_period_s.value();
     g.integration_time_s = a.integration_time_s.value_or(g.line_period_s);
-    if (g.integration_time_s > g.line_period_s)
-        throw DataError(at.key("integration_time_s"),
-                        "expected integration_time_s at most line_period_s (" +
-                            format_number(g.line_period_s) + " s), found " +
-                            format_number(g.integration_time_s));
     g.start_time_s = a.start_time_s.value_or(0);
-    return std::make_unique<PushbroomSensor>(
-        platform_of(at, "pushbroom", g.start_time_s, g.end_time_s()), g);
+    return std::make_unique<PushbroomSensor>(platform_of(at, g.start_time_s, g.end_time_s()), g);
 }
 
 std::unique_ptr<Sensor> make_line_scanner(const AdvAt& at) {
     const io::Adv& a = at.adv;
-    refuse_keys(at, {"line_period_s", "integration_time_s"}, "line");
     LineScanGeometry g;
     g.detectors = a.detectors_per_scan.value_or(1);
-    if (a.rows % g.detectors != 0)
-        throw DataError({at.path, a.lines.size},
-                        "expected image rows a multiple of detectors_per_scan (" +
-                            std::to_string(g.detectors) + "), found " + std::to_string(a.rows));
     g.scans = a.rows / g.detectors;
     g.samples = a.columns;
-    g.half_angle_rad = require(at, a.scan_half_angle_deg, "scan_half_angle_deg", "line") * kDeg;
-    g.scan_period_s = require(at, a.scan_period_s, "scan_period_s", "line");
+    g.half_angle_rad = a.scan_half_angle_deg.value() * kDeg;
+    g.scan_period_s = a.scan_period_s.value();
     // The detector's along-track angle: its pitch seen from the focal length.
     g.ifov_rad = a.pixel_pitch_um * 1e-3 / a.focal_length_mm;
     g.bidirectional = a.scan_bidirectional.value_or(false);
     g.scan_line_corrector = a.scan_line_corrector.value_or(false);
     g.start_time_s = a.start_time_s.value_or(0);
-    return std::make_unique<LineScannerSensor>(
-        platform_of(at, "line", g.start_time_s, g.end_time_s()), g);
+    return std::make_unique<LineScannerSensor>(platform_of(at, g.start_time_s, g.end_time_s()),
+                                               g);
 }
 
 }  // namespace
 
 std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_path,
                                     std::optional<SceneOrigin> origin) {
+    io::check_sensor_keys(adv, adv_path);
     const AdvAt at{adv, adv_path, origin};
     switch (adv.sensor) {
         case io::SensorKind::Pushbroom:
@@ -159,13 +116,6 @@ std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_p
         case io::SensorKind::Frame:
             break;
     }
-    refuse_keys(at,
-                {"trajectory", "platform_speed_mps", "platform_heading_deg", "platform_roll_deg",
-                 "platform_pitch_deg", "jitter_amplitude_deg", "jitter_frequency_hz",
-                 "jitter_walk_deg", "jitter_seed", "start_time_s", "line_period_s",
-                 "integration_time_s", "scan_half_angle_deg", "scan_period_s", "detectors_per_scan",
-                 "scan_direction", "scan_line_corrector"},
-                "frame");
     return std::make_unique<FrameSensor>(geom::frame_camera(adv, adv_path));
 }
 

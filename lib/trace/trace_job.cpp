@@ -39,6 +39,9 @@ namespace sigchain::trace {
 
 namespace {
 
+// The radiance below which a whole cube is called black (W cm-2 sr-1 um-1; run_trace).
+constexpr float kBlackRadiance = 1e-12f;
+
 constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
 // ENVI's `sensor type` of trace's cubes (cube(5)): the sensor model that made them,
 // "sigchain " and Sensor::kind() ("sigchain frame camera").
@@ -493,6 +496,17 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     }
     write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, georef,
                   sensor_type(camera), result);
+    // Shown even with -q: a script must not take a black cube for a render. Black: no
+    // value above 1e-12 W cm-2 sr-1 um-1, five orders below the noise-equivalent radiance
+    // of any sensor sigchain models (about 1e-7): nothing a camera could record.
+    const auto& values = result.radiance.data;
+    float largest = 0;
+    for (float v : values) largest = std::max(largest, std::abs(v));
+    if (!values.empty() && largest <= kBlackRadiance)
+        reporter.alarm(job.output_path + ": the image is black: its largest radiance is " +
+                       format("%.3g", largest) +
+                       " W cm-2 sr-1 um-1, nothing a sensor records (a visibility near 0 km in "
+                       "the .rad tables, the sun below the horizon, every material black?)");
     return report;
 }
 

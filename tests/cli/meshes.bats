@@ -123,8 +123,7 @@ write_dem() {
     assert_equal "$stderr" "trace: plate.obj:9: material 'wood' is not in the material map grass.map"
     echo junk > bad.ply
     run -1 --separate-stderr trace $(inputs bad.ply) --material-id 1 -o x.img
-    assert_equal "$stderr" \
-        "trace: bad.ply: Invalid .ply file: Incorrect magic number (expected 'ply' or 'PLY')."
+    assert_equal "$stderr" "trace: bad.ply:1: not a PLY file (no 'ply' line)"
     run -1 --separate-stderr trace $(inputs missing.glb) --material-id 1 -o x.img
     assert_equal "$stderr" "trace: missing.glb: cannot open the mesh file"
     [ ! -e x.img ] || fail "an output cube was written"

@@ -97,6 +97,13 @@ mpi_trace() {
     [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
     [[ "$stderr" == *"trace: "*"material 37 is not in the material file"* ]] || fail "$stderr"
     [ ! -e out.img ]
+    # Rank 0 alone says it, once (3 ranks each printed it, interleaved: "thermtherm:").
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 3 \
+        "$SIGCHAIN_BIN/therm" -q "$SEED/box_on_plane.shd" "$SEED/weather_30_Sep_95.wth" \
+        "$DATA/missing_wood.mat" "$SEED/box_on_plane.gdb" "$SEED/hawkeye.snd" -o out.tmp
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
+    [ "$(printf '%s\n' "$stderr" | grep -c '^therm: ')" = 1 ] || fail "$stderr"
+    [ ! -e out.tmp ]
 }
 
 @test "therm under mpirun -np 3: the .tmp is byte for byte the one-process .tmp" {

@@ -248,8 +248,8 @@ band_bytes() {
         $(inputs "$GDB" "$DATA/missing_wood.mat") -o out.img
 }
 
-@test "trace: a missing .ems names the .mat line and the material" {
-    trace_bad 1 "$DATA/missing_ems.mat:18: material 'wood' (37): cannot read EMISSIVITY_FILE" \
+@test "trace: a missing .ems names the .mat line of its EMISSIVITY_FILE and the material" {
+    trace_bad 1 "$DATA/missing_ems.mat:30: material 'wood' (37): cannot read EMISSIVITY_FILE" \
         $(inputs "$GDB" "$DATA/missing_ems.mat") -o out.img
     [[ "$stderr" == *"no_such_wood.ems"* ]] || fail "stderr: $stderr"
 }
@@ -599,4 +599,21 @@ coupled_inputs() {
     printf '# sigchain-tmp 1\n7-7-7 300\n' > none.tmp
     trace_bad 1 "none.tmp:2: 0 of 1 facet key(s) match" $(inputs) --tmp none.tmp --strict -o out.img
     trace_bad 2 "--strict" --shadow-history --strict "$DATA/box.snd" "$GDB" "$DATA/box.mat" -o out.shd
+}
+
+@test "trace: a black cube (a visibility of 0.01 km) is said even with -q" {
+    # hawkeye's deck with VIS (CARD 2, columns 31-40) 0.01 km: no light gets through.
+    awk 'NR == 2 { $0 = substr($0, 1, 30) "     0.010" substr($0, 41) } { print }' \
+        "$GOLDEN/control7/hawkeye.cdk" > fog.cdk
+    local small="$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance/small.snd"
+    run -0 build_radiance -q --streams 8 --sky-zenith-step 15 --sky-azimuth-step 30 \
+        --sky-subsamples 1 fog.cdk "$small" -o 'fog-%d.rad'
+    run -0 --separate-stderr trace -q --samples-per-pixel 1 "$DATA/box.adv" "$small" "$GDB" \
+        "$DATA/box.mat" fog-1.rad fog-2.rad -o fog.img
+    [[ "$stderr" == "trace: warning: fog.img: the image is black: its largest radiance is "*" W cm-2 sr-1 um-1, nothing a sensor records"* ]] ||
+        fail "stderr: $stderr"
+    [ -e fog.img ]  # written all the same: it is what the inputs give
+    # A clear day says nothing under -q.
+    run -0 --separate-stderr trace -q --samples-per-pixel 1 $(inputs "$GDB") -o clear.img
+    assert_equal "$stderr" ''
 }

@@ -56,7 +56,8 @@ TEST(Adv, LegacyFileGetsDefaultsAndStaysLegacy) {
 
 TEST(Adv, OptionalKeys) {
     Adv a = parse_adv(TextInput::from_string(
-        kLegacy + "units = m\npixel_pitch_um=12.5\nsensor = pushbroom\nsamples_per_pixel = 4\n",
+        kLegacy + "units = m\npixel_pitch_um=12.5\nsensor = pushbroom\nsamples_per_pixel = 4\n" +
+            "line_period_s = 0.01\nplatform_speed_mps = 50\nplatform_heading_deg = 0\n",
         "t.adv"));
     EXPECT_TRUE(a.has_units && a.has_pixel_pitch && a.has_sensor && a.has_samples);
     EXPECT_EQ(a.pixel_pitch_um, 12.5);
@@ -69,6 +70,8 @@ TEST(Adv, RoundTripIsExactAndIdempotent) {
     a.target = {0.1, -2.0 / 3.0, 1e-7};
     a.pixel_pitch_um = 7.4;
     a.sensor = SensorKind::Line;
+    a.scan_half_angle_deg = 7.5, a.scan_period_s = 0.0714;  // what a line scanner needs
+    a.platform_speed_mps = 6800, a.platform_heading_deg = -8.2;
     std::string once = written(a);
     Adv b = parse_adv(TextInput::from_string(once, "once.adv"));
     EXPECT_EQ(b.target, a.target);
@@ -150,7 +153,7 @@ TEST(Adv, ExtraLineAfterImageSize) {
 
 TEST(Adv, ScannerKeysParseAndRoundTrip) {
     const std::string text = kLegacy +
-                             "sensor = line\ntrajectory = flight.trj\nplatform_speed_mps = 6800\n"
+                             "sensor = line\nplatform_speed_mps = 6800\n"
                              "platform_heading_deg = -8.2\nplatform_roll_deg = 1.5\n"
                              "platform_pitch_deg = -0.5\njitter_amplitude_deg = 0.001 0 0.002\n"
                              "jitter_frequency_hz = 7 0 0.5\njitter_walk_deg = 0.01 0.02 0\n"
@@ -160,7 +163,6 @@ TEST(Adv, ScannerKeysParseAndRoundTrip) {
                              "scan_line_corrector = on\n";
     const Adv a = parse_adv(TextInput::from_string(text, "t.adv"));
     EXPECT_EQ(a.sensor, SensorKind::Line);
-    EXPECT_EQ(a.trajectory, "flight.trj");
     EXPECT_EQ(a.platform_speed_mps, 6800);
     EXPECT_EQ(a.jitter_amplitude_deg, (geo::Vec3{0.001, 0, 0.002}));
     EXPECT_EQ(a.detectors_per_scan, 16);
@@ -168,11 +170,13 @@ TEST(Adv, ScannerKeysParseAndRoundTrip) {
     EXPECT_EQ(a.scan_line_corrector, true);
     EXPECT_EQ(a.jitter_walk_deg, (geo::Vec3{0.01, 0.02, 0}));
     EXPECT_EQ(a.jitter_seed, 42);
-    EXPECT_EQ(a.lines.keys.at("scan_period_s"), 18);
+    EXPECT_EQ(a.lines.keys.at("scan_period_s"), 17);
     EXPECT_EQ(parse_adv(TextInput::from_string(written(a), "w.adv")), a);
     const Adv p = parse_adv(TextInput::from_string(
-        kLegacy + "sensor = pushbroom\nline_period_s = 0.01\nintegration_time_s = 0.005\n",
+        kLegacy + "sensor = pushbroom\nline_period_s = 0.01\nintegration_time_s = 0.005\n" +
+            "trajectory = flight.trj\n",
         "p.adv"));
+    EXPECT_EQ(p.trajectory, "flight.trj");
     EXPECT_EQ(p.line_period_s, 0.01);
     EXPECT_EQ(written(p), kLegacy.substr(0, 0) + written(parse_adv(TextInput::from_string(
                                                       written(p), "w.adv"))));
@@ -188,4 +192,34 @@ TEST(Adv, BadScannerKeys) {
               "'1 2'");
     EXPECT_EQ(error_of(kLegacy + "detectors_per_scan = 0\n"),
               "t.adv:6: expected detectors_per_scan (an integer from 1 to 100000), found '0'");
+}
+
+// What trace's sensor set-up refuses, every reader of an .adv refuses (sigchain-check
+// passed these before): the keys against the sensor kind (adv(5), SCANNERS).
+TEST(Adv, SensorKeysAreCheckedOnReading) {
+    const std::string line = kLegacy + "sensor = line\nscan_half_angle_deg = 7.5\n";
+    const std::string flight = "platform_speed_mps = 50\nplatform_heading_deg = 0\n";
+    EXPECT_EQ(error_of(line + flight),
+              "t.adv:6: expected a scan_period_s key for a line sensor (adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(kLegacy + "sensor = pushbroom\n" + flight),
+              "t.adv:6: expected a line_period_s key for a pushbroom sensor (adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(line + "scan_period_s = 0.1\n"),
+              "t.adv:6: expected a trajectory or platform_speed_mps key for a line sensor "
+              "(adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(line + "scan_period_s = 0.1\nplatform_speed_mps = 50\n"),
+              "t.adv:6: expected a platform_heading_deg key for a line sensor (adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(line + "scan_period_s = 0.1\ndetectors_per_scan = 5\n" + flight),
+              "t.adv:5: expected image rows a multiple of detectors_per_scan (5), found 512");
+    EXPECT_EQ(error_of(line + "scan_period_s = 0.1\nline_period_s = 0.01\n" + flight),
+              "t.adv:9: expected no line_period_s for a line sensor (adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(line + "scan_period_s = 0.1\ntrajectory = f.trj\n" + flight),
+              "t.adv:10: expected no platform_speed_mps for a trajectory-carried sensor "
+              "(adv(5), SCANNERS)");
+    EXPECT_EQ(error_of(kLegacy + "sensor = pushbroom\nline_period_s = 0.01\n"
+                                 "integration_time_s = 0.02\n" + flight),
+              "t.adv:8: expected integration_time_s at most line_period_s (0.01 s), found 0.02");
+    EXPECT_EQ(error_of(line + "scan_period_s = 0.1\njitter_amplitude_deg = 1 0 0\n" + flight),
+              "t.adv:9: expected jitter_amplitude_deg and jitter_frequency_hz together");
+    EXPECT_EQ(error_of(kLegacy + "scan_period_s = 0.1\n"),
+              "t.adv:6: expected no scan_period_s for a frame sensor (adv(5), SCANNERS)");
 }

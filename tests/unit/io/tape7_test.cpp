@@ -95,6 +95,11 @@ TEST(Tape7, ModtranByHeadingNames) {
     EXPECT_DOUBLE_EQ(t.rows[1].path_thermal, 2.2e-6);
     EXPECT_EQ(t.rows[2].path_solar, 3e-8);
     EXPECT_EQ(t.rows[2].line, 13);
+    // A NaN in its echoed CARD 1 (MODEL ITYPE IEMSCT ... TPTEMP) is refused at line 1.
+    const std::string card1 = text_of("modtran_iemsct2.tp7");
+    std::string bad = card1;
+    bad.replace(bad.find("0.000"), 5, "  nan");
+    EXPECT_EQ(error_of(bad), "t.tp7:1: echoed CARD 1: expected a number, found 'nan'");
 }
 
 TEST(Tape7, ModtranSolarIrradianceHeadingIsLowtransButItsEchoIsNot) {

@@ -81,6 +81,14 @@ TEST(Unc, ErrorsNameTheLine) {
     EXPECT_EQ(error_of("# sigchain-unc 1\ntau2 lots\n"),
               "u.unc:2: expected sigma (a number), found 'lots'");
     EXPECT_EQ(error_of("# sigchain-unc 1\n%\n"), "u.unc:2: expected a term and its sigma");
+    // Bounded: 1e300 % made infinities in the truth cube's variances.
+    EXPECT_EQ(error_of("# sigchain-unc 1\nEs 1e300 %\n"),
+              "u.unc:2: expected sigma at most 100 % for Es, found 1e+300");
+    EXPECT_EQ(error_of("# sigchain-unc 1\nsun_zenith 91\n"),
+              "u.unc:2: expected sigma at most 90 for sun_zenith, found 91");
+    EXPECT_EQ(error_of("# sigchain-unc 1\nmaterial 1 reflectance 1.5\n"),
+              "u.unc:2: expected sigma at most 1 for reflectance, found 1.5");
+    EXPECT_EQ(error_of("# sigchain-unc 1\nEs 100 %\ntau1 1\nL_us 1\n"), "no error");
 }
 
 TEST(Unc, TruncatedVersion11IsRefused) {

@@ -90,7 +90,7 @@ TEST(MaterialLibrary, LoadsTheSeedMaterialAndItsEmissivity) {
     EXPECT_EQ(e[0], 1.0);
 }
 
-TEST(MaterialLibrary, MissingEmissivityFileNamesTheMatLine) {
+TEST(MaterialLibrary, MissingEmissivityFileNamesItsTagsLine) {
     auto dir = scratch("missing");
     write(dir / "bad.mat", "# a comment\n" + entry("paint", 7, "nowhere.ems"));
     std::string mat_path = (dir / "bad.mat").string();
@@ -99,19 +99,19 @@ TEST(MaterialLibrary, MissingEmissivityFileNamesTheMatLine) {
         FAIL() << "no error";
     } catch (const IoError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  mat_path + ":2: material 'paint' (7): cannot read EMISSIVITY_FILE " +
+                  mat_path + ":13: material 'paint' (7): cannot read EMISSIVITY_FILE " +
                       (dir / "nowhere.ems").string() + ": cannot open: No such file or directory");
     }
 }
 
-TEST(MaterialLibrary, BadEmissivityFileIsADataErrorAtTheMatLine) {
+TEST(MaterialLibrary, BadEmissivityFileIsADataErrorAtItsTagsLine) {
     auto dir = scratch("bad_ems");
     write(dir / "broken.ems", "1\n0.5\n");
     write(dir / "m.mat", entry("paint", 3, "broken.ems"));
     std::string mat_path = (dir / "m.mat").string();
     std::string msg = test::data_error_of(
         [&] { MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid_of({0.5})); });
-    std::string start = mat_path + ":1: material 'paint' (3): cannot read EMISSIVITY_FILE " +
+    std::string start = mat_path + ":12: material 'paint' (3): cannot read EMISSIVITY_FILE " +
                         (dir / "broken.ems").string() + ": " + (dir / "broken.ems").string() + ":";
     EXPECT_EQ(msg.substr(0, start.size()), start) << msg;
 }
@@ -174,7 +174,7 @@ TEST(MaterialLibrary, TableModelReadsItsBrdfFile) {
     EXPECT_EQ(test::data_error_of([&] {
                   MaterialLibrary::load(io::read_mat_file(bad_path), bad_path, grid_of({0.5}));
               }),
-              bad_path + ":1: material 'bad' (9): cannot read TABLE_FILE " + bad_file + ": " +
+              bad_path + ":14: material 'bad' (9): cannot read TABLE_FILE " + bad_file + ": " +
                   bad_file + ":4: expected phi_deg from 0 to 180, found 0 to 90");
 }
 
