@@ -29,6 +29,7 @@
 #include "io/tmp.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "trace/black_cube.hpp"
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
 #include "trace/ground_layers.hpp"
@@ -38,9 +39,6 @@
 namespace sigchain::trace {
 
 namespace {
-
-// The radiance below which a whole cube is called black (W cm-2 sr-1 um-1; run_trace).
-constexpr float kBlackRadiance = 1e-12f;
 
 constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
 // ENVI's `sensor type` of trace's cubes (cube(5)): the sensor model that made them,
@@ -365,8 +363,7 @@ RenderOptions render_options_layers(const TraceJob& job) {
     return o;
 }
 
-// The radiance cube (one band per spectral sample, wavelengths, units, band names)
-// and the truth cube, each written atomically.
+// The radiance cube (a band per spectral sample) and the truth cube, each atomically.
 void write_outputs(const TraceJob& job, const image::WriteOptions& write_options,
                    const radiometry::SpectralGrid& grid, const image::Georeference& georef,
                    const std::string& type_name, RenderResult& result) {
@@ -496,17 +493,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     }
     write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, georef,
                   sensor_type(camera), result);
-    // Shown even with -q: a script must not take a black cube for a render. Black: no
-    // value above 1e-12 W cm-2 sr-1 um-1, five orders below the noise-equivalent radiance
-    // of any sensor sigchain models (about 1e-7): nothing a camera could record.
-    const auto& values = result.radiance.data;
-    float largest = 0;
-    for (float v : values) largest = std::max(largest, std::abs(v));
-    if (!values.empty() && largest <= kBlackRadiance)
-        reporter.alarm(job.output_path + ": the image is black: its largest radiance is " +
-                       format("%.3g", largest) +
-                       " W cm-2 sr-1 um-1, nothing a sensor records (a visibility near 0 km in "
-                       "the .rad tables, the sun below the horizon, every material black?)");
+    alarm_if_black(result.radiance, job.output_path, reporter);
     return report;
 }
 
