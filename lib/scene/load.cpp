@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
+#include "geo/georef.hpp"
 #include "io/check.hpp"
 #include "io/odb.hpp"
 #include "scene/dem.hpp"
@@ -299,6 +300,19 @@ private:
 void SceneSink::place_in_units(std::size_t mesh, const io::Matrix4& matrix, double scale,
                                const std::string& key_prefix) {
     place(mesh, to_scene(matrix, scale), key_prefix);
+}
+
+geo::Crs terrain_crs(const std::string& path) {
+    const std::string ext = io::format_of_path(path);
+    if (ext == "odb") {
+        const io::Odb odb = io::read_odb_file(path);
+        for (const io::OdbObject& object : odb.objects)
+            if (object.source == io::OdbSource::Dem)
+                return geo::raster_crs(io::resolve_odb_path(odb, object.path));
+        return {};
+    }
+    if (ext == "gdb" || is_mesh_path(path) || !std::ifstream(path) || !is_raster(path)) return {};
+    return geo::raster_crs(path);
 }
 
 void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "geo/crs.hpp"
 #include "io/gdb.hpp"
 #include "io/odb.hpp"
 #include "scene/scene.hpp"
@@ -90,6 +91,10 @@ public:
 // materials and for a file of no known kind.
 void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,
                     std::vector<std::string>* warnings);
+
+// The CRS a scene's terrain places it in: a DEM given as the scene itself, or the
+// first DEM object of an .odb; empty for a .gdb, a mesh or an .odb without a DEM.
+geo::Crs terrain_crs(const std::string& path);
 
 // Loads a .gdb, an .odb (GDB, OBJ with MATERIAL_MAP, MESH with MATERIAL_MAP or
 // MATERIAL_ID, DEM with MATERIAL_ID or LANDUSE_FILENAME/LANDUSE_MAP; see odb(5)), a lone

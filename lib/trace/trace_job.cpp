@@ -29,6 +29,7 @@
 #include "io/tmp.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "scene/load.hpp"
 #include "trace/black_cube.hpp"
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
@@ -335,21 +336,12 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     if (s.hits == 0) reporter.warn("no primary ray hit the scene: check the look angles");
 }
 
-// The CRS of the first DEM object of a .odb scene; empty for a .gdb or a scene without one.
-geo::Crs scene_dem_crs(const std::string& scene_path) {
-    if (file_extension(scene_path) != "odb") return {};
-    const io::Odb odb = io::read_odb_file(scene_path);
-    for (const io::OdbObject& object : odb.objects)
-        if (object.source == io::OdbSource::Dem)
-            return geo::raster_crs(io::resolve_odb_path(odb, object.path));
-    return {};
-}
-
 // Where the render lies on the Earth (cube(5), Georeferencing): none unless --crs names a
 // CRS or the scene holds a DEM with one.
 std::optional<GeoPlacement> geo_placement(const TraceJob& job, const Setup& st) {
     if (job.crs == "none") return std::nullopt;
-    geo::Crs crs = job.crs.empty() ? scene_dem_crs(job.scene_path) : geo::crs_from_user(job.crs);
+    geo::Crs crs =
+        job.crs.empty() ? scene::terrain_crs(job.scene_path) : geo::crs_from_user(job.crs);
     if (crs.empty()) return std::nullopt;
     return GeoPlacement{st.snd.latitude_deg, st.snd.longitude_east_deg,
                         io::meters_per_unit(st.adv.units), crs};

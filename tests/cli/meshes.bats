@@ -74,6 +74,10 @@ write_dem() {
     assert_equal "$stderr" ''
     run -0 --separate-stderr trace $(inputs dem.odb) -o odb.img
     run -0 cmp lone.img odb.img
+    # Placed on the map alike: the DEM given as the scene lends its CRS (it gave none):
+    # this oblique view gets the same geolocation arrays as the .odb route.
+    run -0 cmp lone.geoloc.tif odb.geoloc.tif
+    run -0 grep -q '^sigchain geolocation = .*/lone.geoloc.tif$' lone.hdr
     # Land use by options: one class mapped to grass, the same picture.
     sed 's/[0-9][0-9]*\.5 /3 /g' t.asc > lu.asc
     cp t.prj lu.prj
