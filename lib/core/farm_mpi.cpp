@@ -1,5 +1,6 @@
 // The farm over MPI (farm.hpp): rank 0 hands out parts one at a time and gathers
 // their bytes; the other ranks compute them.
+#include <atomic>
 #include <csignal>
 #include <cstdint>
 #include <cstdlib>
@@ -9,8 +10,6 @@
 
 #include "core/error.hpp"
 #include "core/farm.hpp"
-
-#include <atomic>
 #include "core/mpi.hpp"
 
 namespace sigchain {

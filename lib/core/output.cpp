@@ -4,9 +4,9 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/file.h>
 #include <sys/stat.h>
-#include <pthread.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 

@@ -28,11 +28,6 @@ void read_band(GDALDataset& ds, int band, GeoRaster& r, const std::string& path)
         throw IoError(path + ": read error: " + gdal_message());
 }
 
-}  // namespace
-
-bool GeoRaster::valid(double v) const { return std::isfinite(v) && !(nodata && v == *nodata); }
-
-// The errors below name the file without a line: a raster is binary.
 // The machine's physical memory, bytes (0 when unknown).
 double physical_memory_bytes() {
     const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
@@ -44,6 +39,11 @@ std::string gib(double bytes) {
     return format_number(std::round(g * 10) / 10) + " GiB";
 }
 
+}  // namespace
+
+bool GeoRaster::valid(double v) const { return std::isfinite(v) && !(nodata && v == *nodata); }
+
+// The errors below name the file without a line: a raster is binary.
 GeoRaster read_geo_raster(const std::string& path, Bands bands, double use_bytes_per_cell,
                           const char* use) {
     gdal_init();

@@ -5,7 +5,6 @@
 #include <cpl_string.h>
 #include <gdal_priv.h>
 
-
 #include "core/error.hpp"
 #include "geo/crs.hpp"
 #include "image/gdal_output.hpp"
