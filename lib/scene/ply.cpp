@@ -94,6 +94,7 @@ public:
     }
 
     void binary(const std::vector<Element>& elements, bool big) {
+        m_line = 0;  // a binary body has no lines: its errors name the element instead
         const auto* data = reinterpret_cast<const unsigned char*>(m_text.data());
         for (const Element& e : elements)
             for (std::size_t k = 0; k < e.count; ++k)
@@ -132,14 +133,14 @@ private:
         const std::size_t end = m_text.find('\n', m_at);
         const std::size_t stop = end == std::string::npos ? m_text.size() : end;
         std::string_view row(m_text.data() + m_at, stop - m_at);
+        if (!row.empty() && row.back() == '\r') row.remove_suffix(1);  // CRLF lines
         m_at = stop + (end == std::string::npos ? 0 : 1);
         ++m_line;
         return row;
     }
 
     [[noreturn]] void bad(const Element& e, std::size_t k, const std::string& why) const {
-        throw DataError({m_path, m_text.empty() || m_line == 0 ? 0 : m_line},
-                        e.name + " " + std::to_string(k) + ": " + why);
+        throw DataError({m_path, m_line}, e.name + " " + std::to_string(k) + ": " + why);
     }
 
     void need(std::size_t bytes, const Element& e, std::size_t k) const {
@@ -154,12 +155,11 @@ private:
         const auto value = [&](const Property& p) {
             if (i >= f.size())
                 bad(e, k, "too few values (property " + p.name + " is missing)");
-            const std::string token(f[i++]);
-            char* end = nullptr;
-            const double v = std::strtod(token.c_str(), &end);
-            if (end == token.c_str() || *end != '\0')
-                bad(e, k, "property " + p.name + ": '" + token + "' is not a number");
-            if (!std::isfinite(v)) bad(e, k, "property " + p.name + " is not finite");
+            double v = 0;
+            if (!try_parse_double(f[i], v))
+                bad(e, k, "property " + p.name + ": '" + std::string(f[i]) +
+                              "' is not a finite number");
+            ++i;
             return v;
         };
         for (const Property& p : e.properties) {

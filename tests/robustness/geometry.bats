@@ -70,7 +70,7 @@ scanner() {
         printf 'property float z\nelement face 1\nproperty list uchar int vertex_indices\n' >> p.ply
         printf 'end_header\n0 0 0\n20 0 0\n20 20 %s\n3 0 1 2\n' "$v" >> p.ply
         case $v in
-            nan | inf) refused "trace: p.ply:12: vertex 2: property z is not finite" \
+            nan | inf) refused "trace: p.ply:12: vertex 2: property z: '$v' is not a finite number" \
                 trace $(inputs p.ply) --material-id 1 -o x.img ;;
             *) refused "trace: p.ply: mesh" trace $(inputs p.ply) --material-id 1 -o x.img ;;
         esac

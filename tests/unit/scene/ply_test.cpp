@@ -50,6 +50,17 @@ TEST(CheckPly, CountsAWellFormedAsciiFile) {
     EXPECT_EQ(c.faces, 1u);
 }
 
+TEST(CheckPly, ReadsCrlfLinesAndRefusesNonFiniteValues) {
+    std::string crlf = kHeader + "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n";
+    for (std::size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2))
+        crlf.insert(at, "\r");
+    EXPECT_EQ(check_ply(write("crlf.ply", crlf)).faces, 1u);
+    const std::string p = write("inf.ply", kHeader + "0 0 0\n1 0 inf\n1 1 0\n3 0 1 2\n");
+    EXPECT_NE(message_of(p).find("inf.ply:11: vertex 1: property z: 'inf' is not a finite number"),
+              std::string::npos)
+        << message_of(p);
+}
+
 TEST(CheckPly, NamesTheLineOfEachAsciiFault) {
     const std::string p = write("bad.ply", kHeader + "0 0 0\n1 0\n1 1 0\n3 0 1 2\n");
     EXPECT_NE(message_of(p).find("bad.ply:11: vertex 1: too few values"), std::string::npos)
@@ -83,9 +94,11 @@ TEST(CheckPly, WalksBinaryBodiesInEitherByteOrder) {
                   std::string::npos);
         std::string nan_body = body;
         nan_body.replace(4, 4, bytes_of(std::nanf(""), big));
+        // No line in a binary body: the element is named instead.
         EXPECT_NE(message_of(write("nan.ply", header + nan_body))
-                      .find("vertex 0: property y is not finite"),
-                  std::string::npos);
+                      .find("sigchain_ply_test_nan.ply: vertex 0: property y is not finite"),
+                  std::string::npos)
+            << message_of(write("nan.ply", header + nan_body));
     }
 }
 
