@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <new>
+#include <thread>
 
 #include "core/error.hpp"
 #include "core/farm.hpp"
@@ -296,12 +298,18 @@ void Cli::print_help() const {
 
 namespace {
 
+// How long a worker rank waits before reporting an error met before its parts began.
+constexpr auto kWorkerReportDelay = std::chrono::seconds(2);
+
 // "TOOL: MESSAGE" on stderr in one write, so that processes sharing the stream never
-// interleave it. Under an MPI launcher a worker rank says nothing of an error met
-// before its parts began (every rank reads the same inputs: rank 0 reports it) and
-// names itself in one met after ("TOOL: rank K: ...").
+// interleave it. Under an MPI launcher a worker rank names itself ("TOOL: rank K:
+// ..."). An error a worker meets before its parts began is most often one every rank
+// meets the same way (the same inputs): the worker waits kWorkerReportDelay first, so
+// that when rank 0 failed too the launcher ends the job (Open MPI's mpirun kills every
+// rank once one exits non-zero) and rank 0's message is the only one; an error of the
+// worker's alone (a file its node lacks) is still reported, late.
 void report_error(const std::string& tool, const std::string& message) {
-    if (farm_worker() && !farm_worker_working()) return;
+    if (farm_worker() && !farm_worker_working()) std::this_thread::sleep_for(kWorkerReportDelay);
     const std::string rank = farm_worker() ? "rank " + std::to_string(farm_rank()) + ": " : "";
     std::cerr.flush();
     const std::string line = tool + ": " + rank + message + "\n";

@@ -35,9 +35,10 @@ bool farm_available();
 // Whether this process is a worker of such a farm (rank > 0), before MPI is set up:
 // workers read the inputs but report nothing and write nothing.
 bool farm_worker();
-// Whether this worker has begun its parts. Before that, an error (a bad input) is one
-// every rank meets the same way, so only rank 0 reports it (Cli::run): N ranks
-// printing one message at once interleaved it ("thermtherm: ...").
+// Whether this worker has begun its parts. Before that, an error (a bad input) is most
+// often one every rank meets the same way, so a worker reports it late and rank 0's is
+// the one seen (Cli::run): N ranks printing one message at once interleaved it
+// ("thermtherm: ...").
 bool farm_worker_working();
 // This process's rank under the launcher (0 when not farm_available()).
 int farm_rank();

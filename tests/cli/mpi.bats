@@ -104,6 +104,18 @@ mpi_trace() {
     [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
     [ "$(printf '%s\n' "$stderr" | grep -c '^therm: ')" = 1 ] || fail "$stderr"
     [ ! -e out.tmp ]
+    # An error of one worker alone (a file its node lacks: rank 1 is given a bad .mat
+    # here) is still reported, by that rank, after its short wait.
+    run --separate-stderr timeout 60 "$SIGCHAIN_MPIEXEC" --oversubscribe -np 2 sh -c '
+        mat=$1; [ "$OMPI_COMM_WORLD_RANK" = 1 ] && mat=$2
+        exec "$3/therm" -q "$4/box_on_plane.shd" "$4/weather_30_Sep_95.wth" "$mat" \
+            "$4/box_on_plane.gdb" "$4/hawkeye.snd" -o out.tmp' sh \
+        "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$DATA/missing_wood.mat" \
+        "$SIGCHAIN_BIN" "$SEED"
+    [ "$status" -ne 0 ] && [ "$status" -ne 124 ] || fail "status $status"
+    [[ "$stderr" == *"therm: rank 1: "*"material 37 is not in "*"missing_wood.mat"* ]] ||
+        fail "$stderr"
+    [ ! -e out.tmp ]
 }
 
 @test "therm under mpirun -np 3: the .tmp is byte for byte the one-process .tmp" {
