@@ -26,7 +26,13 @@ test: build
 man: deps configure
 	cmake --build $(BUILD) --target man
 
-install: build
+# Installs what is built and builds only what is installed: the tools and their man
+# pages (CMake's target `tools`: no test, no benchmark), then CMake's install rules
+# (tools, pages, sigchain-config, scene.mk, the reference data). It runs no package
+# manager: the Debian packages must be there already (`make deps`, i.e.
+# scripts/install-deps), as a package build or an unprivileged user expects.
+install: configure
+	cmake --build $(BUILD) -j $(JOBS) --target tools
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # The main job: the Olinda scene against the real Landsat-7 image, then the sample

@@ -1,10 +1,11 @@
 #!/usr/bin/env bats
-# Tests: make install (CMakeLists.txt), sigchain-config, the scene Makefiles' SCENE_MK
+# Tests: make install (Makefile, CMakeLists.txt), sigchain-config, the scene Makefiles' SCENE_MK
 # Also requires: pipelines/scene.mk, data/scenes/training, lib/core/data_dir.cpp
 #
 # The build is installed once into a scratch prefix (setup_file); a copy of the
 # training scene outside the repository then runs with only that prefix's bin on
-# PATH, as after `make install PREFIX=...`.
+# PATH, as after `make install PREFIX=...`. `make install` itself is checked by a dry run
+# (it must build the tools and pages only and run no package manager).
 
 bats_require_minimum_version 1.5.0
 load test_helper
@@ -102,4 +103,55 @@ $(sed -n 's/^project(sigchain VERSION \([0-9.]*\).*/\1/p' "$SIGCHAIN_SOURCE_DIR/
     rmdir p/share/sigchain/data
     run -0 env -u SIGCHAIN_DATA p/bin/build_radiance -q "$SEED/flyover.cdk" "$snd" -o 'x-%d.rad'
     [ -s x-3.rad ]
+}
+
+@test "make install: builds only the tools and their pages and runs no package manager (dry run)" {
+    local build
+    build=$(cd "$SIGCHAIN_BIN/.." && pwd)
+    run -0 --separate-stderr make -n --no-print-directory -C "$SIGCHAIN_SOURCE_DIR" install \
+        BUILD="$build" PREFIX="$BATS_TEST_TMPDIR/p" JOBS=2
+    refute_output --regexp 'install-deps|apt-get|apt |dpkg|sudo'
+    # Every command is the build of the target `tools` or the installation.
+    local line
+    for line in "${lines[@]}"; do
+        case "$line" in
+            "cmake --build $build -j 2 --target tools" | "cmake --install $build --prefix $BATS_TEST_TMPDIR/p") ;;
+            *) fail "make install would run: $line" ;;
+        esac
+    done
+    assert_line "cmake --build $build -j 2 --target tools"
+    assert_line "cmake --install $build --prefix $BATS_TEST_TMPDIR/p"
+}
+
+@test "make install: the target tools builds no test and no benchmark" {
+    # What `tools` depends on, transitively, from the Makefile generator's target graph.
+    local graph="$SIGCHAIN_BIN/../CMakeFiles/Makefile2"
+    [ -f "$graph" ] || skip "not a Makefile build"
+    run -0 awk '/^[^ \t#][^:]*\.dir\/all: [^ ]*\.dir\/all$/ { sub(/:$/, "", $1); dep[$1] = dep[$1] " " $2 }
+        END { q[1] = "CMakeFiles/tools.dir/all"; n = 1; seen[q[1]] = 1
+            for (i = 1; i <= n; i++) { k = split(dep[q[i]], d, " ")
+                for (j = 1; j <= k; j++) if (!(d[j] in seen)) { seen[d[j]] = 1; q[++n] = d[j] } }
+            for (i = 1; i <= n; i++) print q[i] }' "$graph"
+    assert_line "CMakeFiles/trace.dir/all"
+    assert_line "CMakeFiles/man.dir/all"
+    refute_output --regexp '(^|/)(tests|bench)/|unit_|bench_|fuzz|cycles_export'
+}
+
+@test "make install: the installed tree holds no test or benchmark program" {
+    local p="$BATS_FILE_TMPDIR/prefix" f name
+    # Every program in bin is a tool with its section-1 page; every other binary is a
+    # module in lib/sigchain.
+    for f in "$p"/bin/*; do
+        name=${f##*/}
+        [ -f "$p/share/man/man1/$name.1" ] || fail "bin/$name has no man page: not a tool"
+    done
+    while IFS= read -r f; do
+        case "$f" in
+            "$p"/bin/* | "$p"/lib/sigchain/*.so) ;;
+            *) fail "an executable outside bin and lib/sigchain: ${f#"$p"/}" ;;
+        esac
+    done < <(find "$p" -type f -perm -u+x)
+    [ -z "$(find "$p" \( -name 'unit_*' -o -name 'bench_*' -o -name 'fuzz_*' \
+        -o -name cycles_export -o -name '*.bats' -o -name '*_test' \) -print)" ] ||
+        fail "test or benchmark files installed"
 }
