@@ -28,10 +28,11 @@ outside() {
     run -1 grep -q 'install failed' "$BATS_FILE_TMPDIR/install.log"
     local p="$BATS_FILE_TMPDIR/prefix" f
     for f in bin/control7 bin/build_radiance bin/find_min_max_view_angle bin/trace bin/therm \
-        bin/sensorize bin/compare bin/sigchain-check bin/sigchain-config; do
+        bin/sensorize bin/compare bin/sigchain-check bin/sigchain-config bin/sigchain-atmosphere; do
         [ -x "$p/$f" ] || fail "$f is not installed"
     done
-    for f in share/man/man1/trace.1 share/man/man5/snd.5 share/man/man7/sigchain.7 \
+    for f in share/man/man1/trace.1 share/man/man1/sigchain-atmosphere.1 share/man/man5/snd.5 \
+        share/man/man7/sigchain.7 \
         share/sigchain/pipelines/scene.mk lib/sigchain/sigchain_oiio.so \
         share/sigchain/data/atmosphere/solar_lowtran7_extraterrestrial.txt \
         share/sigchain/data/atmosphere/lowtran7/aerosol_rural.txt; do
@@ -87,6 +88,16 @@ $(sed -n 's/^project(sigchain VERSION \([0-9.]*\).*/\1/p' "$SIGCHAIN_SOURCE_DIR/
     run -0 env -u SIGCHAIN_SOURCE_DIR PATH=/usr/bin:/bin make -C training help \
         SCENE_MK="$SIGCHAIN_SOURCE_DIR/pipelines/scene.mk"
     assert_output --partial 'SIGCHAIN_BIN'
+}
+
+@test "install: sigchain-atmosphere runs the build_radiance installed beside it" {
+    # Only the installed bin on PATH: the stand-in LOWTRAN 7's TAPE7s become the tables.
+    outside "$BATS_FILE_TMPDIR/prefix/bin/sigchain-atmosphere" -q \
+        --program "$SIGCHAIN_SOURCE_DIR/tests/data/tape7/fake_lowtran7" \
+        --sky-zenith-step 45 --sky-azimuth-step 90 "$SIGCHAIN_SOURCE_DIR/tests/golden/control7/hawkeye.cdk" \
+        "$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance/small.snd" -o 'x-%d.rad'
+    assert_success
+    grep -q '^SIGCHAIN_RAD 1$' x-2.rad
 }
 
 @test "install: an installed tool reads the data installed beside it" {

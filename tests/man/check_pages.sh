@@ -17,7 +17,7 @@ for page in "$src"/man/*.scd; do
 done
 for tool in control7 build_radiance therm find_min_max_view_angle trace sensorize compare \
             hawkeye_scene olinda_scene soho_scene merge_tiles landsat_scene \
-            sigchain-check landsat_sensor; do
+            sigchain-check landsat_sensor sigchain-config sigchain-atmosphere; do
     [ -f "$src/man/$tool.1.scd" ] || { echo "FAIL: no man page for tool $tool"; fail=1; }
 done
 for fmt in adv snd rsd cdk wth rad mat ems sen ext gdb odb shd tmp cpt brdf t7m trj unc mtl rsr; do
