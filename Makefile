@@ -4,7 +4,8 @@ PREFIX  ?= /usr/local
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test man install demo fuzz bench chart validate counts clean
+.PHONY: all deps configure build test man install demo fuzz bench performance chart validate \
+	counts clean
 
 all: build
 
@@ -48,6 +49,15 @@ fuzz: deps
 
 bench: build
 	@for b in $(BUILD)/bench/bench_*; do [ -x "$$b" ] && "$$b"; done
+
+# docs/performance.md, every figure from a run of the benchmarks it quotes
+# (scripts/performance fills bench/performance.md.in; about 3 minutes on 2 cores).
+# LOWTRAN7_F=FILE (a LOWTRAN 7 Fortran source of the user's) adds LOWTRAN 7 side by side.
+PERF_TARGETS = tools bench_parsers bench_view_angle bench_sensor_compare bench_rt bench_mtf \
+	bench_trace bench_build_radiance
+performance: configure
+	cmake --build $(BUILD) -j $(JOBS) --target $(PERF_TARGETS)
+	@scripts/performance $(BUILD)
 
 # Speed versus accuracy of trace's sampling strategies on the demo scenes: chart,
 # table and error map into BUILD/chart/ (CHART_OUT=docs/chart refreshes the committed
