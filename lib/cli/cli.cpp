@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/farm.hpp"
 #include "core/output.hpp"
+#include "sigchain/libraries.hpp"
 #include "sigchain/version.hpp"
 
 namespace sigchain::cli {
@@ -339,7 +340,7 @@ int Cli::run(int argc, char** argv,
         int verbosity = vm.count("quiet") ? -1 : (vm.count("verbose") ? 1 : 0);
         if (vm.count("version")) {
             std::cout << tool << " (sigchain) " << kVersion << '\n';
-            if (verbosity > 0) std::cout << "Boost " << BOOST_LIB_VERSION << '\n';
+            if (verbosity > 0) std::cout << "built with:\n" << kLibraryVersions;
             return 0;
         }
         // Temporaries of the run are removed on SIGTERM, SIGINT and SIGHUP (exit 128 + N).

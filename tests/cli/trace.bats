@@ -1,5 +1,5 @@
 # Tests: trace
-# Also requires: sigchain-check compare
+# Also requires: sigchain-check compare sensorize pkg-config
 #
 # trace on a tiny scene: tests/data/trace/box.adv (16 x 16 pixels, 4 samples per
 # pixel) looking at tests/data/white1996/box_on_plane.gdb, two hand-written sigchain .rad
@@ -29,6 +29,20 @@ band_bytes() {
         "$SIGCHAIN_SOURCE_DIR/CMakeLists.txt")
     run -0 --separate-stderr trace --version
     assert_output "trace (sigchain) $version"
+}
+
+@test "--version -v lists the libraries the tools were built with, as pkg-config knows them" {
+    run -0 --separate-stderr sensorize --version -v
+    assert_line --index 0 "sensorize (sigchain) $(trace --version | cut -d' ' -f3)"
+    assert_line --index 1 "built with:"
+    for lib in Embree GDAL OpenImageIO GeographicLib Assimp FFTW3 oneTBB Boost; do
+        assert_line --regexp "^$lib [0-9]+\.[0-9]+"
+    done
+    assert_line --regexp "^(Open MPI [0-9]|MPI [0-9.]+ \(the standard's version\)|MPI: not built)"
+    # The versions are the installed packages' own.
+    assert_line "GDAL $(pkg-config --modversion gdal)"
+    assert_line "FFTW3 $(pkg-config --modversion fftw3)"
+    assert_line "GeographicLib $(pkg-config --modversion geographiclib)"
 }
 
 @test "trace renders the box scene as the golden ENVI cube" {
