@@ -5,6 +5,7 @@
 #include <ogr_spatialref.h>
 
 #include <GeographicLib/LocalCartesian.hpp>
+#include <GeographicLib/UTMUPS.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +49,18 @@ Crs wgs84_lon_lat() {
     OGRSpatialReference srs;
     srs.importFromEPSG(4326);
     return Crs::from_ogr(&srs);
+}
+
+std::string utm_epsg(double latitude_deg, double longitude_deg, const SourceLocation& where) {
+    if (!(latitude_deg >= -90 && latitude_deg <= 90) || !std::isfinite(longitude_deg))
+        throw DataError(where, "latitude " + std::to_string(latitude_deg) +
+                                   " deg: no UTM or UPS zone (latitude in [-90, 90])");
+    const int zone = GeographicLib::UTMUPS::StandardZone(latitude_deg, longitude_deg);
+    const bool north = latitude_deg >= 0;
+    // EPSG's WGS84 / UTM zone codes: 32601-32660 north, 32701-32760 south; UPS 32661/32761.
+    const int code = zone == GeographicLib::UTMUPS::UPS ? (north ? 32661 : 32761)
+                                                        : (north ? 32600 : 32700) + zone;
+    return "EPSG:" + std::to_string(code);
 }
 
 struct MapProjector::Impl {

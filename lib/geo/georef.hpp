@@ -30,6 +30,13 @@ Crs raster_crs(const std::string& path);
 // WGS84 longitude/latitude (EPSG:4326 with x = longitude), GDAL's geolocation SRS.
 Crs wgs84_lon_lat();
 
+// The map CRS a GIS user expects for a point with no other: the WGS84 UTM zone of
+// GeographicLib's UTMUPS::StandardZone (Norway's and Svalbard's exceptions included),
+// "EPSG:326NN" north of the equator and "EPSG:327NN" south, or WGS84 UPS north
+// ("EPSG:32661", latitude >= 84 deg) and south ("EPSG:32761", below -80 deg). Throws
+// DataError (at `where`) for a latitude outside [-90, 90].
+std::string utm_epsg(double latitude_deg, double longitude_deg, const SourceLocation& where);
+
 // Scene frame (east, north, up about a geodetic origin, metres) -> a map CRS.
 class MapProjector {
 public:

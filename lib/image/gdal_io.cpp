@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
+#include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 
@@ -110,8 +111,9 @@ void read_units(GDALDataset& ds, Image& image) {
         image.units = ds.GetRasterBand(1)->GetUnitType();
 }
 
-// The CRS and geotransform, and the geolocation arrays' file (cube(5), Georeferencing).
-void read_georeference(GDALDataset& ds, Image& image) {
+// The CRS and geotransform, the geolocation arrays' file (found as find_geolocation
+// says) and the ground control points (cube(5), Georeferencing).
+void read_georeference(GDALDataset& ds, Image& image, const std::string& path) {
     std::array<double, 6> gt{};
     const char* wkt = ds.GetProjectionRef();
     if (ds.GetGeoTransform(gt.data()) == CE_None && wkt && *wkt) {
@@ -119,9 +121,13 @@ void read_georeference(GDALDataset& ds, Image& image) {
         image.georef.crs_wkt = wkt;
     }
     if (const char* x = ds.GetMetadataItem("X_DATASET", "GEOLOCATION"))
-        image.georef.geolocation_path = x;
+        image.georef.geolocation_path = find_geolocation(x, path);
     else if (const char* e = ds.GetMetadataItem("sigchain_geolocation", "ENVI"))
-        image.georef.geolocation_path = e;
+        image.georef.geolocation_path = find_geolocation(e, path);
+    const GDAL_GCP* gcps = ds.GetGCPs();
+    for (int i = 0; gcps && i < ds.GetGCPCount(); ++i)
+        image.georef.gcps.push_back(
+            {gcps[i].dfGCPPixel, gcps[i].dfGCPLine, gcps[i].dfGCPX, gcps[i].dfGCPY});
 }
 
 // An ENVI data file holds exactly what its header describes: header offset + rows x
@@ -181,7 +187,7 @@ Image read_gdal(const std::string& path) {
     }
     read_wavelengths(*ds, path, image);
     read_units(*ds, image);
-    read_georeference(*ds, image);
+    read_georeference(*ds, image, path);
     return image;
 }
 

@@ -4,6 +4,8 @@
 #include <cpl_error.h>
 #include <cpl_string.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -77,7 +79,20 @@ void GdalOutput::write_band(int band, GDALDataType type, const void* data) {
     m_written.push_back({band, type, data});
 }
 
-void GdalOutput::commit() {
+void GdalOutput::commit() { commit_moves(finish()); }
+
+std::vector<Move> GdalOutput::finish() {
+    // What was set in the ENVI header domain: GDAL 3.6 writes a header past its first
+    // 4 KiB with no error when the disk is full, so the header is read back too.
+    std::vector<std::pair<std::string, std::string>> header;
+    if (char** items = m_ds->GetMetadata("ENVI"))
+        for (char** i = items; *i; ++i) {
+            char* key = nullptr;
+            const char* value = CPLParseNameValue(*i, &key);
+            if (key && value) header.emplace_back(key, value);
+            CPLFree(key);
+        }
+    const int gcps = m_ds->GetGCPCount();
     CPLErrorReset();
     errno = 0;
     m_ds.reset();  // GDALClose: flushes the data and writes an ENVI header
@@ -103,13 +118,27 @@ void GdalOutput::commit() {
             throw IoError(m_target + ": write error: band " + std::to_string(w.band) +
                           " did not reach the disk as written (a full disk?)");
     }
+    const auto squeeze = [](std::string s) {
+        s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }),
+                s.end());
+        return s;
+    };
+    for (const auto& [key, value] : header) {
+        const char* read = back->GetMetadataItem(key.c_str(), "ENVI");
+        if (!read || squeeze(read) != squeeze(value))
+            throw IoError(m_target + ": write error: the header's " + key +
+                          " did not reach the disk as written (a full disk?)");
+    }
+    if (gcps > 0 && back->GetGCPCount() != gcps)
+        throw IoError(m_target + ": write error: the ground control points did not reach the "
+                                 "disk as written (a full disk?)");
     back.reset();
     std::vector<Move> moves{{m_temp, m_target}};
     for (const std::string& f : m_files)
         if (f != m_temp && file_extension(f) == "hdr")
             moves.push_back(
                 {f, std::filesystem::path(m_target).replace_extension(".hdr").string()});
-    commit_moves(moves);
+    return moves;
 }
 
 }  // namespace sigchain::image

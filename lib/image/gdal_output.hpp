@@ -37,6 +37,9 @@ public:
     // Closes, verifies and renames. An ENVI header written beside the data file goes
     // last under the target's name with .hdr (commit_moves: it makes the pair readable).
     void commit();
+    // Closes and verifies as commit() does, and returns the renames that commit it,
+    // for commit_moves with other outputs' (one output made of several files).
+    std::vector<Move> finish();
 
 private:
     struct Written {

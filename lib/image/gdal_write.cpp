@@ -17,6 +17,7 @@
 #include "geo/crs.hpp"
 #include "geo/georef.hpp"
 #include "image/gdal_output.hpp"
+#include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
 #include "sigchain/version.hpp"
@@ -96,10 +97,34 @@ void set_georeference(GDALDataset& ds, const Image& image, CubeFormat format,
             ds.SetProjection(g.crs_wkt.c_str()) != CE_None)
             throw IoError(path + ": cannot write the georeferencing: " + gdal_message());
     }
+    if (!g.gcps.empty() && format == CubeFormat::Envi) {
+        // GDAL's ENVI driver writes only 4 of a list of GCPs: the header's "geo points"
+        // (ENVI's 1-based pixel, line, latitude, longitude), all of them, which it reads.
+        std::string points = "{";
+        for (std::size_t i = 0; i < g.gcps.size(); ++i) {
+            const GroundControlPoint& p = g.gcps[i];
+            char item[128];
+            std::snprintf(item, sizeof item, "%s%.4f, %.4f, %.9f, %.9f", i ? ",\n " : "\n ",
+                          p.pixel + 1, p.line + 1, p.latitude_deg, p.longitude_deg);
+            points += item;
+        }
+        ds.SetMetadataItem("geo_points", (points + "}").c_str(), "ENVI");
+    } else if (!g.gcps.empty()) {
+        std::vector<GDAL_GCP> gcps(g.gcps.size());
+        std::vector<std::string> ids(g.gcps.size());
+        for (std::size_t i = 0; i < gcps.size(); ++i) {
+            ids[i] = std::to_string(i + 1);
+            gcps[i] = {const_cast<char*>(ids[i].c_str()), const_cast<char*>(""), g.gcps[i].pixel,
+                       g.gcps[i].line, g.gcps[i].longitude_deg, g.gcps[i].latitude_deg, 0.0};
+        }
+        const geo::Crs wgs84 = geo::wgs84_lon_lat();
+        if (ds.SetGCPs(static_cast<int>(gcps.size()), gcps.data(), wgs84.ogr()) != CE_None)
+            throw IoError(path + ": cannot write the ground control points: " + gdal_message());
+    }
     if (g.geolocation_path.empty()) return;
-    // GDAL 3.6 opens X_DATASET relative to the working directory, not to this file:
-    // the arrays are named by their absolute path.
-    const std::string arrays = std::filesystem::absolute(g.geolocation_path).lexically_normal();
+    // As given: GDAL (3.6) opens X_DATASET relative to the working directory, where the
+    // render was run; an absolute name would break as soon as the pair is moved.
+    const std::string& arrays = g.geolocation_path;
     if (format == CubeFormat::Envi) {
         ds.SetMetadataItem("sigchain_geolocation", arrays.c_str(), "ENVI");
         return;
@@ -181,7 +206,18 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
     set_georeference(out.dataset(), image, format, path);
     for (int c = 0; c < image.channels; ++c)
         out.write_band(c + 1, GDT_Float32, image.data.data() + c * image.plane_size());
-    out.commit();
+    if (!image.georef.arrays) {
+        out.commit();
+        return;
+    }
+    // The geolocation arrays and the image as one output: the arrays renamed first, the
+    // image (and its ENVI header, which names them) last.
+    std::unique_ptr<GdalOutput> arrays =
+        stage_geolocation(image.georef.geolocation_path, *image.georef.arrays);
+    std::vector<Move> image_moves = out.finish();
+    std::vector<Move> moves = arrays->finish();
+    moves.insert(moves.end(), image_moves.begin(), image_moves.end());
+    commit_moves(moves);
 }
 
 }  // namespace
@@ -189,55 +225,6 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
 void write_cube(const std::string& path, const Image& cube, CubeFormat format,
                 const WriteOptions& options) {
     write_gdal(path, cube, GDT_Float32, format, options);
-}
-
-std::string geolocation_name(const std::string& output_path) {
-    return std::filesystem::path(output_path).replace_extension(".geoloc.tif").string();
-}
-
-void write_geolocation(const std::string& path, long rows, long columns,
-                       const std::vector<double>& x, const std::vector<double>& y,
-                       const std::string& srs_wkt, double nodata) {
-    gdal_init();
-    const std::size_t n = static_cast<std::size_t>(rows) * columns;
-    if (rows < 1 || columns < 1 || x.size() != n || y.size() != n)
-        throw DataError({path, 0}, "geolocation arrays do not match the image's size");
-    CPLStringList co;
-    co.SetNameValue("INTERLEAVE", "BAND");
-    GdalOutput out(path, "GTiff", columns, rows, 2, GDT_Float64, co.List());
-    // The arrays' own SRS: GDAL's SRC_GEOLOC_ARRAY transformer option reads it.
-    out.dataset().SetProjection(srs_wkt.c_str());
-    const std::vector<double>* planes[2] = {&x, &y};
-    const char* names[2] = {"x (longitude)", "y (latitude)"};
-    for (int b = 0; b < 2; ++b) {
-        GDALRasterBand* band = out.dataset().GetRasterBand(b + 1);
-        band->SetDescription(names[b]);
-        band->SetNoDataValue(nodata);
-        out.write_band(b + 1, GDT_Float64, planes[b]->data());
-    }
-    out.commit();
-}
-
-void copy_geolocation(const std::string& from, const std::string& path) {
-    gdal_init();
-    std::unique_ptr<GDALDataset> src(static_cast<GDALDataset*>(
-        GDALOpenEx(from.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
-    if (!src || src->GetRasterCount() != 2)
-        throw DataError({from, 0}, "not a geolocation array file (2 bands): " + gdal_message());
-    const long rows = src->GetRasterYSize(), columns = src->GetRasterXSize();
-    const std::size_t n = static_cast<std::size_t>(rows) * columns;
-    std::vector<double> planes[2] = {std::vector<double>(n), std::vector<double>(n)};
-    for (int b = 0; b < 2; ++b)
-        if (src->GetRasterBand(b + 1)->RasterIO(GF_Read, 0, 0, static_cast<int>(columns),
-                                                static_cast<int>(rows), planes[b].data(),
-                                                static_cast<int>(columns), static_cast<int>(rows),
-                                                GDT_Float64, 0, 0, nullptr) != CE_None)
-            throw IoError(from + ": read error: " + gdal_message());
-    int has_nodata = 0;
-    const double nodata = src->GetRasterBand(1)->GetNoDataValue(&has_nodata);
-    const char* wkt = src->GetProjectionRef();
-    write_geolocation(path, rows, columns, planes[0], planes[1], wkt ? wkt : "",
-                      has_nodata ? nodata : kGeolocationNodata);
 }
 
 namespace detail {

@@ -8,12 +8,22 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sigchain::image {
+
+// A ground control point: an image position (pixel units from the top-left corner of
+// the top-left pixel, GDAL's convention) and its WGS84 longitude and latitude (deg).
+struct GroundControlPoint {
+    double pixel = 0, line = 0;
+    double longitude_deg = 0, latitude_deg = 0;
+};
+
+struct GeolocationArrays;  // geolocation.hpp
 
 // Where an image's pixels lie on the Earth (cube(5), Georeferencing); all empty for an
 // image that is not geo-placed, which is then written exactly as before.
@@ -24,8 +34,16 @@ struct Georeference {
     std::optional<std::array<double, 6>> geotransform;
     // The geolocation arrays' GeoTIFF (write_geolocation), named in the GDAL GEOLOCATION
     // metadata domain (ENVI: the header's `sigchain geolocation`); "" for none.
+    // A path as given (relative to the working directory, as GDAL resolves it).
     std::string geolocation_path;
-    bool empty() const { return !geotransform && geolocation_path.empty(); }
+    // The arrays to write at geolocation_path with the image, committed as one output
+    // with it (a failed write leaves neither); null when they are on disk already.
+    std::shared_ptr<const GeolocationArrays> arrays;
+    // With geolocation arrays: a lattice of them as ground control points (at most
+    // 17 x 17, pixel centres, WGS84 longitude and latitude), which place the image
+    // wherever it is moved (GDAL GCPs: GeoTIFF tie points, ENVI `geo points`).
+    std::vector<GroundControlPoint> gcps;
+    bool empty() const { return !geotransform && geolocation_path.empty() && gcps.empty(); }
 };
 
 struct Image {
@@ -112,20 +130,6 @@ void write_counts(const std::string& path, const Image& counts, int bits,
 // Writes float32 channels (unquantised band radiance, error maps) as a GeoTIFF through
 // GDAL (as write_counts), atomically.
 void write_float(const std::string& path, const Image& image, const WriteOptions& options = {});
-
-// Per-pixel geolocation arrays (GDAL's GEOLOCATION layout, cube(5)): a float64 GeoTIFF
-// of 2 bands, band 1 x (longitude) and band 2 y (latitude) in `srs_wkt`'s units at each
-// pixel's centre, `nodata` where the pixel's ray meets no ground; row-major `x` and `y`
-// of rows * columns values. Written atomically.
-void write_geolocation(const std::string& path, long rows, long columns,
-                       const std::vector<double>& x, const std::vector<double>& y,
-                       const std::string& srs_wkt, double nodata);
-// Copies geolocation arrays (a file write_geolocation made) to `path`, atomically.
-void copy_geolocation(const std::string& from, const std::string& path);
-// The geolocation arrays' name beside an output: NAME.geoloc.tif for NAME.EXT.
-std::string geolocation_name(const std::string& output_path);
-// The no-data value of the geolocation arrays (cube(5)).
-inline constexpr double kGeolocationNodata = -999999.0;
 
 // The channels of a true-colour preview, {red, green, blue}: of the bands whose centre
 // wavelength lies in the visible 0.38-0.78 um, red the longest, blue the shortest,

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "core/error.hpp"
 #include "core/output.hpp"
+#include "image/geolocation.hpp"
 
 namespace sigchain::image {
 
@@ -84,15 +86,58 @@ void check_cover(std::vector<Part>& parts) {
                             " are missing: no part holds them");
 }
 
-// Each part's planes into the whole image, band by band.
-Image join(const std::vector<Part>& parts) {
+// The georeferencing of the whole from its parts' (cube(5), Georeferencing): the first
+// part's CRS and geotransform (trace fits it to the whole image; each later part's is
+// it moved to its first row), or the parts' geolocation arrays joined into
+// `arrays_path` with their lattice of ground control points; none when no part has any.
+Georeference join_georeference(const std::vector<Part>& parts, const std::vector<Georeference>& of,
+                               long rows, long columns, const std::string& arrays_path) {
+    const Georeference& first = of.front();
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+        const Georeference& g = of[i];
+        const bool same_kind = g.geotransform.has_value() == first.geotransform.has_value() &&
+                               g.geolocation_path.empty() == first.geolocation_path.empty();
+        if (!same_kind || g.crs_wkt != first.crs_wkt)
+            throw DataError({parts[i].path, 0}, "its georeferencing is not of the same kind or "
+                                                "CRS as " + parts.front().path + "'s");
+    }
+    if (first.geolocation_path.empty()) {
+        Georeference g = first;
+        g.gcps.clear();
+        return g;
+    }
+    GeolocationArrays whole;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        GeolocationArrays a = read_geolocation(of[i].geolocation_path);
+        if (a.columns != columns || a.rows != parts[i].rows.end - parts[i].rows.begin)
+            throw DataError({of[i].geolocation_path, 0},
+                            "the geolocation arrays of " + parts[i].path +
+                                " do not match its rows and columns");
+        if (i == 0) {
+            whole = a;
+            whole.rows = rows;
+            whole.x.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
+            whole.y.resize(whole.x.size());
+        }
+        const auto at = static_cast<std::ptrdiff_t>(parts[i].rows.begin * columns);
+        std::copy(a.x.begin(), a.x.end(), whole.x.begin() + at);
+        std::copy(a.y.begin(), a.y.end(), whole.y.begin() + at);
+    }
+    Georeference g;
+    g.geolocation_path = arrays_path;
+    g.gcps = gcp_lattice(whole);
+    g.arrays = std::make_shared<const GeolocationArrays>(std::move(whole));
+    return g;
+}
+
+// Each part's planes into the whole image, band by band, and the whole's georeferencing
+// (its geolocation arrays written to `arrays_path`).
+Image join(const std::vector<Part>& parts, const std::string& arrays_path) {
     Image whole;
+    std::vector<Georeference> georefs;
     for (const Part& p : parts) {
         Image part = read_image(p.path);
-        if (!part.georef.empty())
-            throw DataError({p.path, 0}, "a geo-placed part cannot be merged (its map grid is "
-                                         "fitted to its own rows): render the scene whole, "
-                                         "or under mpirun (trace(1))");
+        georefs.push_back(part.georef);
         if (part.rows != p.rows.end - p.rows.begin)
             throw DataError({p.path, 0}, "records rows " + part_rows_text(p.rows) + " but holds " +
                                              std::to_string(part.rows) + " rows");
@@ -117,6 +162,7 @@ Image join(const std::vector<Part>& parts) {
                         whole.data.begin() + static_cast<std::ptrdiff_t>(
                                                  (c * whole.rows + p.rows.begin) * whole.columns));
     }
+    whole.georef = join_georeference(parts, georefs, whole.rows, whole.columns, arrays_path);
     return whole;
 }
 
@@ -166,7 +212,7 @@ MergeReport run_merge(const MergeJob& job, const Reporter& reporter) {
     for (const std::string& path : job.part_paths) parts.push_back(read_part(path));
     for (const Part& p : parts) check_same_render(parts.front(), p);
     check_cover(parts);
-    Image whole = join(parts);
+    Image whole = join(parts, geolocation_name(job.output_path));
     const Provenance& first = parts.front().provenance;
     WriteOptions options = job.write_options;
     const std::string tool = first.command.substr(0, first.command.find(' '));

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/text.hpp"
+#include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "io/sen.hpp"
 #include "sensor/count_uncertainty.hpp"
@@ -133,15 +134,16 @@ namespace {
 
 // The cube's georeferencing on a GeoTIFF output (cube(5), Georeferencing): the CRS and
 // geotransform as they are (the image grid is the cube's); geolocation arrays copied
-// beside the output (NAME.geoloc.tif), which then names its own copy. PNG and Netpbm
-// outputs carry none.
+// beside the output (NAME.geoloc.tif, committed with it), which then names its own copy, and the ground
+// control points as they are. PNG and Netpbm outputs carry none.
 void carry_georeference(const SensorizeJob& job, const image::Image& cube, image::Image& out) {
     const std::string ext = file_extension(job.output_path);
     if (ext != "tif" && ext != "tiff") return;
     out.georef = cube.georef;
     if (cube.georef.geolocation_path.empty()) return;
     out.georef.geolocation_path = image::geolocation_name(job.output_path);
-    image::copy_geolocation(cube.georef.geolocation_path, out.georef.geolocation_path);
+    out.georef.arrays = std::make_shared<const image::GeolocationArrays>(
+        image::read_geolocation(cube.georef.geolocation_path));
 }
 
 // The counts' (or with --float the band radiance's) standard uncertainty, one float
@@ -153,8 +155,9 @@ void write_uncertainty(const SensorizeJob& job, const image::Image& out,
     u.channel_names = out.channel_names;
     u.wavelength_um = out.wavelength_um;
     u.fwhm_um = out.fwhm_um;
-    u.georef = out.georef;
+    u.georef = out.georef;  // the ground control points place it; no arrays of its own
     u.georef.geolocation_path.clear();
+    u.georef.arrays.reset();
     for (std::size_t b = 0; b < sigma.size(); ++b)
         std::copy(sigma[b].begin(), sigma[b].end(), u.data.begin() + b * u.plane_size());
     image::write_float(job.uncertainty_output_path, u, job.write_options);

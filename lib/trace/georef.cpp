@@ -4,6 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+
+#include "image/geolocation.hpp"
+#include "scene/load.hpp"
 
 namespace sigchain::trace {
 
@@ -22,6 +26,28 @@ geo::Vec3 metres(const geo::Vec3& p, double meters_per_unit) {
 }
 
 }  // namespace
+
+std::optional<GeoPlacement> geo_placement(const std::string& crs_option,
+                                          const std::string& scene_path, const geo::LatLon& origin,
+                                          double meters_per_unit, const std::string& snd_path,
+                                          std::string& note) {
+    note.clear();
+    if (crs_option == "none") return std::nullopt;
+    geo::Crs crs = crs_option.empty() ? scene::terrain_crs(scene_path)
+                                      : geo::crs_from_user(crs_option);
+    if (crs.empty()) {
+        const std::string utm =
+            geo::utm_epsg(origin.latitude_deg, origin.longitude_deg, {snd_path, 0});
+        crs = geo::crs_from_user(utm);
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "map CRS %s, the UTM zone of the .snd's latitude %.6g and longitude %.6g: "
+                      "the scene names none (--crs none: no georeferencing)",
+                      utm.c_str(), origin.latitude_deg, origin.longitude_deg);
+        note = buf;
+    }
+    return GeoPlacement{origin.latitude_deg, origin.longitude_deg, meters_per_unit, crs};
+}
 
 std::optional<geo::GeoTransformFit> fit_map_grid(const Sensor& sensor, const GeoPlacement& place,
                                                  long row_begin, long row_end) {
@@ -70,13 +96,20 @@ std::vector<geo::Vec3> pixel_ground_points(const Sensor& sensor, const scene::Sc
 image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scene& scene,
                                          const GeoPlacement& place,
                                          std::optional<double> plane_height, long row_begin,
-                                         long row_end, const std::string& arrays_path,
-                                         std::string& note) {
+                                         long row_end, long total_rows,
+                                         const std::string& arrays_path, std::string& note) {
     image::Georeference georef;
-    const auto fit = fit_map_grid(sensor, place, row_begin, row_end);
+    // Fitted to the whole image, so that the parts of a render (--rows, --tile) agree
+    // with it and with each other: row_begin 0 gives the whole's geotransform itself.
+    const auto fit = fit_map_grid(sensor, place, 0, total_rows);
     char buf[160];
     if (fit && fit->max_residual_px < kGridAlignmentTolerancePx) {
-        georef.geotransform = fit->geotransform;
+        geo::GeoTransform gt = fit->geotransform;
+        if (row_begin != 0) {
+            gt[0] += static_cast<double>(row_begin) * gt[2];
+            gt[3] += static_cast<double>(row_begin) * gt[5];
+        }
+        georef.geotransform = gt;
         georef.crs_wkt = place.map_crs.wkt2();
         std::snprintf(buf, sizeof buf,
                       "georeferencing: a geotransform (the image grid is within %.2g pixel of "
@@ -88,24 +121,31 @@ image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scen
     const geo::MapProjector map(place.map_crs, place.latitude_deg, place.longitude_deg, 0.0,
                                 {"--crs", 0});
     const auto points = pixel_ground_points(sensor, scene, plane_height, row_begin, row_end);
-    std::vector<double> x(points.size(), image::kGeolocationNodata), y = x;
+    image::GeolocationArrays arrays;
+    arrays.rows = row_end - row_begin;
+    arrays.columns = sensor.columns();
+    arrays.x.assign(points.size(), image::kGeolocationNodata);
+    arrays.y = arrays.x;
+    arrays.srs_wkt = geo::wgs84_lon_lat().wkt();
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(points[i][0])) continue;
         const auto ll = map.lon_lat(metres(points[i], place.meters_per_unit));
-        x[i] = ll[0];
-        y[i] = ll[1];
+        arrays.x[i] = ll[0];
+        arrays.y[i] = ll[1];
     }
-    image::write_geolocation(arrays_path, row_end - row_begin, sensor.columns(), x, y,
-                             geo::wgs84_lon_lat().wkt(), image::kGeolocationNodata);
     georef.geolocation_path = arrays_path;
+    georef.gcps = image::gcp_lattice(arrays);
+    georef.arrays = std::make_shared<const image::GeolocationArrays>(std::move(arrays));
     if (fit)
         std::snprintf(buf, sizeof buf,
-                      "georeferencing: geolocation arrays (the image grid is %.3g pixel off "
-                      "a map grid)",
-                      fit->max_residual_px);
+                      "georeferencing: geolocation arrays and %zu ground control points (the "
+                      "image grid is %.3g pixel off a map grid)",
+                      georef.gcps.size(), fit->max_residual_px);
     else
         std::snprintf(buf, sizeof buf,
-                      "georeferencing: geolocation arrays (the image does not lie on a plane)");
+                      "georeferencing: geolocation arrays and %zu ground control points (the "
+                      "image does not lie on a plane)",
+                      georef.gcps.size());
     note = buf;
     return georef;
 }

@@ -26,6 +26,16 @@ struct GeoPlacement {
     geo::Crs map_crs;
 };
 
+// Where a render lies on the Earth (cube(5), Georeferencing), from trace's --crs
+// (`crs_option`): "none" gives none; "EPSG:N" or a WKT file that CRS; "" the CRS of
+// the scene's DEM (scene::terrain_crs), else the UTM zone of the .snd's point
+// `origin` (geo::utm_epsg), which `note` then names for -v. The frame's origin is
+// `origin` at height 0; `snd_path` names the .snd in errors.
+std::optional<GeoPlacement> geo_placement(const std::string& crs_option,
+                                          const std::string& scene_path, const geo::LatLon& origin,
+                                          double meters_per_unit, const std::string& snd_path,
+                                          std::string& note);
+
 // The largest misfit (pixels) between an image grid projected on the ground and an
 // affine geotransform for which a geotransform is written: a hundredth of a pixel. A
 // thousandth would refuse the Olinda scene, whose grid (10 km wide, 200 km from the UTM
@@ -51,14 +61,17 @@ std::vector<geo::Vec3> pixel_ground_points(const Sensor& sensor, const scene::Sc
                                            std::optional<double> plane_height, long row_begin,
                                            long row_end);
 
-// What trace writes: with a geotransform within kGridAlignmentTolerancePx, the map CRS
-// and that geotransform; otherwise the ground points' WGS84 longitude and latitude
-// written as geolocation arrays to `arrays_path` (kGeolocationNodata where a pixel sees
-// no ground) and named in the result. `note` receives one line for -v.
+// What trace writes for rows [row_begin, row_end) of an image of `total_rows`: when the
+// whole image's grid is within kGridAlignmentTolerancePx of an affine geotransform, the
+// map CRS and that geotransform moved to row_begin (so the parts of a render agree);
+// otherwise the ground points' WGS84 longitude and latitude written as geolocation
+// arrays to `arrays_path` (kGeolocationNodata where a pixel sees no ground), named in
+// the result with a lattice of them as ground control points. `note` receives one
+// line for -v.
 image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scene& scene,
                                          const GeoPlacement& place,
                                          std::optional<double> plane_height, long row_begin,
-                                         long row_end, const std::string& arrays_path,
-                                         std::string& note);
+                                         long row_end, long total_rows,
+                                         const std::string& arrays_path, std::string& note);
 
 }  // namespace sigchain::trace

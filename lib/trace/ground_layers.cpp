@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "image/layers.hpp"
 

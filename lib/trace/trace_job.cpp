@@ -20,6 +20,7 @@
 #include "geo/solar_position.hpp"
 #include "geom/camera.hpp"
 #include "geom/view_angle.hpp"
+#include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "io/adv.hpp"
 #include "io/mat.hpp"
@@ -336,17 +337,6 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     if (s.hits == 0) reporter.warn("no primary ray hit the scene: check the look angles");
 }
 
-// Where the render lies on the Earth (cube(5), Georeferencing): none unless --crs names a
-// CRS or the scene holds a DEM with one.
-std::optional<GeoPlacement> geo_placement(const TraceJob& job, const Setup& st) {
-    if (job.crs == "none") return std::nullopt;
-    geo::Crs crs =
-        job.crs.empty() ? scene::terrain_crs(job.scene_path) : geo::crs_from_user(job.crs);
-    if (crs.empty()) return std::nullopt;
-    return GeoPlacement{st.snd.latitude_deg, st.snd.longitude_east_deg,
-                        io::meters_per_unit(st.adv.units), crs};
-}
-
 // What decides the truth cube's sampling layers (truth_layer_names).
 RenderOptions render_options_layers(const TraceJob& job) {
     RenderOptions o;
@@ -377,6 +367,7 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
     truth.wavelength_um.clear();
     truth.units.clear();
     truth.georef = georef;
+    truth.georef.arrays.reset();  // written with the radiance cube
     truth.sensor_type = type_name;
     image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path), write_options);
 }
@@ -438,7 +429,11 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     reporter.info("sensor: " + camera.summary());
     check_view_angles(camera, atmosphere, reporter);
 
-    const std::optional<GeoPlacement> place = geo_placement(job, st);
+    std::string crs_note;
+    const std::optional<GeoPlacement> place =
+        geo_placement(job.crs, job.scene_path, {st.snd.latitude_deg, st.snd.longitude_east_deg},
+                      io::meters_per_unit(st.adv.units), job.snd_path, crs_note);
+    if (!crs_note.empty()) reporter.info(crs_note);
     const RenderOptions options = render_options(job, st);
     RenderInputs inputs;
     inputs.scene = &scene;
@@ -479,9 +474,19 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     }
     if (place) {
         std::string note;
-        georef = georeference_outputs(camera, scene, *place, plane, st.row_begin, st.row_end,
-                                      image::geolocation_name(job.output_path), note);
-        reporter.info(note);
+        try {
+            georef = georeference_outputs(camera, scene, *place, plane, st.row_begin,
+                                          st.row_end, st.adv.rows,
+                                          image::geolocation_name(job.output_path), note);
+        } catch (const DataError& e) {
+            // A map CRS the user named must hold the image; the default one (the UTM
+            // zone, the DEM's) gives way to a view it cannot hold (a platform 1e9 m up).
+            if (!job.crs.empty()) throw;
+            note.clear();
+            reporter.warn(std::string("not georeferenced: ") + e.what() +
+                          " (--crs names another map CRS)");
+        }
+        if (!note.empty()) reporter.info(note);
     }
     write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, georef,
                   sensor_type(camera), result);

@@ -24,6 +24,27 @@ olinda_rads() {
         -o "olinda-%d.rad"
 }
 
+# target_offset WARP_OPTION TRUTH: orthorectifies the truth cube TRUTH with gdalwarp
+# WARP_OPTION... (-geoloc, -tps) into EPSG:4326; its band 4 is the facet each pixel
+# centre sees (the target is facet 1 of the .gdb), whose centroid must be the target's
+# centre, (10, 10) m east and north of the origin, within one output pixel.
+target_offset() {
+    local truth="${@: -1}" px
+    run -0 gdalwarp -q -overwrite "${@:1:$#-1}" -t_srs EPSG:4326 -r near "$truth" warped.tif
+    run -0 gdal_translate -q -of XYZ -b 4 warped.tif facets.xyz
+    px=$(gdalinfo warped.tif | sed -n 's/^Pixel Size = (\([^,]*\),\(.*\))$/\1 \2/p')
+    run -0 awk -v px="$px" '
+        BEGIN { split(px, p, " "); a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
+            lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
+            N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
+            want_lat = lat0 + 10 / M / r; want_lon = lon0 + 10 / (N * cos(lat0 * r)) / r }
+        $3 == 1 { n++; x += $1; y += $2 }
+        END { dx = (x / n - want_lon) / p[1]; dy = (y / n - want_lat) / p[2]
+            print n " pixels, offset " dx ", " dy " output pixels"
+            exit (n > 4 && dx < 1 && dx > -1 && dy < 1 && dy > -1) ? 0 : 1 }' facets.xyz
+    echo "$output"
+}
+
 # A flat-response .sen of 3 samples (the box bands').
 flat_sen() {
     printf '3\n1000\n0\n1\n1\n1\n' > "$1"
@@ -116,10 +137,10 @@ EOF
     [[ "$stderr" == *"georeferencing: geolocation arrays"* ]]
     [ -f cube.geoloc.tif ]
     run -0 gdalinfo cube.tif
-    assert_output --partial "X_DATASET=$PWD/cube.geoloc.tif"
+    assert_output --partial "X_DATASET=cube.geoloc.tif"
     assert_output --partial "GEOREFERENCING_CONVENTION=PIXEL_CENTER"
     run -0 gdalinfo truth.tif
-    assert_output --partial "Y_DATASET=$PWD/cube.geoloc.tif"
+    assert_output --partial "Y_DATASET=cube.geoloc.tif"
     # The top rows look past the 20 m lawn: with --background none they see no ground.
     run -0 gdalinfo -stats cube.geoloc.tif
     assert_output --partial "NoData Value=-999999"
@@ -128,31 +149,72 @@ EOF
     # Orthorectify the truth layers; band 4 is the facet each pixel centre sees (the
     # target is facet 1 of the .gdb). Its centroid must be the target's centre, (10, 10)
     # m east and north of the origin, within one output pixel.
-    run -0 gdalwarp -q -overwrite -geoloc -t_srs EPSG:4326 -r near truth.tif warped.tif
-    run -0 gdal_translate -q -of XYZ -b 4 warped.tif facets.xyz
-    px=$(gdalinfo warped.tif | sed -n 's/^Pixel Size = (\([^,]*\),\(.*\))$/\1 \2/p')
-    run -0 awk -v px="$px" '
-        BEGIN { split(px, p, " "); a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
-            lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
-            N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
-            want_lat = lat0 + 10 / M / r; want_lon = lon0 + 10 / (N * cos(lat0 * r)) / r }
-        $3 == 1 { n++; x += $1; y += $2 }
-        END { dx = (x / n - want_lon) / p[1]; dy = (y / n - want_lat) / p[2]
-            print n " pixels, offset " dx ", " dy " output pixels"
-            exit (n > 4 && dx < 1 && dx > -1 && dy < 1 && dy > -1) ? 0 : 1 }' facets.xyz
-    echo "$output"
+    target_offset -geoloc truth.tif
     # sensorize copies the arrays beside its counts, which name the copy.
     flat_sen b.sen
     run -0 sensorize -q cube.tif b.sen b.sen -o counts.tif
     run -0 gdalinfo counts.tif
-    assert_output --partial "X_DATASET=$PWD/counts.geoloc.tif"
+    assert_output --partial "X_DATASET=counts.geoloc.tif"
     run -0 cmp <(gdal_translate -q -of XYZ -b 2 cube.geoloc.tif /vsistdout/) \
         <(gdal_translate -q -of XYZ -b 2 counts.geoloc.tif /vsistdout/)
     run -0 gdalwarp -q -overwrite -geoloc -t_srs EPSG:4326 counts.tif counts_warped.tif
     assert_no_temp_files
 }
 
-@test "georef: --crs errors are usage errors; a scene without a DEM is not georeferenced" {
+@test "georef: moved away, a cube lands by its ground control points or SRC_GEOLOC_ARRAY" {
+    tilted_adv
+    mkdir a
+    run -0 trace -q --crs EPSG:32618 --background none tilt.adv "$DATA/box.snd" target.gdb \
+        "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" --truth a/truth.tif -o a/cube.img
+    # Named as given, relative to the working directory (as GDAL 3.6 resolves it).
+    run -0 grep -Fx "sigchain geolocation = a/cube.geoloc.tif" a/cube.hdr
+    run -0 gdalinfo a/truth.tif
+    assert_output --partial "X_DATASET=a/cube.geoloc.tif"
+    # 17 x 17 lattice points less those that see no ground (the top rows see the sky),
+    # in the GeoTIFF with their CRS and in the ENVI header as its "geo points".
+    n=$(gdalinfo a/truth.tif | grep -c '^GCP\[')
+    (( n > 100 && n < 289 )) || fail "$n GCPs"
+    run -0 gdalinfo a/truth.tif
+    assert_output --partial "GCP Projection"
+    [ "$(gdalinfo a/cube.img | grep -c '^GCP\[')" -eq "$n" ]
+    target_offset -geoloc a/truth.tif
+    # Moved, and used from elsewhere: the GCPs alone place it (a thin-plate spline).
+    mv a b && mkdir c && cd c
+    target_offset -tps ../b/truth.tif
+    run -0 gdalwarp -q -overwrite -tps -t_srs EPSG:4326 ../b/cube.img cube_tps.tif
+    # The arrays themselves, named to gdalwarp; sensorize finds them beside the cube.
+    target_offset -geoloc -to SRC_GEOLOC_ARRAY=../b/cube.geoloc.tif ../b/truth.tif
+    flat_sen b.sen
+    run -0 sensorize -q ../b/cube.img b.sen b.sen -o counts.tif
+    run -0 cmp <(gdal_translate -q -of XYZ -b 1 ../b/cube.geoloc.tif /vsistdout/) \
+        <(gdal_translate -q -of XYZ -b 1 counts.geoloc.tif /vsistdout/)
+    [ "$(gdalinfo counts.tif | grep -c '^GCP\[')" -eq "$(gdalinfo ../b/cube.img | grep -c '^GCP\[')" ]
+}
+
+@test "georef: a scene named by its .snd alone is placed in its UTM zone; --crs none is not" {
+    tilted_adv
+    run -0 --separate-stderr trace -v tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o utm.tif
+    [[ "$stderr" == *"map CRS EPSG:32618, the UTM zone of the .snd's latitude 43.0833"* ]]
+    [ -f utm.geoloc.tif ]
+    run -0 gdalinfo utm.tif
+    assert_output --partial "X_DATASET=utm.geoloc.tif"
+    # A nadir view lies on the UTM grid: a CRS and geotransform, WGS 84 / UTM zone 18N.
+    sed -e 's/^56.31 -90 0/90 0 0/' -e 's/^10 -10 30/10 10 30/' tilt.adv > nadir.adv
+    run -0 --separate-stderr trace -v nadir.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o nadir.tif
+    [[ "$stderr" == *"georeferencing: a geotransform"* ]]
+    [ ! -f nadir.geoloc.tif ]
+    run -0 gdalsrsinfo -o epsg nadir.tif
+    assert_output --partial "EPSG:32618"
+    run -0 trace -q --crs none nadir.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o none.tif
+    run -0 gdalinfo none.tif
+    refute_output --partial "Coordinate System is:"
+    refute_output --partial "Origin ="
+}
+
+@test "georef: --crs errors are usage errors; --crs none places nothing" {
     tilted_adv
     run -2 --separate-stderr trace --crs EPSG:99999999 tilt.adv "$DATA/box.snd" "$GDB" \
         "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o cube.tif
@@ -174,16 +236,17 @@ EOF
     # An ENVI cube names its arrays in its header; sensorize follows it.
     run -0 trace -q --crs EPSG:32618 tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
         "$DATA/band1.rad" "$DATA/band2.rad" -o envi.img
-    run -0 grep -Fx "sigchain geolocation = $PWD/envi.geoloc.tif" envi.hdr
+    run -0 grep -Fx "sigchain geolocation = envi.geoloc.tif" envi.hdr
     flat_sen b.sen
     run -0 sensorize -q envi.img b.sen b.sen -o envi_counts.tif
     run -0 gdalinfo envi_counts.tif
-    assert_output --partial "X_DATASET=$PWD/envi_counts.geoloc.tif"
-    run -0 trace -q tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad" \
-        "$DATA/band2.rad" -o plain.tif
+    assert_output --partial "X_DATASET=envi_counts.geoloc.tif"
+    run -0 trace -q --crs none tilt.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" \
+        "$DATA/band1.rad" "$DATA/band2.rad" -o plain.tif
     [ ! -f plain.geoloc.tif ]
     run -0 gdalinfo plain.tif
     refute_output --partial "GEOLOCATION"
+    refute_output --partial "GCP"
     run -0 trace --help
     assert_output --partial "--crs EPSG:N|FILE|none"
 }

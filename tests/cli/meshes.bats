@@ -77,7 +77,7 @@ write_dem() {
     # Placed on the map alike: the DEM given as the scene lends its CRS (it gave none):
     # this oblique view gets the same geolocation arrays as the .odb route.
     run -0 cmp lone.geoloc.tif odb.geoloc.tif
-    run -0 grep -q '^sigchain geolocation = .*/lone.geoloc.tif$' lone.hdr
+    run -0 grep -qx 'sigchain geolocation = lone.geoloc.tif' lone.hdr
     # Land use by options: one class mapped to grass, the same picture.
     sed 's/[0-9][0-9]*\.5 /3 /g' t.asc > lu.asc
     cp t.prj lu.prj

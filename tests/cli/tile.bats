@@ -63,18 +63,25 @@ merge_bad() {
     run -0 grep -E '^sigchain inputs = [0-9a-f]{64}$' part2.hdr
     # The tiles in any order; the whole cube records the untiled command (-o last), so
     # merged under the same name it is the same file, header included.
+    # Merged where the whole was written (the header names its geolocation arrays as
+    # the output was named), from parts elsewhere: their arrays are found beside them.
     mkdir merged
-    run -0 --separate-stderr merge_tiles part3.img part1.img part2.img -o merged/one.img
+    cd merged
+    run -0 --separate-stderr merge_tiles ../part3.img ../part1.img ../part2.img -o one.img
     assert_equal "$stderr" ''
+    cd ..
     run -0 cmp merged/one.img one.img
     run -0 cmp merged/one.hdr one.hdr
+    run -0 cmp merged/one.geoloc.tif one.geoloc.tif
     assert_no_temp_files merged
     # GeoTIFF parts too.
     run -0 --separate-stderr trace -q $(inputs) -o one.tif
     for k in 1 2; do
         run -0 --separate-stderr trace -q $(inputs) --tile $k/2 -o "p$k.tif"
     done
-    run -0 --separate-stderr merge_tiles p2.tif p1.tif -o merged/one.tif
+    cd merged
+    run -0 --separate-stderr merge_tiles ../p2.tif ../p1.tif -o one.tif
+    cd ..
     run -0 cmp merged/one.tif one.tif
 }
 

@@ -89,11 +89,12 @@ setup_file() {
     export CATALOGUE="$BATS_FILE_TMPDIR/catalogue"
     : >"$CATALOGUE"
     # slow_trace ARGS...: a trace run of about a second (the box scene at $SPP, default
-    # 64, samples per pixel), as a command so that timeout, env and & can run it.
+    # 64, samples per pixel), as a command so that timeout, env and & can run it; not
+    # georeferenced (--crs none), so that the ENVI pair is the whole output.
     mkdir -p "$BATS_FILE_TMPDIR/bin"
     {
         echo '#!/bin/sh'
-        echo "exec trace --threads 1 --samples-per-pixel \${SPP:-64} '$TRACE/box.adv' '$TRACE/box.snd' \\"
+        echo "exec trace --crs none --threads 1 --samples-per-pixel \${SPP:-64} '$TRACE/box.adv' '$TRACE/box.snd' \\"
         echo "    '$SEED/box_on_plane.gdb' '$TRACE/box.mat' '$TRACE/band1.rad' '$TRACE/band2.rad' \"\$@\""
     } >"$BATS_FILE_TMPDIR/bin/slow_trace"
     chmod +x "$BATS_FILE_TMPDIR/bin/slow_trace"

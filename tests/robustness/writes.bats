@@ -23,7 +23,9 @@ setup_file() {
         echo "exec trace -q --threads 1 --samples-per-pixel 1 '$TRACE/box.adv' '$TRACE/box.snd' \\"
         echo "    '$SEED/box_on_plane.gdb' '$TRACE/box.mat' '$TRACE/band1.rad' '$TRACE/band2.rad' \"\$@\""
     } >"$BATS_FILE_TMPDIR/bin/small_trace"
-    chmod +x "$BATS_FILE_TMPDIR/bin/small_trace"
+    # plain_trace ARGS...: the same, not georeferenced (--crs none): the cube alone.
+    printf '#!/bin/sh\nexec small_trace --crs none "$@"\n' >"$BATS_FILE_TMPDIR/bin/plain_trace"
+    chmod +x "$BATS_FILE_TMPDIR/bin/small_trace" "$BATS_FILE_TMPDIR/bin/plain_trace"
 }
 
 setup() {
@@ -34,10 +36,11 @@ setup() {
 
 # full_disk_sweep CLEAN OUTPUT... -- CMD...: runs CMD with the N-th write failing with
 # ENOSPC, N = 1, 2, ... until a run exits 0; every earlier run must exit 1 with an
-# error naming the first OUTPUT and leave no OUTPUT and no temporary; the run that
+# error naming an OUTPUT (the one being written: a georeferenced cube's geolocation
+# arrays are part of it) and leave no OUTPUT and no temporary; the run that
 # exits 0 must give every OUTPUT as in the folder CLEAN. Prints the number of faults.
 full_disk_sweep() {
-    local clean="$1" outputs=() n f
+    local clean="$1" outputs=() n f named
     shift
     while [ "$1" != -- ]; do outputs+=("$1"); shift; done
     shift
@@ -52,7 +55,9 @@ full_disk_sweep() {
             return 0
         fi
         [ "$status" = 1 ] || fail "write $n failed: exit $status ($stderr)"
-        [[ "$stderr" == *"${outputs[0]}"* ]] || fail "write $n failed: the error does not name ${outputs[0]}: $stderr"
+        named=
+        for f in "${outputs[@]}"; do [[ "$stderr" == *": $f: "* ]] && named=$f; done
+        [ -n "$named" ] || fail "write $n failed: the error names none of ${outputs[*]}: $stderr"
         for f in "${outputs[@]}"; do
             [ ! -e "$f" ] || fail "write $n failed: $f was left behind"
         done
@@ -65,19 +70,30 @@ full_disk_sweep() {
     mkdir clean
     (cd clean && small_trace -o c.img && small_trace -o c.tif)
     # Before the read-back, the ENVI cube came out with 1024 zero bytes and exit 0.
-    run -0 full_disk_sweep clean c.img c.hdr -- small_trace -o c.img
+    # The box view is oblique: its geolocation arrays go with the cube, its header (13
+    # KiB with the ground control points) is read back as GDAL 3.6 writes it silently.
+    run -0 full_disk_sweep clean c.img c.hdr c.geoloc.tif -- small_trace -o c.img
+    [ "$output" -ge 16 ] || fail "only $output writes were faulted"
+    rm c.img c.hdr c.geoloc.tif
+    run -0 full_disk_sweep clean c.tif c.geoloc.tif -- small_trace -o c.tif
+    [ "$output" -ge 14 ] || fail "only $output writes were faulted"
+    # Not georeferenced: the cube alone.
+    rm -r clean && mkdir clean
+    (cd clean && plain_trace -o c.img)
+    rm c.tif c.geoloc.tif
+    run -0 full_disk_sweep clean c.img c.hdr -- plain_trace -o c.img
     [ "$output" -ge 8 ] || fail "only $output writes were faulted"
-    run -0 full_disk_sweep clean c.tif -- small_trace -o c.tif
-    [ "$output" -ge 6 ] || fail "only $output writes were faulted"
+    [ ! -e c.geoloc.tif ]
 }
 
 @test "merge_tiles on a full disk, and parts whose size disagrees with their header" {
     local k
     for k in 1 2 3; do small_trace --tile $k/3 -o part$k.img; done
     mkdir clean
-    merge_tiles part1.img part2.img part3.img -o clean/w.img
-    run -0 full_disk_sweep clean w.img w.hdr -- merge_tiles part1.img part2.img part3.img -o w.img
-    [ "$output" -ge 8 ]
+    (cd clean && merge_tiles ../part1.img ../part2.img ../part3.img -o w.img)
+    run -0 full_disk_sweep clean w.img w.hdr w.geoloc.tif -- \
+        merge_tiles part1.img part2.img part3.img -o w.img
+    [ "$output" -ge 16 ]
     # A part cut short (a copy interrupted) merged before with zeros in its place.
     cp part2.img whole2.img
     truncate -s 1024 part2.img
@@ -104,14 +120,15 @@ full_disk_sweep() {
 }
 
 @test "a rename that fails (EXDEV) leaves the previous ENVI cube exactly as it was" {
+    # Not georeferenced (--crs none): the renames of the ENVI pair alone.
     mkdir old
-    (cd old && small_trace -o c.img)
+    (cd old && plain_trace -o c.img)
     local n
     # Moving the old header aside, the old data, renaming the new data, the new header.
     for n in 1 2 3 4; do
         cp old/c.img old/c.hdr .
         run -1 --separate-stderr strace -f -o /dev/null -e inject=rename:error=EXDEV:when=$n \
-            small_trace --seed 7 -o c.img
+            plain_trace --seed 7 -o c.img
         [[ "$stderr" == *"Invalid cross-device link" ]] || fail "rename $n: $stderr"
         cmp c.img old/c.img && cmp c.hdr old/c.hdr || fail "rename $n failed: the old cube changed"
         assert_no_temp_files .
@@ -120,14 +137,14 @@ full_disk_sweep() {
     # either, and the error says where each is.
     cp old/c.img old/c.hdr .
     run -1 --separate-stderr strace -f -o /dev/null -e inject=rename:error=EXDEV:when=3+ \
-        small_trace --seed 7 -o c.img
+        plain_trace --seed 7 -o c.img
     assert_regex "$stderr" "the previous c.img is kept as (c.img.tmp.[A-Za-z0-9]{6}); the previous c.hdr is kept as (c.hdr.tmp.[A-Za-z0-9]{6})$"
     local kept_img kept_hdr
     kept_img=$(echo "$stderr" | sed -n 's/.*c.img is kept as \(c.img.tmp.[A-Za-z0-9]*\);.*/\1/p')
     kept_hdr=$(echo "$stderr" | sed -n 's/.*c.hdr is kept as \(c.hdr.tmp.[A-Za-z0-9]*\)$/\1/p')
     cmp "$kept_img" old/c.img && cmp "$kept_hdr" old/c.hdr
     # The next run takes them for a killed run's litter and removes them.
-    run -0 small_trace --seed 7 -o c.img
+    run -0 plain_trace --seed 7 -o c.img
     assert_no_temp_files .
 }
 
@@ -147,15 +164,15 @@ full_disk_sweep() {
 }
 
 @test "what a SIGKILL leaves is removed by the next run writing the same output" {
-    small_trace -o c.img
-    run env SIGCHAIN_TEST_KILL_AT_RENAME=3 small_trace --seed 3 -o c.img
+    plain_trace -o c.img
+    run env SIGCHAIN_TEST_KILL_AT_RENAME=3 plain_trace --seed 3 -o c.img
     assert_equal "$status" 137
     # The new data's folder and the two old files moved aside.
     [ "$(find . -name '*.tmp.*' | wc -l)" = 3 ]
     # A symbolic link and other names are left alone.
     ln -s c.img c.img.tmp.AAAAAA
     touch c.img.tmp.toolong1 d.img.tmp.BBBBBB
-    run -0 small_trace --seed 4 -o c.img
+    run -0 plain_trace --seed 4 -o c.img
     run find . -name '*.tmp.*'
     assert_equal "$(echo "$output" | sort | tr '\n' ' ')" "./c.img.tmp.AAAAAA ./c.img.tmp.toolong1 ./d.img.tmp.BBBBBB "
 }

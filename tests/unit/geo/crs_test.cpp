@@ -2,6 +2,7 @@
 // GeographicLib's own UTM (independent of GDAL/PROJ), and the local east-north-up frame
 // against the WGS84 radii of curvature.
 #include "geo/crs.hpp"
+#include "geo/georef.hpp"
 
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -74,6 +75,21 @@ TEST(Wgs84Transform, UtmAgreesWithGeographicLibUtm) {
     EXPECT_TRUE(ok[0] && ok[1]);
     EXPECT_NEAR(x[0], -34.9, 1e-12);
     EXPECT_NEAR(y[1], -7.9, 1e-12);
+}
+
+TEST(UtmEpsg, ZonesOfKnownPlaces) {
+    // Zones from the UTM definition (6 deg zones from 180 W; Norway's 32V and Svalbard's
+    // 31X-37X exceptions; UPS north of 84 N and south of 80 S) and EPSG's WGS84 codes.
+    const sigchain::SourceLocation at{"a.snd", 3};
+    EXPECT_EQ(utm_epsg(-8.0, -34.9, at), "EPSG:32725");   // Olinda: 25 S
+    EXPECT_EQ(utm_epsg(43.16, -77.61, at), "EPSG:32618");  // Rochester, NY: 18 N
+    EXPECT_EQ(utm_epsg(0.0, 0.0, at), "EPSG:32631");       // the equator is north
+    EXPECT_EQ(utm_epsg(60.39, 5.32, at), "EPSG:32632");    // Bergen: 32V, not 31
+    EXPECT_EQ(utm_epsg(78.22, 15.65, at), "EPSG:32633");   // Longyearbyen: 33X
+    EXPECT_EQ(utm_epsg(-17.8, 179.9, at), "EPSG:32760");   // Fiji: 60 S
+    EXPECT_EQ(utm_epsg(85.0, 10.0, at), "EPSG:32661");     // UPS north
+    EXPECT_EQ(utm_epsg(-80.5, 10.0, at), "EPSG:32761");    // UPS south
+    EXPECT_EQ(data_error_of([&] { utm_epsg(91.0, 0.0, at); }).rfind("a.snd:3: ", 0), 0u);
 }
 
 TEST(Wgs84Transform, NeedsACrs) {
