@@ -76,6 +76,13 @@ void set_band_metadata(GDALDataset& ds, const Image& image) {
         if (static_cast<std::size_t>(c) < image.channel_names.size())
             band->SetDescription(image.channel_names[c].c_str());
         if (!image.units.empty()) band->SetUnitType(image.units.c_str());
+        if (static_cast<std::size_t>(c) < image.scale.size()) {
+            // GDAL's unit type is that of value * scale + offset (as CF's units of an
+            // unpacked variable): the dataset's UNITS still names the raw values.
+            band->SetScale(image.scale[c]);
+            band->SetOffset(image.offset[c]);
+            band->SetUnitType(image.scaled_units.c_str());
+        }
         // A band whose wavelength or width is unknown (NaN) goes without the item.
         if (!image.wavelength_um.empty() && std::isfinite(image.wavelength_um[c])) {
             band->SetMetadataItem("wavelength", format_number(image.wavelength_um[c]).c_str());
@@ -122,9 +129,11 @@ void set_georeference(GDALDataset& ds, const Image& image, CubeFormat format,
             throw IoError(path + ": cannot write the ground control points: " + gdal_message());
     }
     if (g.geolocation_path.empty()) return;
-    // As given: GDAL (3.6) opens X_DATASET relative to the working directory, where the
-    // render was run; an absolute name would break as soon as the pair is moved.
-    const std::string& arrays = g.geolocation_path;
+    // The file name alone: the arrays lie beside the image, where sigchain's readers
+    // look; GDAL (3.6) opens the name from the working directory (run gdalwarp -geoloc
+    // in the images' folder, or name them with SRC_GEOLOC_ARRAY, or use the GCPs). A
+    // path would break when the pair is moved and make the bytes depend on the folder.
+    const std::string arrays = std::filesystem::path(g.geolocation_path).filename().string();
     if (format == CubeFormat::Envi) {
         ds.SetMetadataItem("sigchain_geolocation", arrays.c_str(), "ENVI");
         return;
@@ -164,6 +173,17 @@ void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
     }
     if (all_finite(image.fwhm_um))
         ds.SetMetadataItem("fwhm", number_list(image.fwhm_um).c_str(), "ENVI");
+    // ENVI's display bands (1-based red, green, blue): the true-colour preview's, when
+    // the image has three visible bands.
+    if (all_finite(image.wavelength_um) && image.channels >= 3) {
+        try {
+            std::vector<double> rgb;
+            for (int c : true_colour_bands(image, "")) rgb.push_back(c + 1);
+            ds.SetMetadataItem("default_bands", number_list(rgb).c_str(), "ENVI");
+        } catch (const DataError&) {
+            // fewer than three visible bands: ENVI shows the first band
+        }
+    }
     if (!image.units.empty()) ds.SetMetadataItem("data_units", image.units.c_str(), "ENVI");
     if (!image.sensor_type.empty())
         ds.SetMetadataItem("sensor_type", image.sensor_type.c_str(), "ENVI");

@@ -25,7 +25,7 @@ std::string geolocation_name(const std::string& output_path) {
 std::string find_geolocation(const std::string& named, const std::string& image_path) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (named.empty() || fs::exists(named, ec)) return named;
+    if (named.empty()) return named;
     const fs::path beside = fs::path(image_path).parent_path() / fs::path(named).filename();
     return fs::exists(beside, ec) ? beside.string() : named;
 }

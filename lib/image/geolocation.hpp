@@ -36,9 +36,9 @@ std::unique_ptr<GdalOutput> stage_geolocation(const std::string& path,
 GeolocationArrays read_geolocation(const std::string& path);
 // The geolocation arrays' name beside an output: NAME.geoloc.tif for NAME.EXT.
 std::string geolocation_name(const std::string& output_path);
-// Where the arrays named by an image at `image_path` are: `named` as written, relative
-// to the working directory as GDAL resolves it, when it exists; else the same file
-// name beside the image (a pair moved together); else `named`.
+// Where the arrays named by an image at `image_path` are: the file name of `named`
+// beside the image (as written: sigchain names them so), else `named` as it is
+// (relative to the working directory, as GDAL resolves it).
 std::string find_geolocation(const std::string& named, const std::string& image_path);
 
 // A lattice of at most 17 x 17 of the arrays' pixel centres (corners and edges

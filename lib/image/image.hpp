@@ -34,7 +34,7 @@ struct Georeference {
     std::optional<std::array<double, 6>> geotransform;
     // The geolocation arrays' GeoTIFF (write_geolocation), named in the GDAL GEOLOCATION
     // metadata domain (ENVI: the header's `sigchain geolocation`); "" for none.
-    // A path as given (relative to the working directory, as GDAL resolves it).
+    // Written to this path; the image names the file alone (the arrays lie beside it).
     std::string geolocation_path;
     // The arrays to write at geolocation_path with the image, committed as one output
     // with it (a failed write leaves neither); null when they are on disk already.
@@ -56,6 +56,11 @@ struct Image {
     std::vector<std::string> channel_names;  // per channel; may be empty
     std::string units;                       // "W cm-2 sr-1 um-1", "DC", or "" if unknown
     std::string sensor_type;                 // ENVI `sensor type`; "" writes none
+    // Per channel, what turns a value back into a physical one: value * scale + offset
+    // in `scaled_units` (GDAL's band scale, offset and unit type; counts carry their
+    // band radiance so). Empty: none written.
+    std::vector<double> scale, offset;
+    std::string scaled_units;
     Georeference georef;                     // written by the GDAL writers (GeoTIFF, ENVI)
 
     Image() = default;

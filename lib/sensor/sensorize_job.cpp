@@ -206,6 +206,10 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
             if (!sigma.empty())
                 counts_uncertainty(sigma[b], plane, sens[b].gain, sens[b].bias, job.noise);
             add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));
+            // c = gain L + bias back to the band radiance L (GDAL scale and offset).
+            out.scale.push_back(1.0 / sens[b].gain);
+            out.offset.push_back(0.0 - sens[b].bias / sens[b].gain);  // not -0
+            out.scaled_units = cube.units;
             report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
         }
         std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());

@@ -166,10 +166,11 @@ EOF
     mkdir a
     run -0 trace -q --crs EPSG:32618 --background none tilt.adv "$DATA/box.snd" target.gdb \
         "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" --truth a/truth.tif -o a/cube.img
-    # Named as given, relative to the working directory (as GDAL 3.6 resolves it).
-    run -0 grep -Fx "sigchain geolocation = a/cube.geoloc.tif" a/cube.hdr
+    # Named by their file name: they lie beside the cube (GDAL 3.6 opens the name from
+    # the working directory, so -geoloc is run in the cube's folder).
+    run -0 grep -Fx "sigchain geolocation = cube.geoloc.tif" a/cube.hdr
     run -0 gdalinfo a/truth.tif
-    assert_output --partial "X_DATASET=a/cube.geoloc.tif"
+    assert_output --partial "X_DATASET=cube.geoloc.tif"
     # 17 x 17 lattice points less those that see no ground (the top rows see the sky),
     # in the GeoTIFF with their CRS and in the ENVI header as its "geo points".
     n=$(gdalinfo a/truth.tif | grep -c '^GCP\[')
@@ -177,7 +178,7 @@ EOF
     run -0 gdalinfo a/truth.tif
     assert_output --partial "GCP Projection"
     [ "$(gdalinfo a/cube.img | grep -c '^GCP\[')" -eq "$n" ]
-    target_offset -geoloc a/truth.tif
+    (cd a && target_offset -geoloc truth.tif)
     # Moved, and used from elsewhere: the GCPs alone place it (a thin-plate spline).
     mv a b && mkdir c && cd c
     target_offset -tps ../b/truth.tif

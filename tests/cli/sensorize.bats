@@ -202,6 +202,24 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
     assert_output --partial "UNITS=DC"
 }
 
+@test "counts carry their gain and bias back to band radiance (GDAL scale and offset)" {
+    # c = 2000 L + 5: L = c / 2000 - 5 / 2000, in the cube's radiance unit.
+    printf '4\n2000\n5\n1\n1\n1\n1\n' > g.sen
+    run -0 --separate-stderr sensorize -q --bits 16 "$CUBE/tiny.img" g.sen -o c.tif
+    run -0 gdalinfo c.tif
+    assert_output --partial "Offset: -0.0025,   Scale:0.0005"
+    assert_output --partial "Unit Type: W cm-2 sr-1 um-1"
+    # gdal_translate -unscale gives the band radiance within half a count (0.00025).
+    run -0 --separate-stderr sensorize -q --float "$CUBE/tiny.img" g.sen -o l.tif
+    run -0 gdal_translate -q -unscale -ot Float64 -of XYZ c.tif unscaled.xyz
+    run -0 gdal_translate -q -ot Float64 -of XYZ l.tif float.xyz
+    run -0 awk 'NR == FNR { l[FNR] = $3; next }
+        { d = $3 - l[FNR]; if (d < 0) d = -d; if (d > m) m = d; n++ }
+        END { print n " pixels, largest difference " m; exit !(n == 6 && m <= 0.00025 + 1e-12) }' \
+        float.xyz unscaled.xyz
+    echo "$output"
+}
+
 @test "a counts TIFF records FWHM, centre wavelength and its provenance (gdalinfo)" {
     # blue.sen: R = 1, 3 at 0.45, 0.5 um: centre (0.45 + 3 * 0.5) / 4 = 0.4875 um; half
     # maximum 1.5 crossed at 0.4625 um and still exceeded at the end sample, whose bin ends

@@ -63,13 +63,10 @@ merge_bad() {
     run -0 grep -E '^sigchain inputs = [0-9a-f]{64}$' part2.hdr
     # The tiles in any order; the whole cube records the untiled command (-o last), so
     # merged under the same name it is the same file, header included.
-    # Merged where the whole was written (the header names its geolocation arrays as
-    # the output was named), from parts elsewhere: their arrays are found beside them.
+    # Their geolocation arrays (the box view is oblique) are found beside them.
     mkdir merged
-    cd merged
-    run -0 --separate-stderr merge_tiles ../part3.img ../part1.img ../part2.img -o one.img
+    run -0 --separate-stderr merge_tiles part3.img part1.img part2.img -o merged/one.img
     assert_equal "$stderr" ''
-    cd ..
     run -0 cmp merged/one.img one.img
     run -0 cmp merged/one.hdr one.hdr
     run -0 cmp merged/one.geoloc.tif one.geoloc.tif
@@ -79,9 +76,7 @@ merge_bad() {
     for k in 1 2; do
         run -0 --separate-stderr trace -q $(inputs) --tile $k/2 -o "p$k.tif"
     done
-    cd merged
-    run -0 --separate-stderr merge_tiles ../p2.tif ../p1.tif -o one.tif
-    cd ..
+    run -0 --separate-stderr merge_tiles p2.tif p1.tif -o merged/one.tif
     run -0 cmp merged/one.tif one.tif
 }
 

@@ -66,6 +66,9 @@ band_bytes() {
     run -0 tr -d '\n' < out.hdr
     [[ "$output" == *"wavelength = {0.5, 0.526316, 0.555556, 0.625, 0.645161, 0.666667}"* ]] ||
         fail "wavelength list: $output"
+    # ENVI shows it in true colour: red 0.666667 um (band 6), green nearest 0.55 um
+    # (0.555556, band 3), blue 0.5 um (band 1).
+    run -0 grep -x 'default bands = {6, 3, 1}' out.hdr
 }
 
 @test "trace writes GeoTIFF for a .tif name, with the same pixels" {

@@ -90,7 +90,7 @@ full_disk_sweep() {
     local k
     for k in 1 2 3; do small_trace --tile $k/3 -o part$k.img; done
     mkdir clean
-    (cd clean && merge_tiles ../part1.img ../part2.img ../part3.img -o w.img)
+    merge_tiles part1.img part2.img part3.img -o clean/w.img
     run -0 full_disk_sweep clean w.img w.hdr w.geoloc.tif -- \
         merge_tiles part1.img part2.img part3.img -o w.img
     [ "$output" -ge 16 ]
