@@ -18,7 +18,8 @@
 #       (TILES > 1: trace --rows per tile, out/NAME.tile-T.img, merged by this file)
 #   CARDS_ADV + CARDS_GDB ... --trace--> out/cards.img --sensorize --calibrate-->
 #       out/calibrated/*.sen                                              (CARDS_GDB set)
-#   out/NAME.img + sens --sensorize--> out/NAME.tif (counts), out/NAME.png (preview)
+#   out/NAME.img + sens --sensorize--> out/NAME.tif (counts), out/NAME.png (preview:
+#       true colour, the visible bands by wavelength; sensorize --preview)
 #   out/NAME.tif + REFERENCE + CPT --compare--> out/NAME.report       (REFERENCE set)
 #
 # Every stage is a variable, so another program that reads and writes the same files
@@ -56,7 +57,6 @@ SHADOW_FLAGS         ?= --points-per-facet 16
 THERM_FLAGS          ?=
 CALIBRATE_FLAGS      ?=
 SENSORIZE_FLAGS      ?=
-PREVIEW_FLAGS        ?=
 COMPARE_FLAGS        ?=
 LANDSAT_SENSOR_FLAGS ?=
 
@@ -145,12 +145,11 @@ CMD_trace          = $(strip $(TRACE) $(TRACE_FLAGS) $(if $(TRACE_TMP),--tmp $(T
 CMD_calibrate      = $(SENSORIZE) --calibrate $(CALIBRATE_FLAGS) --card1 $(CARD1) \
   --card2 $(CARD2) --target1 $(TARGET1) --target2 $(TARGET2)
 CMD_sensorize      = $(strip $(SENSORIZE) $(SENSORIZE_FLAGS))
-CMD_preview        = $(strip $(SENSORIZE) $(PREVIEW_FLAGS))
 CMD_compare        = $(strip $(COMPARE) $(COMPARE_FLAGS))
 CMD_landsat_sensor = $(strip $(LANDSAT_SENSOR) $(LANDSAT_SENSOR_FLAGS) --bands $(LANDSAT_BANDS) \
   --name $(NAME))
 STAGES := control7 find_view build_radiance shadow therm trace calibrate sensorize \
-  preview compare $(if $(strip $(MTL)),landsat_sensor)
+  compare $(if $(strip $(MTL)),landsat_sensor)
 # $(call CMD_STAMP,STAGE): the file that records STAGE's command, a prerequisite of
 # what the stage makes. It is rewritten when this file is read, and only when the
 # command differs from the one recorded, so that BUILD_RADIANCE=..., TRACE_FLAGS=...
@@ -295,11 +294,12 @@ $(CAL_SENS) $(OUT)/calibration.txt &: $(CARDS_CUBE) $(SENS) $(call CMD_STAMP,cal
 	  > $(OUT)/calibration.txt
 endif
 
-## sensorize: radiance cube -> digital counts (TIFF), and an 8-bit preview PNG.
-$(COUNTS): $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,sensorize)
-	$(CMD_sensorize) $(CUBE) $(COUNT_SENS) -o $@
-$(PREVIEW): $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,preview)
-	$(CMD_preview) $(CUBE) $(COUNT_SENS) -o $@
+## sensorize: radiance cube -> digital counts (TIFF) and, in the same run, their
+## true-colour preview (8-bit PNG: of the bands centred in 0.38-0.78 um, red the
+## longest, blue the shortest, green the one nearest 0.55 um; sensorize(1) --preview).
+## A program put in SENSORIZE's place takes --preview FILE.png too.
+$(COUNTS) $(PREVIEW) &: $(CUBE) $(COUNT_SENS) $(call CMD_STAMP,sensorize)
+	$(CMD_sensorize) $(CUBE) $(COUNT_SENS) -o $(COUNTS) --preview $(PREVIEW)
 
 ## compare: counts against the reference image at the control points -> report.
 $(REPORT): $(COUNTS) $(REFERENCE) $(CPT) $(call CMD_STAMP,compare)
@@ -315,7 +315,7 @@ help:
 	@echo 'stages (programs): CONTROL7 BUILD_RADIANCE FIND_VIEW TRACE SHADOW THERM'
 	@echo '  SENSORIZE COMPARE LANDSAT_SENSOR; default $$(SIGCHAIN_BIN)/TOOL, SIGCHAIN_BIN=$(SIGCHAIN_BIN)'
 	@echo 'options: CONTROL7_FLAGS BUILD_RADIANCE_FLAGS FIND_VIEW_FLAGS TRACE_FLAGS'
-	@echo '  SHADOW_FLAGS THERM_FLAGS CALIBRATE_FLAGS SENSORIZE_FLAGS PREVIEW_FLAGS'
+	@echo '  SHADOW_FLAGS THERM_FLAGS CALIBRATE_FLAGS SENSORIZE_FLAGS'
 	@echo '  COMPARE_FLAGS LANDSAT_SENSOR_FLAGS (a changed program or option reruns its'
 	@echo '  stage: out/STAGE.cmd.stamp)'
 	@echo 'Landsat: MTL=$(MTL) (landsat_sensor writes SND and SENS into out/landsat)'

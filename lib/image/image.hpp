@@ -141,9 +141,11 @@ void write_float(const std::string& path, const Image& image, const WriteOptions
 // green the one between nearest 0.55 um. DataError naming `path` (the preview) when
 // fewer than 3 (or none has a wavelength).
 std::vector<int> true_colour_bands(const Image& image, const std::string& path);
-// An 8-bit RGB preview of those bands (sensorize(1), --preview), each stretched
-// linearly on its own from its 2nd percentile (0) to its 98th (255), clipped and
-// rounded; a band with no spread (or a NaN pixel) gives 0.
-Image true_colour_preview(const Image& image, const std::string& path);
+// An 8-bit RGB preview of those bands (sensorize(1), --preview), stretched linearly
+// from the 2nd percentile (0) to the 98th (255), clipped and rounded: each band on
+// its own, or with `common` one stretch for the three (their values pooled), which
+// keeps how bright one band is beside another. Where the percentiles coincide, the
+// smallest and largest values; no spread at all gives mid-grey, a NaN pixel 0.
+Image true_colour_preview(const Image& image, const std::string& path, bool common = false);
 
 }  // namespace sigchain::image

@@ -63,15 +63,23 @@ std::vector<int> true_colour_bands(const Image& image, const std::string& path) 
     return {red, green, blue};
 }
 
-Image true_colour_preview(const Image& image, const std::string& path) {
+Image true_colour_preview(const Image& image, const std::string& path, bool common) {
     const std::vector<int> bands = true_colour_bands(image, path);
     Image rgb(image.rows, image.columns, 3);
     rgb.channel_names = {"R", "G", "B"};
     const std::size_t plane = image.plane_size();
+    std::pair<double, double> pooled{0, 0};
+    if (common) {
+        std::vector<float> all;
+        all.reserve(3 * plane);
+        for (int b : bands)
+            all.insert(all.end(), image.data.begin() + b * plane, image.data.begin() + (b + 1) * plane);
+        pooled = stretch(all);
+    }
     for (int o = 0; o < 3; ++o) {
         const auto first = image.data.begin() + bands[o] * plane;
         const std::vector<float> values(first, first + plane);
-        const auto [lo, hi] = stretch(values);
+        const auto [lo, hi] = common ? pooled : stretch(values);
         for (std::size_t p = 0; p < plane; ++p) {
             // A uniform band is mid-grey, not black: it has a value, just no contrast.
             const double v = hi > lo ? (values[p] - lo) / (hi - lo) * 255 : 128;

@@ -181,6 +181,10 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     const int bands = static_cast<int>(sens.size());
     image::Image out(cube.rows, cube.columns, bands);
     out.units = job.float_output ? cube.units : "DC";
+    // --preview-stretch common: the preview of the band radiance, not of counts whose
+    // gains differ from band to band.
+    const bool radiance_preview = job.preview_common && !job.float_output;
+    image::Image radiance(radiance_preview ? cube.rows : 0, cube.columns, bands);
     std::vector<std::vector<float>> sigma;  // --uncertainty: per band, radiance then counts
     if (!job.uncertainty_path.empty())
         sigma = read_radiance_uncertainty(job.uncertainty_path, cube, bands);
@@ -201,6 +205,8 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
             report.mtf.push_back(apply_band_mtf(plane, cube.rows, cube.columns, job.mtf,
                                                 centre_um, job.cube_path));
         }
+        if (radiance_preview)
+            std::copy(plane.begin(), plane.end(), radiance.data.begin() + b * radiance.plane_size());
         if (!job.float_output) {
             apply_gain_bias(plane, sens[b].gain, sens[b].bias);
             if (!sigma.empty())
@@ -219,9 +225,12 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
         out.fwhm_um.push_back(fwhm_um(wavelengths, sens[b].response));
     }
     // The preview is made first: a cube without 3 visible bands then leaves no output.
-    const image::Image preview = job.preview_path.empty()
-                                     ? image::Image()
-                                     : image::true_colour_preview(out, job.preview_path);
+    radiance.wavelength_um = out.wavelength_um;
+    const image::Image preview =
+        job.preview_path.empty()
+            ? image::Image()
+            : image::true_colour_preview(radiance_preview ? radiance : out, job.preview_path,
+                                         job.preview_common);
     if (!job.calibrate) carry_georeference(job, cube, out);
     if (job.calibrate)
         write_calibrated_sens(sens, report);

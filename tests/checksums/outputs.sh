@@ -37,7 +37,7 @@ machine() {
 }
 
 # The scenes' tools run with -q (pipelines/scene.mk's defaults show their warnings).
-quiet="CONTROL7_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q PREVIEW_FLAGS=-q"
+quiet="CONTROL7_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q"
 
 # run_small BIN OUT THREADS: the training scene's whole chain and the box's thermal render.
 run_small() {

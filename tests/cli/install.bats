@@ -63,7 +63,7 @@ $(sed -n 's/^project(sigchain VERSION \([0-9.]*\).*/\1/p' "$SIGCHAIN_SOURCE_DIR/
     cp -R "$SIGCHAIN_SOURCE_DIR/data/scenes/training" .
     rm -rf training/out
     outside make --no-print-directory -C training CONTROL7_FLAGS=-q BUILD_RADIANCE_FLAGS=-q \
-        TRACE_FLAGS=-q THERM_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q PREVIEW_FLAGS=-q
+        TRACE_FLAGS=-q THERM_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q
     assert_success
     # Every stage ran the installed program.
     assert_output --partial "$BATS_FILE_TMPDIR/prefix/bin/trace -q"
@@ -76,7 +76,7 @@ $(sed -n 's/^project(sigchain VERSION \([0-9.]*\).*/\1/p' "$SIGCHAIN_SOURCE_DIR/
     grep -q '(9 control points' training/out/training.report
     # A second make with the same options does nothing.
     outside make -q -C training CONTROL7_FLAGS=-q BUILD_RADIANCE_FLAGS=-q \
-        TRACE_FLAGS=-q THERM_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q PREVIEW_FLAGS=-q
+        TRACE_FLAGS=-q THERM_FLAGS=-q CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q
     assert_success
 }
 

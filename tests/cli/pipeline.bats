@@ -8,6 +8,26 @@
 # then reads from make's echoed commands which stages ran.
 load test_helper
 
+# stretch_error PNG CHANNEL TIF BAND: the largest difference (DN) between a preview's
+# channel and the TIF band stretched as sensorize(1) --preview says: linearly from its
+# 2nd percentile (nearest rank) to its 98th, to 0-255, rounded and clipped.
+stretch_error() {
+    local lo hi n
+    gdal_translate -q -of XYZ -b "$4" "$3" /vsistdout/ | awk '{ print $3 }' > band.txt
+    n=$(wc -l < band.txt)
+    lo=$(sort -g band.txt | awk -v k="$(awk -v n="$n" 'BEGIN { print int(0.02 * (n - 1) + 0.5) }')" 'NR == k + 1')
+    hi=$(sort -g band.txt | awk -v k="$(awk -v n="$n" 'BEGIN { print int(0.98 * (n - 1) + 0.5) }')" 'NR == k + 1')
+    paste <(gdal_translate -q -of XYZ -b "$2" "$1" /vsistdout/ | awk '{ print $3 }') band.txt |
+        awk -v lo="$lo" -v hi="$hi" '{ v = ($2 - lo) / (hi - lo) * 255; v = v < 0 ? 0 : v > 255 ? 255 : v
+            d = $1 - int(v + 0.5); if (d < 0) d = -d; if (d > m) m = d } END { print m + 0 }'
+    rm band.txt
+}
+
+# band_mean IMAGE BAND: the mean of a band's pixels.
+band_mean() {
+    gdal_translate -q -of XYZ -b "$2" "$1" /vsistdout/ | awk '{ s += $3; n++ } END { print s / n }'
+}
+
 SCENE_SRC="$SIGCHAIN_SOURCE_DIR/data/scenes/training"
 
 setup_file() {
@@ -70,6 +90,25 @@ stages() {
     for image in training.img cards.img training.tif training.png; do
         run -0 compare --pixelwise --fail-max 0 "$image" "$image"
     done
+    # The preview is true colour whatever the .sen order (blue, green, red here): its
+    # red channel is the red band's counts stretched, its blue the blue band's.
+    local channel band
+    for channel in 1 2 3; do
+        band=$((4 - channel))
+        run -0 stretch_error training.png "$channel" training.tif "$band"
+        [ "$output" -le 1 ] || fail "preview channel $channel is not counts band $band: $output DN off"
+    done
+    # With one stretch for the three bands (of band radiance) the colour is the
+    # materials': the training "grass" reflects 0.1 at 0.4 um rising to 0.4 at 0.7 um
+    # (grass.ems), so red is brightest and blue darkest, as in the band radiance.
+    run -0 sensorize -q training.img calibrated/blue.sen calibrated/green.sen \
+        calibrated/red.sen -o c.tif --preview common.png --preview-stretch common
+    local r g b
+    r=$(band_mean common.png 1) g=$(band_mean common.png 2) b=$(band_mean common.png 3)
+    awk -v r="$r" -v g="$g" -v b="$b" 'BEGIN { exit !(r > g && g > b) }' ||
+        fail "common stretch: mean R $r, G $g, B $b"
+    rm c.tif common.png
+    run -2 sensorize -q training.img calibrated/red.sen -o c.tif --preview-stretch common
     # The cube: 32 x 32 pixels, 3 bands of 5 spectral samples.
     grep -q '^samples = 32' training.hdr
     grep -q '^lines *= 32' training.hdr
@@ -105,9 +144,9 @@ stages() {
     copy_built
     mk TRACE_FLAGS="-q --threads 1"
     assert_success
-    # The scene and the cards are traced again, then calibration, counts, preview and
+    # The scene and the cards are traced again, then calibration, counts with preview and
     # report; the tables, the view range and the thermal chain stay.
-    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
     run -0 cat training/out/trace.cmd.stamp
     assert_output --partial 'bin/trace -q --threads 1 --tmp out/training.tmp'
@@ -124,7 +163,7 @@ stages() {
     copy_built
     mk BUILD_RADIANCE="$SIGCHAIN_BIN/build_radiance --threads 1"
     assert_success
-    [ "$(stages)" = "control7=0 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
     # Same tables, so the same counts.
     run -0 compare --pixelwise --fail-max 0 training/out/training.tif "$BATS_FILE_TMPDIR/built/out/training.tif"
@@ -136,7 +175,7 @@ stages() {
     mk
     assert_success
     # calibrate (cards -> .sen), counts and preview, then the report.
-    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=0 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=0 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
 }
 
@@ -149,7 +188,7 @@ stages() {
     # The range is recomputed (2 runs: the --snd line and the report) but is the same,
     # so out/training.snd keeps its time and the tables are not recomputed; the cards'
     # view (cards.adv) is untouched, so only the training cube is rendered again.
-    [ "$(stages)" = "control7=0 build_radiance=0 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=0 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
     assert_equal "$(stat -c %Y.%y training/out/training.snd)" "$snd_before"
 }
@@ -160,7 +199,7 @@ stages() {
     sed -i 's/^10 -10 30\t/10 -20 30\t/' training/training.adv
     mk
     assert_success
-    [ "$(stages)" = "control7=0 build_radiance=3 find_view=2 render=2 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=3 find_view=2 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
     # The new line is the union of the moved view's range and the cards' range: its
     # maximum is the moved view's.
@@ -176,7 +215,7 @@ stages() {
     mk
     assert_success
     # Not the view range, nor the thermal chain (which reads no .rad).
-    [ "$(stages)" = "control7=1 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=1 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
 }
 
@@ -185,7 +224,7 @@ stages() {
     touch training/weather_30_Sep_95.wth
     mk
     assert_success
-    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=1 shadow=0 therm=1 calibrate=0 sensorize=2 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=0 find_view=0 render=1 shadow=0 therm=1 calibrate=0 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
 }
 
@@ -280,7 +319,7 @@ EOF
     assert_success
     # One view range, no thermal chain, no calibration, no report; the counts use
     # the scene's own .sen files.
-    [ "$(stages)" = "control7=1 build_radiance=3 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=2 compare=0" ] \
+    [ "$(stages)" = "control7=1 build_radiance=3 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=1 compare=0" ] \
         || { echo "$output"; stages; return 1; }
     assert_output --partial 'training.img blue.sen green.sen red.sen -o out/training.tif'
     [ ! -e training/out/training.tmp ] && [ ! -e training/out/cards.img ]

@@ -15,7 +15,7 @@ BAD="$SIGCHAIN_SOURCE_DIR/tests/data/bad"
 # the tests were written for (scene.mk's defaults show the tools' warnings); a make
 # argument such as TRACE_FLAGS=... still takes precedence.
 export CONTROL7_FLAGS=-q BUILD_RADIANCE_FLAGS=-q TRACE_FLAGS=-q THERM_FLAGS=-q \
-    CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q PREVIEW_FLAGS=-q
+    CALIBRATE_FLAGS=-q SENSORIZE_FLAGS=-q
 
 setup() {
     cd "$BATS_TEST_TMPDIR" || return 1

@@ -142,6 +142,13 @@ sensor::SensorizeJob job_from(const cli::po::variables_map& vm, const cli::Conte
     job.mtf = mtf_from(vm);
     job.write_options = {cli::creation_options(vm), ctx.command()};
     if (vm.count("preview")) job.preview_path = vm["preview"].as<std::string>();
+    if (vm.count("preview-stretch")) {
+        const std::string s = vm["preview-stretch"].as<std::string>();
+        if (s != "band" && s != "common")
+            throw sigchain::UsageError("--preview-stretch " + s + ": expected band or common");
+        if (job.preview_path.empty()) throw sigchain::UsageError("--preview-stretch needs --preview");
+        job.preview_common = s == "common";
+    }
     if (vm.count("uncertainty")) job.uncertainty_path = vm["uncertainty"].as<std::string>();
     if (vm.count("uncertainty-output"))
         job.uncertainty_output_path = vm["uncertainty-output"].as<std::string>();
@@ -190,6 +197,8 @@ int main(int argc, char** argv) {
         "MTF: Butterworth low-pass along scan: cutoff HZ, dwell S seconds per pixel")(
         "preview", value<std::string>()->value_name("PNG"),
         "also write a true-colour 8-bit PNG preview (2-98 % stretch)")(
+        "preview-stretch", value<std::string>()->value_name("band|common"),
+        "the preview's stretch: each band on its own (default), or one for all three")(
         "uncertainty", value<std::string>()->value_name("TRUTH"),
         "trace's truth cube with uncertainty_BAND layers (trace --uncertainty)")(
         "uncertainty-output", value<std::string>()->value_name("FILE.tif"),

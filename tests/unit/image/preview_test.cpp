@@ -62,3 +62,26 @@ TEST(Preview, SmallObjectOnAUniformBackgroundFallsBackToMinMax) {
     const Image grey = true_colour_preview(im, "p.png");
     EXPECT_EQ(grey.at(0, 0, 10), 128);
 }
+
+// One stretch for the three bands keeps their relative brightness: band c holds
+// x + 100 c (x = 0..100), so at every pixel red (c = 2) is brighter than green,
+// green than blue, and the middle pixel is dark in blue, bright in red, where a
+// stretch per band would make it mid-grey (128) in all three.
+TEST(Preview, CommonStretchKeepsTheBandsRelativeBrightness) {
+    Image im(1, 101, 3);
+    im.wavelength_um = {0.45, 0.55, 0.65};
+    for (int c = 0; c < 3; ++c)
+        for (long x = 0; x < 101; ++x) im.at(c, 0, x) = static_cast<float>(x + 100 * c);
+    const Image own = true_colour_preview(im, "p.png");
+    const Image common = true_colour_preview(im, "p.png", true);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(own.at(c, 0, 50), 128);
+    for (long x = 0; x < 101; ++x) {
+        EXPECT_GE(common.at(0, 0, x), common.at(1, 0, x));  // red >= green
+        EXPECT_GE(common.at(1, 0, x), common.at(2, 0, x));  // green >= blue
+    }
+    EXPECT_LT(common.at(2, 0, 50), 64);    // blue: 50 of 0..300
+    EXPECT_EQ(common.at(1, 0, 50), 128);   // green: 150, the middle of 0..300
+    EXPECT_GT(common.at(0, 0, 50), 191);   // red: 250
+    EXPECT_EQ(common.at(2, 0, 0), 0);
+    EXPECT_EQ(common.at(0, 0, 100), 255);
+}
