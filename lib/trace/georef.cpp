@@ -150,4 +150,24 @@ image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scen
     return georef;
 }
 
+image::Georeference georeference_render(const Sensor& sensor, const scene::Scene& scene,
+                                        const GeoPlacement& place, bool crs_named,
+                                        std::optional<double> plane_height, long row_begin,
+                                        long row_end, long total_rows,
+                                        const std::string& arrays_path, const Reporter& reporter) {
+    std::string note;
+    image::Georeference georef;
+    try {
+        georef = georeference_outputs(sensor, scene, place, plane_height, row_begin, row_end,
+                                      total_rows, arrays_path, note);
+    } catch (const DataError& e) {
+        if (crs_named) throw;
+        reporter.warn(std::string("not georeferenced: ") + e.what() +
+                      " (--crs names another map CRS)");
+        return {};
+    }
+    reporter.info(note);
+    return georef;
+}
+
 }  // namespace sigchain::trace

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/report.hpp"
 #include "geo/crs.hpp"
 #include "geo/georef.hpp"
 #include "image/image.hpp"
@@ -73,5 +74,15 @@ image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scen
                                          std::optional<double> plane_height, long row_begin,
                                          long row_end, long total_rows,
                                          const std::string& arrays_path, std::string& note);
+
+// georeference_outputs as trace does it, its note to `reporter` (-v); when the map CRS
+// was not named by the user (`crs_named` false: the DEM's or the UTM default), a view
+// it cannot hold (a platform 1e9 m up) is written without georeferencing, with a
+// warning, instead of failing.
+image::Georeference georeference_render(const Sensor& sensor, const scene::Scene& scene,
+                                        const GeoPlacement& place, bool crs_named,
+                                        std::optional<double> plane_height, long row_begin,
+                                        long row_end, long total_rows,
+                                        const std::string& arrays_path, const Reporter& reporter);
 
 }  // namespace sigchain::trace

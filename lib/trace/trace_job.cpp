@@ -34,6 +34,7 @@
 #include "trace/black_cube.hpp"
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
+#include "trace/like_grid.hpp"
 #include "trace/ground_layers.hpp"
 #include "trace/part.hpp"
 #include "trace/uncertainty.hpp"
@@ -98,6 +99,7 @@ struct Setup {
     io::Adv adv;
     io::Snd snd;
     long row_begin = 0, row_end = 0;
+    std::optional<LikeGrid> like;  // --like: the raster's grid, whose size the image takes
 };
 
 Setup read_setup(const TraceJob& job) {
@@ -108,6 +110,12 @@ Setup read_setup(const TraceJob& job) {
         throw UsageError(job.snd_path + " has " + std::to_string(st.snd.bands.size()) +
                          " band(s) but " + std::to_string(job.rad_paths.size()) +
                          " .rad file(s) were given (one per band, in band order)");
+    if (!job.like_path.empty()) {
+        if (!job.crs.empty()) throw UsageError("--like takes the raster's CRS: not with --crs");
+        st.like = read_like_grid(job.like_path);
+        st.adv.rows = st.like->rows;
+        st.adv.columns = st.like->columns;
+    }
     st.row_end = st.adv.rows;
     if (job.rows) {
         if (job.rows->second > st.adv.rows)
@@ -423,17 +431,20 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     times.scene_files = times.lap() - times.build;
     const Temperatures temperatures = read_temperatures(job, grid, scene, reporter);
     times.tmp = times.lap();
-    const std::unique_ptr<Sensor> sensor = make_sensor(
+    std::string crs_note;
+    std::optional<GeoPlacement> place =
+        geo_placement(job.crs, job.scene_path, {st.snd.latitude_deg, st.snd.longitude_east_deg},
+                      io::meters_per_unit(st.adv.units), job.snd_path, crs_note);
+    if (st.like) place->map_crs = st.like->crs, crs_note = "map CRS: the --like raster's";
+    if (!crs_note.empty()) reporter.info(crs_note);
+    std::unique_ptr<Sensor> sensor = make_sensor(
         st.adv, job.adv_path, SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
+    if (st.like)
+        sensor = make_grid_sensor(std::move(sensor), *st.like, *place, scene,
+                                  scene.bounds().lower[2]);
     const Sensor& camera = *sensor;
     reporter.info("sensor: " + camera.summary());
     check_view_angles(camera, atmosphere, reporter);
-
-    std::string crs_note;
-    const std::optional<GeoPlacement> place =
-        geo_placement(job.crs, job.scene_path, {st.snd.latitude_deg, st.snd.longitude_east_deg},
-                      io::meters_per_unit(st.adv.units), job.snd_path, crs_note);
-    if (!crs_note.empty()) reporter.info(crs_note);
     const RenderOptions options = render_options(job, st);
     RenderInputs inputs;
     inputs.scene = &scene;
@@ -472,22 +483,12 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
                             st.row_end, job.igm_path, job.glt_path, note);
         reporter.info(note);
     }
-    if (place) {
-        std::string note;
-        try {
-            georef = georeference_outputs(camera, scene, *place, plane, st.row_begin,
-                                          st.row_end, st.adv.rows,
-                                          image::geolocation_name(job.output_path), note);
-        } catch (const DataError& e) {
-            // A map CRS the user named must hold the image; the default one (the UTM
-            // zone, the DEM's) gives way to a view it cannot hold (a platform 1e9 m up).
-            if (!job.crs.empty()) throw;
-            note.clear();
-            reporter.warn(std::string("not georeferenced: ") + e.what() +
-                          " (--crs names another map CRS)");
-        }
-        if (!note.empty()) reporter.info(note);
-    }
+    if (st.like)
+        georef = like_georeference(*st.like, st.row_begin);
+    else if (place)
+        georef = georeference_render(camera, scene, *place, !job.crs.empty(), plane, st.row_begin,
+                                     st.row_end, st.adv.rows,
+                                     image::geolocation_name(job.output_path), reporter);
     write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, georef,
                   sensor_type(camera), result);
     alarm_if_black(result.radiance, job.output_path, reporter);

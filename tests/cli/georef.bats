@@ -251,3 +251,52 @@ EOF
     run -0 trace --help
     assert_output --partial "--crs EPSG:N|FILE|none"
 }
+
+@test "georef: --like RASTER renders on the raster's grid, the box top where the map has it" {
+    # A 0.5 m grid in UTM 18N about the box scene's origin (43.08333 N, 77.66667 W).
+    local e0 n0
+    read -r e0 n0 < <(echo "-77.66667 43.08333" |
+        gdaltransform -s_srs EPSG:4326 -t_srs EPSG:32618 -output_xy)
+    run -0 gdal_create -q -of GTiff -outsize 48 48 -a_srs EPSG:32618 \
+        -a_ullr "$(awk -v e="$e0" 'BEGIN { printf "%.6f", e - 2 }')" \
+        "$(awk -v n="$n0" 'BEGIN { printf "%.6f", n + 22 }')" \
+        "$(awk -v e="$e0" 'BEGIN { printf "%.6f", e + 22 }')" \
+        "$(awk -v n="$n0" 'BEGIN { printf "%.6f", n - 2 }')" -bands 1 grid.tif
+    # A camera 1 km above the box (a nadir view, its relief displacement 0.6 cm).
+    printf '10 10 0\n10 10 1000\n90 -90 0\n32\n16 16\nunits = m\npixel_pitch_um = 500\nsamples_per_pixel = 1\n' > high.adv
+    run -0 --separate-stderr trace -v --like grid.tif high.adv "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" --truth truth.tif -o like.tif
+    [[ "$stderr" == *"sensor: frame camera position on a map grid of 48 x 48 cells (--like)"* ]]
+    # Its grid is the raster's, exactly: size, origin, cell size and CRS.
+    for f in like.tif truth.tif; do
+        [ "$(gdalinfo "$f" | grep -E '^(Size is|Origin =|Pixel Size =)')" = \
+            "$(gdalinfo grid.tif | grep -E '^(Size is|Origin =|Pixel Size =)')" ]
+        [ "$(gdalsrsinfo -o epsg "$f")" = "$(gdalsrsinfo -o epsg grid.tif)" ]
+    done
+    [ ! -e like.geoloc.tif ]
+    # The box top (wood, 4 x 4 m, centred 10 m east and north of the origin in the
+    # scene's east-north-up frame) on the map: UTM's grid turns by the meridian
+    # convergence (1.8 deg here), so its centre is where gdaltransform puts the
+    # point's longitude and latitude. Cells are taken whole by their centre's ray, so
+    # the turned square's edges are quantised by up to half a cell: about 64 cells,
+    # their centroid within half a cell (0.25 m) of the centre on each axis.
+    local lat lon want
+    read -r lat lon < <(awk 'BEGIN { a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
+        lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
+        N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
+        printf "%.9f %.9f\n", lat0 + 10 / M / r, lon0 + 10 / (N * cos(lat0 * r)) / r }')
+    want=$(echo "$lon $lat" | gdaltransform -s_srs EPSG:4326 -t_srs EPSG:32618 -output_xy)
+    run -0 awk -v want="$want" 'BEGIN { split(want, w, " ") }
+        $3 == 37 { n++; x += $1; y += $2 }
+        END { dx = x / n - w[1]; dy = y / n - w[2]
+            printf "%d cells, centroid %.3f, %.3f m off\n", n, dx, dy
+            exit !(n >= 56 && n <= 72 && dx * dx < 0.0625 && dy * dy < 0.0625) }' \
+        <(gdal_translate -q -of XYZ -b 2 truth.tif /vsistdout/)
+    echo "$output"
+    run -2 --separate-stderr trace --like grid.tif --crs EPSG:32618 high.adv "$DATA/box.snd" \
+        "$GDB" "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o x.tif
+    [[ "$stderr" == *"--like takes the raster's CRS: not with --crs"* ]]
+    run -1 --separate-stderr trace --like high.adv high.adv "$DATA/box.snd" "$GDB" \
+        "$DATA/box.mat" "$DATA/band1.rad" "$DATA/band2.rad" -o x.tif
+    [ ! -e x.tif ]
+}

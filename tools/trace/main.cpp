@@ -17,7 +17,7 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs", "standard-error", "convergence",
+                          "adjacency-radius", "co", "crs", "like", "standard-error", "convergence",
                           "convergence-error", "igm", "glt", "uncertainty"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
@@ -84,6 +84,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.adjacency = vm.count("no-adjacency") == 0;
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
     if (vm.count("crs")) job.crs = vm["crs"].as<std::string>();
+    if (vm.count("like")) job.like_path = vm["like"].as<std::string>();
     job.standard_error = vm.count("standard-error") > 0;
     if (vm.count("convergence")) {
         const auto count = cli::integers(2, sigchain::io::kAdvMaxSamplesPerPixel);
@@ -149,6 +150,8 @@ int main(int argc, char** argv) {
         "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
         "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT "
         "FILE; none: write no georeferencing)")(
+        "like", cli::po::value<std::string>()->value_name("RASTER"),
+        "render on RASTER's grid: its CRS, size and geotransform (a frame camera)")(
         "igm", cli::po::value<std::string>()->value_name("FILE.tif"),
         "write each pixel's ground position (IGM: map and scene coordinates)")(
         "glt", cli::po::value<std::string>()->value_name("FILE.tif"),
