@@ -275,6 +275,11 @@ void Cli::add_scene_input_options() {
     add_number("material-id", "N", integers(0, 16777216),
                "one .mat id for every face of a mesh scene, or for a DEM scene's terrain "
                "(0-16777216)");
+    m_options.add_options()("up-axis", po::value<std::string>()->value_name("AXIS"),
+                            "a mesh scene's up axis, +X -X +Y -Y +Z or -Z (default: +Z for "
+                            "OBJ, PLY, STL; glTF and FBX have their own)")(
+        "allow-degenerate", "skip a .gdb's or DEM's degenerate facets, with a warning each")(
+        "strict-mesh", "make a mesh file's degenerate facets an error instead of skipping them");
 }
 
 void Cli::add_creation_option() {
@@ -424,6 +429,9 @@ SceneInputOptions scene_input(const po::variables_map& vm) {
     o.landuse = text("landuse");
     o.landuse_map = text("landuse-map");
     if (vm.count("material-id")) o.material_id = static_cast<long>(integer(vm, "material-id"));
+    o.up_axis = text("up-axis");
+    o.allow_degenerate = vm.count("allow-degenerate") > 0;
+    o.strict_mesh = vm.count("strict-mesh") > 0;
     return o;
 }
 

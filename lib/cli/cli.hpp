@@ -133,8 +133,12 @@ public:
     // --co KEY=VALUE, repeatable: a GDAL creation option for GeoTIFF outputs (as
     // gdal_translate -co), e.g. COMPRESS=DEFLATE.
     void add_creation_option();
-    // --material-map FILE, --material-id N, --landuse FILE, --landuse-map FILE: the
-    // materials of a mesh or DEM raster given as the scene itself (odb(5), SCENE ARGUMENT).
+    // The scene options of every tool that reads a scene (odb(5), SCENE ARGUMENT), so
+    // that one command line's serve the whole chain: --material-map FILE,
+    // --material-id N, --landuse FILE, --landuse-map FILE (the materials of a mesh or DEM
+    // raster given as the scene itself), --up-axis AXIS (a lone mesh's up axis),
+    // --allow-degenerate (a .gdb's or DEM's degenerate facets skipped, not an error)
+    // and --strict-mesh (a mesh file's degenerate facets an error, not skipped).
     void add_scene_input_options();
     // --strict: what a tool otherwise only warns about (its man page lists what) is an
     // error (exit status 1).
@@ -169,12 +173,16 @@ private:
     void print_help() const;
 };
 
-// The values of add_scene_input_options() (empty or unset when not given). UsageError
-// for a negative --material-id.
+// The values of add_scene_input_options() (empty, unset or false when not given).
+// UsageError for a negative --material-id. --up-axis is passed as given (lib/scene
+// reads it: scene::parse_up_axis).
 struct SceneInputOptions {
     std::string material_map;
     std::optional<long> material_id;
     std::string landuse, landuse_map;
+    std::string up_axis;
+    bool allow_degenerate = false;
+    bool strict_mesh = false;
 };
 SceneInputOptions scene_input(const po::variables_map& vm);
 

@@ -202,4 +202,16 @@ MeshData read_dem_mesh(const DemSource& s, DegeneratePolicy policy,
     return b.take();
 }
 
+GeoOrigin dem_centre(const std::string& dem_path) {
+    const GeoRaster dem = geo::read_geo_raster(dem_path, geo::Bands::First);
+    geo::require_crs(dem.crs, dem_path, "the DEM");
+    const auto& gt = dem.geotransform;
+    const double c = 0.5 * static_cast<double>(dem.columns),
+                 r = 0.5 * static_cast<double>(dem.rows);
+    const geo::LatLon p =
+        geo::Wgs84Transform(dem.crs, {dem_path, 0})
+            .lat_lon(gt[0] + c * gt[1] + r * gt[2], gt[3] + c * gt[4] + r * gt[5]);
+    return {p.latitude_deg, p.longitude_deg, 0.0};
+}
+
 }  // namespace sigchain::scene

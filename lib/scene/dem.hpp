@@ -35,4 +35,10 @@ struct DemSource {
 MeshData read_dem_mesh(const DemSource& source, DegeneratePolicy policy,
                        std::vector<std::string>* warnings);
 
+// The centre of a DEM's extent, edge to edge (the geotransform at half its columns and
+// rows, rotation terms included), on WGS84, at height 0: where a DEM given alone places
+// itself (lone_dem_origin). Throws IoError or DataError as read_dem_mesh (no CRS, no
+// geotransform, a point that cannot be transformed).
+GeoOrigin dem_centre(const std::string& dem_path);
+
 }  // namespace sigchain::scene

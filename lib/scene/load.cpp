@@ -70,9 +70,21 @@ ParallelOptions parallel_of(const LoadOptions& o) {
     return p;
 }
 
+// The policy of .gdb files and DEMs.
 DegeneratePolicy policy_of(const LoadOptions& o) {
     if (!o.allow_degenerate) return DegeneratePolicy::Error;
     return o.keep_degenerate ? DegeneratePolicy::Report : DegeneratePolicy::Skip;
+}
+
+// Where a .gdb's or DEM's degenerate facets are warned about: `warnings`, or nowhere.
+std::vector<std::string>* degenerate_warnings(const LoadOptions& o,
+                                              std::vector<std::string>* warnings) {
+    return o.quiet_degenerate ? nullptr : warnings;
+}
+
+// The policy of mesh files (LoadOptions::allow_degenerate says why never Report).
+DegeneratePolicy mesh_policy_of(const LoadOptions& o) {
+    return o.input.strict_mesh ? DegeneratePolicy::Error : DegeneratePolicy::Skip;
 }
 
 // The mesh of one .odb object in its own units, and a key that names what it depends
@@ -86,27 +98,27 @@ struct ObjectMesh {
 MeshData build_gdb(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
                    std::vector<std::string>* warnings) {
     return mesh_from_gdb(io::read_gdb_file(io::resolve_odb_path(odb, obj.path), parallel_of(o)),
-                         policy_of(o), warnings);
+                         policy_of(o), degenerate_warnings(o, warnings));
 }
 
 // A mesh file through Assimp (OBJ_FILENAME, MESH_FILENAME, a lone mesh).
 MeshData mesh_of(const std::string& path, const std::string& map_path,
-                 std::optional<long> material_id, const LoadOptions& o,
-                 std::vector<std::string>* warnings) {
-    MeshSource s{path, nullptr, material_id};
+                 std::optional<long> material_id, std::optional<UpAxis> up_axis,
+                 const LoadOptions& o, std::vector<std::string>* warnings) {
+    MeshSource s{path, nullptr, material_id, up_axis};
     IdMap map;
     if (!map_path.empty()) {
         map = read_id_map(map_path);
         s.material_map = &map;
     }
-    return read_mesh_file(s, policy_of(o), warnings);
+    return read_mesh_file(s, mesh_policy_of(o), warnings);
 }
 
 MeshData build_mesh(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
                     std::vector<std::string>* warnings) {
     return mesh_of(io::resolve_odb_path(odb, obj.path),
                    obj.material_map.empty() ? "" : io::resolve_odb_path(odb, obj.material_map),
-                   obj.material_id, o, warnings);
+                   obj.material_id, std::nullopt, o, warnings);
 }
 
 // A DEM (DEM_FILENAME, a lone raster); `where` names what asks for it.
@@ -130,7 +142,7 @@ MeshData dem_of(const std::string& path, std::optional<long> material_id,
     }
     s.meters_per_unit = meters_per_unit;
     s.origin = *o.origin;
-    return read_dem_mesh(s, policy_of(o), warnings);
+    return read_dem_mesh(s, policy_of(o), degenerate_warnings(o, warnings));
 }
 
 MeshData build_dem(const io::Odb& odb, const io::OdbObject& obj, const LoadOptions& o,
@@ -188,7 +200,8 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
             if (obj.source == io::OdbSource::Gdb) {
                 const io::Gdb gdb =
                     io::read_gdb_file(io::resolve_odb_path(odb, obj.path), parallel_of(options));
-                MeshData data = mesh_from_gdb(gdb, policy_of(options), warnings);
+                MeshData data =
+                    mesh_from_gdb(gdb, policy_of(options), degenerate_warnings(options, warnings));
                 corners = box_corners(data);
                 mesh = sink.add_mesh(std::move(data), &gdb, at);
             } else {
@@ -213,8 +226,9 @@ void assemble_odb(const std::string& path, const LoadOptions& options, SceneSink
 }
 
 // The scene-argument options a kind of scene does not use are refused, not ignored:
-// `mesh` allows --material-map and --material-id, `dem` --material-id and --landuse
-// with --landuse-map, and a .gdb or .odb (neither) names its materials itself.
+// `mesh` allows --material-map, --material-id and --up-axis, `dem` --material-id and
+// --landuse with --landuse-map, and a .gdb or .odb (neither) names its materials itself
+// and places its meshes with its instances.
 void refuse_unused_options(const SceneInput& in, const std::string& path, bool mesh, bool dem) {
     const std::string kind = mesh  ? "a mesh scene"
                              : dem ? "a DEM scene"
@@ -226,14 +240,19 @@ void refuse_unused_options(const SceneInput& in, const std::string& path, bool m
     if (in.material_id && !mesh && !dem) refuse("--material-id");
     if (!in.landuse.empty() && !dem) refuse("--landuse");
     if (!in.landuse_map.empty() && !dem) refuse("--landuse-map");
+    if (!in.up_axis.empty() && !mesh)
+        throw UsageError(
+            "--up-axis does not apply to " + path + ": it turns a mesh given as the scene" +
+            (dem ? std::string() : " (an .odb turns its mesh objects by their INSTANCES)"));
 }
 
 void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink& sink,
                   std::vector<std::string>* warnings) {
     const io::Gdb gdb = io::read_gdb_file(path, parallel_of(options));
     // Line 0: a lone .gdb has no .odb object record; the location names the file.
-    const std::size_t mesh =
-        sink.add_mesh(mesh_from_gdb(gdb, policy_of(options), warnings), &gdb, {path, 0});
+    const std::size_t mesh = sink.add_mesh(
+        mesh_from_gdb(gdb, policy_of(options), degenerate_warnings(options, warnings)), &gdb,
+        {path, 0});
     sink.place(mesh, identity_affine(), "");
 }
 
@@ -241,13 +260,21 @@ void assemble_gdb(const std::string& path, const LoadOptions& options, SceneSink
 void assemble_mesh(const std::string& path, const LoadOptions& options, SceneSink& sink,
                    std::vector<std::string>* warnings) {
     const SceneInput& in = options.input;
-    if (in.material_map.empty() && !in.material_id)
-        throw UsageError(path + ": a mesh given as the scene needs --material-map FILE or "
-                                "--material-id N (see odb(5), SCENE ARGUMENT)");
+    std::optional<long> material_id = in.material_id;
+    if (in.material_map.empty() && !material_id) {
+        if (!options.geometry_only)
+            throw UsageError(path +
+                             ": a mesh given as the scene needs --material-map FILE or "
+                             "--material-id N (see odb(5), SCENE ARGUMENT)");
+        material_id = 0;  // nothing is shaded
+    }
     if (!in.material_map.empty() && in.material_id)
         throw UsageError("--material-map and --material-id exclude each other");
-    const std::size_t mesh = sink.add_mesh(
-        mesh_of(path, in.material_map, in.material_id, options, warnings), nullptr, {path, 0});
+    std::optional<UpAxis> up_axis;
+    if (!in.up_axis.empty()) up_axis = parse_up_axis(in.up_axis);
+    const std::size_t mesh =
+        sink.add_mesh(mesh_of(path, in.material_map, material_id, up_axis, options, warnings),
+                      nullptr, {path, 0});
     const double scale = mesh_in_metres(path) ? 1 / options.scene_meters_per_unit : 1;
     sink.place(mesh, {scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0}, "");
 }
@@ -269,12 +296,13 @@ void assemble_dem(const std::string& path, const LoadOptions& options, SceneSink
     const bool lu = !in.landuse.empty() || !in.landuse_map.empty();
     if (lu && (in.landuse.empty() || in.landuse_map.empty()))
         throw UsageError("--landuse and --landuse-map go together");
-    if (lu == in.material_id.has_value())
+    std::optional<long> material_id = in.material_id;
+    if (!lu && !material_id && options.geometry_only) material_id = 0;  // nothing is shaded
+    if (lu == material_id.has_value())
         throw UsageError(path + ": a DEM given as the scene needs either --material-id N or "
                                 "--landuse FILE with --landuse-map FILE");
     const std::size_t mesh = sink.add_mesh(
-        dem_of(path, in.material_id, in.landuse, in.landuse_map, 1, options, {path, 0},
-               warnings),
+        dem_of(path, material_id, in.landuse, in.landuse_map, 1, options, {path, 0}, warnings),
         nullptr, {path, 0});
     const double scale = 1 / options.scene_meters_per_unit;
     sink.place(mesh, {scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0}, "");
@@ -313,6 +341,14 @@ geo::Crs terrain_crs(const std::string& path) {
     }
     if (ext == "gdb" || is_mesh_path(path) || !std::ifstream(path) || !is_raster(path)) return {};
     return geo::raster_crs(path);
+}
+
+std::optional<GeoOrigin> lone_dem_origin(const std::string& path) {
+    const std::string ext = io::format_of_path(path);
+    if (ext == "gdb" || ext == "odb" || is_mesh_path(path) || !std::ifstream(path) ||
+        !is_raster(path))
+        return std::nullopt;
+    return dem_centre(path);
 }
 
 void assemble_scene(const std::string& path, const LoadOptions& options, SceneSink& sink,

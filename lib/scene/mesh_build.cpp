@@ -15,8 +15,9 @@ std::string facet_where(const FacetOrigin& origin) {
     return origin.description.empty() ? where : where + ": " + origin.description;
 }
 
-MeshBuilder::MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings)
-    : m_policy(policy), m_warnings(warnings) {}
+MeshBuilder::MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings,
+                         std::string refusal_hint)
+    : m_policy(policy), m_warnings(warnings), m_refusal_hint(std::move(refusal_hint)) {}
 
 std::uint32_t MeshBuilder::add_vertex(const geo::Vec3& p) {
     for (double c : p) m_mesh.vertices.push_back(static_cast<float>(c));
@@ -56,8 +57,8 @@ bool MeshBuilder::add_facet(const std::vector<std::uint32_t>& polygon,
             if (m_policy == DegeneratePolicy::Error)
                 throw DataError({origin.file, origin.line},
                                 (origin.description.empty() ? "" : origin.description + ": ") +
-                                    why +
-                                    " (a degenerate facet; trace --allow-degenerate skips it)");
+                                    why + " (a degenerate facet; " + m_refusal_hint + ")");
+            m_degenerate.push_back(origin);
             if (m_policy == DegeneratePolicy::Report) {
                 if (m_warnings) m_warnings->push_back(facet_where(origin) + ": " + why + " (kept)");
             } else {

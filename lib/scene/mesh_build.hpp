@@ -1,5 +1,5 @@
-// Building a MeshData from polygons (any source: .gdb, OBJ, DEM), with the degenerate
-// facet policy of load_scene (error, skip with a warning, or keep).
+// Building a MeshData from polygons (any source: .gdb, mesh files, DEM), with the
+// degenerate facet policy of load_scene (error, skip with a warning, or keep).
 #pragma once
 
 #include <cstdint>
@@ -23,8 +23,10 @@ enum class DegeneratePolicy {
 class MeshBuilder {
 public:
     // `warnings` receives one "FILE:LINE: DESCRIPTION: why (skipped)" per skipped facet
-    // (may be null with Keep or Error).
-    MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings);
+    // (may be null: the facets are still listed by degenerate()). `refusal_hint` ends
+    // the Error policy's message: "(a degenerate facet; HINT)".
+    MeshBuilder(DegeneratePolicy policy, std::vector<std::string>* warnings,
+                std::string refusal_hint = "trace --allow-degenerate skips it");
 
     // Adds a vertex (mesh units) and returns its index.
     std::uint32_t add_vertex(const geo::Vec3& p);
@@ -41,11 +43,15 @@ public:
     bool faces_up(const std::vector<std::uint32_t>& triangle) const;
 
     std::size_t facet_count() const { return m_mesh.facets.size(); }
+    // The degenerate facets met so far (Skip and Report), in the order added.
+    const std::vector<FacetOrigin>& degenerate() const { return m_degenerate; }
     MeshData take() { return std::move(m_mesh); }
 
 private:
     DegeneratePolicy m_policy;
     std::vector<std::string>* m_warnings;
+    std::string m_refusal_hint;
+    std::vector<FacetOrigin> m_degenerate;
     MeshData m_mesh;
     std::vector<geo::Vec3> m_points;   // double copies of the vertices: degeneracy, normals
     std::vector<geo::Vec3> m_polygon;  // scratch

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <fstream>
 #include <optional>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -29,20 +30,38 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-// Whether the file's +Y is up (glTF 2.0, section 3.4; FBX by its UpAxis), so that
-// (x, y, z) -> (x, -z, y) turns it to sigchain's +Z up. Throws for other axes.
-bool y_up(const aiScene& s, const std::string& path, const std::string& ext) {
-    if (ext == "gltf" || ext == "glb") return true;
-    if (ext != "fbx") return false;
+// The up axis a glTF or FBX file has by its specification or declaration (glTF 2.0,
+// section 3.4: +Y; FBX: UpAxis 0, 1 or 2 for X, Y or Z and UpAxisSign 1 or -1, +Y when
+// absent); none for the others. Throws DataError for an FBX axis out of those ranges.
+std::optional<UpAxis> own_up_axis(const aiScene& s, const std::string& path,
+                                  const std::string& ext) {
+    if (ext == "gltf" || ext == "glb") return UpAxis::PlusY;
+    if (ext != "fbx") return std::nullopt;
     int axis = 1, sign = 1;  // FBX's defaults when the file declares nothing
     if (s.mMetaData) {
         s.mMetaData->Get("UpAxis", axis);
         s.mMetaData->Get("UpAxisSign", sign);
     }
-    if (sign == 1 && (axis == 1 || axis == 2)) return axis == 1;
-    throw DataError({path, 0}, "the FBX up axis is " + std::string(sign < 0 ? "-" : "+") +
-                                   "XYZ"[std::clamp(axis, 0, 2)] +
-                                   "; only +Y and +Z up are supported");
+    static const std::array<std::array<UpAxis, 2>, 3> kAxes{{{UpAxis::PlusX, UpAxis::MinusX},
+                                                             {UpAxis::PlusY, UpAxis::MinusY},
+                                                             {UpAxis::PlusZ, UpAxis::MinusZ}}};
+    if (axis < 0 || axis > 2 || (sign != 1 && sign != -1))
+        throw DataError({path, 0}, "the FBX up axis (UpAxis " + std::to_string(axis) +
+                                       ", UpAxisSign " + std::to_string(sign) +
+                                       ") is none of +-X, +-Y, +-Z");
+    return kAxes[static_cast<std::size_t>(axis)][sign < 0 ? 1 : 0];
+}
+
+// The file's up axis: its own (glTF, FBX), which a user's must not contradict, or the
+// user's, or +Z.
+UpAxis file_up_axis(const aiScene& s, const MeshSource& source, const std::string& ext) {
+    const std::optional<UpAxis> own = own_up_axis(s, source.path, ext);
+    if (own && source.up_axis && *source.up_axis != *own)
+        throw UsageError(
+            source.path + ": --up-axis " + up_axis_name(*source.up_axis) +
+            " contradicts the file's own up axis, " + up_axis_name(*own) +
+            (ext == "fbx" ? " (declared by the FBX file)" : " (glTF 2.0, section 3.4)"));
+    return own.value_or(source.up_axis.value_or(UpAxis::PlusZ));
 }
 
 using Matrix = std::array<double, 12>;  // row-major 3x4, the file frame to sigchain's
@@ -65,13 +84,29 @@ bool is_identity(const Matrix& m) {
     return m == Matrix{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
 }
 
+// turn_up as a matrix: its columns are the turned unit vectors.
+Matrix up_matrix(UpAxis up) {
+    Matrix m{};
+    for (int j = 0; j < 3; ++j) {
+        geo::Vec3 e{0, 0, 0};
+        e[j] = 1;
+        const geo::Vec3 c = turn_up(up, e);
+        for (int i = 0; i < 3; ++i) m[4 * i + j] = c[i] + 0.0;  // no -0: the old +Y matrix
+    }
+    return m;
+}
+
 // The walk over nodes, meshes and faces, feeding a MeshBuilder.
 class MeshWalk {
 public:
+    // Degenerate facets are listed by degenerate(), not warned about one by one.
     MeshWalk(const MeshSource& source, const aiScene& scene, std::vector<ObjFace> obj_faces,
-             DegeneratePolicy policy, std::vector<std::string>* warnings)
-        : m_source(source), m_scene(scene), m_obj(std::move(obj_faces)),
-          m_is_obj(lower_extension(source.path) == "obj"), m_builder(policy, warnings) {}
+             DegeneratePolicy policy)
+        : m_source(source),
+          m_scene(scene),
+          m_obj(std::move(obj_faces)),
+          m_is_obj(lower_extension(source.path) == "obj"),
+          m_builder(policy, nullptr, "skipped without --strict-mesh") {}
 
     void node(const aiNode& n, const Matrix& parent) {
         const Matrix frame = times(parent, n.mTransformation);
@@ -89,6 +124,7 @@ public:
 
     // Faces of every mesh walked, lines and points included.
     std::size_t faces_read() const { return m_faces_read; }
+    const std::vector<FacetOrigin>& degenerate() const { return m_builder.degenerate(); }
 
 private:
     const MeshSource& m_source;
@@ -191,6 +227,68 @@ private:
 
 }  // namespace
 
+UpAxis parse_up_axis(const std::string& text) {
+    static const std::array<UpAxis, 6> kAxes{UpAxis::PlusX,  UpAxis::MinusX, UpAxis::PlusY,
+                                             UpAxis::MinusY, UpAxis::PlusZ,  UpAxis::MinusZ};
+    std::string upper = text;
+    std::transform(upper.begin(), upper.end(), upper.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    for (UpAxis a : kAxes)
+        if (upper == up_axis_name(a)) return a;
+    throw UsageError("--up-axis: " + text + ": must be +X, -X, +Y, -Y, +Z or -Z");
+}
+
+std::string up_axis_name(UpAxis axis) {
+    switch (axis) {
+        case UpAxis::PlusX:
+            return "+X";
+        case UpAxis::MinusX:
+            return "-X";
+        case UpAxis::PlusY:
+            return "+Y";
+        case UpAxis::MinusY:
+            return "-Y";
+        case UpAxis::PlusZ:
+            return "+Z";
+        case UpAxis::MinusZ:
+            return "-Z";
+    }
+    throw std::logic_error("unknown up axis");
+}
+
+geo::Vec3 turn_up(UpAxis up, const geo::Vec3& p) {
+    const double x = p[0], y = p[1], z = p[2];
+    switch (up) {
+        case UpAxis::PlusX:
+            return {-z, y, x};
+        case UpAxis::MinusX:
+            return {z, y, -x};
+        case UpAxis::PlusY:
+            return {x, -z, y};
+        case UpAxis::MinusY:
+            return {x, z, -y};
+        case UpAxis::PlusZ:
+            return {x, y, z};
+        case UpAxis::MinusZ:
+            return {x, -y, -z};
+    }
+    throw std::logic_error("unknown up axis");
+}
+
+std::string degenerate_summary(const std::string& path, const std::vector<FacetOrigin>& facets,
+                               bool kept) {
+    constexpr std::size_t kNamed = 3;
+    std::string ids;
+    for (std::size_t i = 0; i < facets.size() && i < kNamed; ++i) {
+        if (i) ids += ", ";
+        ids += facets[i].id;
+        if (facets[i].line > 0) ids += " at line " + std::to_string(facets[i].line);
+    }
+    if (facets.size() > kNamed) ids += ", ...";
+    return path + ": " + std::to_string(facets.size()) + " degenerate facet" +
+           (facets.size() == 1 ? "" : "s") + (kept ? " kept (" : " skipped (") + ids + ")";
+}
+
 bool is_mesh_path(const std::string& path) {
     static const std::array<std::string, 6> kExtensions{"obj", "ply", "gltf", "glb", "fbx", "stl"};
     const std::string ext = lower_extension(path);
@@ -206,9 +304,10 @@ MeshData read_mesh_file(const MeshSource& source, DegeneratePolicy policy,
                         std::vector<std::string>* warnings) {
     if (!std::ifstream(source.path)) throw IoError(source.path + ": cannot open the mesh file");
     const std::string ext = lower_extension(source.path);
-    // OBJ: the statements' numbering (ids, lines) and the checks Assimp does not make.
+    // OBJ: the statements' numbering (ids, lines) and the checks Assimp does not make (a
+    // face before any usemtl is one only when the faces' materials come from their names).
     std::vector<ObjFace> obj;
-    if (ext == "obj") obj = scan_obj_faces(TextInput::from_file(source.path));
+    if (ext == "obj") obj = scan_obj_faces(TextInput::from_file(source.path), !source.material_id);
     // PLY: the structure Assimp does not check (it hangs without end_header and drops
     // the faces of a truncated body).
     std::optional<PlyCounts> ply;
@@ -218,15 +317,17 @@ MeshData read_mesh_file(const MeshSource& source, DegeneratePolicy policy,
     const aiScene* scene = importer.ReadFile(source.path, 0);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         throw DataError({source.path, 0}, importer.GetErrorString());
-    Matrix axes{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-    if (y_up(*scene, source.path, ext)) axes = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0};
-    MeshWalk walk(source, *scene, std::move(obj), policy, warnings);
+    const Matrix axes = up_matrix(file_up_axis(*scene, source, ext));
+    MeshWalk walk(source, *scene, std::move(obj), policy);
     walk.node(*scene->mRootNode, axes);
     MeshData mesh = walk.finish();
     if (ply && walk.faces_read() != ply->faces)
         throw DataError({source.path, 0}, "Assimp read " + std::to_string(walk.faces_read()) +
                                               " faces of the header's " +
                                               std::to_string(ply->faces));
+    if (warnings && !walk.degenerate().empty())
+        warnings->push_back(
+            degenerate_summary(source.path, walk.degenerate(), policy == DegeneratePolicy::Report));
     return mesh;
 }
 

@@ -27,7 +27,7 @@ std::string rest_of(std::string_view text, std::string_view keyword) {
 
 }  // namespace
 
-std::vector<ObjFace> scan_obj_faces(const TextInput& in) {
+std::vector<ObjFace> scan_obj_faces(const TextInput& in, bool need_materials) {
     LineCursor cur(in);
     cur.require_not_empty("OBJ statements (v, f, usemtl)");
     std::string object, group, material;
@@ -46,7 +46,7 @@ std::vector<ObjFace> scan_obj_faces(const TextInput& in) {
             if (f.size() < 4)
                 throw DataError(
                     at, "expected a face of at least 3 vertices, found " + quoted(line.text));
-            if (!have_material)
+            if (!have_material && need_materials)
                 throw DataError(at, "a face before any usemtl: its material is unknown");
             std::string og = std::to_string(object_number) + "-" + std::to_string(group_number);
             std::string id = og + "-" + std::to_string(face_number);

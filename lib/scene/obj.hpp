@@ -23,8 +23,9 @@ struct ObjFace {
 // face follows (0 before any), G the number of the `g` statement (0 before any), F the
 // 1-based face number in the file. Only the statement keywords, names and the count of a
 // face's references are read here; vertex values and references are Assimp's.
-// Throws DataError "FILE:LINE: ..." (a face before any usemtl, a face of fewer than 3
-// vertices, free-form geometry, a line continuation).
-std::vector<ObjFace> scan_obj_faces(const TextInput& in);
+// Throws DataError "FILE:LINE: ..." (a face before any usemtl when `need_materials`,
+// i.e. the faces' materials come from their names; a face of fewer than 3 vertices,
+// free-form geometry, a line continuation).
+std::vector<ObjFace> scan_obj_faces(const TextInput& in, bool need_materials = true);
 
 }  // namespace sigchain::scene

@@ -2,6 +2,7 @@
 #include "trace/view_angle_job.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -69,18 +70,43 @@ geom::ViewAngleReport find_view_angles(const Sensor& sensor, const scene::Scene&
     return rep;
 }
 
-void run_view_angle_job(const ViewAngleJob& job, std::ostream& out) {
+namespace {
+
+// The scene's geodetic origin: --origin, or where a DEM given as the scene places itself.
+std::optional<scene::GeoOrigin> scene_origin(const ViewAngleJob& job, const Reporter& reporter) {
+    if (job.origin) return job.origin;
+    std::optional<scene::GeoOrigin> origin = scene::lone_dem_origin(job.scene_path);
+    if (origin) {
+        char where[96];
+        std::snprintf(where, sizeof where, "latitude %.6f deg, longitude %.6f deg",
+                      origin->latitude_deg, origin->longitude_east_deg);
+        reporter.info(job.scene_path + ": placed about its centre, " + where + " (no --origin)");
+    }
+    return origin;
+}
+
+}  // namespace
+
+void run_view_angle_job(const ViewAngleJob& job, std::ostream& out, const Reporter& reporter) {
     const io::Adv adv = io::read_adv_file(job.adv_path);
+    const std::optional<scene::GeoOrigin> geo_origin = scene_origin(job, reporter);
     // The sensor as trace makes it: its keys checked, its .trj found beside the .adv.
     std::optional<SceneOrigin> origin;
-    if (job.origin) origin = SceneOrigin{job.origin->latitude_deg, job.origin->longitude_east_deg};
+    if (geo_origin) origin = SceneOrigin{geo_origin->latitude_deg, geo_origin->longitude_east_deg};
     const std::unique_ptr<Sensor> sensor = make_sensor(adv, job.adv_path, origin);
     scene::LoadOptions load;
     load.scene_meters_per_unit = io::meters_per_unit(adv.units);
-    load.allow_degenerate = true;  // geometry only: a degenerate facet is never hit
-    load.origin = job.origin;
+    // Geometry only: a degenerate facet is never hit, so a .gdb's or DEM's are skipped
+    // silently (trace names them), a mesh file's as trace skips them (or refuses them);
+    // nothing is shaded, so a lone mesh or DEM needs no materials.
+    load.allow_degenerate = true;
+    load.quiet_degenerate = true;
+    load.geometry_only = true;
+    load.origin = geo_origin;
     load.input = job.scene_input;
-    const scene::Scene sc = scene::load_scene(job.scene_path, load);
+    scene::LoadReport report;
+    const scene::Scene sc = scene::load_scene(job.scene_path, load, &report);
+    for (const std::string& w : report.warnings) reporter.warn(w);
     // The scene as a whole and the whole field of view: conditions of no single line.
     if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
     // A frame camera keeps lib/geom's own computation (its reference from the camera).

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <string>
 
+#include "core/report.hpp"
 #include "geom/view_angle.hpp"
 #include "geom/view_angle_job.hpp"
 #include "scene/load.hpp"
@@ -19,12 +20,13 @@ namespace sigchain::trace {
 struct ViewAngleJob {
     std::string adv_path;
     std::string scene_path;         // .gdb, .odb, a mesh or a DEM raster (scene::assemble_scene)
-    scene::SceneInput scene_input;  // a lone mesh's or DEM's materials
+    scene::SceneInput scene_input;  // the scene options (materials optional: geometry only)
     bool snd_line = false;          // print only the .snd line of `method`
     geom::ViewAngleMethod method = geom::ViewAngleMethod::FieldOfView;
     int grid = 256;  // interior rays per image axis (field-of-view)
     // The scene's geodetic origin (--origin): where DEM objects of an .odb and a
     // geodetic .trj (at height 0, as trace places it about the .snd's) are placed.
+    // Without it a DEM given as the scene places itself (scene::lone_dem_origin).
     std::optional<scene::GeoOrigin> origin{};
 };
 
@@ -38,8 +40,11 @@ struct ViewAngleJob {
 geom::ViewAngleReport find_view_angles(const Sensor& sensor, const scene::Scene& scene,
                                        int grid = 256);
 
-// Runs the job and writes the report (or the .snd line) to `out`. Throws DataError
-// or IoError for bad inputs, including a field of view that misses the scene.
-void run_view_angle_job(const ViewAngleJob& job, std::ostream& out);
+// Runs the job and writes the report (or the .snd line) to `out`; the scene's warnings
+// (a mesh file's degenerate facets skipped, coincident .odb instances) go to
+// `reporter`, and with it verbose, the origin a lone DEM placed itself about. Throws
+// DataError or IoError for bad inputs, including a field of view that misses the scene.
+void run_view_angle_job(const ViewAngleJob& job, std::ostream& out,
+                        const Reporter& reporter = Reporter());
 
 }  // namespace sigchain::trace

@@ -1,10 +1,13 @@
 # Tests: trace find_min_max_view_angle therm
-# Also requires: sigchain-check
+# Also requires: sigchain-check, gdal_translate; the spider of Debian's assimp-testmodels
+#   (/usr/share/assimp/models/STL/Spider_ascii.stl) when installed, else that case skips
 #
 # Meshes (through Assimp) and DEM rasters given directly as the scene argument, against
 # the same files placed by an .odb (odb(5) SCENE ARGUMENT, MESH_FILENAME, DEM_FILENAME):
 # trace's box.adv camera (tests/data/trace) over a 20 m plate of two triangles (grass
-# and wood of box.mat) or a 6 x 6-cell DEM written here about box.snd's point.
+# and wood of box.mat) or a 6 x 6-cell DEM written here about box.snd's point. Then the
+# scene options every scene reader shares: a mesh's degenerate facets (skipped with one
+# line, --strict-mesh), --up-axis, and find_min_max_view_angle's geometry-only scenes.
 
 bats_require_minimum_version 1.5.0
 load test_helper
@@ -143,9 +146,6 @@ write_dem() {
     run -0 --separate-stderr find_min_max_view_angle --origin 43.08333,-77.66667 "$DATA/box.adv" \
         t.asc --material-id 1
     assert_line --index 2 --regexp '^scene-bounding-box +[0-9.]+ +[0-9.]+'
-    run -1 --separate-stderr find_min_max_view_angle "$DATA/box.adv" t.asc --material-id 1
-    [[ "$stderr" == *"t.asc: a DEM given as the scene needs the scene's geodetic origin"* ]] ||
-        fail "stderr: $stderr"
 }
 
 @test "trace --shadow-history and therm take a mesh given as the scene" {
@@ -160,4 +160,165 @@ write_dem() {
     # The OBJ's facet ids (odb(5)): object 1, no g, faces 1 and 2.
     run -0 awk '$1 ~ /^[0-9]/ { printf "%s ", $1 }' p.tmp
     assert_output "1-0-1 1-0-2 "
+}
+
+# deg.ply: the plate (clean.ply) with three degenerate faces among its two: a repeated
+# vertex (1-1-2), collinear vertices (1-1-3) and one point thrice (1-1-4).
+write_degenerate() {
+    local header='ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n'
+    header+='property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n'
+    header+='0 0 0\n20 0 0\n20 20 0\n0 20 0\n10 0 0\n'
+    printf "$header"'3 0 1 2\n3 0 1 1\n3 0 4 1\n3 3 3 3\n3 0 2 3\n' 5 > deg.ply
+    printf "$header"'3 0 1 2\n3 0 2 3\n' 2 > clean.ply
+}
+
+@test "a mesh's degenerate facets are skipped with one summary line; --strict-mesh refuses them" {
+    write_degenerate
+    run -0 --separate-stderr trace $(inputs deg.ply) --material-id 1 -o deg.img
+    assert_equal "$stderr" "trace: warning: deg.ply: 3 degenerate facets skipped (1-1-2, 1-1-3, 1-1-4)"
+    # Embree never hits a zero-area triangle: the picture is the clean plate's.
+    run -0 --separate-stderr trace $(inputs clean.ply) --material-id 1 -o clean.img
+    run -0 cmp deg.img clean.img
+    # --allow-degenerate is about .gdb files and DEMs: the same single line.
+    run -0 --separate-stderr trace $(inputs deg.ply) --material-id 1 --allow-degenerate -o a.img
+    assert_equal "$stderr" "trace: warning: deg.ply: 3 degenerate facets skipped (1-1-2, 1-1-3, 1-1-4)"
+    run -0 --separate-stderr trace -q $(inputs deg.ply) --material-id 1 -o q.img
+    assert_equal "$stderr" ''
+    run -1 --separate-stderr trace $(inputs deg.ply) --material-id 1 --strict-mesh -o x.img
+    assert_equal "$stderr" "trace: deg.ply: mesh '' (1-1-0), facet '' (1-1-2): vertices 2 and 3 coincide (a degenerate facet; skipped without --strict-mesh)"
+    [ ! -e x.img ] || fail "an output cube was written"
+    # An OBJ's summary gives the lines of its f statements.
+    printf 'v 0 0 0\nv 20 0 0\nv 20 20 0\nf 1 2 2\nf 1 2 3\n' > deg.obj
+    run -0 --separate-stderr trace $(inputs deg.obj) --material-id 1 -o obj.img
+    assert_equal "$stderr" "trace: warning: deg.obj: 1 degenerate facet skipped (0-0-1 at line 4)"
+    assert_no_temp_files .
+}
+
+@test "a real mesh with degenerate facets (assimp-testmodels' spider) renders with one summary line" {
+    local spider=/usr/share/assimp/models/STL/Spider_ascii.stl
+    [ -r "$spider" ] || skip "assimp-testmodels is not installed"
+    # The spider (about 6 x 8 x 3.3 m about its origin) stood on the box's target point.
+    printf 'OBJECT {\n    MESH_FILENAME = %s\n    MATERIAL_ID = 37\n    UNITS = m\n' "$spider" > spider.odb
+    printf '    INSTANCES {\n        10,10,1.65, 1,1,1, 0,0,0\n    }\n}\n' >> spider.odb
+    run -0 --separate-stderr trace $(inputs spider.odb) -o spider.img
+    assert_equal "$stderr" "trace: warning: $spider: 56 degenerate facets skipped (1-1-925, 1-1-928, 1-1-931, ...)"
+    run -1 --separate-stderr trace $(inputs spider.odb) --strict-mesh -o x.img
+    assert_equal "$stderr" "trace: $spider: mesh 'NoName_1' (1-1-0), facet '' (1-1-925): all vertices coincide (a degenerate facet; skipped without --strict-mesh)"
+    [ ! -e x.img ] || fail "an output cube was written"
+}
+
+@test "trace --shadow-history and therm skip a mesh's degenerate facets as the render does" {
+    write_degenerate
+    cp "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/fall_grass.ems" .
+    run -0 --separate-stderr trace --shadow-history --sky-rays 16 "$SEED/hawkeye.snd" deg.ply \
+        box_on_plane.mat --material-id 1 -o deg.shd
+    assert_equal "$stderr" "trace: warning: deg.ply: 3 degenerate facets skipped (1-1-2, 1-1-3, 1-1-4)"
+    # therm reads the same facets (its note of them only with -v) and finds each history.
+    run -0 --separate-stderr therm deg.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat deg.ply \
+        "$SEED/hawkeye.snd" --material-id 1 -o deg.tmp
+    assert_equal "$stderr" ''
+    run -0 awk '$1 ~ /^[0-9]/ { printf "%s ", $1 }' deg.tmp
+    assert_output "1-1-1 1-1-5 "
+    # The render meets the same keys: no warning about unmatched ones.
+    run -0 --separate-stderr trace $(inputs deg.ply) --material-id 1 --tmp deg.tmp -o t.img
+    assert_equal "$stderr" "trace: warning: deg.ply: 3 degenerate facets skipped (1-1-2, 1-1-3, 1-1-4)"
+    run -1 --separate-stderr therm deg.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat deg.ply \
+        "$SEED/hawkeye.snd" --material-id 1 --strict-mesh -o x.tmp
+    [[ "$stderr" == "therm: deg.ply: mesh '' (1-1-0), facet '' (1-1-2): "* ]] || fail "stderr: $stderr"
+}
+
+# yup.ply: the plate stored +Y up, (x, y, z) -> (x, 0, -y); plate.gltf: the same four
+# vertices (float32, base64: 0 0 0, 20 0 0, 20 0 -20, 0 0 -20) and triangles
+# (uint16: 0 1 2, 0 2 3), as glTF 2.0 stores a +Y-up mesh.
+write_y_up() {
+    printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n' > yup.ply
+    printf 'property float z\nelement face 2\nproperty list uchar int vertex_indices\n' >> yup.ply
+    printf 'end_header\n0 0 0\n20 0 0\n20 0 -20\n0 0 -20\n3 0 1 2\n3 0 2 3\n' >> yup.ply
+    cat > plate.gltf <<'EOF2'
+{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+ "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACgQQAAAAAAAAAAAACgQQAAAAAAAKDBAAAAAAAAAAAAAKDBAAABAAIAAAACAAMA"}],
+ "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                 {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                "min": [0, 0, -20], "max": [20, 0, 0]},
+               {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]}
+EOF2
+}
+
+@test "--up-axis +Y turns a PLY as the glTF route, a Z-up copy and a turned .odb place it" {
+    write_degenerate
+    write_y_up
+    run -0 --separate-stderr trace $(inputs yup.ply) --material-id 1 --up-axis +Y -o yup.img
+    assert_equal "$stderr" ''
+    run -0 --separate-stderr trace $(inputs plate.gltf) --material-id 1 -o gltf.img
+    run -0 cmp yup.img gltf.img
+    run -0 --separate-stderr trace $(inputs clean.ply) --material-id 1 -o zup.img
+    run -0 cmp yup.img zup.img
+    printf 'OBJECT {\n    MESH_FILENAME = yup.ply\n    MATERIAL_ID = 1\n    UNITS = m\n' > turned.odb
+    printf '    INSTANCES {\n        0,0,0, 1,1,1, 90,0,0\n    }\n}\n' >> turned.odb
+    run -0 --separate-stderr trace $(inputs turned.odb) -o odb.img
+    run -0 cmp yup.img odb.img
+    # Without it the plate stands on the x axis, edge-on to nothing the camera sees.
+    run -0 --separate-stderr trace $(inputs yup.ply) --material-id 1 -o standing.img
+    [[ "$stderr" == *"no primary ray hit the scene"* ]] || fail "stderr: $stderr"
+    # The shadow history and therm read it the same way (one scene option block).
+    cp "$SIGCHAIN_SOURCE_DIR/tests/data/therm/box_on_plane.mat" "$SEED/fall_grass.ems" .
+    run -0 --separate-stderr trace --shadow-history --sky-rays 16 "$SEED/hawkeye.snd" yup.ply \
+        box_on_plane.mat --material-id 1 --up-axis +Y -o yup.shd
+    run -0 --separate-stderr trace --shadow-history --sky-rays 16 "$SEED/hawkeye.snd" clean.ply \
+        box_on_plane.mat --material-id 1 -o zup.shd
+    run -0 cmp yup.shd zup.shd
+    run -0 --separate-stderr therm yup.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat yup.ply \
+        "$SEED/hawkeye.snd" --material-id 1 --up-axis +Y -o yup.tmp
+    run -0 --separate-stderr therm zup.shd "$SEED/weather_30_Sep_95.wth" box_on_plane.mat clean.ply \
+        "$SEED/hawkeye.snd" --material-id 1 -o zup.tmp
+    run -0 cmp yup.tmp zup.tmp
+}
+
+@test "--up-axis is refused where it does not apply or contradicts the file's own axis" {
+    write_y_up
+    write_dem
+    run -2 --separate-stderr trace $(inputs plate.gltf) --material-id 1 --up-axis +Z -o x.img
+    assert_equal "$stderr" "trace: plate.gltf: --up-axis +Z contradicts the file's own up axis, +Y (glTF 2.0, section 3.4)
+Try 'trace --help'."
+    run -0 --separate-stderr trace $(inputs plate.gltf) --material-id 1 --up-axis +y -o agreed.img
+    run -2 --separate-stderr trace $(inputs "$SEED/box_on_plane.gdb") --up-axis +Y -o x.img
+    [[ "$stderr" == "trace: --up-axis does not apply to $SEED/box_on_plane.gdb: it turns a mesh given as the scene (an .odb turns its mesh objects by their INSTANCES)"* ]] ||
+        fail "stderr: $stderr"
+    run -2 --separate-stderr trace $(inputs t.asc) --material-id 1 --up-axis +Y -o x.img
+    [[ "$stderr" == "trace: --up-axis does not apply to t.asc: it turns a mesh given as the scene"$'\n'* ]] ||
+        fail "stderr: $stderr"
+    run -2 --separate-stderr find_min_max_view_angle "$DATA/box.adv" yup.ply --up-axis up
+    [[ "$stderr" == "find_min_max_view_angle: --up-axis: up: must be +X, -X, +Y, -Y, +Z or -Z"* ]] ||
+        fail "stderr: $stderr"
+    [ ! -e x.img ] || fail "an output cube was written"
+}
+
+@test "find_min_max_view_angle needs no materials, and a DEM GeoTIFF places itself about its centre" {
+    write_degenerate
+    write_dem
+    # Geometry only: the mesh without --material-id gives the report it gives with one,
+    # its degenerate facets told in one line as trace tells them.
+    run -0 --separate-stderr find_min_max_view_angle "$DATA/box.adv" clean.ply --material-id 1
+    local with="$output"
+    run -0 --separate-stderr find_min_max_view_angle "$DATA/box.adv" deg.ply
+    assert_equal "$output" "$with"
+    assert_equal "$stderr" "find_min_max_view_angle: warning: deg.ply: 3 degenerate facets skipped (1-1-2, 1-1-3, 1-1-4)"
+    run -1 --separate-stderr find_min_max_view_angle --strict-mesh "$DATA/box.adv" deg.ply
+    [[ "$stderr" == "find_min_max_view_angle: deg.ply: mesh '' (1-1-0), facet '' (1-1-2): "* ]] ||
+        fail "stderr: $stderr"
+    # t.asc's 6 x 6 cells of 0.0001 deg from 43.08323 N, 77.66677 W: centre 43.08353 N,
+    # 77.66647 W. As a GeoTIFF without --origin the DEM is placed about that point.
+    run -0 gdal_translate -q t.asc t.tif
+    run -0 --separate-stderr find_min_max_view_angle --origin 43.08353,-77.66647 "$DATA/box.adv" \
+        t.tif --material-id 1
+    with="$output"
+    run -0 --separate-stderr find_min_max_view_angle -v "$DATA/box.adv" t.tif
+    assert_equal "$output" "$with"
+    assert_line --index 2 --regexp '^scene-bounding-box +-?[0-9.]+ +[0-9.]+'
+    [[ "$stderr" == *"t.tif: placed about its centre, latitude 43.083530 deg, longitude -77.666470 deg (no --origin)"* ]] ||
+        fail "stderr: $stderr"
+    # An .odb's DEM object still needs --origin (find_min_max_view_angle.bats): it is
+    # placed with the scene's other objects.
 }

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
                     "interior rays per image axis for the field-of-view method (1-100000)", "256");
     tool.add_output_option();
     tool.add_scene_input_options();
-    return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context&) {
+    return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         auto inputs = cli::args(vm, "input");
         if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and SCENE");
         trace::ViewAngleJob job;
@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
         job.scene_path = inputs[1];
         job.snd_line = vm.count("snd") > 0;
         const cli::SceneInputOptions in = cli::scene_input(vm);
-        job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
+        job.scene_input = {in.material_map, in.material_id, in.landuse,
+                           in.landuse_map,  in.up_axis,     in.strict_mesh};
         const auto& method = vm["method"].as<std::string>();
         if (method == "scene-bounding-box")
             job.method = geom::ViewAngleMethod::BoundingBox;
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
             job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
         sigchain::require_outputs_distinct({cli::output_path(vm)}, inputs);
         sigchain::AtomicOutput out(cli::output_path(vm));
-        trace::run_view_angle_job(job, out.stream());
+        trace::run_view_angle_job(job, out.stream(), ctx);
         out.commit();
         return 0;
     });

@@ -19,7 +19,8 @@ thermal::ThermJob job_of(const cli::po::variables_map& vm) {
     job.mat_path = inputs[2];
     job.scene_path = inputs[3];
     const cli::SceneInputOptions in = cli::scene_input(vm);
-    job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
+    job.scene_input = {in.material_map, in.material_id, in.landuse,
+                       in.landuse_map,  in.up_axis,     in.strict_mesh};
     job.snd_path = inputs[4];
     job.output_path = cli::output_path(vm);
     sigchain::require_outputs_distinct({job.output_path}, inputs);

@@ -31,7 +31,8 @@ trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     job.snd_path = inputs[0];
     job.scene_path = inputs[1];
     const cli::SceneInputOptions in = cli::scene_input(vm);
-    job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
+    job.scene_input = {in.material_map, in.material_id, in.landuse,
+                       in.landuse_map,  in.up_axis,     in.strict_mesh};
     job.mat_path = inputs[2];
     if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
     if (vm.count("history-hours")) job.options.history_hours = cli::real(vm, "history-hours");
@@ -44,7 +45,7 @@ trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
         job.options.max_transmissions = static_cast<int>(cli::integer(vm, "max-transmissions"));
     job.options.seed = cli::seed(vm);
     job.options.threads = cli::threads(vm);
-    job.allow_degenerate = vm.count("allow-degenerate") > 0;
+    job.allow_degenerate = in.allow_degenerate;
     return job;
 }
 
@@ -61,7 +62,8 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     job.snd_path = inputs[1];
     job.scene_path = inputs[2];
     const cli::SceneInputOptions in = cli::scene_input(vm);
-    job.scene_input = {in.material_map, in.material_id, in.landuse, in.landuse_map};
+    job.scene_input = {in.material_map, in.material_id, in.landuse,
+                       in.landuse_map,  in.up_axis,     in.strict_mesh};
     job.mat_path = inputs[3];
     job.rad_paths.assign(inputs.begin() + 4, inputs.end());
     if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
@@ -79,7 +81,7 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     if (vm.count("truth")) job.truth_path = vm["truth"].as<std::string>();
     if (vm.count("tmp")) job.tmp_path = vm["tmp"].as<std::string>();
     job.strict = cli::strict(vm);
-    job.allow_degenerate = vm.count("allow-degenerate") > 0;
+    job.allow_degenerate = in.allow_degenerate;
     job.golfball_jitter = vm.count("golfball-jitter") > 0;
     job.adjacency = vm.count("no-adjacency") == 0;
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
@@ -145,7 +147,6 @@ int main(int argc, char** argv) {
         "also write the truth layers to FILE")("tmp",
                                                cli::po::value<std::string>()->value_name("FILE"),
                                                "facet temperatures (.tmp): add emission")(
-        "allow-degenerate", "skip degenerate facets with a warning instead of failing")(
         "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
         "crs", cli::po::value<std::string>()->value_name("EPSG:N|FILE|none"),
         "map CRS of the georeferenced outputs (default: the scene's DEM's; a WKT "

@@ -154,6 +154,33 @@ TEST(Cli, SharedOptionsMeanTheSameEverywhere) {
     EXPECT_NE(missing.err.find("-o FILE is required"), std::string::npos);
 }
 
+TEST(Cli, SceneOptionsAreOneBlockForEveryTool) {
+    auto configure = [](cli::Cli& c) { c.add_scene_input_options(); };
+    auto r = run(
+        {"--up-axis", "+Y", "--strict-mesh", "--allow-degenerate", "--material-id", "3", "a"},
+        [](const auto& vm, cli::Context&) {
+            const cli::SceneInputOptions in = cli::scene_input(vm);
+            EXPECT_EQ(in.up_axis, "+Y");  // read by lib/scene (parse_up_axis)
+            EXPECT_TRUE(in.strict_mesh);
+            EXPECT_TRUE(in.allow_degenerate);
+            EXPECT_EQ(in.material_id, 3);
+            return 0;
+        },
+        configure);
+    EXPECT_EQ(r.status, 0);
+    auto none = run(
+        {"a"},
+        [](const auto& vm, cli::Context&) {
+            const cli::SceneInputOptions in = cli::scene_input(vm);
+            EXPECT_EQ(in.up_axis, "");
+            EXPECT_FALSE(in.strict_mesh);
+            EXPECT_FALSE(in.allow_degenerate);
+            return 0;
+        },
+        configure);
+    EXPECT_EQ(none.status, 0);
+}
+
 // Outputs record this command (cube(5), PROVENANCE): paths to base names, options that
 // cannot change an output left out, so that the checksum script's two runs (other
 // folders, --threads 1 and 2) record the same text.

@@ -336,3 +336,33 @@ TEST(Dem, RasterGivenAsTheSceneIsTheOdbObjectWithoutItsPrefix) {
     ASSERT_TRUE(hit);
     EXPECT_EQ(with_lu.attributes(*hit).material_id, 12);
 }
+
+TEST(Dem, ALoneDemPlacesItselfAboutItsCentre) {
+    TempDir tmp;
+    std::string dir = tmp.str();
+    // kGeoGt's 5 x 5 cells span 77.6005..77.5995 W, 42.9995..43.0005 N: centre 43 N 77.6 W.
+    write_raster(dir + "geo.tif", 5, 5, kGeoGt, 4326, heights());
+    const scene::GeoOrigin c = scene::dem_centre(dir + "geo.tif");
+    EXPECT_NEAR(c.latitude_deg, kLat0, 1e-12);
+    EXPECT_NEAR(c.longitude_east_deg, kLon0, 1e-12);
+    EXPECT_EQ(c.height_m, 0);
+    const std::optional<scene::GeoOrigin> lone = scene::lone_dem_origin(dir + "geo.tif");
+    ASSERT_TRUE(lone);
+    EXPECT_EQ(lone->latitude_deg, c.latitude_deg);
+    EXPECT_EQ(lone->longitude_east_deg, c.longitude_east_deg);
+    // Other scenes place nothing themselves (an .odb's DEM objects included).
+    const std::string scenes = std::string(SIGCHAIN_TEST_DATA) + "/scene/";
+    for (const char* other : {"plate.gdb", "flat.odb", "quad_tri.obj", "missing.tif"})
+        EXPECT_FALSE(scene::lone_dem_origin(scenes + other)) << other;
+    // Placed so, with geometry only (no materials), the centre cell is straight below.
+    scene::LoadOptions opt;
+    opt.origin = c;
+    opt.geometry_only = true;
+    const scene::Scene s = scene::load_scene(dir + "geo.tif", opt);
+    // 30 cm east, 20 cm north of it the slopes (3 m a column of 16 m, 2 m a row of 22 m)
+    // change the height by less than 0.1 m.
+    const auto hit = s.intersect({0.3, 0.2, 1000}, {0, 0, -1});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(1000 - hit->distance, heights()[12], 0.1);  // 110.5 m at the origin
+    EXPECT_EQ(s.attributes(*hit).material_id, 0);
+}

@@ -176,10 +176,10 @@ TEST(LoadObj, BadInputNamesFileAndLine) {
               "t.obj:3: expected a face of at least 3 vertices, found 'f 1 1'");
     EXPECT_EQ(data_error_of([] { obj_of("cstype bspline\n"); }),
               "t.obj:1: free-form geometry (cstype) is not supported; export polygons");
-    // A zero-area face is a degenerate facet.
+    // A zero-area face is a degenerate facet (refused here: policy Error, --strict-mesh).
     EXPECT_EQ(data_error_of([] { obj_of("v 0 0 0\nv 1 0 0\nv 2 0 0\nusemtl grass\nf 1 2 3\n"); }),
               "t.obj:5: object '' (0-0-0), part '' (0-0-0), facet 'grass' (0-0-1): zero area "
-              "(collinear vertices) (a degenerate facet; trace --allow-degenerate skips it)");
+              "(collinear vertices) (a degenerate facet; skipped without --strict-mesh)");
 }
 
 TEST(LoadMaps, MapFileFormat) {
@@ -235,4 +235,90 @@ TEST(LoadRefused, LoneMeshWithoutMaterialsAndUnknownKinds) {
     }
     EXPECT_THROW(scene::load_scene(kData + "quad_tri.map", {}), UsageError);
     EXPECT_THROW(scene::load_scene(kData + "missing.gdb", {}), IoError);
+}
+
+TEST(LoadDegenerate, MeshFilesSkipThemWithOneWarningUnlessStrictMesh) {
+    // Two degenerate faces (a repeated vertex at line 6, zero area at line 7) between
+    // two good ones: skipped whatever allow_degenerate says, one line for the file.
+    const std::string text =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 0 0\nusemtl grass\nf 1 2 2\nf 1 2 4\nf 1 2 3\n";
+    const std::string path = obj_dir() + "t.obj";
+    std::ofstream(path) << text;
+    scene::LoadOptions opt;
+    opt.input.material_id = 1;
+    for (bool allow : {false, true}) {
+        SCOPED_TRACE(allow);
+        opt.allow_degenerate = allow;
+        opt.keep_degenerate = allow;  // as the shadow history asks: a mesh's still go
+        scene::LoadReport report;
+        const scene::Scene s = scene::load_scene(path, opt, &report);
+        EXPECT_EQ(report.facets, 1u);
+        ASSERT_EQ(report.warnings.size(), 1u);
+        EXPECT_EQ(report.warnings[0],
+                  path + ": 2 degenerate facets skipped (0-0-1 at line 6, 0-0-2 at line 7)");
+        auto hit = down(s, 0.9, 0.1);
+        ASSERT_TRUE(hit);
+        EXPECT_EQ(s.facet_key(*hit), "0-0-3");  // the file's numbering kept
+    }
+    opt.input.strict_mesh = true;
+    EXPECT_EQ(data_error_of([&] { scene::load_scene(path, opt); }),
+              "t.obj:6: object '' (0-0-0), part '' (0-0-0), facet 'grass' (0-0-1): vertices 2 "
+              "and 3 coincide (a degenerate facet; skipped without --strict-mesh)");
+    // A .gdb keeps its own rule: --strict-mesh changes nothing there.
+    scene::LoadOptions gdb;
+    gdb.input.strict_mesh = true;
+    EXPECT_NE(data_error_of([&] {
+                  scene::load_scene(kData + "degenerate.gdb", gdb);
+              }).find("(a degenerate facet; trace --allow-degenerate skips it)"),
+              std::string::npos);
+}
+
+TEST(LoadRefused, UpAxisTurnsOnlyALoneMesh) {
+    scene::LoadOptions opt;
+    opt.input.up_axis = "+Y";
+    try {
+        scene::load_scene(kData + "plate.gdb", opt);
+        FAIL() << "--up-axis taken for a .gdb";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "--up-axis does not apply to " + kData +
+                      "plate.gdb: it turns a mesh given as the scene (an .odb turns its mesh "
+                      "objects by their INSTANCES)");
+    }
+    opt.input.material_id = 1;
+    opt.input.up_axis = "up";
+    EXPECT_THROW(scene::load_scene(kData + "quad_tri.obj", opt), UsageError);
+    // +Y: the OBJ's ground (z = 0) stands up on the x axis, toward -y.
+    opt.input.up_axis = "+Y";
+    const scene::Scene s = scene::load_scene(kData + "quad_tri.obj", opt);
+    EXPECT_NEAR(s.bounds().lower[2], 0, 1e-12);
+    EXPECT_GT(s.bounds().upper[2], 0);
+    EXPECT_NEAR(s.bounds().upper[1], 0, 1e-12);
+}
+
+TEST(LoadGeometryOnly, ALoneMeshNeedsNoMaterials) {
+    scene::LoadOptions opt;
+    EXPECT_THROW(scene::load_scene(kData + "quad_tri.obj", opt), UsageError);
+    opt.geometry_only = true;
+    const scene::Scene s = scene::load_scene(kData + "quad_tri.obj", opt);
+    auto hit = down(s, 0.9, 0.1);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(s.attributes(*hit).material_id, 0);
+    // Materials given are still read (and checked) as trace reads them.
+    opt.input.material_map = kData + "quad_tri.map";
+    EXPECT_EQ(scene::load_scene(kData + "quad_tri.obj", opt).attributes(*hit).material_id, 1);
+}
+
+TEST(LoadObj, OneMaterialIdNeedsNoUsemtl) {
+    // Many exported OBJ files name no material: with one id for every face that is fine.
+    const std::string path = obj_dir() + "t.obj";
+    std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
+    const scene::MeshData m =
+        scene::read_mesh_file({path, nullptr, 4}, scene::DegeneratePolicy::Error, nullptr);
+    ASSERT_EQ(m.facets.size(), 1u);
+    EXPECT_EQ(m.facets[0].material_id, 4);
+    EXPECT_EQ(m.origins[0].description, "object '' (0-0-0), part '' (0-0-0), facet '' (0-0-1)");
+    // By names, the face's material is unknown: the error at its line, as before.
+    EXPECT_EQ(data_error_of([] { obj_of("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"); }),
+              "t.obj:4: a face before any usemtl: its material is unknown");
 }

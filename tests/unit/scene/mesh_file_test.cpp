@@ -1,11 +1,14 @@
 // Tests for mesh files through Assimp: each format's facets, coordinates after the axis
 // rule (the unit square at z = 0 in every file), materials by name or one id, ids, the
-// errors, and meshes given as the scene or as an .odb MESH_FILENAME object.
+// errors, meshes given as the scene or as an .odb MESH_FILENAME object, the up axis
+// (--up-axis) and degenerate facets (skipped with one summary line, or refused).
 #include "scene/mesh_file.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
+#include <iterator>
 
 #include "scene/load.hpp"
 
@@ -156,4 +159,168 @@ TEST(MeshFile, LoneMeshAsTheSceneAndAsAnOdbObject) {
     ASSERT_TRUE(second);
     EXPECT_EQ(placed.facet_key(*second), "1.2/1-1-2");
     EXPECT_EQ(placed.attributes(*second).material_id, 4);
+}
+
+namespace {
+
+// A file of `text` in a folder of this test process (CTest runs cases as concurrent
+// processes), returned by path.
+std::string temp_file(const std::string& name, const std::string& text) {
+    const std::string path =
+        ::testing::TempDir() + "sigchain_mesh_file_" + std::to_string(::getpid()) + "_" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+// An ASCII PLY of `vertices` ("x y z" lines) and `faces` ("3 i j k" lines).
+std::string ply(const std::vector<std::string>& vertices, const std::vector<std::string>& faces) {
+    std::string s = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(vertices.size()) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                    std::to_string(faces.size()) +
+                    "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto& v : vertices) s += v + "\n";
+    for (const auto& f : faces) s += f + "\n";
+    return s;
+}
+
+// The unit square of two_materials.obj stored +Y up, (x, y, z) -> (x, 0, -y), as
+// two_materials.gltf stores it.
+const std::vector<std::string> kYUpSquare{"0 0 0", "1 0 0", "1 0 -1", "0 0 -1"};
+
+}  // namespace
+
+TEST(MeshUpAxis, ParsesTheSixAxesAndRefusesOthers) {
+    EXPECT_EQ(scene::parse_up_axis("+Y"), scene::UpAxis::PlusY);
+    EXPECT_EQ(scene::parse_up_axis("-x"), scene::UpAxis::MinusX);
+    for (const char* name : {"+X", "-X", "+Y", "-Y", "+Z", "-Z"})
+        EXPECT_EQ(scene::up_axis_name(scene::parse_up_axis(name)), name);
+    for (const char* bad : {"Y", "up", "+W", "", "+Y "}) {
+        SCOPED_TRACE(bad);
+        try {
+            scene::parse_up_axis(bad);
+            ADD_FAILURE() << "accepted";
+        } catch (const UsageError& e) {
+            EXPECT_EQ(std::string(e.what()),
+                      "--up-axis: " + std::string(bad) + ": must be +X, -X, +Y, -Y, +Z or -Z");
+        }
+    }
+}
+
+TEST(MeshUpAxis, EachAxisIsTurnedUpByARotation) {
+    const geo::Vec3 ex{1, 0, 0}, ey{0, 1, 0}, ez{0, 0, 1};
+    const std::vector<std::pair<scene::UpAxis, geo::Vec3>> axes{
+        {scene::UpAxis::PlusX, ex}, {scene::UpAxis::MinusX, {-1, 0, 0}},
+        {scene::UpAxis::PlusY, ey}, {scene::UpAxis::MinusY, {0, -1, 0}},
+        {scene::UpAxis::PlusZ, ez}, {scene::UpAxis::MinusZ, {0, 0, -1}}};
+    for (const auto& [axis, up] : axes) {
+        SCOPED_TRACE(scene::up_axis_name(axis));
+        EXPECT_EQ(scene::turn_up(axis, up), ez);
+        // A rotation, not a mirror: the turned x and y span the turned z right-handedly.
+        EXPECT_EQ(geo::cross(scene::turn_up(axis, ex), scene::turn_up(axis, ey)),
+                  scene::turn_up(axis, ez));
+    }
+    // The glTF rule (x, y, z) -> (x, -z, y) on a known vertex, and the others' on it.
+    const geo::Vec3 p{1, 2, 3};
+    EXPECT_EQ(scene::turn_up(scene::UpAxis::PlusY, p), (geo::Vec3{1, -3, 2}));
+    EXPECT_EQ(scene::turn_up(scene::UpAxis::MinusY, p), (geo::Vec3{1, 3, -2}));
+    EXPECT_EQ(scene::turn_up(scene::UpAxis::PlusX, p), (geo::Vec3{-3, 2, 1}));
+    EXPECT_EQ(scene::turn_up(scene::UpAxis::MinusX, p), (geo::Vec3{3, 2, -1}));
+    EXPECT_EQ(scene::turn_up(scene::UpAxis::PlusZ, p), p);
+    EXPECT_EQ(scene::turn_up(scene::UpAxis::MinusZ, p), (geo::Vec3{1, -2, -3}));
+}
+
+TEST(MeshUpAxis, APlyStoredYUpReadsAsTheGltfDoes) {
+    const std::string path = temp_file("yup.ply", ply(kYUpSquare, {"3 0 1 2", "3 0 2 3"}));
+    scene::MeshSource s{path, nullptr, 1};
+    // As stored (+Z up, the default) the square stands on the x axis, toward -y.
+    const scene::MeshData standing =
+        scene::read_mesh_file(s, scene::DegeneratePolicy::Error, nullptr);
+    EXPECT_EQ(corners(standing, 0), (std::vector<std::string>{"0 0 0", "1 0 0", "1 0 -1"}));
+    s.up_axis = scene::UpAxis::PlusY;
+    const scene::MeshData lying = scene::read_mesh_file(s, scene::DegeneratePolicy::Error, nullptr);
+    EXPECT_EQ(corners(lying, 0), kFirst);
+    EXPECT_EQ(corners(lying, 1), kSecond);
+    EXPECT_GT(lying.normals[0][2], 0);
+    // The same floats as the glTF route (whose two primitives hold four vertices each).
+    const scene::MeshData gltf = read("two_materials.gltf");
+    EXPECT_EQ(std::vector<float>(lying.vertices.begin(), lying.vertices.begin() + 12),
+              std::vector<float>(gltf.vertices.begin(), gltf.vertices.begin() + 12));
+}
+
+TEST(MeshUpAxis, GltfAndFbxRefuseAnAxisThatContradictsTheirOwn) {
+    const scene::IdMap map = scene::read_id_map(kMeshes + "two_materials.map");
+    scene::MeshSource s{kMeshes + "two_materials.glb", &map, {}, scene::UpAxis::PlusY};
+    EXPECT_EQ(scene::read_mesh_file(s, scene::DegeneratePolicy::Error, nullptr).vertices,
+              read("two_materials.glb").vertices);  // the glTF's own axis: accepted
+    s.up_axis = scene::UpAxis::PlusZ;
+    EXPECT_EQ(error_of([&] { scene::read_mesh_file(s, scene::DegeneratePolicy::Error, nullptr); }),
+              kMeshes +
+                  "two_materials.glb: --up-axis +Z contradicts the file's own up axis, +Y "
+                  "(glTF 2.0, section 3.4)");
+    EXPECT_THROW(scene::read_mesh_file(s, scene::DegeneratePolicy::Error, nullptr), UsageError);
+    s.path = kMeshes + "two_materials.fbx";
+    EXPECT_EQ(error_of([&] { scene::read_mesh_file(s, scene::DegeneratePolicy::Error, nullptr); }),
+              kMeshes +
+                  "two_materials.fbx: --up-axis +Z contradicts the file's own up axis, +Y "
+                  "(declared by the FBX file)");
+    // An FBX declaring -Z up (UpAxis 2, UpAxisSign -1) is turned by (x, y, z) -> (x, -y, -z):
+    // the stored (x, 0, -y) square comes out at (x, 0, y), standing.
+    std::ifstream in(kMeshes + "two_materials.fbx");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+             {"\"UpAxis\", \"int\", \"Integer\", \"\", 1",
+              "\"UpAxis\", \"int\", \"Integer\", \"\", 2"},
+             {"\"UpAxisSign\", \"int\", \"Integer\", \"\", 1",
+              "\"UpAxisSign\", \"int\", \"Integer\", \"\", -1"}}) {
+        const auto at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    }
+    const std::string down = temp_file("down.fbx", text);
+    const scene::MeshData m =
+        scene::read_mesh_file({down, &map, {}}, scene::DegeneratePolicy::Error, nullptr);
+    EXPECT_EQ(corners(m, 0), (std::vector<std::string>{"0 0 0", "1 0 0", "1 0 1"}));
+}
+
+TEST(MeshDegenerate, SkippedWithOneSummaryLineOrRefused) {
+    // Six faces on the square: 2 repeats a vertex, 3 and 4 are collinear (zero area),
+    // 6 has all vertices at one point; 1 and 5 are the square's halves.
+    const std::string path = temp_file(
+        "degenerate.ply", ply({"0 0 0", "1 0 0", "1 1 0", "0 1 0", "2 0 0"},
+                              {"3 0 1 2", "3 0 1 1", "3 0 1 4", "3 1 0 4", "3 0 2 3", "3 2 2 2"}));
+    std::vector<std::string> warnings;
+    const scene::MeshData m =
+        scene::read_mesh_file({path, nullptr, 1}, scene::DegeneratePolicy::Skip, &warnings);
+    ASSERT_EQ(m.facets.size(), 2u);
+    // Ids keep the file's numbers past the skipped faces.
+    EXPECT_EQ(m.origins[0].id, "1-1-1");
+    EXPECT_EQ(m.origins[1].id, "1-1-5");
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], path + ": 4 degenerate facets skipped (1-1-2, 1-1-3, 1-1-4, ...)");
+    // Refused (--strict-mesh): the first, named, with what is wrong with it.
+    const std::string e = error_of([&] {
+        scene::read_mesh_file({path, nullptr, 1}, scene::DegeneratePolicy::Error, nullptr);
+    });
+    EXPECT_EQ(e.rfind(path + ": mesh ", 0), 0u) << e;
+    EXPECT_NE(e.find("(1-1-2): vertices 2 and 3 coincide (a degenerate facet; skipped without "
+                     "--strict-mesh)"),
+              std::string::npos)
+        << e;
+    // Keep: all six, silently.
+    warnings.clear();
+    EXPECT_EQ(scene::read_mesh_file({path, nullptr, 1}, scene::DegeneratePolicy::Keep, &warnings)
+                  .facets.size(),
+              6u);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(MeshDegenerate, TheSummaryNamesThreeIdsAndAnObjsLines) {
+    const scene::FacetOrigin a{"m.obj", 12, "", "1-0-4"}, b{"m.obj", 15, "", "1-0-5"};
+    EXPECT_EQ(scene::degenerate_summary("m.obj", {a}, false),
+              "m.obj: 1 degenerate facet skipped (1-0-4 at line 12)");
+    EXPECT_EQ(scene::degenerate_summary("m.obj", {a, b}, true),
+              "m.obj: 2 degenerate facets kept (1-0-4 at line 12, 1-0-5 at line 15)");
+    const scene::FacetOrigin c{"m.ply", 0, "", "1-1-9"};
+    EXPECT_EQ(scene::degenerate_summary("m.ply", {c, c, c}, false),
+              "m.ply: 3 degenerate facets skipped (1-1-9, 1-1-9, 1-1-9)");
 }
