@@ -185,14 +185,22 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     // gains differ from band to band.
     const bool radiance_preview = job.preview_common && !job.float_output;
     image::Image radiance(radiance_preview ? cube.rows : 0, cube.columns, bands);
+    // A cube in W m-2 sr-1 um-1 (trace --radiance-units W/m2/sr/um) to the .sen's unit.
+    const double to_sen_units = cube.units == "W m-2 sr-1 um-1" ? 1e-4 : 1.0;
     std::vector<std::vector<float>> sigma;  // --uncertainty: per band, radiance then counts
     if (!job.uncertainty_path.empty())
         sigma = read_radiance_uncertainty(job.uncertainty_path, cube, bands);
+    if (!job.float_output && to_sen_units != 1)
+        for (auto& s : sigma)
+            for (float& v : s) v *= static_cast<float>(to_sen_units);
     for (int b = 0; b < bands; ++b) {
         const auto wavelengths = band_wavelengths(cube, groups[b]);
         const auto widths = sample_widths_um(wavelengths, groups[b].count);
         std::vector<float> plane =
             band_radiance(cube, groups[b], sens[b].response, widths, job.sen_paths[b]);
+        // Counts and calibration take the .sen's unit, W cm-2 sr-1 um-1.
+        if (!job.float_output && to_sen_units != 1)
+            for (float& v : plane) v *= static_cast<float>(to_sen_units);
         if (job.calibrate) {
             calibrate_band(job, b, plane, cube, report);
             continue;
@@ -215,7 +223,7 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
             // c = gain L + bias back to the band radiance L (GDAL scale and offset).
             out.scale.push_back(1.0 / sens[b].gain);
             out.offset.push_back(0.0 - sens[b].bias / sens[b].gain);  // not -0
-            out.scaled_units = cube.units;
+            out.scaled_units = "W cm-2 sr-1 um-1";  // the .sen's gain's
             report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
         }
         std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());

@@ -35,6 +35,7 @@
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
 #include "trace/like_grid.hpp"
+#include "trace/radiance_units.hpp"
 #include "trace/ground_layers.hpp"
 #include "trace/part.hpp"
 #include "trace/uncertainty.hpp"
@@ -43,7 +44,6 @@ namespace sigchain::trace {
 
 namespace {
 
-constexpr const char* kRadianceUnits = "W cm-2 sr-1 um-1";
 // ENVI's `sensor type` of trace's cubes (cube(5)): the sensor model that made them,
 // "sigchain " and Sensor::kind() ("sigchain frame camera").
 std::string sensor_type(const Sensor& sensor) { return "sigchain " + sensor.kind(); }
@@ -362,6 +362,9 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
     cube.sensor_type = type_name;
     cube.wavelength_um = grid.wavelength_um;
     cube.units = kRadianceUnits;
+    if (!job.truth_path.empty())
+        result.truth.channel_names = truth_layer_names(grid, render_options_layers(job));
+    if (job.si_radiance_units) to_si_units(cube, result.truth);
     if (cube.channel_names.size() != grid.size()) {
         cube.channel_names.clear();
         for (std::size_t k = 0; k < grid.size(); ++k)
@@ -371,7 +374,6 @@ void write_outputs(const TraceJob& job, const image::WriteOptions& write_options
     image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path), write_options);
     if (job.truth_path.empty()) return;
     image::Image& truth = result.truth;
-    truth.channel_names = truth_layer_names(grid, render_options_layers(job));
     truth.wavelength_um.clear();
     truth.units.clear();
     truth.georef = georef;

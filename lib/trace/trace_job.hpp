@@ -57,6 +57,8 @@ struct TraceJob {
     // --crs: the map CRS of a geo-placed render: "" the CRS of the scene's first DEM
     // object (none: the render is not geo-placed), "none", "EPSG:N" or a WKT file.
     std::string crs;
+    // --radiance-units W/m2/sr/um: radiance in W m-2 sr-1 um-1 (default W cm-2 sr-1 um-1).
+    bool si_radiance_units = false;
     // --like: render on this raster's grid (its CRS, size and geotransform); "" none.
     std::string like_path;
     // --standard-error: the truth cube's sampling layers (samples, standard_error_BAND).

@@ -634,3 +634,37 @@ coupled_inputs() {
     run -0 --separate-stderr trace -q --samples-per-pixel 1 $(inputs "$GDB") -o clear.img
     assert_equal "$stderr" ''
 }
+
+@test "trace --radiance-units W/m2/sr/um: the cube and the truth's radiance layers x 1e4; the same counts" {
+    trace_ok $(inputs) --truth t.img -o cube.img
+    mkdir si
+    trace_ok $(inputs) --radiance-units W/m2/sr/um --truth si/t.img -o si/cube.img
+    run -0 grep -x 'data units = W m-2 sr-1 um-1' si/cube.hdr
+    run -0 grep -x 'data units = W cm-2 sr-1 um-1' cube.hdr
+    # ratio FILE1 FILE2 BAND: the largest |FILE2 / FILE1 / 1e4 - 1| over the band's
+    # pixels; within 1e-6: a float32 product (6e-8) printed by XYZ to 7 digits.
+    ratio() {
+        paste <(gdal_translate -q -of XYZ -b "$3" "$1" /vsistdout/) \
+            <(gdal_translate -q -of XYZ -b "$3" "$2" /vsistdout/) |
+            awk '$3 != 0 { d = $6 / $3 / 1e4 - 1; if (d < 0) d = -d; if (d > m) m = d } END { print m + 0 }'
+    }
+    local r
+    r=$(ratio cube.img si/cube.img 1)
+    awk -v r="$r" 'BEGIN { exit !(r < 1e-6) }' || fail "band 1: $r"
+    # Truth layers: upwelled_band1 (radiance) scaled, reflectance_band1 not.
+    local names up refl
+    names=$(gdalinfo t.img | sed -n 's/^  Description = //p')
+    up=$(echo "$names" | grep -nx 'upwelled_band1' | cut -d: -f1)
+    refl=$(echo "$names" | grep -nx 'reflectance_band1' | cut -d: -f1)
+    r=$(ratio t.img si/t.img "$up")
+    awk -v r="$r" 'BEGIN { exit !(r < 1e-6) }' || fail "upwelled_band1: $r"
+    run -0 cmp <(gdal_translate -q -of XYZ -b "$refl" t.img /vsistdout/) \
+        <(gdal_translate -q -of XYZ -b "$refl" si/t.img /vsistdout/)
+    # sensorize reads the unit: the .sen's gain is per W cm-2 sr-1 um-1 either way.
+    printf '3\n100000\n0\n1\n1\n1\n' > b.sen
+    run -0 sensorize -q --bits 16 cube.img b.sen b.sen -o c.tif
+    run -0 sensorize -q --bits 16 si/cube.img b.sen b.sen -o si/c.tif
+    run -0 compare --pixelwise --fail-max 1 c.tif si/c.tif
+    run -2 --separate-stderr trace $(inputs) --radiance-units W/sr -o x.img
+    [[ "$stderr" == *"--radiance-units W/sr: expected W/cm2/sr/um or W/m2/sr/um"* ]]
+}

@@ -17,8 +17,9 @@ namespace {
 trace::ShadowJob shadow_job(const cli::po::variables_map& vm) {
     for (const char* o : {"samples-per-pixel", "hemisphere-samples", "golfball-jitter", "bounces",
                           "background", "rows", "tile", "truth", "tmp", "strict", "no-adjacency",
-                          "adjacency-radius", "co", "crs", "like", "standard-error", "convergence",
-                          "convergence-error", "igm", "glt", "uncertainty"})
+                          "adjacency-radius", "co", "crs", "like", "radiance-units",
+                          "standard-error", "convergence", "convergence-error", "igm", "glt",
+                          "uncertainty"})
         if (vm.count(o))
             throw sigchain::UsageError(std::string("--") + o +
                                        " does not apply to --shadow-history");
@@ -87,6 +88,13 @@ trace::TraceJob trace_job(const cli::po::variables_map& vm) {
     if (vm.count("adjacency-radius")) job.adjacency_radius_m = cli::real(vm, "adjacency-radius");
     if (vm.count("crs")) job.crs = vm["crs"].as<std::string>();
     if (vm.count("like")) job.like_path = vm["like"].as<std::string>();
+    if (vm.count("radiance-units")) {
+        const std::string u = vm["radiance-units"].as<std::string>();
+        if (u != "W/cm2/sr/um" && u != "W/m2/sr/um")
+            throw sigchain::UsageError("--radiance-units " + u +
+                                       ": expected W/cm2/sr/um or W/m2/sr/um");
+        job.si_radiance_units = u == "W/m2/sr/um";
+    }
     job.standard_error = vm.count("standard-error") > 0;
     if (vm.count("convergence")) {
         const auto count = cli::integers(2, sigchain::io::kAdvMaxSamplesPerPixel);
@@ -153,6 +161,8 @@ int main(int argc, char** argv) {
         "FILE; none: write no georeferencing)")(
         "like", cli::po::value<std::string>()->value_name("RASTER"),
         "render on RASTER's grid: its CRS, size and geotransform (a frame camera)")(
+        "radiance-units", cli::po::value<std::string>()->value_name("W/cm2/sr/um|W/m2/sr/um"),
+        "the cubes' radiance unit (default W/cm2/sr/um, White's; W/m2/sr/um as products)")(
         "igm", cli::po::value<std::string>()->value_name("FILE.tif"),
         "write each pixel's ground position (IGM: map and scene coordinates)")(
         "glt", cli::po::value<std::string>()->value_name("FILE.tif"),
