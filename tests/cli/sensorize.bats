@@ -313,3 +313,27 @@ CUBE="$SIGCHAIN_SOURCE_DIR/tests/data/cube"
     [ ! -e out.png ]
     assert_no_temp_files .
 }
+
+@test "--preview of a small object on a uniform background: the object white, not a black image" {
+    # A 100 x 100 cube of 0.01 W cm-2 sr-1 um-1 with a 2 x 2 pixel object (0.04 % of
+    # the image, below the 2nd-98th percentile stretch) of 0.05, 0.04, 0.03 at 0.45,
+    # 0.55, 0.65 um: a blue object.
+    gdal_create -q -of ENVI -ot Float32 -outsize 100 100 -bands 3 -burn 0.01 \
+        -a_ullr 0 100 100 0 obj.img
+    printf '{"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[50,50],[52,50],[52,52],[50,52],[50,50]]]}}]}' > sq.geojson
+    gdal_rasterize -q -b 1 -b 2 -b 3 -burn 0.05 -burn 0.04 -burn 0.03 sq.geojson obj.img 2>/dev/null
+    printf 'wavelength units = Micrometers\nwavelength = {0.45, 0.55, 0.65}\n' >> obj.hdr
+    printf '1\n5000\n0\n1\n' > one.sen
+    # levels PNG BAND: "COUNT VALUE" pairs of a band's pixel values, on one line.
+    levels() { gdal_translate -q -of XYZ -b "$2" "$1" /vsistdout/ | awk '{ print $3 }' |
+        sort -n | uniq -c | awk '{ printf "%s%s %s", (NR > 1 ? ", " : ""), $1, $2 }'; }
+    run -0 sensorize -q obj.img one.sen one.sen one.sen -o c.tif --preview p.png
+    for b in 1 2 3; do assert_equal "$(levels p.png $b)" "9996 0, 4 255"; done
+    # One stretch for the three: the object keeps its colour (blue > green > red).
+    run -0 sensorize -q obj.img one.sen one.sen one.sen -o c.tif --preview q.png \
+        --preview-stretch common
+    local r g b
+    r=$(levels q.png 1 | sed 's/.*, 4 //') g=$(levels q.png 2 | sed 's/.*, 4 //')
+    b=$(levels q.png 3 | sed 's/.*, 4 //')
+    [ "$b" -gt "$g" ] && [ "$g" -gt "$r" ] || fail "object R $r, G $g, B $b"
+}
