@@ -24,6 +24,17 @@ olinda_rads() {
         -o "olinda-%d.rad"
 }
 
+# box_lat_lon EAST NORTH: the WGS84 latitude and longitude (deg) of the point EAST and
+# NORTH metres from the box scene's origin (43.08333 N, 77.66667 W) on the scene's
+# east-north-up frame, by the ellipsoid's radii of curvature there (millimetres over
+# tens of metres).
+box_lat_lon() {
+    awk -v e="$1" -v n="$2" 'BEGIN { a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
+        lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
+        N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
+        printf "%.9f %.9f\n", lat0 + n / M / r, lon0 + e / (N * cos(lat0 * r)) / r }'
+}
+
 # target_offset WARP_OPTION TRUTH: orthorectifies the truth cube TRUTH with gdalwarp
 # WARP_OPTION... (-geoloc, -tps) into EPSG:4326; its band 4 is the facet each pixel
 # centre sees (the target is facet 1 of the .gdb), whose centroid must be the target's
@@ -33,11 +44,8 @@ target_offset() {
     run -0 gdalwarp -q -overwrite "${@:1:$#-1}" -t_srs EPSG:4326 -r near "$truth" warped.tif
     run -0 gdal_translate -q -of XYZ -b 4 warped.tif facets.xyz
     px=$(gdalinfo warped.tif | sed -n 's/^Pixel Size = (\([^,]*\),\(.*\))$/\1 \2/p')
-    run -0 awk -v px="$px" '
-        BEGIN { split(px, p, " "); a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
-            lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
-            N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
-            want_lat = lat0 + 10 / M / r; want_lon = lon0 + 10 / (N * cos(lat0 * r)) / r }
+    run -0 awk -v px="$px" -v want="$(box_lat_lon 10 10)" '
+        BEGIN { split(px, p, " "); split(want, w, " "); want_lat = w[1]; want_lon = w[2] }
         $3 == 1 { n++; x += $1; y += $2 }
         END { dx = (x / n - want_lon) / p[1]; dy = (y / n - want_lat) / p[2]
             print n " pixels, offset " dx ", " dy " output pixels"
@@ -281,10 +289,7 @@ EOF
     # the turned square's edges are quantised by up to half a cell: about 64 cells,
     # their centroid within half a cell (0.25 m) of the centre on each axis.
     local lat lon want
-    read -r lat lon < <(awk 'BEGIN { a = 6378137; f = 1 / 298.257223563; e2 = f * (2 - f)
-        lat0 = 43.08333; lon0 = -77.66667; r = atan2(1, 1) / 45; s = sin(lat0 * r)
-        N = a / sqrt(1 - e2 * s * s); M = a * (1 - e2) / (1 - e2 * s * s) ^ 1.5
-        printf "%.9f %.9f\n", lat0 + 10 / M / r, lon0 + 10 / (N * cos(lat0 * r)) / r }')
+    read -r lat lon < <(box_lat_lon 10 10)
     want=$(echo "$lon $lat" | gdaltransform -s_srs EPSG:4326 -t_srs EPSG:32618 -output_xy)
     run -0 awk -v want="$want" 'BEGIN { split(want, w, " ") }
         $3 == 37 { n++; x += $1; y += $2 }
