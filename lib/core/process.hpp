@@ -1,4 +1,5 @@
-// Running an external program (gnuplot for compare --plot) without a shell.
+// Running an external program (gnuplot for compare --plot) without a shell, and the
+// memory this process may use.
 #pragma once
 
 #include <string>
@@ -11,5 +12,9 @@ namespace sigchain {
 // output. Throws IoError naming the program when it cannot be started (`hint` is
 // appended, e.g. which package provides it), is killed by a signal or exits non-zero.
 std::string run_and_capture(const std::vector<std::string>& argv, const std::string& hint = "");
+
+// The memory this process may use (bytes): the physical memory, or the address-space
+// limit (ulimit -v) when it is lower.
+double usable_memory_bytes();
 
 }  // namespace sigchain

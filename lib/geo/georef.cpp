@@ -65,7 +65,7 @@ std::string utm_epsg(double latitude_deg, double longitude_deg, const SourceLoca
 
 struct MapProjector::Impl {
     GeographicLib::LocalCartesian enu;
-    std::unique_ptr<OGRCoordinateTransformation> to_map, from_map;
+    std::unique_ptr<OGRCoordinateTransformation> to_map;
     SourceLocation where;
 };
 
@@ -81,8 +81,7 @@ MapProjector::MapProjector(const Crs& map, double origin_latitude_deg, double or
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);   // x = longitude
     target.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = easting or longitude
     m_impl->to_map.reset(OGRCreateCoordinateTransformation(&wgs84, &target));
-    m_impl->from_map.reset(OGRCreateCoordinateTransformation(&target, &wgs84));
-    if (!m_impl->to_map || !m_impl->from_map)
+    if (!m_impl->to_map)
         throw DataError(where, "cannot transform WGS84 to the map CRS: " + gdal_message());
 }
 
@@ -107,16 +106,6 @@ std::array<double, 2> MapProjector::map_xy(const Vec3& enu_m) const {
         throw DataError(m_impl->where,
                         "cannot transform a point to the map CRS: " + gdal_message());
     return {x, y};
-}
-
-std::array<double, 2> MapProjector::east_north(double x, double y) const {
-    int ok = 0;
-    if (!m_impl->from_map->Transform(1, &x, &y, nullptr, &ok) || !ok)
-        throw DataError(m_impl->where,
-                        "cannot transform a map point to WGS84: " + gdal_message());
-    double e = 0, n = 0, u = 0;
-    m_impl->enu.Forward(y, x, 0.0, e, n, u);
-    return {e, n};
 }
 
 namespace {

@@ -54,10 +54,6 @@ public:
     // Map coordinates (x easting or longitude, y northing or latitude) of a scene point
     // (m); throws DataError when the point cannot be transformed.
     std::array<double, 2> map_xy(const Vec3& enu_m) const;
-    // The inverse: east and north (m) of the point of map coordinates (x, y) at height
-    // 0 on WGS84 (the frame is flat: the Earth's curvature drops it below z = 0 by
-    // d^2 / 2R, 8 m at 10 km, which only its height carries). Throws DataError.
-    std::array<double, 2> east_north(double x, double y) const;
 
 private:
     struct Impl;

@@ -57,7 +57,7 @@ GeoRaster read_geo_raster(const std::string& path, Bands bands, double use_bytes
         throw DataError({path, 0}, "the raster has no geotransform (not geo-referenced)");
     r.rows = ds->GetRasterYSize();
     r.columns = ds->GetRasterXSize();
-    r.bands = bands == Bands::All ? ds->GetRasterCount() : 1;
+    r.bands = bands == Bands::All ? ds->GetRasterCount() : bands == Bands::First ? 1 : 0;
     r.crs = Crs::from_ogr(ds->GetSpatialRef());
     int has_nodata = 0;
     const double nodata = ds->GetRasterBand(1)->GetNoDataValue(&has_nodata);

@@ -29,7 +29,8 @@ struct GeoRaster {
     bool valid(double v) const;
 };
 
-enum class Bands { First, All };
+// The bands read: band 1, all, or none (the grid, CRS and nodata alone).
+enum class Bands { First, All, None };
 
 // Reads a GDAL raster. Throws IoError (cannot open or read) or DataError (no band, no
 // geotransform, or more cells than this machine's memory holds: the values as doubles

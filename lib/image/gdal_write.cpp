@@ -75,14 +75,16 @@ void set_band_metadata(GDALDataset& ds, const Image& image) {
         GDALRasterBand* band = ds.GetRasterBand(c + 1);
         if (static_cast<std::size_t>(c) < image.channel_names.size())
             band->SetDescription(image.channel_names[c].c_str());
-        if (!image.units.empty()) band->SetUnitType(image.units.c_str());
-        if (static_cast<std::size_t>(c) < image.scale.size()) {
-            // GDAL's unit type is that of value * scale + offset (as CF's units of an
-            // unpacked variable): the dataset's UNITS still names the raw values.
+        // GDAL's unit type is that of value * scale + offset (as CF's units of an
+        // unpacked variable): with a scale, the scaled unit; the dataset's UNITS still
+        // names the raw values.
+        const bool scaled = static_cast<std::size_t>(c) < image.scale.size();
+        if (scaled) {
             band->SetScale(image.scale[c]);
             band->SetOffset(image.offset[c]);
-            band->SetUnitType(image.scaled_units.c_str());
         }
+        const std::string& unit = scaled ? image.scaled_units : image.units;
+        if (!unit.empty()) band->SetUnitType(unit.c_str());
         // A band whose wavelength or width is unknown (NaN) goes without the item.
         if (!image.wavelength_um.empty() && std::isfinite(image.wavelength_um[c])) {
             band->SetMetadataItem("wavelength", format_number(image.wavelength_um[c]).c_str());

@@ -134,8 +134,8 @@ namespace {
 
 // The cube's georeferencing on a GeoTIFF output (cube(5), Georeferencing): the CRS and
 // geotransform as they are (the image grid is the cube's); geolocation arrays copied
-// beside the output (NAME.geoloc.tif, committed with it), which then names its own copy, and the ground
-// control points as they are. PNG and Netpbm outputs carry none.
+// beside the output (NAME.geoloc.tif, committed with it), which then names its own
+// copy; the ground control points as they are. PNG and Netpbm outputs carry none.
 void carry_georeference(const SensorizeJob& job, const image::Image& cube, image::Image& out) {
     const std::string ext = file_extension(job.output_path);
     if (ext != "tif" && ext != "tiff") return;
@@ -181,6 +181,7 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     const int bands = static_cast<int>(sens.size());
     image::Image out(cube.rows, cube.columns, bands);
     out.units = job.float_output ? cube.units : "DC";
+    if (!job.float_output) out.scaled_units = "W cm-2 sr-1 um-1";  // the .sen gain's unit
     // --preview-stretch common: the preview of the band radiance, not of counts whose
     // gains differ from band to band.
     const bool radiance_preview = job.preview_common && !job.float_output;
@@ -223,7 +224,6 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
             // c = gain L + bias back to the band radiance L (GDAL scale and offset).
             out.scale.push_back(1.0 / sens[b].gain);
             out.offset.push_back(0.0 - sens[b].bias / sens[b].gain);  // not -0
-            out.scaled_units = "W cm-2 sr-1 um-1";  // the .sen's gain's
             report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
         }
         std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());

@@ -104,12 +104,7 @@ image::Georeference georeference_outputs(const Sensor& sensor, const scene::Scen
     const auto fit = fit_map_grid(sensor, place, 0, total_rows);
     char buf[160];
     if (fit && fit->max_residual_px < kGridAlignmentTolerancePx) {
-        geo::GeoTransform gt = fit->geotransform;
-        if (row_begin != 0) {
-            gt[0] += static_cast<double>(row_begin) * gt[2];
-            gt[3] += static_cast<double>(row_begin) * gt[5];
-        }
-        georef.geotransform = gt;
+        georef.geotransform = from_row(fit->geotransform, row_begin);
         georef.crs_wkt = place.map_crs.wkt2();
         std::snprintf(buf, sizeof buf,
                       "georeferencing: a geotransform (the image grid is within %.2g pixel of "

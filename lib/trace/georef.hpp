@@ -46,6 +46,14 @@ std::optional<GeoPlacement> geo_placement(const std::string& crs_option,
 // geotransform can hold, and ten times below the 0.1 pixel of a registration check.
 inline constexpr double kGridAlignmentTolerancePx = 0.01;
 
+// The geotransform of an image's rows from `row_begin` on (a part of a render): `gt`'s
+// origin moved down `row_begin` rows.
+inline geo::GeoTransform from_row(geo::GeoTransform gt, long row_begin) {
+    gt[0] += static_cast<double>(row_begin) * gt[2];
+    gt[3] += static_cast<double>(row_begin) * gt[5];
+    return gt;
+}
+
 // The affine geotransform of rows [row_begin, row_end) of `sensor` (its row 0 = row_begin)
 // onto the map CRS, fitted to a 17 x 17 lattice of image positions (corners included)
 // whose rays are met with the scene's reference plane, z = 0 (height 0 above the

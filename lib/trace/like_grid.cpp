@@ -1,16 +1,19 @@
 // trace --like: a sensor on a raster's map grid (like_grid.hpp).
 #include "trace/like_grid.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "geo/crs.hpp"
 #include "geo/raster.hpp"
 
 namespace sigchain::trace {
 
 LikeGrid read_like_grid(const std::string& path) {
-    const geo::GeoRaster raster = geo::read_geo_raster(path, geo::Bands::First);
+    const geo::GeoRaster raster = geo::read_geo_raster(path, geo::Bands::None);
     if (raster.crs.empty())
         throw DataError({path, 0}, "--like: the raster names no coordinate reference system");
     return {raster.crs, raster.geotransform, raster.rows, raster.columns};
@@ -28,21 +31,35 @@ public:
           m_scene(scene),
           m_plane_height(plane_height),
           m_top(scene.bounds().upper[2] + 1.0) {
-        if (m_frame->kind() != "frame camera")
+        if (!dynamic_cast<const FrameSensor*>(m_frame.get()))
             throw DataError({"--like", 0}, "renders a frame camera's view, not a " +
                                                m_frame->kind() + "'s");
         geo::Vec3 direction{};
         m_frame->ray(0.5, 0.5, m_position, direction);
-        const geo::MapProjector map(grid.crs, place.latitude_deg, place.longitude_deg, 0.0,
-                                    {"--like", 0});
+        // The cell corners' map coordinates to WGS84 in one call, then to the scene's
+        // east-north-up frame at height 0 (the frame is flat: only the height of a far
+        // corner carries the Earth's curvature, d^2 / 2R).
         const geo::GeoTransform& g = grid.geotransform;
-        m_corners.reserve(static_cast<std::size_t>((m_rows + 1) * (m_columns + 1)));
+        const std::size_t n = static_cast<std::size_t>((m_rows + 1) * (m_columns + 1));
+        std::vector<double> x, y;
+        x.reserve(n);
+        y.reserve(n);
         for (long r = 0; r <= m_rows; ++r)
             for (long c = 0; c <= m_columns; ++c) {
-                const double x = g[0] + c * g[1] + r * g[2], y = g[3] + c * g[4] + r * g[5];
-                const auto en = map.east_north(x, y);
-                m_corners.push_back({en[0] / place.meters_per_unit, en[1] / place.meters_per_unit});
+                x.push_back(g[0] + c * g[1] + r * g[2]);
+                y.push_back(g[3] + c * g[4] + r * g[5]);
             }
+        const geo::Wgs84Transform to_wgs84(grid.crs, {"--like", 0});
+        std::vector<int> ok(n, 0);
+        if (!to_wgs84.transform(n, x.data(), y.data(), ok.data()) ||
+            std::find(ok.begin(), ok.end(), 0) != ok.end())
+            throw DataError({"--like", 0}, "a corner of the raster's grid has no WGS84 position");
+        const geo::LocalEnu enu(place.latitude_deg, place.longitude_deg, 0.0);
+        m_corners.reserve(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const geo::Vec3 p = enu.forward(y[i], x[i], 0.0);
+            m_corners.push_back({p[0] / place.meters_per_unit, p[1] / place.meters_per_unit});
+        }
     }
     long rows() const override { return m_rows; }
     long columns() const override { return m_columns; }
@@ -72,8 +89,9 @@ public:
     std::string kind() const override { return "frame camera"; }
     std::string summary() const override {
         char buf[160];
-        std::snprintf(buf, sizeof buf, "frame camera position on a map grid of %ld x %ld cells (--like)",
-                      m_rows, m_columns);
+        std::snprintf(buf, sizeof buf,
+                      "frame camera position on a map grid of %ld x %ld cells (--like)", m_rows,
+                      m_columns);
         return buf;
     }
 
@@ -90,10 +108,7 @@ private:
 
 image::Georeference like_georeference(const LikeGrid& grid, long row_begin) {
     image::Georeference georef;
-    geo::GeoTransform gt = grid.geotransform;
-    gt[0] += static_cast<double>(row_begin) * gt[2];
-    gt[3] += static_cast<double>(row_begin) * gt[5];
-    georef.geotransform = gt;
+    georef.geotransform = from_row(grid.geotransform, row_begin);
     georef.crs_wkt = grid.crs.wkt2();
     return georef;
 }

@@ -1,9 +1,6 @@
 // The trace job: read the inputs, check that they agree, render, write the cubes.
 #include "trace/trace_job.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/process.hpp"
 #include "core/output.hpp"
 #include "core/text.hpp"
 #include "geo/georef.hpp"
@@ -133,17 +131,6 @@ Setup read_setup(const TraceJob& job) {
                              "), fewer than the tiles");
     }
     return st;
-}
-
-// The memory this process may use (bytes): the physical memory, or the address-space
-// limit (ulimit -v) when it is lower.
-double usable_memory_bytes() {
-    double bytes =
-        static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
-    struct rlimit limit {};
-    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-        bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
-    return bytes;
 }
 
 // Refuses, before anything is read or allocated, a radiance cube (4-byte floats, one
@@ -433,11 +420,12 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     times.scene_files = times.lap() - times.build;
     const Temperatures temperatures = read_temperatures(job, grid, scene, reporter);
     times.tmp = times.lap();
-    std::string crs_note;
-    std::optional<GeoPlacement> place =
-        geo_placement(job.crs, job.scene_path, {st.snd.latitude_deg, st.snd.longitude_east_deg},
-                      io::meters_per_unit(st.adv.units), job.snd_path, crs_note);
-    if (st.like) place->map_crs = st.like->crs, crs_note = "map CRS: the --like raster's";
+    std::string crs_note = "map CRS: the --like raster's";
+    const geo::LatLon origin{st.snd.latitude_deg, st.snd.longitude_east_deg};
+    const double mpu = io::meters_per_unit(st.adv.units);
+    const std::optional<GeoPlacement> place =
+        st.like ? GeoPlacement{origin.latitude_deg, origin.longitude_deg, mpu, st.like->crs}
+                : geo_placement(job.crs, job.scene_path, origin, mpu, job.snd_path, crs_note);
     if (!crs_note.empty()) reporter.info(crs_note);
     std::unique_ptr<Sensor> sensor = make_sensor(
         st.adv, job.adv_path, SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
