@@ -1,6 +1,6 @@
-// The radiance unit of trace's outputs (cube(5)): W cm-2 sr-1 um-1, White (1996)'s and
-// LOWTRAN 7's, by default; W m-2 sr-1 um-1, the unit remote-sensing products use, with
-// --radiance-units W/m2/sr/um.
+// The radiance unit of trace's outputs (cube(5)): by default W cm-2 sr-1 um-1, the unit
+// of the big equation in White (1996), section 3.2, and of LOWTRAN 7; W m-2 sr-1 um-1,
+// the unit remote-sensing products use, with --radiance-units W/m2/sr/um.
 #pragma once
 
 #include "image/image.hpp"
