@@ -1,5 +1,6 @@
 #!/usr/bin/env bats
-# Tests: scripts/chart-plot (the chart of make chart, from its data)
+# Tests: scripts/chart-plot and scripts/chart-summary (the chart of make chart and the page
+# that reads it, from its data)
 # Also requires: gnuplot, docs/chart/data.tsv and refs.tsv (the committed run)
 #
 # The committed chart's data are drawn again: every point's label finds a place that
@@ -23,4 +24,29 @@ load test_helper
 @test "chart-plot: a missing data file exits 1 naming it" {
     run -1 --separate-stderr "$SIGCHAIN_SOURCE_DIR/scripts/chart-plot" .
     assert_equal "$stderr" "chart-plot: ./data.tsv: cannot read it"
+}
+
+# scripts/chart-summary writes the page that reads the run from its files alone: the
+# committed page is what the committed run's files give now (no figure typed by hand),
+# and each quoted figure is one of data.tsv's.
+@test "chart-summary: docs/chart/README.md is what the committed run gives, byte for byte" {
+    cp "$SIGCHAIN_SOURCE_DIR"/docs/chart/{data.tsv,refs.tsv,where.md} .
+    run -0 "$SIGCHAIN_SOURCE_DIR/scripts/chart-summary" .
+    run -0 cmp README.md "$SIGCHAIN_SOURCE_DIR/docs/chart/README.md"
+    # The 64-spp row of soho's montecarlo-b3 is data.tsv's, rounded as printed.
+    row=$(awk -F '\t' '$1 == "soho" && $2 == "montecarlo-b3" && $3 == 64 {
+              printf "| soho | montecarlo-b3 | %.1f | %.3g | %.2f | %.3f |", $9, $5, $7, $8 }' data.tsv)
+    run -0 grep -cF -- "$row" README.md
+}
+
+@test "chart-summary: a changed run changes the page; a missing file exits 1 naming it" {
+    cp "$SIGCHAIN_SOURCE_DIR"/docs/chart/{data.tsv,refs.tsv,where.md} .
+    awk -F '\t' 'BEGIN { OFS = "\t" } $1 == "soho" && $2 == "golfball" && $3 == 64 { $5 = 99.5 } { print }' \
+        data.tsv > d && mv d data.tsv
+    run -0 "$SIGCHAIN_SOURCE_DIR/scripts/chart-summary" .
+    run -0 grep -cF "| soho | golfball | 14.0 | 99.5 |" README.md
+    run -0 grep -cF "golfball 99.5 RMS against montecarlo's 36.1" README.md
+    rm refs.tsv
+    run -1 --separate-stderr "$SIGCHAIN_SOURCE_DIR/scripts/chart-summary" .
+    [[ "$stderr" == "chart-summary: ./refs.tsv: cannot read it"* ]]
 }
