@@ -429,20 +429,22 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     else if (o.streams == kAutoStreams)
         rep.merge_rule = "--streams auto at " + format_number(100 * o.stream_tolerance) +
                          " %: 0.01 x sqrt(REL / 1 %)";
+    const DeckChoices choices = deck_choices(run);
+    if (!choices.solar && sun.zenith_deg < 90)
+        reporter.warn(o.cdk_path +
+                      ": CARD 1 IEMSCT (columns 11-15) is 1 (thermal radiance "
+                      "only) but the scene node's sun is up (zenith " +
+                      format_number(sun.zenith_deg) + " deg): the tables hold no sunlight");
     const SampleSetup setup{column,
                             dirs,
                             solar,
                             solved,
                             views,
                             std::cos(sun.zenith_deg * kDeg),
-                            sun.zenith_deg < 90,
+                            sun.zenith_deg < 90 && choices.solar,
                             distance_factor,
                             phase_moments(o.streams),
-                            deck_choices(run)};
-    if (column.mie())
-        rep.notes.push_back(
-            "IPH 2: aerosol scattering by LOWTRAN 7's Mie phase functions (delta-M, with "
-            "the Nakajima-Tanaka TMS and IMS corrections)");
+                            choices};
     for (std::string& note : deck_notes(run)) rep.notes.push_back(std::move(note));
     if (dirs.azimuth_means_only)
         rep.notes.push_back(

@@ -7,6 +7,7 @@
 #include <functional>
 #include <numbers>
 
+#include "atmos/deck_options.hpp"
 #include "atmos/rayleigh.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -79,7 +80,7 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
             m_user_region[r] = user->regions[r].has_value();
     m_cloud = CloudModel::from_deck(run.card2, ground, o.data_dir, g,
                                     run.user_optics ? &*run.user_optics : nullptr);
-    if (run.card1.iemsct == 2 && run.geometry.iph == 2) m_mie = MiePhaseTable::load(o.data_dir);
+    if (deck_mie_phase(run.card1, run.geometry)) m_mie = MiePhaseTable::load(o.data_dir);
     m_ihaze = run.card2.ihaze;
     m_ivulcn = run.card2.ivulcn;
     m_gas_tables = std::make_unique<GasTables>(

@@ -56,7 +56,8 @@ public:
     std::size_t sensor_level() const { return m_sensor_level; }  // index into profile levels
     double visibility_km() const { return m_aerosol->visibility_km(); }
 
-    // True when the deck asks for LOWTRAN 7's Mie phase functions (IEMSCT 2, IPH 2).
+    // True when the deck asks for LOWTRAN 7's Mie phase functions (IEMSCT 2 with IPH 2,
+    // or IEMSCT 1: deck_mie_phase).
     bool mie() const { return m_mie.has_value(); }
     // With mie(): the phase function of aerosol region `region` (0-3) at a wavelength as
     // LOWTRAN 7's PHASEF selects it (MiePhaseTable::region: the deck's IHAZE, IVULCN
@@ -143,7 +144,7 @@ private:
     std::optional<CloudModel> m_cloud;                // ICLD 1-10: the water cloud
     std::optional<RainModel> m_rain;                  // ICLD 6-10, RAINRT
     std::optional<CirrusModel> m_cirrus;              // ICLD 18, 19
-    std::optional<MiePhaseTable> m_mie;               // IPH 2
+    std::optional<MiePhaseTable> m_mie;               // IPH 2 or IEMSCT 1
     int m_ihaze = 0, m_ivulcn = 0;
     std::array<bool, 4> m_user_region{};      // CARD 2D IREG: Henyey-Greenstein with its ASYM
     std::unique_ptr<GasTables> m_gas_tables;  // GasColumn may refer to both: the model

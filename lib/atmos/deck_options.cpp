@@ -26,9 +26,7 @@ void run_refusals(const io::CdkRun& run, const std::string& pre, std::vector<std
     const io::CdkCard1& c1 = run.card1;
     const io::CdkCard2& c2 = run.card2;
     auto refuse = [&](const std::string& what) { out.push_back(pre + what); };
-    if (c1.iemsct != 2)
-        refuse("CARD 1 IEMSCT (columns 11-15) is " + std::to_string(c1.iemsct) +
-               ": build_radiance makes the tables of solar scattering and emission (use 2)");
+    if (const auto why = iemsct_refusal(c1)) refuse(*why);
     if (c1.boundary_temperature_k != 0)
         refuse("CARD 1 TBOUND (columns 66-73) is " + format_number(c1.boundary_temperature_k) +
                " K: the ground's temperature and emission come from the scene, rad(5) tables "
@@ -106,12 +104,40 @@ DeckChoices deck_choices(const io::CdkRun& run) {
     DeckChoices c;
     c.single_scattering = run.card1.imult == 0;
     c.surface_albedo = run.card1.surface_albedo;
+    c.solar = run.card1.iemsct == 2;
     return c;
+}
+
+bool deck_mie_phase(const io::CdkCard1& card1, const io::CdkGeometry& geometry) {
+    return card1.iemsct == 1 || (card1.iemsct == 2 && geometry.iph == 2);
+}
+
+std::optional<std::string> iemsct_refusal(const io::CdkCard1& card1) {
+    const std::string field = "CARD 1 IEMSCT (columns 11-15) is " + std::to_string(card1.iemsct);
+    if (card1.iemsct == 0)
+        return field +
+               ": a transmittance run computes no radiance, and rad(5) tables hold path and "
+               "sky radiances (use 1 for thermal radiance only, 2 with the sun)";
+    if (card1.iemsct == 3)
+        return field +
+               ": a solar irradiance run computes only the sun's transmitted irradiance, and "
+               "rad(5) tables hold path and sky radiances (use 2)";
+    return std::nullopt;
 }
 
 std::vector<std::string> deck_notes(const io::CdkRun& run) {
     std::vector<std::string> notes;
-    if (run.card1.imult == 0)
+    if (deck_mie_phase(run.card1, run.geometry))
+        notes.push_back(run.card1.iemsct == 1
+                            ? "IEMSCT 1: aerosol scattering by LOWTRAN 7's Mie phase functions "
+                              "(delta-M), as with IPH 2"
+                            : "IPH 2: aerosol scattering by LOWTRAN 7's Mie phase functions "
+                              "(delta-M, with the Nakajima-Tanaka TMS and IMS corrections)");
+    if (run.card1.iemsct == 1)
+        notes.push_back(
+            "IEMSCT 1: thermal radiance only: no sun (Es, tau1, L_us, L_ds and the sun's "
+            "diffuse transmittance 0)");
+    if (run.card1.imult == 0 && run.card1.iemsct == 2)
         notes.push_back("IMULT 0: solar scattering of first order only (single scattering)");
     if (run.card1.surface_albedo > 0)
         notes.push_back("SALB " + format_number(run.card1.surface_albedo) +

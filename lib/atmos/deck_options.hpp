@@ -1,8 +1,8 @@
 // What build_radiance makes of a LOWTRAN 7 deck's fields (man build_radiance(1), DECK
-// FIELDS): the fields it honours (IMULT, SALB, IPH 0 with G, the sun of CARD 3A1/3A2
-// checked against the scene node's), and the refusals, each naming its card, field and
-// columns (man cdk(5)). control7 asks deck_refusals() too, so that it never writes a
-// deck build_radiance refuses without saying so.
+// FIELDS): the fields it honours (IEMSCT 1 and 2, IMULT, SALB, IPH 0 with G, the sun of
+// CARD 3A1/3A2 checked against the scene node's), and the refusals, each naming its
+// card, field and columns (man cdk(5)). control7 asks deck_refusals() too, so that it
+// never writes a deck build_radiance refuses without saying so.
 #pragma once
 
 #include <optional>
@@ -17,7 +17,19 @@ namespace sigchain::atmos {
 struct DeckChoices {
     bool single_scattering = false;  // IMULT 0: solar scattering of first order only
     double surface_albedo = 0;       // SALB: Lambertian ground coupled to the sky
+    bool solar = true;               // IEMSCT 2; IEMSCT 1 (thermal radiance only): no sun,
+                                     // Es, tau1, L_us, L_ds and t_d_down are 0
 };
+
+// Whether the deck's aerosols scatter by LOWTRAN 7's Mie phase functions: IPH 2 with
+// IEMSCT 2, and IEMSCT 1, whose deck has no CARD 3A1 to override the models' own
+// functions (IPH 0 and 1 are the user's; man build_radiance(1), DECK FIELDS).
+bool deck_mie_phase(const io::CdkCard1& card1, const io::CdkGeometry& geometry);
+
+// The refusal of CARD 1 IEMSCT, or nothing: 1 (thermal radiance) and 2 (with solar
+// scattering) are honoured; 0 (transmittance) and 3 (directly transmitted solar
+// irradiance) compute no radiance, so the tables' radiances would be false zeros.
+std::optional<std::string> iemsct_refusal(const io::CdkCard1& card1);
 
 DeckChoices deck_choices(const io::CdkRun& run);
 // What those choices mean for the tables, one note each (build_radiance -v).

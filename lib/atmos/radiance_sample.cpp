@@ -380,7 +380,9 @@ SamplePrep prepare_sample(const SampleSetup& s, double nu) {
     p.col = s.column.layers(nu);
     p.sample.wavelength_um = wavelength;
     p.sample.wavenumber_cm1 = nu;
-    p.sample.solar_irradiance = s.solar.irradiance_w_cm2_um(nu) * s.distance_factor;
+    // IEMSCT 1 (thermal radiance only): Es 0 records the sun's absence (rad(5)).
+    p.sample.solar_irradiance =
+        s.deck.solar ? s.solar.irradiance_w_cm2_um(nu) * s.distance_factor : 0.0;
     p.sample.sun_transmission = s.sun_up ? s.column.sun_transmittance(nu, p.col, 0, s.mu0) : 0.0;
     // Exponential sums where a gas band needs them (ColumnModel::gas_terms): the solver
     // per term, the results weighted and summed (correlated-k).

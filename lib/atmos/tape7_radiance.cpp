@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "atmos/build_radiance.hpp"
+#include "atmos/deck_options.hpp"
 #include "atmos/radiance_directions.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -59,6 +60,7 @@ double wrap_180(double deg) {
 PathSetup path_setup(const io::Cdk& deck, const io::Snd& snd, const RadianceOptions& o) {
     if (deck.runs.empty()) throw Error("the card deck holds no run");
     const io::CdkRun& run = deck.runs.front();
+    if (const auto why = iemsct_refusal(run.card1)) throw DataError({o.cdk_path, 0}, *why);
     PathSetup p;
     p.ground_km = ground_km(run);
     p.sensor_km = snd.sensor_altitude_km;
@@ -144,7 +146,10 @@ Tape7Decks tape7_decks(const io::Cdk& deck, const io::Snd& snd, const RadianceOp
     list.view_azimuth_deg = p.view_azimuth_deg;
     list.sky_zenith_step_deg = 90.0 / std::lround(90.0 / o.sky_zenith_step_deg);
     list.sky_azimuth_step_deg = 360.0 / std::lround(360.0 / o.sky_azimuth_step_deg);
-    const int radiance = p.sun_up() ? 2 : 1;
+    // IEMSCT 1 (thermal radiance only) keeps its runs thermal whatever the sun; a sun
+    // above the horizon still has its run, which the run list asks for (t7m(5)), but its
+    // Es and tau1 are not used (tape7_radiance).
+    const int radiance = p.sun_up() && base.card1.iemsct == 2 ? 2 : 1;
     if (p.sun_up()) {
         out.decks.emplace_back("sun.tp5", path_deck(base, p, 3, 3, p.ground_km, 0, p.sun_zenith_deg,
                                                     p.sun_azimuth_deg, span));
@@ -373,7 +378,7 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
             const double nu = band.min_wavenumber_cm1 + k * band.increment_cm1;
             const Sampler mean{nu, band.increment_cm1 / 2};
             io::RadSample sample{1e4 / nu, nu, 0, 0};
-            if (sun) {
+            if (sun && deck.runs.front().card1.iemsct == 2) {  // IEMSCT 1: no sun
                 sample.solar_irradiance = mean(*sun, es);
                 sample.sun_transmission = std::clamp(mean(*sun, tau1), 0.0, 1.0);
             }

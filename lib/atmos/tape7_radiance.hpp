@@ -32,9 +32,11 @@ struct Tape7Decks {
 // sensor to ground) and each cell centre of the sky grid of `options` (IEMSCT 2, ground
 // to space); the sun is given as IPARM 2 (its zenith and the line of sight's azimuth
 // relative to it) computed as build_radiance does (NREL SPA at the target). IEMSCT 1
-// and no sun run when the sun is below the horizon. CARD 4 spans every band's samples
-// with half an increment on either side, DV the smallest band increment rounded down
-// to a multiple of 5 cm-1, within 5 to 20 cm-1 (LOWTRAN 7's step and resolution).
+// and no sun run when the sun is below the horizon; IEMSCT 1 runs too for a deck of
+// IEMSCT 1, whose tables then have Es and tau1 0. DataError for IEMSCT 0 and 3
+// (iemsct_refusal). CARD 4 spans every band's samples with half an increment on either
+// side, DV the smallest band increment rounded down to a multiple of 5 cm-1, within 5
+// to 20 cm-1 (LOWTRAN 7's step and resolution).
 Tape7Decks tape7_decks(const io::Cdk& deck, const io::Snd& snd, const RadianceOptions& options);
 
 // The .rad of every band of `snd` from the TAPE7s of `list` (file names relative to

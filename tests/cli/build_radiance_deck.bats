@@ -77,7 +77,7 @@ near_sun_cell() {
     sigchain-check mie-1.rad mie-2.rad
 }
 
-@test "TBOUND, IEMSCT, ISOURC and a second atmosphere are refused with card and columns" {
+@test "TBOUND, ISOURC and a second atmosphere are refused with card and columns" {
     sed '1s/^\(.\{65\}\)   0.000/\1 290.000/' "$DATA/rural23.cdk" > tbound.cdk
     run -1 --separate-stderr build_radiance "${QUICK[@]}" tbound.cdk "$DATA/small.snd" -o 'o-%d.rad'
     assert_equal "$stderr" "build_radiance: tbound.cdk: CARD 1 TBOUND (columns 66-73) is 290 K: the ground's temperature and emission come from the scene, rad(5) tables hold none (use 0)"

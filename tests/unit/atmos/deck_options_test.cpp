@@ -175,9 +175,17 @@ TEST(DeckRefusals, NameCardFieldAndColumns) {
     io::Cdk d = rural23();
     d.runs[0].card1.boundary_temperature_k = 290;
     EXPECT_TRUE(any_contains(deck_refusals(d), "CARD 1 TBOUND (columns 66-73) is 290"));
+    // IEMSCT 1 (thermal radiance, no CARD 3A1) is honoured, 0 and 3 compute no radiance.
     d = rural23();
     d.runs[0].card1.iemsct = 1;
-    EXPECT_TRUE(any_contains(deck_refusals(d), "CARD 1 IEMSCT (columns 11-15) is 1"));
+    d.runs[0].geometry = {};
+    EXPECT_TRUE(deck_refusals(d).empty());
+    for (int mode : {0, 3}) {
+        d.runs[0].card1.iemsct = mode;
+        EXPECT_TRUE(any_contains(
+            deck_refusals(d), "CARD 1 IEMSCT (columns 11-15) is " + std::to_string(mode) + ": a "))
+            << mode;
+    }
     d = rural23();
     d.runs[0].geometry.iph = 1;
     EXPECT_TRUE(any_contains(deck_refusals(d), "CARD 3A1 IPH (columns 6-10) is 1"));
@@ -217,6 +225,21 @@ TEST(DeckChoices, ImultAndSalb) {
     run.card1.surface_albedo = 0.2;
     EXPECT_TRUE(deck_choices(run).single_scattering);
     EXPECT_EQ(deck_choices(run).surface_albedo, 0.2);
+}
+
+// IEMSCT 1 has no sun and scatters by the Mie functions, as IEMSCT 2 does with IPH 2
+// alone (IPH 0 and 1 on CARD 3A1 replace the models' functions).
+TEST(DeckChoices, ThermalRadianceOnly) {
+    io::CdkRun run = rural23().runs[0];
+    EXPECT_TRUE(deck_choices(run).solar);
+    EXPECT_TRUE(deck_mie_phase(run.card1, run.geometry));
+    run.geometry.iph = 0;
+    EXPECT_FALSE(deck_mie_phase(run.card1, run.geometry));
+    run.card1.iemsct = 1;
+    run.geometry = {};
+    EXPECT_FALSE(deck_choices(run).solar);
+    EXPECT_TRUE(deck_mie_phase(run.card1, run.geometry));
+    EXPECT_FALSE(iemsct_refusal(run.card1));
 }
 
 // rural23's IPARM 1 sun (IDAY 273, 19.000 GMT, 43.083 N 77.667 W) against small.snd's
