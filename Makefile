@@ -5,7 +5,7 @@ JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
 .PHONY: all deps configure build test man install demo fuzz bench performance chart validate \
-	counts clean
+	accuracy counts clean
 
 all: build
 
@@ -71,6 +71,12 @@ chart: build
 validate: deps configure
 	cmake --build $(BUILD) -j $(JOBS) --target tools
 	@JOBS=$(JOBS) scripts/validation $(BUILD)
+
+# docs/accuracy.md: every accuracy figure of the atmosphere, thermal and trace checks
+# against their references, from one run of the tests that check them (scripts/accuracy;
+# about 6 s once built; tests/cli/accuracy_doc.bats fails when the page is stale).
+accuracy: build
+	@scripts/accuracy $(BUILD)
 
 # The README's paragraph on what `make test` runs, counted (scripts/test_counts; runs
 # the robustness campaign once for its catalogue, about a minute and a half).

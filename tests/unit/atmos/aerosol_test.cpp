@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "core/error.hpp"
 
 using namespace sigchain;
@@ -96,6 +97,9 @@ TEST(AtmosAerosol, ColumnOpticalDepthMatchesLowtranVis23SpringSummer) {
     // AER1+AER2+AER3+AER4 = 0.3249 (a reference LOWTRAN 7 run). Required: 0.5 %.
     const auto m = AerosolModel::from_deck(card2(1, 23, 1), afgl_profile(2, kData), kData);
     EXPECT_NEAR(m.layer(0, 100, 0.55).tau_ext, 0.3249, 0.005 * 0.3249);
+    sigchain::unit::record("tau_550nm", m.layer(0, 100, 0.55).tau_ext);
+    sigchain::unit::record("reference", 0.3249);
+    sigchain::unit::record("limit_relative", 0.005);
 }
 
 TEST(AtmosAerosol, ColumnOpticalDepthMatchesLowtranVis5FallWinter) {
@@ -103,6 +107,9 @@ TEST(AtmosAerosol, ColumnOpticalDepthMatchesLowtranVis5FallWinter) {
     const auto m = AerosolModel::from_deck(card2(2, 0, 2), afgl_profile(3, kData), kData);
     EXPECT_DOUBLE_EQ(m.visibility_km(), 5);
     EXPECT_NEAR(m.layer(0, 100, 0.55).tau_ext, 1.1416, 0.005 * 1.1416);
+    sigchain::unit::record("tau_550nm", m.layer(0, 100, 0.55).tau_ext);
+    sigchain::unit::record("reference", 1.1416);
+    sigchain::unit::record("limit_relative", 0.005);
     // ISEASN 0 with MODEL 3 (mid-latitude winter) is fall-winter too.
     const auto d = AerosolModel::from_deck(card2(2, 0, 0), afgl_profile(3, kData), kData);
     EXPECT_NEAR(d.layer(0, 100, 0.55).tau_ext, m.layer(0, 100, 0.55).tau_ext, 1e-12);

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "../record_property.hpp"
 #include "atmos/build_radiance.hpp"
 #include "atmos/column_model.hpp"
 #include "core/error.hpp"
@@ -69,6 +70,10 @@ TEST(BuildRadianceTerms, OxygenABandPathRadianceConvergesAsTermsAreAdded) {
     EXPECT_NEAR(lds[last - 1] / lds[last], 1.0, 0.01);
     EXPECT_LT(lus[0] / lus[last], 0.9);
     EXPECT_LT(lds[0] / lds[last], 0.9);
+    unit::record("path_16_over_1_term", lus[last] / lus[0]);
+    unit::record("sky_16_over_1_term", lds[last] / lds[0]);
+    unit::record("path_12_over_16_terms", lus[last - 1] / lus[last]);
+    unit::record("sky_12_over_16_terms", lds[last - 1] / lds[last]);
 }
 
 // Thermal path radiance at nadir and 40 deg from a sensor at 20 km, no aerosol, in the
@@ -112,6 +117,10 @@ TEST(BuildRadianceTerms, ThermalPathRadianceFollowsTheSlantPathTransmittance) {
                               column.direct_transmittance(nu, col, k, sensor, mu));
             sums[v] = after[0].views[v].path[0].emitted_radiance;
             one[v] = before[0].views[v].path[0].emitted_radiance;
+            const std::string at =
+                std::to_string(int(nu)) + "cm1_" + std::to_string(v * 40) + "deg";
+            unit::record("sums_relative_error_" + at, sums[v] / formal[v] - 1);
+            unit::record("one_depth_relative_error_" + at, one[v] / formal[v] - 1);
             std::printf("%5.0f  %4d  %.5g  %.5g (%.4f)  %.5g (%.4f)\n", nu, v * 40, formal[v],
                         one[v], one[v] / formal[v], sums[v], sums[v] / formal[v]);
             double b_max = 0;

@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
+#include "../record_property.hpp"
 #include "core/error.hpp"
 
 namespace sigchain::atmos {
@@ -72,6 +74,7 @@ const HawkeyeRun& hawkeye() {
 TEST(BuildRadiance, HemisphereIntegratesToTheSolversDiffuseIrradiance) {
     const auto& run = hawkeye();
     ASSERT_EQ(run.rads.size(), 2u);
+    double worst = 0;
     for (std::size_t b = 0; b < run.rads.size(); ++b) {
         const io::RadSky& sky = *run.rads[b].sky;
         const double dz = 90.0 / static_cast<double>(sky.zenith_count);
@@ -86,8 +89,11 @@ TEST(BuildRadiance, HemisphereIntegratesToTheSolversDiffuseIrradiance) {
             const double reference = run.report.ground_diffuse_irradiance[b][s];
             ASSERT_GT(reference, 0);
             EXPECT_NEAR(e / reference, 1.0, 0.01) << "band " << b + 1 << " sample " << s;
+            worst = std::max(worst, std::abs(e / reference - 1));
         }
     }
+    unit::record("relative_difference", worst);
+    unit::record("limit", 0.01);
 }
 
 TEST(BuildRadiance, GridsRangesAndTransmissionsFollowTheGeometry) {
@@ -284,6 +290,8 @@ TEST(BuildRadiance, MergingThinLayersChangesTheTablesBelowATenthOfAPercent) {
     const double worst = worst_relative_difference(merged, full);
     EXPECT_LT(worst, 1e-3);
     std::printf("merged vs full solver layers: worst relative difference %.2e\n", worst);
+    unit::record("relative_difference", worst);
+    unit::record("limit", 1e-3);
 }
 
 // The merge depth by default: 0.01 with fixed streams and at --streams auto's default
@@ -373,6 +381,10 @@ TEST(BuildRadiance, ThermalEmissionMatchesTheAbsorptionOnlyFormalSolution) {
         const double l_de = rads[b].sky->cells[0].emitted_radiance[0];
         EXPECT_NEAR(l_ue / up, 1.0, 0.01) << nu << " cm-1: L_ue " << l_ue << " vs " << up;
         EXPECT_NEAR(l_de / down, 1.0, 0.01) << nu << " cm-1: L_de " << l_de << " vs " << down;
+        const std::string at = std::to_string(int(std::lround(nu))) + "cm1";
+        unit::record("path_relative_difference_" + at, l_ue / up - 1);
+        unit::record("sky_relative_difference_" + at, l_de / down - 1);
+        unit::record("limit", 0.01);
         std::printf("%g cm-1: L_ue %.5g (formal %.5g), L_de zenith %.5g (formal %.5g)\n", nu, l_ue,
                     up, l_de, down);
     }

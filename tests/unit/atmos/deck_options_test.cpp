@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "../record_property.hpp"
 #include "atmos/build_radiance.hpp"
 #include "atmos/ground_albedo.hpp"
 #include "atmos/rayleigh.hpp"
@@ -72,6 +74,7 @@ TEST(SingleScattering, ThinRayleighLayerMatchesTheClosedForm) {
     const rt::Problem p = rayleigh_problem(tau, 5, mu0);
     const rt::Result r = single_scattering(p);
     ASSERT_EQ(r.levels.size(), 2u);
+    double worst = 0;
     for (std::size_t i = 0; i < p.umu.size(); ++i)
         for (std::size_t j = 0; j < p.phi_deg.size(); ++j) {
             const double mu = p.umu[i];
@@ -79,8 +82,11 @@ TEST(SingleScattering, ThinRayleighLayerMatchesTheClosedForm) {
             const double want = closed_form(tau, mu0, mu, p.phi_deg[j]);
             EXPECT_NEAR(r.levels[level].intensity[i * 3 + j], want, 1e-12 * want + 1e-15)
                 << "mu " << mu << " phi " << p.phi_deg[j];
+            worst = std::max(worst, std::abs(r.levels[level].intensity[i * 3 + j] / want - 1));
         }
     EXPECT_NEAR(r.levels[1].direct_down, mu0 * std::exp(-tau / mu0), 1e-15);
+    unit::record("relative_difference", worst);
+    unit::record("limit", 1e-12);
 }
 
 // Energy: a thin layer scatters tau F0 of the beam's horizontal flux mu0 F0 (tau / mu0
@@ -105,16 +111,22 @@ TEST(SingleScattering, AgreesWithTheSolverInAThinLayer) {
     p.utau = {0, 2e-3};
     const rt::Result ss = single_scattering(p);
     const rt::Result ms = rt::solve(p);
+    double worst = 0;
     for (std::size_t l = 0; l < 2; ++l) {
         for (std::size_t i = 0; i < ss.levels[l].intensity.size(); ++i) {
             const double want = ms.levels[l].intensity[i];
             const double mu = p.umu[i / 3];
             if ((l == 0) != (mu > 0)) continue;  // only the scattered directions
             EXPECT_NEAR(ss.levels[l].intensity[i], want, 0.01 * want) << l << " " << i;
+            worst = std::max(worst, std::abs(ss.levels[l].intensity[i] / want - 1));
         }
     }
     EXPECT_NEAR(ss.levels[1].diffuse_down, ms.levels[1].diffuse_down,
                 0.01 * ms.levels[1].diffuse_down);
+    unit::record("relative_difference", worst);
+    unit::record("flux_relative_difference",
+                 ss.levels[1].diffuse_down / ms.levels[1].diffuse_down - 1);
+    unit::record("limit", 0.01);
 }
 
 rt::Problem hazy_problem(double albedo) {
@@ -145,15 +157,19 @@ TEST(GroundAlbedo, MatchesTheSolversLambertianSurface) {
     const double f0 = r.levels[1].direct_down + r.levels[1].diffuse_down;
     add_ground_reflection(black, rho, 1, r);
     const rt::Result want = rt::solve(hazy_problem(rho));
+    double worst = std::abs(r.levels[1].diffuse_down / want.levels[1].diffuse_down - 1);
     for (std::size_t i = 0; i < black.umu.size(); ++i) {
         if (black.umu[i] > 0) continue;
         for (std::size_t j = 0; j < black.phi_deg.size(); ++j) {
             const double w = want.levels[1].intensity[i * 4 + j];
             EXPECT_NEAR(r.levels[1].intensity[i * 4 + j], w, 1e-6 * w) << i << " " << j;
+            worst = std::max(worst, std::abs(r.levels[1].intensity[i * 4 + j] / w - 1));
         }
     }
     EXPECT_NEAR(r.levels[1].diffuse_down, want.levels[1].diffuse_down,
                 1e-6 * want.levels[1].diffuse_down);
+    unit::record("relative_difference", worst);
+    unit::record("limit", 1e-6);
     // The coupling formula (rt/coupling.hpp): F(rho) = F(0) / (1 - rho S).
     const double s = rt::surface_coupling(black, 0, {1.0}).spherical_albedo;
     EXPECT_NEAR(r.levels[1].direct_down + r.levels[1].diffuse_down, f0 / (1 - rho * s), 1e-9 * f0);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../record_property.hpp"
 #include "atmos/build_radiance.hpp"
 
 namespace sigchain::atmos {
@@ -58,6 +59,8 @@ TEST(EmissionMerge, SkyEmissionMatchesEveryLayerKept) {
                                            all.sky->cells[c].emitted_radiance));
     std::printf("sky emission, merged against every layer kept: %.2g\n", worst);
     EXPECT_LT(worst, 1e-3);
+    unit::record("sky_relative_difference", worst);
+    unit::record("limit", 1e-3);
     EXPECT_GT(worst, 0);  // merged indeed: a different layering
     // The path's emission (sensor 30 m above the ground, its level always kept).
     std::vector<double> a, b;

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "core/error.hpp"
 
 using namespace sigchain;
@@ -358,6 +359,12 @@ TEST(GasAbsorptionReference, OzoneChappuisMatchesWmo1986) {
     const double mean_here = wavelength_mean(540, 660, tau_here);
     const double mean_wmo = wavelength_mean(540, 660, tau_wmo);
     EXPECT_NEAR(mean_here / mean_wmo, 1.0, 0.05) << mean_here << " vs " << mean_wmo;
+    unit::record("transmittance_600nm", std::exp(-tau_here(600)));
+    unit::record("reference_600nm", std::exp(-tau_wmo(600)));
+    unit::record("limit_600nm", 0.005);
+    unit::record("mean_tau_540_660nm", mean_here);
+    unit::record("reference_mean_tau_540_660nm", mean_wmo);
+    unit::record("limit_mean_relative", 0.05);
 }
 
 // Ozone Hartley-Huggins edge against SPCTRAL2's ozone coefficients (Bird & Riordan 1984
@@ -422,6 +429,9 @@ TEST(GasAbsorptionReference, OxygenABandAbsorbsStrongly) {
         return std::exp(-1.41 * au / std::pow(1 + 118.93 * au, 0.45));
     });
     EXPECT_NEAR(here, ref, 0.03);
+    unit::record("mean_transmittance", here);
+    unit::record("reference", ref);
+    unit::record("limit", 0.03);
 }
 
 // Water vapour, mid-latitude summer vertical column (2.92 cm precipitable water; H2O
@@ -444,6 +454,7 @@ TEST(GasAbsorptionReference, WaterVapourBandsMatchSpctral2) {
         lowest = std::min(lowest, col.transmittance(nu, 0, top, 1.0));
     EXPECT_LT(lowest, 0.5);
     const auto spc = read_table(kTestData + "/spectrl2_bird_riordan_coefficients.txt");
+    double worst = 0;
     for (auto [lo, hi] : {std::pair{800.0, 860.0}, {880.0, 1040.0}, {1040.0, 1240.0}}) {
         const double here = wavelength_mean(
             lo, hi, [&](double nm) { return col.transmittance(1e7 / nm, 0, top, 1.0); });
@@ -452,7 +463,13 @@ TEST(GasAbsorptionReference, WaterVapourBandsMatchSpctral2) {
             return std::exp(-0.2385 * aw / std::pow(1 + 20.07 * aw, 0.45));
         });
         EXPECT_NEAR(here, ref, 0.03) << lo << "-" << hi << " nm";
+        const std::string band = std::to_string(int(lo)) + "_" + std::to_string(int(hi)) + "nm";
+        unit::record("mean_transmittance_" + band, here);
+        unit::record("reference_" + band, ref);
+        worst = std::max(worst, std::abs(here - ref));
     }
+    unit::record("largest_difference", worst);
+    unit::record("limit", 0.03);
     EXPECT_GT(col.transmittance(1e7 / 550, 0, top, 1.0), 0.99);
 }
 
@@ -479,8 +496,11 @@ TEST(GasAbsorptionLowtranOutput, SeaLevelAmountsMatchTape6) {
             set_gas(prof, g, ppmv);
         return prof;
     };
-    auto within = [](double got, double printed, double unit) {
+    double lowest = 0, highest = 0;  // got / printed - 1
+    auto within = [&](double got, double printed, double unit) {
         EXPECT_NEAR(got, printed, 0.5 * unit + 0.002 * printed);
+        lowest = std::min(lowest, got / printed - 1);
+        highest = std::max(highest, got / printed - 1);
     };
     struct BandCase {
         Gas gas;
@@ -515,6 +535,8 @@ TEST(GasAbsorptionLowtranOutput, SeaLevelAmountsMatchTape6) {
     within(hno3.continuum_optical_depth(870, 0, 1, 1) / 9.217, 4.738e-06, 1e-9);
     GasColumn o3(tables(), sea_level(Gas::O3, 0.0266));
     within(o3.continuum_optical_depth(16600, 0, 1, 1) / 0.128, 2.519e-03, 1e-6);
+    unit::record("lowest_relative_difference", lowest);
+    unit::record("highest_relative_difference", highest);
 }
 
 // ---- Tables and speed ------------------------------------------------------------------
@@ -673,6 +695,8 @@ TEST(GasAbsorptionTerms, ExpSumsReproduceTheBandModelOnEveryInterval) {
     const auto us = afgl("afgl_atmosphere_6_us_standard_1976.txt").profile;
     const std::pair<Gas, double> minor[] = {
         {Gas::NO, 3e-4}, {Gas::SO2, 3e-4}, {Gas::NO2, 2.3e-5}, {Gas::NH3, 5e-4}};
+    double worst_all = 0;
+    std::size_t most_all = 0;
     for (int g = 0; g < 11; ++g) {
         Profile p = only(us, Gas(g));
         for (const auto& [gas, ppmv] : minor)
@@ -699,7 +723,12 @@ TEST(GasAbsorptionTerms, ExpSumsReproduceTheBandModelOnEveryInterval) {
             "gas %d: %zu intervals fitted, up to %zu terms, largest error %.4f at %g cm-1\n", g,
             fitted, most, worst, worst_nu);
         EXPECT_LE(worst, 0.005) << "gas " << g << " at " << worst_nu << " cm-1";
+        worst_all = std::max(worst_all, worst);
+        most_all = std::max(most_all, most);
     }
+    unit::record("largest_error", worst_all);
+    unit::record("most_terms", double(most_all));
+    unit::record("limit", 0.005);
 }
 
 // Where no gas needs a fit (a window, or terms limited to 1) the one term is the

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "atmos/gas_absorption.hpp"
 #include "atmos/profile.hpp"
 #include "io/cdk.hpp"
@@ -79,6 +80,10 @@ TEST(GasOverlap, ProductOfTwoSumsMatchesTheBandModelsProduct) {
         "H2O and O2: worst %.4f with pairs (%d of 82 intervals paired, at most %zu "
         "terms), %.4f with the strongest gas's sum only\n",
         worst_pairs, paired, most_terms, worst_single);
+    unit::record("largest_error", worst_pairs);
+    unit::record("limit", 0.005);
+    unit::record("largest_error_one_sum", worst_single);
+    unit::record("most_terms", double(most_terms));
 }
 
 // No second gas where the overlap is weak: in the visible window (0.5-0.55 um) the

@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "atmos/cirrus.hpp"
 #include "atmos/column_model.hpp"
 #include "io/cdk.hpp"
@@ -47,6 +49,7 @@ double simpson(F f, double a, double b, int n) {
 // form pi N0 / Lambda^3. D in mm up to 60 / Lambda (the integrand is down by e^-60 there);
 // 20000 Simpson intervals leave ~1e-14 relative. mm2 m-3 -> km-1: 1e-6 m-1 = 1e-3 km-1.
 TEST(AtmosRain, MarshallPalmerClosedFormMatchesTheIntegral) {
+    double worst = 0, worst_law = 0;
     for (double r : {0.5, 2.0, 5.0, 12.5, 25.0, 75.0}) {
         const double lambda = 4.1 * std::pow(r, -0.21);
         EXPECT_NEAR(marshall_palmer_slope_mm1(r), lambda, kArith * lambda);
@@ -59,8 +62,16 @@ TEST(AtmosRain, MarshallPalmerClosedFormMatchesTheIntegral) {
         EXPECT_NEAR(rain_extinction_km1(r), 0.3647 * std::pow(r, 0.63),
                     2e-4 * rain_extinction_km1(r))
             << r;
+        worst = std::max(worst, std::abs(rain_extinction_km1(r) / numeric_km1 - 1));
+        worst_law = std::max(worst_law,
+                             std::abs(rain_extinction_km1(r) / (0.3647 * std::pow(r, 0.63)) - 1));
     }
     EXPECT_EQ(rain_extinction_km1(0), 0.0);
+    unit::record("relative_difference", worst);
+    unit::record("limit", 1e-10);
+    unit::record("law_relative_difference", worst_law);
+    unit::record("law_limit", 2e-4);
+    unit::record("extinction_5mm_h_km1", rain_extinction_km1(5));
 }
 
 // RAINRT without a cloud: the rate on the aerosol grid (0, 1, .. 6 km) and zero at 7 km,
@@ -119,11 +130,15 @@ TEST(AtmosRain, VerticalTransmittanceIsBeerOfTheRainExtinction) {
     wet.card2.rain_rate_mm_h = 5;
     const ColumnModel a(clear, 1.0, o), b(wet, 1.0, o);
     const double tau = rain_extinction_km1(5) * 1.0;
+    double worst = 0;
     for (double nu : {1e4 / 0.55, 1e4 / 2.2}) {
         const double ta = a.direct_transmittance(nu, a.layers(nu), 0, a.sensor_level(), 1.0);
         const double tb = b.direct_transmittance(nu, b.layers(nu), 0, b.sensor_level(), 1.0);
         EXPECT_NEAR(-std::log(tb / ta), tau, 1e-7 * tau) << nu;
+        worst = std::max(worst, std::abs(-std::log(tb / ta) / tau - 1));
     }
+    unit::record("relative_difference", worst);
+    unit::record("limit", 1e-7);
 }
 
 // Cirrus defaults (CIRR18): standard 1 km thick, sub-visual 0.2 km; CEXT 0.14 CTHIK;

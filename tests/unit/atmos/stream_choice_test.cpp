@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "../record_property.hpp"
 #include "atmos/build_radiance.hpp"
 #include "core/error.hpp"
 
@@ -81,6 +82,16 @@ struct AutoAgainst32 {
     double difference = 0;  // auto's tables from 32 streams'
 };
 
+// Records (scripts/accuracy) the difference from 32 streams, the tolerance asked and the
+// streams chosen in each band, the keys prefixed with `prefix`.
+void record(const std::string& prefix, const AutoAgainst32& r, double tolerance) {
+    unit::record(prefix + "difference", r.difference);
+    unit::record(prefix + "tolerance", tolerance);
+    for (std::size_t b = 0; b < r.report.band_streams.size(); ++b)
+        unit::record(prefix + "streams_band" + std::to_string(b + 1),
+                     r.report.band_streams[b].streams);
+}
+
 AutoAgainst32 auto_against_32(const io::Cdk& deck, const io::Snd& snd, double tolerance,
                               RadianceOptions (*make)(int) = options) {
     AutoAgainst32 out;
@@ -117,6 +128,7 @@ TEST(StreamChoice, AutoIsWithinTheToleranceOf32StreamsOnTheTrainingDeck) {
         EXPECT_LE(c.estimated_error, tolerance);
     }
     EXPECT_LE(r.difference, tolerance);
+    record("", r, tolerance);
 }
 
 // A hazy deck (the same, VIS 2 km), one line of sight and one sky cell: within the
@@ -133,6 +145,7 @@ TEST(StreamChoice, AHazyDeckIsWithinTheToleranceOf32Streams) {
         EXPECT_LT(c.streams, 16);
     }
     EXPECT_LE(r.difference, tolerance);
+    record("", r, tolerance);
 }
 
 // A clear nadir case (no aerosol, a near-infrared band: Rayleigh optical depth about
@@ -152,6 +165,8 @@ TEST(StreamChoice, AClearNadirCaseIsWithinTheToleranceOf32Streams) {
     const AutoAgainst32 loose = auto_against_32(clear, snd, 0.01, one_cell);
     EXPECT_LT(loose.report.band_streams[0].streams, strict.report.band_streams[0].streams);
     EXPECT_LE(loose.difference, 0.01);
+    record("strict_", strict, 0.005);
+    record("loose_", loose, 0.01);
 }
 
 // A tolerance no candidate meets: the largest candidate, flagged (and -v says so).

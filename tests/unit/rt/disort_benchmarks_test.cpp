@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
 
@@ -136,7 +137,7 @@ struct Errors {
     int flux_fail = 0, intensity_fail = 0, intensity_count = 0;
 };
 
-Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
+Errors run_case(Case c, double azimuth_accuracy, bool verbose, bool ims = true) {
     // Haze-L and Cloud C.1: the PMOM record (6 decimals) is replaced by the exact expansion,
     // as many moments as the record has (disotest used nmom = nstr = 32 for Haze-L, so its
     // "exact" phase function in the intensity correction is that truncated series).
@@ -165,7 +166,7 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
     // disotest runs with DISORT's intensity correction, TMS and IMS: case 5b's
     // beam-direction intensities (Cloud C.1, umu = -mu0 at tau 3.2 and 12.8) need the
     // IMS part (without it they are 40 % and 54 % high).
-    p.secondary_correction = true;
+    p.secondary_correction = ims;
     std::vector<double> levels{0};
     for (const Layer& l : p.layers) levels.push_back(levels.back() + l.tau);
     double emitted = 0;
@@ -240,7 +241,10 @@ Errors run_case(Case c, double azimuth_accuracy, bool verbose) {
     return e;
 }
 
+// Records the worst relative errors over the file's cases (scripts/accuracy), and for
+// case 5b (Cloud C.1) its own and, without the IMS correction, its intensities' worst.
 void run_file(const std::string& file) {
+    double flux_rel = 0, intensity_rel = 0;
     for (const Case& c : read_cases(file)) {
         const Errors e = run_case(c, 0.0, true);
         std::printf(
@@ -249,7 +253,19 @@ void run_file(const std::string& file) {
             c.name.c_str(), e.flux_rel, e.flux, e.intensity_rel, e.intensity, e.intensity_count);
         EXPECT_EQ(e.flux_fail, 0) << c.title;
         EXPECT_EQ(e.intensity_fail, 0) << c.title;
+        flux_rel = std::max(flux_rel, e.flux_rel);
+        intensity_rel = std::max(intensity_rel, e.intensity_rel);
+        if (c.name == "5b") {
+            unit::record("case_5b_flux_relative_error", e.flux_rel);
+            unit::record("case_5b_intensity_relative_error", e.intensity_rel);
+            unit::record("case_5b_intensity_relative_error_without_ims",
+                         run_case(c, 0.0, false, false).intensity_rel);
+        }
     }
+    unit::record("flux_relative_error", flux_rel);
+    unit::record("intensity_relative_error", intensity_rel);
+    unit::record("flux_limit", 1e-3);
+    unit::record("intensity_limit", 1e-2);
 }
 
 TEST(DisortBenchmark, Test1IsotropicScattering) { run_file("disort_test01.txt"); }

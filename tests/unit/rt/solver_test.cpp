@@ -1,10 +1,12 @@
 // Analytic and conservation checks of the discrete-ordinate solver and planck_band.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "core/error.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
@@ -94,6 +96,7 @@ TEST(Solver, ConservativeScatteringConservesEnergy) {
     // omega = 1, black surface: reflected + transmitted (direct + diffuse) = mu0 F. The
     // omega = 1 - 1e-9 dither absorbs ~1e-9 per unit photon path (paths ~ tau^2 ~ 1e2 here),
     // and the quadrature conserves flux to rounding, so 1e-6 relative.
+    double worst = 0, worst_dfdt = 0;
     for (bool delta_m : {false, true})
         for (int streams : {4, 16, 32}) {
             Problem p = beam_problem(1.0, 0.8, 4, streams);
@@ -109,7 +112,12 @@ TEST(Solver, ConservativeScatteringConservesEnergy) {
                 << "streams " << streams << " delta_m " << delta_m;
             // Net flux is constant with depth: dfdt = 0 (to the same relative 1e-6).
             EXPECT_NEAR(r.levels[0].dfdt / incident, 0.0, 1e-6);
+            worst = std::max(worst, std::abs(out / incident - 1));
+            worst_dfdt = std::max(worst_dfdt, std::abs(r.levels[0].dfdt / incident));
         }
+    unit::record("energy_relative_error", worst);
+    unit::record("dfdt_relative", worst_dfdt);
+    unit::record("limit", 1e-6);
 }
 
 TEST(Solver, NonScatteringLayerIsBeerLambert) {
@@ -119,13 +127,20 @@ TEST(Solver, NonScatteringLayerIsBeerLambert) {
     p.umu = {-0.7, 0.4};
     p.phi_deg = {0, 90};
     const Result r = solve(p);
+    double worst = 0, worst_diffuse = 0;
     for (std::size_t i = 0; i < p.utau.size(); ++i) {
         const double want = p.beam_mu0 * p.beam_flux * std::exp(-p.utau[i] / p.beam_mu0);
         EXPECT_NEAR(r.levels[i].direct_down / want, 1.0, 1e-12);
         EXPECT_NEAR(r.levels[i].diffuse_down, 0.0, 1e-12);
         EXPECT_NEAR(r.levels[i].diffuse_up, 0.0, 1e-12);
         for (double v : r.levels[i].intensity) EXPECT_NEAR(v, 0.0, 1e-12);
+        worst = std::max(worst, std::abs(r.levels[i].direct_down / want - 1));
+        worst_diffuse = std::max(
+            {worst_diffuse, std::abs(r.levels[i].diffuse_down), std::abs(r.levels[i].diffuse_up)});
     }
+    unit::record("direct_relative_error", worst);
+    unit::record("diffuse", worst_diffuse);
+    unit::record("limit", 1e-12);
 }
 
 TEST(Solver, ThickIsothermalAbsorberEmitsPlanck) {
@@ -140,7 +155,13 @@ TEST(Solver, ThickIsothermalAbsorberEmitsPlanck) {
     p.umu = {0.05, 0.3, 1.0};
     p.phi_deg = {0};
     const Result r = solve(p);
-    for (double v : r.levels[0].intensity) EXPECT_NEAR(v / 3.0, 1.0, 1e-10);
+    double worst = std::abs(r.levels[0].diffuse_up / (kPi * 3.0) - 1);
+    for (double v : r.levels[0].intensity) {
+        EXPECT_NEAR(v / 3.0, 1.0, 1e-10);
+        worst = std::max(worst, std::abs(v / 3.0 - 1));
+    }
+    unit::record("emission_relative_error", worst);
+    unit::record("limit", 1e-10);
     EXPECT_NEAR(r.levels[0].diffuse_up / (kPi * 3.0), 1.0, 1e-10);
     // Deep inside: isotropic B both ways and no net flux divergence.
     EXPECT_NEAR(r.levels[1].diffuse_down / (kPi * 3.0), 1.0, 1e-10);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../record_property.hpp"
 #include "io/snd.hpp"
 #include "io/wth.hpp"
 
@@ -77,6 +78,8 @@ TEST(FacetModel, EnergyBalanceClosesOverADay) {
     EXPECT_GT(b.absorbed_solar, 5e6);  // a sunny autumn day: ~ 0.6 x 15 MJ/m2
     EXPECT_LT(std::abs(b.residual()), 1e-5 * absorbed)
         << "residual " << b.residual() << " J/m2 of " << absorbed;
+    sigchain::unit::record("residual_over_absorbed", b.residual() / absorbed);
+    sigchain::unit::record("limit", 1e-5);
     std::printf(
         "energy budget over the day (J/m2): solar %.4g, long-wave %.4g, emitted %.4g, "
         "convected %.4g, stored %.4g, residual %.3g (%.2e of absorbed)\n",
@@ -97,6 +100,8 @@ TEST(FacetModel, ShadowedFacetIsCoolerThanSunlitTwinByDay) {
     // Clear-sky noon sun (~650 W/m2 at 46 deg, 60 % absorbed) over h ~ 20 W/m2/K:
     // a difference of order 10 K; 5 K is a safe floor for "cooler by day".
     EXPECT_GT(lit.front_k() - dark.front_k(), 5.0);
+    sigchain::unit::record("sunlit_minus_shadowed_K", lit.front_k() - dark.front_k());
+    sigchain::unit::record("limit_K", 5.0);
     std::printf("14:00: sunlit %.2f K, shadowed %.2f K, air %.2f K\n", lit.front_k(),
                 dark.front_k(), env.back().air_k);
 }

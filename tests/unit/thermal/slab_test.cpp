@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../record_property.hpp"
 #include "core/error.hpp"
 
 namespace th = sigchain::thermal;
@@ -62,8 +63,12 @@ TEST(Slab, PeriodicSurfaceFluxMatchesSemiInfiniteSolution) {
     // dt/2 = 30 s and the grid adds a little; 2 % of the lag (89 s) bounds both.
     EXPECT_NEAR(hm.amplitude, amp_ref, 0.01 * amp_ref);
     EXPECT_NEAR(hm.phase_rad / w, lag_ref_s, 0.02 * lag_ref_s);
-    RecordProperty("amplitude_K", std::to_string(hm.amplitude));
-    RecordProperty("lag_h", std::to_string(hm.phase_rad / w / 3600));
+    sigchain::unit::record("amplitude_K", hm.amplitude);
+    sigchain::unit::record("lag_h", hm.phase_rad / w / 3600);
+    sigchain::unit::record("reference_amplitude_K", amp_ref);
+    sigchain::unit::record("reference_lag_h", lag_ref_s / 3600);
+    sigchain::unit::record("amplitude_limit_relative", 0.01);
+    sigchain::unit::record("lag_limit_relative", 0.02);
     std::printf("amplitude %.4f K (ref %.4f), lag %.4f h (ref %.4f)\n", hm.amplitude, amp_ref,
                 hm.phase_rad / w / 3600, lag_ref_s / 3600);
 }

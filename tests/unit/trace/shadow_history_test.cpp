@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../record_property.hpp"
 #include "core/error.hpp"
 #include "geo/scene_clock.hpp"
 #include "io/snd.hpp"
@@ -184,6 +185,9 @@ TEST(ShadowHistory, BoxShadowOnTheGroundFollowsTheGeometry) {
     o.points_per_facet = 1024;
     const io::Shd many = shadow_history(sc, grey(), sun, 0.25, o);
     EXPECT_NEAR(mean_sunlit(facet(many, "1-1-8")), 0.5, 0.047);
+    unit::record("half_shadowed_sunlit", mean_sunlit(facet(many, "1-1-8")));
+    unit::record("half_shadowed_reference", 0.5);
+    unit::record("half_shadowed_limit", 0.047);
     EXPECT_EQ(mean_sunlit(facet(many, "1-1-6")), 0.0);
     EXPECT_EQ(mean_sunlit(facet(many, "1-1-7")), 1.0);
 }
@@ -207,6 +211,9 @@ TEST(ShadowHistory, CanyonFloorSkyViewMatchesTheAnalyticViewFactor) {
     const double expected = std::sqrt(1 + (h / w) * (h / w)) - h / w;
     EXPECT_NEAR(facet(shd, "1-1-1").sky_view_factor, expected, 0.018);
     EXPECT_EQ(facet(shd, "1-1-1").sunlit(0, 0), 1.0);  // the sun overhead reaches the floor
+    unit::record("sky_view_factor", facet(shd, "1-1-1").sky_view_factor);
+    unit::record("reference", expected);
+    unit::record("limit", 0.018);
 }
 
 TEST(ShadowHistory, TransmissiveSlabGivesTheSlabTransmittance) {
