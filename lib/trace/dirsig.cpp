@@ -1,6 +1,6 @@
-// The dirsig sampling strategy: DIRSIG 3's scheme (White (1996), sections 3.4,
-// 3.6.5): a fixed cosine-distributed pattern for the diffuse part, the mirror ray for
-// the specular part, and its own weighting of the sun.
+// The dirsig sampling strategy: DIRSIG 3's scheme as White (1996) measured it (sections
+// 3.4, 3.6.5, 5.1.2): a fixed cosine-distributed pattern for the diffuse part, the
+// mirror ray for the specular part, and the sun weighted by both parts wherever it is.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -31,17 +31,16 @@ public:
         return add_hemisphere_split(tracer, m, m.split_weights(wo_l[2]), f, p, wo_l, acc, acc);
     }
 
-    // DIRSIG 3 (White (1996), sections 3.6.5, 3.4 secondary-ray logic): the sun sample of the
-    // diffuse part weighted (1 - s) cos/pi; that of the specular part by s and the same cos/pi,
-    // counted only when the specular direction "points to the sun" (within 10 deg, White (1996),
-    // section 5.2.3 step 4). Finite where the true lobe peaks.
-    double sun_weight(const MaterialOptics& m, const Vec3& sun_l, const Vec3& wo_l,
+    // DIRSIG 3 (White (1996), sections 3.6.5 and 5.1.2): the sun ray is combined with both
+    // parts, (1 - s) cos/pi for the diffuse one and s cos/pi for the specular one,
+    // wherever the sun stands: the big equation's (solar + background) x r_s x s term.
+    // That is the error White measured (section 5.1.2: +14.8 % for r_d 0.15, r_s 0.2,
+    // s 0.1; +133 % for 0.1, 0.4, 0.25) with the sun away from the mirror direction, and
+    // finite where the true lobe peaks. Only a material with a specular part has it.
+    double sun_weight(const MaterialOptics& m, const Vec3&, const Vec3&,
                       double cos_sun) const override {
-        double s = specularity_of(m);
-        Vec3 mir = radiometry::mirror(wo_l);
-        double c = std::clamp(geo::dot(mir, sun_l), -1.0, 1.0);
-        double spec =
-            (s > 0 && m.brdf.shape() != LobeShape::None && std::acos(c) * kDeg <= 10.0) ? s : 0.0;
+        const double s = specularity_of(m);
+        const double spec = (s > 0 && m.brdf.shape() != LobeShape::None) ? s : 0.0;
         return ((1 - s) + spec) * cos_sun / kPi;
     }
 
@@ -69,11 +68,9 @@ public:
 
     // DIRSIG 3's sun weights (sun_weight above) with w_d and w_s for 1 - s and s.
     SplitWeight sun_weight_split(const MaterialOptics&, const radiometry::ReflectanceSplit& w,
-                                 const Vec3& sun_l, const Vec3& wo_l,
-                                 double cos_sun) const override {
-        const double c = std::clamp(geo::dot(radiometry::mirror(wo_l), sun_l), -1.0, 1.0);
-        const bool near = (w.lobe || w.delta) && std::acos(c) * kDeg <= 10.0;
-        return {w.diffuse * cos_sun / kPi, near ? w.specular * cos_sun / kPi : 0.0};
+                                 const Vec3&, const Vec3&, double cos_sun) const override {
+        const bool specular = w.lobe || w.delta;
+        return {w.diffuse * cos_sun / kPi, specular ? w.specular * cos_sun / kPi : 0.0};
     }
 
 private:

@@ -423,11 +423,11 @@ TEST(Render, EmissionFromFacetTemperatures) {
 
 TEST(Render, DirsigSchemeWeightsTheSunAsDirsig3) {
     // The dirsig strategy's documented scheme (trace(1), SAMPLING STRATEGIES; White (1996),
-    // section 3.4/3.6.5):
-    // L = rho [(1 - s)(E cos/pi + L_sky) + s (L_sky(mirror) + [sun within 10 deg of
-    // the mirror] E cos/pi)], for any lobe model. A plate (rho 0.4, s 0.5) under a
-    // uniform sky, sun at zenith 30 due north; views with the sun in the mirror
-    // direction and 20 deg off it. Exact up to float output.
+    // sections 3.6.5 and 5.1.2, the big equation):
+    // L = rho [(1 - s)(E cos/pi + L_sky) + s (L_sky(mirror) + E cos/pi)], for any lobe
+    // model and wherever the sun stands. A plate (rho 0.4, s 0.5) under a uniform sky,
+    // sun at zenith 30 due north; views with the sun in the mirror direction and 20 and
+    // 60 deg off it: the same sun term in all three. Exact up to float output.
     const double r = 0.4, s = 0.5, es = 0.15, sky = 0.004, zen = 30;
     Mesh m;
     m.quad({{{-900, -900, 0}, {900, -900, 0}, {900, 900, 0}, {-900, 900, 0}}}, 1);
@@ -438,13 +438,13 @@ TEST(Render, DirsigSchemeWeightsTheSunAsDirsig3) {
     for (auto brdf : {radiometry::Brdf::delta(), radiometry::Brdf::phong(50)}) {
         auto mats = radiometry::MaterialLibrary::from_optics(
             {radiometry::grey_material(1, r, kWl.size(), s, brdf)});
-        for (double view_zenith : {zen, zen + 20}) {
+        for (double view_zenith : {zen, zen + 20, zen + 60}) {
             double v = view_zenith * kPi / 180;
             Ortho cam(2, 2, 1, -1, 1, {0, std::sin(v), -std::cos(v)});
             RenderOptions o;
             o.sampling = Sampling::Dirsig;
             RenderResult res = run(sc, mats, atm, cam, o);
-            double spec_sun = view_zenith == zen ? s * es * cos_sun / kPi : 0;
+            double spec_sun = s * es * cos_sun / kPi;
             double expected = r * ((1 - s) * (es * cos_sun / kPi + sky) + s * sky + spec_sun);
             for (float x : res.radiance.data)
                 EXPECT_NEAR(x, expected, 1e-6 * expected) << view_zenith;
