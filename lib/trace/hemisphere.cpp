@@ -25,6 +25,7 @@ std::unique_ptr<HemisphereStrategy> make_hemisphere_strategy(const TraceContext&
         case Sampling::MonteCarlo:
             return make_montecarlo_strategy(c);
         case Sampling::Golfball:
+        case Sampling::Proposed:  // the golf ball at the primary hit (tracer_secondary.cpp)
             break;
     }
     return make_golfball_strategy(c);

@@ -18,7 +18,10 @@
 
 namespace sigchain::trace {
 
-enum class Sampling { Dirsig, Golfball, MonteCarlo };
+// trace --sampling: DIRSIG 3's scheme, the golf ball, Monte Carlo, and White (1996)'s
+// proposed model (section 5.2.3: the golf ball at the primary hit, the 10 deg rule for the
+// sun at secondary hits).
+enum class Sampling { Dirsig, Golfball, MonteCarlo, Proposed };
 
 inline constexpr int kMaxBounces = 64;  // --bounces
 inline constexpr int kAutoBounces = -1;  // --bounces auto: the estimate's (bounce_estimate.hpp)

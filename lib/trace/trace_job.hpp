@@ -81,7 +81,7 @@ struct TraceReport {
     std::size_t materials = 0;
 };
 
-// "dirsig", "golfball" or "montecarlo"; else UsageError.
+// "dirsig", "golfball", "montecarlo" or "proposed"; else UsageError.
 Sampling parse_sampling(const std::string& name);
 // relative, absolute or rms (--convergence-error); anything else is a UsageError.
 ConvergenceError parse_convergence_error(const std::string& name);

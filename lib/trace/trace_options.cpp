@@ -39,8 +39,9 @@ Sampling parse_sampling(const std::string& name) {
     if (name == "dirsig") return Sampling::Dirsig;
     if (name == "golfball") return Sampling::Golfball;
     if (name == "montecarlo") return Sampling::MonteCarlo;
+    if (name == "proposed") return Sampling::Proposed;
     throw UsageError("--sampling: unknown strategy '" + name +
-                     "' (dirsig, golfball or montecarlo)");
+                     "' (dirsig, golfball, montecarlo or proposed)");
 }
 
 ConvergenceError parse_convergence_error(const std::string& name) {
@@ -76,6 +77,8 @@ std::string sampling_name(Sampling sampling) {
             return "golfball";
         case Sampling::MonteCarlo:
             return "montecarlo";
+        case Sampling::Proposed:
+            return "proposed";
     }
     return "?";
 }

@@ -213,12 +213,9 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     if (m_c.sun_up && cos_sun > 0) {
         double* vis = m_arena.take();
         if (sun_visibility(geo::add(point, geo::scale(n, m_c.eps)), vis) > 0) {
-            double w = (1 - s) * cos_sun / kPi;
-            if (has_lobe(m)) {
-                FacetFrame f(n);
-                w += s * m.brdf.lobe_weight(f.to_local(m_c.sun), f.to_local(wo));
-            }
-            w *= m.fall_off_cos(cos_sun);
+            const FacetFrame f(n);
+            const double w = secondary_sun_weight(m, f.to_local(m_c.sun), f.to_local(wo), cos_sun) *
+                             m.fall_off_cos(cos_sun);
             for (std::size_t k = 0; k < m_c.n; ++k) in[k] += w * m_c.sun_e[k] * vis[k];
         }
     }
@@ -253,9 +250,8 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
     if (m_c.sun_up && cos_sun > 0) {
         double* vis = m_arena.take();
         if (sun_visibility(p, vis) > 0) {
-            double w = (1 - s) * cos_sun / kPi;
-            if (has_lobe(m)) w += s * m.brdf.lobe_weight(f.to_local(m_c.sun), wo_l);
-            w *= m.fall_off_cos(cos_sun);
+            const double w = secondary_sun_weight(m, f.to_local(m_c.sun), wo_l, cos_sun) *
+                             m.fall_off_cos(cos_sun);
             for (std::size_t k = 0; k < m_c.n; ++k) in[k] += w * m_c.sun_e[k] * vis[k];
         }
     }

@@ -231,6 +231,16 @@ private:
     void split_reflectances(const scene::Hit& hit, const radiometry::MaterialOptics& m,
                             const scene::FacetAttributes& a, int curve, double theta_o_deg,
                             double* rho_d, double* rho_s);
+    // The sun's weight at a secondary hit (wo_l toward the ray's origin, facet frame):
+    // (1 - s) cos/pi plus the specular part, secondary_specular_sun (tracer_secondary.cpp).
+    double secondary_sun_weight(const radiometry::MaterialOptics& m, const geo::Vec3& sun_l,
+                                const geo::Vec3& wo_l, double cos_sun) const;
+    // The specular part's sun weight at a secondary hit for a part of weight `specular`:
+    // the lobe's value toward the sun, or with --sampling proposed White (1996), section
+    // 5.2.3 step 4's rule (tracer_secondary.cpp).
+    double secondary_specular_sun(const radiometry::MaterialOptics& m, double specular, bool lobe,
+                                  bool delta, const geo::Vec3& sun_l, const geo::Vec3& wo_l,
+                                  double cos_sun) const;
     // The sun's two parts at `point` (normal n, facet frame f) into in_d and in_s,
     // E F(sun) V times split_sun_weight (or the strategy's for a primary hit, `primary`).
     // Returns the sun's mean visibility.

@@ -44,8 +44,11 @@ double Tracer::add_split_sun(const MaterialOptics& m, const ReflectanceSplit& w,
     const double visibility = sun_visibility(p, vis);
     if (visibility <= 0) return visibility;
     const Vec3 sun_l = f.to_local(m_c.sun);
-    const SplitWeight sw = primary ? m_strategy->sun_weight_split(m, w, sun_l, wo_l, cos_sun)
-                                   : split_sun_weight(m, w, sun_l, wo_l, cos_sun);
+    const SplitWeight sw =
+        primary ? m_strategy->sun_weight_split(m, w, sun_l, wo_l, cos_sun)
+                : SplitWeight{w.diffuse * cos_sun / kPi,
+                              secondary_specular_sun(m, w.specular, w.lobe, w.delta, sun_l, wo_l,
+                                                     cos_sun)};
     const double fall_off = m.fall_off_cos(cos_sun);  // incoming fall-off (material.hpp)
     const double wd = sw.diffuse * fall_off, ws = sw.specular * fall_off;
     for (std::size_t k = 0; k < m_c.n; ++k) {
