@@ -3,9 +3,9 @@
 
 #include <array>
 #include <cmath>
-#include <numbers>
 
-#include "io/rad_coupling.hpp"
+#include "io/rad_lines.hpp"
+#include "io/rad_sky.hpp"
 #include "io/spectral_curve.hpp"
 
 namespace sigchain::io {
@@ -15,11 +15,7 @@ namespace {
 constexpr double kUmCm = 1e4;  // wavelength (um) = 1e4 / wavenumber (cm-1)
 // build_radiance (DIRSIG) prints 6 decimals: 0.595238 for 1e4/16800 is 6e-7 off.
 constexpr double kWavelengthRelTol = 1e-5;
-constexpr double kGridTol = 1e-3;       // grid points and counts: fraction of an increment
-constexpr double kSameAngleTol = 1e-9;  // deg: hemisphere rings and columns
-constexpr double kSolidAngleRelTol = 1e-3;
-constexpr const char* kUnitsIrradiance = "irradiance=W/cm2/um";
-constexpr const char* kUnitsRadiance = "radiance=W/cm2/sr/um";
+constexpr double kGridTol = 1e-3;  // grid points and counts: fraction of an increment
 
 // Header lines of the legacy part, in file order (White (1996), fig. 4.33).
 enum HeaderField {
@@ -79,10 +75,15 @@ void check_count(const Header& h, HeaderField count, double min, double max, dou
                                          ", found " + quoted(h.token[count]));
 }
 
+bool is_reciprocal(double wavelength_um, double wavenumber_cm1) {
+    double want = kUmCm / wavenumber_cm1;
+    return !(std::fabs(wavelength_um - want) > kWavelengthRelTol * want);
+}
+
 void check_reciprocal(const SourceLocation& at, std::string_view token, double wavelength_um,
                       double wavenumber_cm1, const char* what) {
     double want = kUmCm / wavenumber_cm1;
-    if (std::fabs(wavelength_um - want) > kWavelengthRelTol * want)
+    if (!is_reciprocal(wavelength_um, wavenumber_cm1))
         throw DataError(at, std::string("expected ") + what + " 1e4 / " +
                                 format_number(wavenumber_cm1) + " = " + format_number(want) +
                                 " um (within 1e-5 relative), found " + quoted(token));
@@ -134,14 +135,18 @@ void parse_header(LineCursor& c, Rad& rad, Header& h) {
 }
 
 // A grid value: `first + index * step` (within kGridTol of a step).
+bool is_on_grid(double value, double want, double step) {
+    return !(std::fabs(value - want) > kGridTol * step);
+}
+
 void check_on_grid(const SourceLocation& at, std::string_view token, double value, double want,
                    double step, const std::string& what) {
-    if (std::fabs(value - want) > kGridTol * step)
+    if (!is_on_grid(value, want, step))
         throw DataError(
             at, "expected " + what + " " + format_number(want) + ", found " + quoted(token));
 }
 
-RadSample read_sample(LineCursor& c, const Rad& rad, long i, long n) {
+RadSample read_sample_checked(LineCursor& c, const Rad& rad, long i, long n) {
     std::string of =
         " (spectral sample " + std::to_string(i + 1) + " of " + std::to_string(n) + ")";
     auto f = c.fields(4, "wavelength, wavenumber, Es and tau1" + of);
@@ -158,7 +163,22 @@ RadSample read_sample(LineCursor& c, const Rad& rad, long i, long n) {
     return s;
 }
 
-RadPathSample read_path_sample(LineCursor& c, const std::string& of) {
+// Sample i of n: the fast line when it passes every check, else the checked reader.
+RadSample read_sample(LineCursor& c, const Rad& rad, long i, long n) {
+    std::array<double, 4> v;
+    const Line* line = rad_lines::next_line(c);
+    const double want =
+        rad.max_wavenumber_cm1 - static_cast<double>(i) * rad.wavenumber_increment_cm1;
+    if (line && rad_lines::numbers_on(line->text, v) && v[0] > 0 && v[1] > 0 && v[2] >= 0 &&
+        v[3] >= 0 && v[3] <= 1 && is_on_grid(v[1], want, rad.wavenumber_increment_cm1) &&
+        is_reciprocal(v[0], v[1])) {
+        c.next("");
+        return {v[0], v[1], v[2], v[3]};
+    }
+    return read_sample_checked(c, rad, i, n);
+}
+
+RadPathSample read_path_sample_checked(LineCursor& c, const std::string& of) {
     auto f = c.fields(3, "tau2, L_ue and L_us" + of);
     SourceLocation at = c.where();
     RadPathSample p;
@@ -168,186 +188,52 @@ RadPathSample read_path_sample(LineCursor& c, const std::string& of) {
     return p;
 }
 
-RadView read_view(LineCursor& c, const Rad& rad, long j, long m) {
+// The path terms of one sample along a view: the fast line, else the checked reader
+// (`of()` names the sample).
+template <class Of>
+RadPathSample read_path_sample(LineCursor& c, Of of) {
+    std::array<double, 3> v;
+    const Line* line = rad_lines::next_line(c);
+    if (line && rad_lines::numbers_on(line->text, v) && v[0] >= 0 && v[0] <= 1 && v[1] >= 0 &&
+        v[2] >= 0) {
+        c.next("");
+        return {v[0], v[1], v[2]};
+    }
+    return read_path_sample_checked(c, of());
+}
+
+void read_view_line(LineCursor& c, const Rad& rad, long j, long m, RadView& v) {
+    std::array<double, 2> x;
+    const Line* line = rad_lines::next_line(c);
+    const double want =
+        rad.min_view_angle_deg + static_cast<double>(j) * rad.view_angle_increment_deg;
+    if (line && rad_lines::numbers_on(line->text, x) && x[0] >= -90 && x[0] <= 90 && x[1] > 0 &&
+        is_on_grid(x[0], want, rad.view_angle_increment_deg)) {
+        c.next("");
+        v.view_angle_deg = x[0];
+        v.range_km = x[1];
+        return;
+    }
     std::string of = " (view angle " + std::to_string(j + 1) + " of " + std::to_string(m) + ")";
     auto f = c.fields(2, "view angle and range to earth" + of);
     SourceLocation at = c.where();
-    RadView v;
     v.view_angle_deg = parse_in_range(f[0], at, "view angle (deg)" + of, -90, 90);
     v.range_km = parse_at_least(f[1], at, "range to earth (km)" + of, 0, true);
-    double want = rad.min_view_angle_deg + static_cast<double>(j) * rad.view_angle_increment_deg;
     check_on_grid(at, f[0], v.view_angle_deg, want, rad.view_angle_increment_deg,
                   "view angle (increasing from the header's min by its increment)" + of);
+}
+
+RadView read_view(LineCursor& c, const Rad& rad, long j, long m) {
+    RadView v;
+    read_view_line(c, rad, j, m, v);
     std::size_t n = rad.samples.size();
+    v.path.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
-        v.path.push_back(read_path_sample(c, " (view angle " + format_number(v.view_angle_deg) +
-                                                 " deg, spectral sample " + std::to_string(i + 1) +
-                                                 " of " + std::to_string(n) + ")"));
+        v.path.push_back(read_path_sample(c, [&] {
+            return " (view angle " + format_number(v.view_angle_deg) + " deg, spectral sample " +
+                   std::to_string(i + 1) + " of " + std::to_string(n) + ")";
+        }));
     return v;
-}
-
-// --- sigchain additions: SIGCHAIN_RAD, UNITS, SUN, HEMISPHERE and the sky cells ---
-
-std::vector<std::string_view> keyword_line(LineCursor& c, std::string_view keyword,
-                                           std::size_t count, std::string_view what) {
-    std::string full = std::string(keyword) + " " + std::string(what);
-    const Line& line = c.next(full);
-    auto f = split_fields(line.text);
-    if (f.empty() || f[0] != keyword)
-        throw DataError(c.where(line), "expected " + full + ", found " + quoted(line.text));
-    if (f.size() != count)
-        throw DataError(c.where(line), "expected " + std::to_string(count) + " fields (" + full +
-                                           "), found " + std::to_string(f.size()) + ": " +
-                                           quoted(line.text));
-    return f;
-}
-
-// "SIGCHAIN_RAD 1" or "SIGCHAIN_RAD 1.MINOR"; returns MINOR (0 when absent).
-long read_version(LineCursor& c) {
-    auto f = keyword_line(c, "SIGCHAIN_RAD", 2, "VERSION");
-    std::string_view v = f[1];
-    auto dot = v.find('.');
-    long major = parse_long(v.substr(0, dot), c.where(), "SIGCHAIN_RAD major version");
-    if (major != 1)
-        throw DataError(c.where(),
-                        "expected SIGCHAIN_RAD version 1 or 1.x (the version this "
-                        "reader knows), found " +
-                            quoted(v));
-    if (dot == std::string_view::npos) return 0;
-    return parse_count(v.substr(dot + 1), c.where(), "SIGCHAIN_RAD minor version");
-}
-
-void read_units(LineCursor& c) {
-    const std::string want = std::string(kUnitsIrradiance) + " " + kUnitsRadiance;
-    auto f = keyword_line(c, "UNITS", 3, want);
-    bool ok = (f[1] == kUnitsIrradiance && f[2] == kUnitsRadiance) ||
-              (f[2] == kUnitsIrradiance && f[1] == kUnitsRadiance);
-    if (!ok)
-        throw DataError(c.where(), "expected UNITS " + want + " (the units of every .rad), found " +
-                                       quoted(std::string(f[1]) + " " + std::string(f[2])));
-}
-
-std::vector<double> read_spectrum(LineCursor& c, std::size_t n, const std::string& what) {
-    auto f = c.fields(n, what);
-    std::vector<double> v;
-    for (auto token : f) v.push_back(parse_at_least(token, c.where(), what, 0));
-    return v;
-}
-
-// A zenith x azimuth grid read cell by cell (the sky and the upwelled grid): ring r
-// shares its first cell's zenith, rings increase in zenith, azimuths increase within a
-// ring, and column a shares ring 0's azimuth. `zenith_of(i)`/`azimuth_of(i)` give the
-// cells read so far (index ring * columns + column); `what` names the zenith.
-template <class Zenith, class Azimuth>
-void check_grid_cell(double zenith, double azimuth, long r, long a, long columns,
-                     Zenith zenith_of, Azimuth azimuth_of, const std::string& what,
-                     const SourceLocation& at, const std::vector<std::string_view>& f) {
-    auto index = [&](long rr, long aa) { return static_cast<std::size_t>(rr * columns + aa); };
-    if (a > 0 && std::fabs(zenith - zenith_of(index(r, 0))) > kSameAngleTol)
-        throw DataError(at, "expected " + what + " " + format_number(zenith_of(index(r, 0))) +
-                                " (as the first cell of its ring), found " + quoted(f[0]));
-    if (a == 0 && r > 0 && zenith <= zenith_of(index(r - 1, 0)))
-        throw DataError(at, "expected " + what + " greater than " +
-                                format_number(zenith_of(index(r - 1, 0))) +
-                                " (rings in increasing zenith), found " + quoted(f[0]));
-    if (a > 0 && azimuth <= azimuth_of(index(r, a - 1)))
-        throw DataError(at, "expected azimuth greater than " +
-                                format_number(azimuth_of(index(r, a - 1))) +
-                                " (increasing within a ring), found " + quoted(f[1]));
-    if (r > 0 && std::fabs(azimuth - azimuth_of(index(0, a))) > kSameAngleTol)
-        throw DataError(at, "expected azimuth " + format_number(azimuth_of(index(0, a))) +
-                                " (as in the first ring), found " + quoted(f[1]));
-}
-
-RadSkyCell read_cell(LineCursor& c, const RadSky& sky, long r, long a, std::size_t n) {
-    std::string of = " (sky ring " + std::to_string(r + 1) + " of " +
-                     std::to_string(sky.zenith_count) + ", cell " + std::to_string(a + 1) + " of " +
-                     std::to_string(sky.azimuth_count) + ")";
-    auto f = c.fields(3, "zenith, azimuth and solid angle" + of);
-    SourceLocation at = c.where();
-    RadSkyCell cell;
-    cell.zenith_deg = parse_in_range(f[0], at, "zenith (deg)" + of, 0, 90);
-    cell.azimuth_deg = parse_in_range(f[1], at, "azimuth (deg)" + of, 0, 360);
-    if (cell.azimuth_deg == 360)
-        throw DataError(at,
-                        "expected azimuth (deg)" + of + " in [0, 360)" + ", found " + quoted(f[1]));
-    cell.solid_angle_sr = parse_at_least(f[2], at, "solid angle (sr)" + of, 0, true);
-    check_grid_cell(
-        cell.zenith_deg, cell.azimuth_deg, r, a, sky.azimuth_count,
-        [&](std::size_t i) { return sky.cells[i].zenith_deg; },
-        [&](std::size_t i) { return sky.cells[i].azimuth_deg; }, "zenith", at, f);
-    cell.scattered_radiance = read_spectrum(c, n, "L_ds per spectral sample" + of);
-    cell.emitted_radiance = read_spectrum(c, n, "L_de per spectral sample" + of);
-    return cell;
-}
-
-void read_sun(LineCursor& c, RadSky& sky) {
-    auto f = keyword_line(c, "SUN", 3, "ZENITH_DEG AZIMUTH_DEG");
-    sky.sun_zenith_deg = parse_in_range(f[1], c.where(), "sun zenith (deg)", 0, 180);
-    sky.sun_azimuth_deg = parse_in_range(f[2], c.where(), "sun azimuth (deg)", 0, 360);
-    if (sky.sun_azimuth_deg == 360)
-        throw DataError(c.where(), "expected sun azimuth (deg) in [0, 360), found " + quoted(f[2]));
-}
-
-RadSky read_sky(LineCursor& c, std::size_t n) {
-    RadSky sky;
-    sky.version_minor = read_version(c);
-    read_units(c);
-    read_sun(c, sky);
-    auto f = keyword_line(c, "HEMISPHERE", 3, "N_ZENITH N_AZIMUTH");
-    SourceLocation at = c.where();
-    sky.zenith_count = parse_count(f[1], at, "number of zenith rings");
-    sky.azimuth_count = parse_count(f[2], at, "number of azimuth cells per ring");
-    if (sky.zenith_count < 1 || sky.azimuth_count < 1)
-        throw DataError(at, "expected at least 1 zenith ring and 1 azimuth cell per ring, found " +
-                                quoted(std::string(f[1]) + " " + std::string(f[2])));
-    double total = 0;
-    for (long r = 0; r < sky.zenith_count; ++r)
-        for (long a = 0; a < sky.azimuth_count; ++a) {
-            sky.cells.push_back(read_cell(c, sky, r, a, n));
-            total += sky.cells.back().solid_angle_sr;
-        }
-    const double hemisphere = 2 * std::numbers::pi;
-    if (std::fabs(total - hemisphere) > kSolidAngleRelTol * hemisphere)
-        throw DataError(at, "expected solid angles summing to 2 pi = " + format_number(hemisphere) +
-                                " sr (within 0.1%), found " + format_number(total));
-    return sky;
-}
-
-// UPWELLED Z A, then Z x A cells: view zenith, azimuth; L_us; L_ue (rad(5)).
-RadUpwelled read_upwelled(LineCursor& c, std::size_t n) {
-    RadUpwelled up;
-    auto f = keyword_line(c, "UPWELLED", 3, "N_ZENITH N_AZIMUTH");
-    SourceLocation at = c.where();
-    up.zenith_count = parse_count(f[1], at, "number of view-zenith rings");
-    up.azimuth_count = parse_count(f[2], at, "number of azimuth cells per ring");
-    if (up.zenith_count < 1 || up.azimuth_count < 1)
-        throw DataError(at, "expected at least 1 view-zenith ring and 1 azimuth cell per ring, "
-                            "found " +
-                                quoted(std::string(f[1]) + " " + std::string(f[2])));
-    for (long r = 0; r < up.zenith_count; ++r)
-        for (long a = 0; a < up.azimuth_count; ++a) {
-            std::string of = " (upwelled ring " + std::to_string(r + 1) + " of " +
-                             std::to_string(up.zenith_count) + ", cell " + std::to_string(a + 1) +
-                             " of " + std::to_string(up.azimuth_count) + ")";
-            auto g = c.fields(2, "view zenith and azimuth" + of);
-            SourceLocation where = c.where();
-            RadUpwelledCell cell;
-            cell.view_zenith_deg = parse_in_range(g[0], where, "view zenith (deg)" + of, 0, 90);
-            cell.azimuth_deg = parse_in_range(g[1], where, "azimuth (deg)" + of, 0, 360);
-            if (cell.view_zenith_deg == 90 || cell.azimuth_deg == 360)
-                throw DataError(where, "expected view zenith in [0, 90) and azimuth in [0, 360)" +
-                                           of + ", found " + quoted(std::string(g[0]) + " " +
-                                                                    std::string(g[1])));
-            check_grid_cell(
-                cell.view_zenith_deg, cell.azimuth_deg, r, a, up.azimuth_count,
-                [&](std::size_t i) { return up.cells[i].view_zenith_deg; },
-                [&](std::size_t i) { return up.cells[i].azimuth_deg; }, "view zenith", where, g);
-            cell.scattered_radiance = read_spectrum(c, n, "L_us per spectral sample" + of);
-            cell.emitted_radiance = read_spectrum(c, n, "L_ue per spectral sample" + of);
-            up.cells.push_back(std::move(cell));
-        }
-    return up;
 }
 
 std::string rad_summary(const Rad& rad) {
@@ -366,36 +252,6 @@ std::string rad_summary(const Rad& rad) {
     return s;
 }
 
-void write_values(std::ostream& out, const std::vector<double>& values) {
-    for (std::size_t i = 0; i < values.size(); ++i)
-        out << (i ? " " : "") << format_number(values[i]);
-    out << '\n';
-}
-
-void write_sky(std::ostream& out, const RadSky& sky) {
-    out << "SIGCHAIN_RAD 1";
-    if (sky.version_minor > 0) out << '.' << sky.version_minor;
-    out << "\nUNITS " << kUnitsIrradiance << ' ' << kUnitsRadiance << '\n';
-    out << "SUN " << format_number(sky.sun_zenith_deg) << ' ' << format_number(sky.sun_azimuth_deg)
-        << '\n';
-    out << "HEMISPHERE " << sky.zenith_count << ' ' << sky.azimuth_count << '\n';
-    for (const auto& cell : sky.cells) {
-        out << format_number(cell.zenith_deg) << ' ' << format_number(cell.azimuth_deg) << ' '
-            << format_number(cell.solid_angle_sr) << '\n';
-        write_values(out, cell.scattered_radiance);
-        write_values(out, cell.emitted_radiance);
-    }
-    if (!sky.upwelled) return;
-    const RadUpwelled& up = *sky.upwelled;
-    out << "UPWELLED " << up.zenith_count << ' ' << up.azimuth_count << '\n';
-    for (const auto& cell : up.cells) {
-        out << format_number(cell.view_zenith_deg) << ' ' << format_number(cell.azimuth_deg)
-            << '\n';
-        write_values(out, cell.scattered_radiance);
-        write_values(out, cell.emitted_radiance);
-    }
-}
-
 }  // namespace
 
 Rad parse_rad(const TextInput& in) {
@@ -403,6 +259,8 @@ Rad parse_rad(const TextInput& in) {
     Rad rad;
     Header h;
     parse_header(c, rad, h);
+    rad.samples.reserve(rad_lines::reservable(h.sample_count));
+    rad.views.reserve(rad_lines::reservable(h.view_count));
     for (long i = 0; i < h.sample_count; ++i)
         rad.samples.push_back(read_sample(c, rad, i, h.sample_count));
     for (long j = 0; j < h.view_count; ++j) rad.views.push_back(read_view(c, rad, j, h.view_count));
@@ -414,26 +272,7 @@ Rad parse_rad(const TextInput& in) {
                                            " view-angle block(s) declared on line " +
                                            std::to_string(h.at[kViewCount].line) + ", found " +
                                            quoted(next.text));
-    rad.sky = read_sky(c, rad.samples.size());
-    if (!c.at_end() && starts_with_keyword(c.peek("UPWELLED").text, "UPWELLED")) {
-        if (rad.sky->version_minor < 1)
-            throw DataError(c.where(c.peek("UPWELLED")),
-                            "expected the end of the file: UPWELLED needs SIGCHAIN_RAD 1.1, "
-                            "found version 1." +
-                                std::to_string(rad.sky->version_minor));
-        rad.sky->upwelled = read_upwelled(c, rad.samples.size());
-    }
-    if (at_coupling(c)) {
-        if (rad.sky->version_minor < 2)
-            throw DataError(c.where(c.peek("COUPLING")),
-                            "expected the end of the file: COUPLING needs SIGCHAIN_RAD 1.2, "
-                            "found version 1." +
-                                std::to_string(rad.sky->version_minor));
-        rad.sky->coupling = read_coupling(c, rad);
-    }
-    c.require_end(rad.sky->coupling   ? "the coupling terms"
-                  : rad.sky->upwelled ? "the upwelled grid"
-                                      : "the sky hemisphere");
+    rad.sky = read_sky_block(c, rad);
     return rad;
 }
 
@@ -456,9 +295,7 @@ void write_rad(std::ostream& out, const Rad& rad) {
             out << format_number(p.transmission) << ' ' << format_number(p.emitted_radiance) << ' '
                 << format_number(p.scattered_radiance) << '\n';
     }
-    if (!rad.sky) return;
-    write_sky(out, *rad.sky);
-    if (rad.sky->coupling) write_coupling(out, *rad.sky->coupling, rad);
+    if (rad.sky) write_sky_block(out, rad);
 }
 
 FormatHandler rad_format() {
