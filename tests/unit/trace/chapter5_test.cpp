@@ -189,7 +189,7 @@ double dirsig_sun_excess(const MaterialOptics& m, double solar, double sun_zenit
 // The band radiance (W cm-2 sr-1 over 0.4-1.0 um) of case `c` by `sampling`: the mean
 // over the 64 pixels and its standard error (from the pixels' spread: independent
 // estimates; 0 for the deterministic strategies on this uniform plate).
-test::MeanError render_case(const Case& c, Sampling sampling) {
+test::MeanError render_case(const Case& c, Sampling sampling, bool jitter = false) {
     test::Mesh m;
     m.quad({{{-1000, -1000, 0}, {1000, -1000, 0}, {1000, 1000, 0}, {-1000, 1000, 0}}}, 1);
     const scene::Scene s = test::single(m.data);
@@ -210,6 +210,7 @@ test::MeanError render_case(const Case& c, Sampling sampling) {
     in.sensor = &cam;
     RenderOptions o;
     o.sampling = sampling;
+    o.golfball_jitter = jitter;
     o.samples_per_pixel = 4;
     o.hemisphere_samples = sampling == Sampling::MonteCarlo ? 512 : 256;
     o.adjacency = false;
@@ -329,6 +330,39 @@ TEST_P(Chapter5, Case2bWithWhitesLobeAsStated) {
     // DIRSIG 3's sun weight for the specular part is a_s (see above).
     const double sun = smp == Sampling::Dirsig ? kDiffuse + a_s : kDiffuse + alpha;
     EXPECT_NEAR(l, sun * kSolar + (kDiffuse + a_s) * kSky, 1e-5 + 4 * r.standard_error) << name(smp);
+}
+
+// Case 3e's independent check, its parameter taken from the text, not solved for: "the
+// reduced area covers 1/8 of the hemisphere" read as solid angle, F = 0 beyond
+// acos(1/8) = 82.8 deg: on the .ems's whole-degree grid F = 1 to 82 deg, 0 from 83, linear
+// between. The diffuse sky term then keeps the projected-solid-angle mean of F,
+// Fbar = sin^2(82 deg) + Int_82^83 (1 - u) sin(2 theta) d(theta) (closed form below;
+// 1 - 1/64 for a sharp cut at 82.8 deg), the lobe about the zenith keeps all (F = 1
+// there), the sun at 45 deg and the nadir view too:
+//   L = 0.1 A + 0.1 Fbar L_sky + a_s L_sky.
+// montecarlo and the jittered golf ball (unbiased); 4 standard errors.
+TEST(Chapter5Check, Case3eWithTheTextsEighthOfTheHemisphere) {
+    MaterialOptics m = white_map(kDiffuse, kLobeShare, kLobeMean);
+    for (int d = 0; d <= 90; ++d) m.fall_off[d] = d <= 82 ? 1.0 : 0.0;
+    m.flat_fall_off = false;
+    const double a = rad(82), h = rad(1), b = 2 * h;
+    const double fbar = std::pow(std::sin(a), 2) +
+                        h * (std::cos(2 * a) / b - (std::sin(2 * a + b) - std::sin(2 * a)) / (b * b));
+    const double a_s = kLobeShare * (kLobeMean - kDiffuse);
+    const double expected = kDiffuse * kSolar + kDiffuse * fbar * kSky + a_s * kSky;
+    RecordProperty("Fbar", std::to_string(fbar));
+    RecordProperty("closed form", std::to_string(expected));
+    const Case c{"3e as the text states it", 0, 0, {}, m};
+    for (const auto& [smp, jitter, label] :
+         {std::tuple{Sampling::MonteCarlo, false, "montecarlo"},
+          std::tuple{Sampling::Golfball, true, "golfball-jitter"}}) {
+        const test::MeanError e = render_case(c, smp, jitter);
+        RecordProperty(std::string(label) + "|L", std::to_string(e.mean));
+        EXPECT_NEAR(e.mean, expected, 1e-6 + 4 * e.standard_error) << label;
+        // The check tells the text's cut from none: the sky's share it removes is more
+        // than 8 standard errors.
+        EXPECT_GT(kDiffuse * (1 - fbar) * kSky, 8 * e.standard_error) << label;
+    }
 }
 
 // Cases 3b-3d as a scene: the plate at the foot of a 1000 m wall (reflectance 0.1, or
