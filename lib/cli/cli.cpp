@@ -332,12 +332,7 @@ int Cli::run(int argc, char** argv,
              const std::function<int(const po::variables_map&, Context&)>& body) {
     const std::string& tool = m_info.name;
     try {
-        po::options_description all;
-        all.add(m_options).add(m_hidden);
-        po::variables_map vm;
-        po::store(po::command_line_parser(argc, argv).options(all).positional(m_positional).run(),
-                  vm);
-        po::notify(vm);
+        const po::variables_map vm = parse(argc, argv);
         if (vm.count("help")) {
             print_help();
             return 0;

@@ -160,6 +160,9 @@ public:
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
+    // Parses argv as run() does (po::error or UsageError on a bad command line), for a
+    // command's tests (lib/commands) that check the Job a command line makes.
+    po::variables_map parse(int argc, const char* const* argv) const;
     // Parses argv and runs `body`; returns the process exit status.
     int run(int argc, char** argv,
             const std::function<int(const po::variables_map&, Context&)>& body);
