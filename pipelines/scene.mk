@@ -10,8 +10,9 @@
 #   MTL (Landsat metadata, optional) --landsat_sensor--> out/landsat/NAME.snd and
 #       out/landsat/NAME-bK.sen, used as SND and SENS                   (MTL set)
 #   SND + out/*.view --(replace the view-angle line)--> out/NAME.snd, out/NAME.azimuth
-#   out/NAME.snd --(one band each)--> out/band-K.snd
-#   out/DECK.cdk + out/band-K.snd --build_radiance--> out/NAME-K.rad   (K = 1..BANDS)
+#   out/DECK.cdk + out/NAME.snd --build_radiance (one run)--> out/NAME-K.rad (K = 1..BANDS)
+#       (BUILD_RADIANCE_RUNS=band: out/NAME.snd --(one band each)--> out/band-K.snd, and one
+#       run per band; the default for a program other than sigchain's build_radiance)
 #   SND + SCENE_GDB + SCENE_MAT --trace --shadow-history--> out/NAME.shd    (WTH set)
 #   out/NAME.shd + WTH + ... --therm--> out/NAME.tmp                       (WTH set)
 #   ADV + out/NAME.snd + SCENE_GDB + SCENE_MAT + rads [+ tmp] --trace--> out/NAME.img
@@ -112,6 +113,16 @@ TILES ?= 1
 ROWS  ?= $(shell awk '!/^[ \t]*(\#|$$)/ { if (++n == 5) { print $$1; exit } }' $(ADV))
 # Emission from therm's temperatures in the cube: on when the scene has weather.
 CUBE_TMP ?= $(if $(WTH),yes,no)
+# How build_radiance runs: `all`, one run that writes every band's table (its threads
+# share the bands' spectral samples; no process start, deck or gas-table reading per
+# band: about half the time of one run per band at 30 bands, bench/bands_cost.sh), or
+# `band`, one run per band on a one-band scene node (each table a target of its own).
+# The tables are byte for byte the same. A program put in BUILD_RADIANCE's place (one
+# not named build_radiance) keeps the one-band interface, `band`, unless this says otherwise.
+BUILD_RADIANCE_RUNS ?= $(if $(filter build_radiance,$(notdir $(firstword \
+  $(BUILD_RADIANCE)))),all,band)
+$(if $(filter all band,$(BUILD_RADIANCE_RUNS)),,$(error BUILD_RADIANCE_RUNS=$(BUILD_RADIANCE_RUNS): \
+  expected all or band))
 
 ## Derived names --------------------------------------------------------------------
 CDK       := $(OUT)/$(basename $(notdir $(ANSWERS))).cdk
@@ -237,8 +248,15 @@ $(OUT)/$(NAME).snd.stamp: $(SND) $(VIEWS) | $(OUT)
 $(RUN_SND) $(AZIMUTH): $(OUT)/$(NAME).snd.stamp
 	@test -f $@ || { rm -f $<; $(MAKE) --no-print-directory $<; }
 
+ifeq ($(BUILD_RADIANCE_RUNS),all)
+## build_radiance: card deck + scene node -> every band's radiance table in one run.
+## Called as BUILD_RADIANCE [FLAGS] --view-azimuth DEG CDK SND -o out/NAME-%d.rad.
+$(RADS) &: $(CDK) $(RUN_SND) $(AZIMUTH) $(call CMD_STAMP,build_radiance)
+	$(CMD_build_radiance) --view-azimuth $$(cat $(AZIMUTH)) \
+	  $(CDK) $(RUN_SND) -o $(OUT)/$(NAME)-%d.rad
+else
 ## One scene node per band (band K alone), so that each band's .rad is a target of its
-## own and `make -j` computes bands in parallel.
+## own and `make -j` runs bands in parallel.
 $(OUT)/band-%.snd: $(RUN_SND)
 	awk -v k=$* '/^[ \t]*(#|$$)/ { print; next } { n++ } \
 	  n == 2 { nb = $$1; print "1\t# number of bands (band " k " of " nb ")"; next } \
@@ -249,6 +267,7 @@ $(OUT)/band-%.snd: $(RUN_SND)
 $(OUT)/$(NAME)-%.rad: $(CDK) $(OUT)/band-%.snd $(AZIMUTH) $(call CMD_STAMP,build_radiance)
 	$(CMD_build_radiance) --view-azimuth $$(cat $(AZIMUTH)) \
 	  $(CDK) $(OUT)/band-$*.snd -o $@
+endif
 
 ## trace --shadow-history: 24 h of sun and shadow per facet, for therm.
 $(SHD): $(SND) $(SCENE_GDB) $(SCENE_MAT) $(MAT_FILES) $(GEOM_FILES) $(call CMD_STAMP,shadow) | $(OUT)
@@ -326,5 +345,6 @@ help:
 	@echo '  GEOM_FILES=$(GEOM_FILES) SENS=$(SENS) WTH=$(WTH) CUBE_TMP=$(CUBE_TMP)'
 	@echo '  CARDS_GDB=$(CARDS_GDB) CARDS_ADV=$(CARDS_ADV) CARD1=$(CARD1) CARD2=$(CARD2)'
 	@echo '  TARGET1=$(TARGET1) TARGET2=$(TARGET2) REFERENCE=$(REFERENCE) CPT=$(CPT)'
-	@echo 'parallelism: BANDS=$(BANDS) (one .rad target each), TILES=$(TILES) (trace --rows'
-	@echo '  tiles of ROWS=$(ROWS) rows, merged); use make -j'
+	@echo 'parallelism: BANDS=$(BANDS) (one .rad each), BUILD_RADIANCE_RUNS=$(BUILD_RADIANCE_RUNS)'
+	@echo '  (all: one build_radiance run for every band; band: one run per band), TILES=$(TILES)'
+	@echo '  (trace --rows tiles of ROWS=$(ROWS) rows, merged); use make -j'

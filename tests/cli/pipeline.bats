@@ -82,7 +82,7 @@ stages() {
     copy_built
     cd training/out
     # Text outputs: sigchain-check accepts each (it knows their formats).
-    run -0 sigchain-check hawkeye.cdk training.snd band-1.snd band-2.snd band-3.snd \
+    run -0 sigchain-check hawkeye.cdk training.snd \
         training-1.rad training-2.rad training-3.rad training.shd training.tmp \
         calibrated/blue.sen calibrated/green.sen calibrated/red.sen
     # Images: compare reads each one (an image against itself differs by 0).
@@ -163,10 +163,33 @@ stages() {
     copy_built
     mk BUILD_RADIANCE="$SIGCHAIN_BIN/build_radiance --threads 1"
     assert_success
-    [ "$(stages)" = "control7=0 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=1 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
     # Same tables, so the same counts.
     run -0 compare --pixelwise --fail-max 0 training/out/training.tif "$BATS_FILE_TMPDIR/built/out/training.tif"
+}
+
+@test "pipeline: one build_radiance run writes every band's table, as one run per band does" {
+    copy_built
+    # The default for sigchain's build_radiance: one run, every band (-o PATTERN).
+    rm training/out/training-*.rad
+    mk rad
+    assert_success
+    [ "$(ran build_radiance)" = 1 ] || { echo "$output"; stages; return 1; }
+    assert_output --partial 'out/training.snd -o out/training-%d.rad'
+    [ ! -e training/out/band-1.snd ]
+    # One run per band (a one-band scene node each) gives the same bytes.
+    mk BUILD_RADIANCE_RUNS=band OUT=per_band rad
+    assert_success
+    [ "$(ran build_radiance)" = 3 ] || { echo "$output"; stages; return 1; }
+    assert_output --partial 'per_band/band-2.snd -o per_band/training-2.rad'
+    local k
+    for k in 1 2 3; do
+        cmp training/out/training-$k.rad training/per_band/training-$k.rad
+    done
+    mk BUILD_RADIANCE_RUNS=each rad
+    assert_failure
+    assert_output --partial 'BUILD_RADIANCE_RUNS=each: expected all or band'
 }
 
 @test "pipeline: touching a .sen reruns only sensorize and compare" {
@@ -199,7 +222,7 @@ stages() {
     sed -i 's/^10 -10 30\t/10 -20 30\t/' training/training.adv
     mk
     assert_success
-    [ "$(stages)" = "control7=0 build_radiance=3 find_view=2 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
+    [ "$(stages)" = "control7=0 build_radiance=1 find_view=2 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
     # The new line is the union of the moved view's range and the cards' range: its
     # maximum is the moved view's.
@@ -215,7 +238,7 @@ stages() {
     mk
     assert_success
     # Not the view range, nor the thermal chain (which reads no .rad).
-    [ "$(stages)" = "control7=1 build_radiance=3 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
+    [ "$(stages)" = "control7=1 build_radiance=1 find_view=0 render=2 shadow=0 therm=0 calibrate=1 sensorize=1 compare=1" ] \
         || { echo "$output"; stages; return 1; }
 }
 
@@ -319,7 +342,7 @@ EOF
     assert_success
     # One view range, no thermal chain, no calibration, no report; the counts use
     # the scene's own .sen files.
-    [ "$(stages)" = "control7=1 build_radiance=3 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=1 compare=0" ] \
+    [ "$(stages)" = "control7=1 build_radiance=1 find_view=2 render=1 shadow=0 therm=0 calibrate=0 sensorize=1 compare=0" ] \
         || { echo "$output"; stages; return 1; }
     assert_output --partial 'training.img blue.sen green.sen red.sen -o out/training.tif'
     [ ! -e training/out/training.tmp ] && [ ! -e training/out/cards.img ]
