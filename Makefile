@@ -60,8 +60,9 @@ performance: configure
 	@scripts/performance $(BUILD)
 
 # Speed versus accuracy of trace's sampling strategies on the demo scenes: chart,
-# table and error map into BUILD/chart/ (CHART_OUT=docs/chart refreshes the committed
-# copy; a few minutes; not part of `make test`).
+# table and error map into BUILD/chart/, and each stage's cost against the number of
+# spectral bands (bands.png, bench/bands_cost.sh) (CHART_OUT=docs/chart refreshes the
+# committed copy; a few minutes; not part of `make test`).
 chart: build
 	@scripts/chart $(BUILD)
 

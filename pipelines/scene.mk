@@ -115,7 +115,8 @@ ROWS  ?= $(shell awk '!/^[ \t]*(\#|$$)/ { if (++n == 5) { print $$1; exit } }' $
 CUBE_TMP ?= $(if $(WTH),yes,no)
 # How build_radiance runs: `all`, one run that writes every band's table (its threads
 # share the bands' spectral samples; no process start, deck or gas-table reading per
-# band: about half the time of one run per band at 30 bands, bench/bands_cost.sh), or
+# band: half the time of one run per band for visible bands, never more,
+# bench/bands_cost.sh), or
 # `band`, one run per band on a one-band scene node (each table a target of its own).
 # The tables are byte for byte the same. A program put in BUILD_RADIANCE's place (one
 # not named build_radiance) keeps the one-band interface, `band`, unless this says otherwise.

@@ -50,3 +50,25 @@ load test_helper
     run -1 --separate-stderr "$SIGCHAIN_SOURCE_DIR/scripts/chart-summary" .
     [[ "$stderr" == "chart-summary: ./refs.tsv: cannot read it"* ]]
 }
+
+# The bands axis: bench/bands_cost.sh's medians (bands_cost.tsv) drawn by chart-bands and
+# tabulated by chart-summary with each stage's seconds per band (a least-squares slope).
+@test "chart-bands, chart-summary: the bands axis from bands_cost.tsv" {
+    command -v gnuplot > /dev/null || skip "gnuplot is not installed"
+    cp "$SIGCHAIN_SOURCE_DIR"/docs/chart/{data.tsv,refs.tsv,where.md} .
+    cat > bands_cost.tsv <<'TSV'
+bands control7_s build_radiance_s build_radiance_per_band_s trace_s trace_setup_s trace_rad_tables_s trace_render_s sensorize_s
+3 0.02 0.30 0.45 1.03 0.70 0.01 0.10 0.30
+30 0.02 3.00 4.50 1.30 0.80 0.10 0.20 0.33
+100 0.02 10.00 - 2.00 1.10 0.33 0.40 0.40
+TSV
+    run -0 --separate-stderr "$SIGCHAIN_SOURCE_DIR/scripts/chart-bands" .
+    [ "$(od -An -tu1 -j16 -N8 bands.png | awk '{ print $3 * 256 + $4, $7 * 256 + $8 }')" = "640 420" ]
+    run -0 "$SIGCHAIN_SOURCE_DIR/scripts/chart-summary" .
+    run -0 grep -cF "| build_radiance, one run | 0.30 | 3.00 | 10.00 | 0.1000 |" README.md
+    run -0 grep -cF "| build_radiance, one run per band | 0.45 | 4.50 | - | 0.1500 |" README.md
+    run -0 grep -cF "| trace: the .rad tables | 0.01 | 0.10 | 0.33 | 0.0033 |" README.md
+    rm bands_cost.tsv
+    run -1 --separate-stderr "$SIGCHAIN_SOURCE_DIR/scripts/chart-bands" .
+    assert_equal "$stderr" "chart-bands: ./bands_cost.tsv: cannot read it"
+}
