@@ -13,12 +13,10 @@
 
 namespace sigchain {
 
-namespace {
-
-struct DigestContext {
+struct Sha256::Context {
     std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx{EVP_MD_CTX_new(),
                                                                  &EVP_MD_CTX_free};
-    DigestContext() {
+    Context() {
         if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1)
             throw std::runtime_error("cannot set up SHA-256 (OpenSSL)");
     }
@@ -41,13 +39,18 @@ struct DigestContext {
     }
 };
 
-}  // namespace
+Sha256::Sha256() : m_context(std::make_unique<Context>()) {}
+Sha256::~Sha256() = default;
+Sha256::Sha256(Sha256&&) noexcept = default;
+Sha256& Sha256::operator=(Sha256&&) noexcept = default;
+void Sha256::add(const void* data, std::size_t size) { m_context->add(data, size); }
+std::string Sha256::hex() { return m_context->hex(); }
 
 std::string sha256_file(const std::string& path) {
     std::unique_ptr<std::FILE, decltype(&std::fclose)> f(std::fopen(path.c_str(), "rb"),
                                                          &std::fclose);
     if (!f) throw IoError(path + ": cannot open: " + std::strerror(errno));
-    DigestContext d;
+    Sha256 d;
     char buf[1 << 16];
     std::size_t n = 0;
     while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) d.add(buf, n);
@@ -56,7 +59,7 @@ std::string sha256_file(const std::string& path) {
 }
 
 std::string sha256_text(const std::string& text) {
-    DigestContext d;
+    Sha256 d;
     d.add(text.data(), text.size());
     return d.hex();
 }

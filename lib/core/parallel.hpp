@@ -33,6 +33,22 @@ unsigned parallel_workers(long count, const ParallelOptions& opt);
 void parallel_for(long count, const ParallelOptions& opt,
                   const std::function<void(long i, unsigned worker)>& body);
 
+// parallel_for whose items are started in increasing order, each at most `window` items
+// past the first not yet passed on, and passed on in order as they complete:
+// done(first, n) is called for items [first, first + n) once every item up to
+// first + n - 1 is complete, the calls in order, one at a time, from whichever worker
+// completed the last of them while the others go on with later items. A range holds
+// window / 4 items at least (fewer only when it ends the loop or the ring) and never
+// crosses a multiple of `window`, so that item i may keep its result in slot
+// i % window of a ring of `window` slots (clamped to [1, count]) until it is passed
+// on. body(i, worker) must compute item i from i alone, as for parallel_for; with one
+// worker, items and done() run in order on the calling thread. The first exception
+// of a body or of done() stops the loop and is rethrown; done() is not called again.
+// opt.progress counts the items whose body has returned.
+void parallel_for_ordered(long count, long window, const ParallelOptions& opt,
+                          const std::function<void(long i, unsigned worker)>& body,
+                          const std::function<void(long first, long n)>& done);
+
 // Per-worker state made on a worker's first item: `WorkerStates<T> s(workers)`, then
 // `T& t = s.get(worker, [&] { return T(...); })` in the body; after the loop,
 // s.each(...) visits the states that were made, in worker order.

@@ -17,6 +17,7 @@
 #include "geo/crs.hpp"
 #include "geo/georef.hpp"
 #include "image/gdal_output.hpp"
+#include "image/gdal_write.hpp"
 #include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
@@ -40,22 +41,39 @@ bool all_finite(const std::vector<double>& values) {
            std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
 
-// ENVI's list form: "{a, b, c}".
-std::string number_list(const std::vector<double>& values) {
+// The header lines GDAL 3.6's ENVI reader takes: a line of this many characters or
+// more is an error there, and the items from it on are lost.
+constexpr std::size_t kEnviLineLimit = 10000;
+
+// ENVI's list form: "{a, b, c}", on the line "KEY = {...}" when it stays under
+// kEnviLineLimit; else over several lines, 8 values to a line (a list of ~480
+// wavelengths or more: a hyperspectral cube), which ENVI and GDAL read as one list.
+std::string number_list(const std::string& key, const std::vector<double>& values) {
     std::string s = "{";
     for (std::size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + format_number(values[i]);
-    return s + "}";
+    s += "}";
+    if (key.size() + 3 + s.size() < kEnviLineLimit) return s;
+    std::string lines = "{";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i > 0) lines += i % 8 ? ", " : ",\n ";
+        lines += format_number(values[i]);
+    }
+    return lines + "}";
 }
 
 // Errors name the output file only: they concern the image in memory, not a line.
-void check_image(const std::string& path, const Image& image) {
+void check_header(const std::string& path, const Image& image) {
     if (image.channels < 1 || image.rows < 1 || image.columns < 1)
         throw DataError({path, 0}, "cannot write an empty image");
-    if (image.data.size() != static_cast<std::size_t>(image.channels) * image.plane_size())
-        throw DataError({path, 0}, "image data size does not match its dimensions");
     for (const auto* list : {&image.wavelength_um, &image.fwhm_um})
         if (!list->empty() && list->size() != static_cast<std::size_t>(image.channels))
             throw DataError({path, 0}, "the wavelength or FWHM list does not match the band count");
+}
+
+void check_image(const std::string& path, const Image& image) {
+    check_header(path, image);
+    if (image.data.size() != static_cast<std::size_t>(image.channels) * image.plane_size())
+        throw DataError({path, 0}, "image data size does not match its dimensions");
 }
 
 // "sigchain X.Y.Z: COMMAND" (cube(5), PROVENANCE); braces would end an ENVI field.
@@ -170,18 +188,18 @@ void set_metadata(GDALDataset& ds, const Image& image, CubeFormat format,
     // header's description: the provenance keeps reruns identical.
     ds.SetDescription(provenance(options).c_str());
     if (all_finite(image.wavelength_um)) {
-        ds.SetMetadataItem("wavelength", number_list(image.wavelength_um).c_str(), "ENVI");
+        ds.SetMetadataItem("wavelength", number_list("wavelength", image.wavelength_um).c_str(), "ENVI");
         ds.SetMetadataItem("wavelength_units", "Micrometers", "ENVI");
     }
     if (all_finite(image.fwhm_um))
-        ds.SetMetadataItem("fwhm", number_list(image.fwhm_um).c_str(), "ENVI");
+        ds.SetMetadataItem("fwhm", number_list("fwhm", image.fwhm_um).c_str(), "ENVI");
     // ENVI's display bands (1-based red, green, blue): the true-colour preview's, when
     // the image has three visible bands.
     if (all_finite(image.wavelength_um) && image.channels >= 3) {
         try {
             std::vector<double> rgb;
             for (int c : true_colour_bands(image, "")) rgb.push_back(c + 1);
-            ds.SetMetadataItem("default_bands", number_list(rgb).c_str(), "ENVI");
+            ds.SetMetadataItem("default_bands", number_list("default bands", rgb).c_str(), "ENVI");
         } catch (const DataError&) {
             // fewer than three visible bands: ENVI shows the first band
         }
@@ -218,28 +236,10 @@ void write_gdal(const std::string& path, const Image& image, GDALDataType type, 
                 const WriteOptions& options) {
     gdal_init();
     check_image(path, image);
-    const CPLStringList co = creation_options(path, format, options);
-    std::string target = path;
-    if (file_extension(path) == "hdr")
-        target = std::filesystem::path(path).replace_extension(".img").string();
-    GdalOutput out(target, format == CubeFormat::GeoTiff ? "GTiff" : "ENVI", image.columns,
-                   image.rows, image.channels, type, co.List());
-    set_metadata(out.dataset(), image, format, options);
-    set_georeference(out.dataset(), image, format, path);
+    std::unique_ptr<GdalOutput> out = detail::create_gdal(path, image, type, format, options);
     for (int c = 0; c < image.channels; ++c)
-        out.write_band(c + 1, GDT_Float32, image.data.data() + c * image.plane_size());
-    if (!image.georef.arrays) {
-        out.commit();
-        return;
-    }
-    // The geolocation arrays and the image as one output: the arrays renamed first, the
-    // image (and its ENVI header, which names them) last.
-    std::unique_ptr<GdalOutput> arrays =
-        stage_geolocation(image.georef.geolocation_path, *image.georef.arrays);
-    std::vector<Move> image_moves = out.finish();
-    std::vector<Move> moves = arrays->finish();
-    moves.insert(moves.end(), image_moves.begin(), image_moves.end());
-    commit_moves(moves);
+        out->write_band(c + 1, GDT_Float32, image.data.data() + c * image.plane_size());
+    detail::commit_gdal(*out, image);
 }
 
 }  // namespace
@@ -250,6 +250,38 @@ void write_cube(const std::string& path, const Image& cube, CubeFormat format,
 }
 
 namespace detail {
+
+std::unique_ptr<GdalOutput> create_gdal(const std::string& path, const Image& header,
+                                        GDALDataType type, CubeFormat format,
+                                        const WriteOptions& options) {
+    gdal_init();
+    check_header(path, header);
+    const CPLStringList co = creation_options(path, format, options);
+    std::string target = path;
+    if (file_extension(path) == "hdr")
+        target = std::filesystem::path(path).replace_extension(".img").string();
+    auto out = std::make_unique<GdalOutput>(target, format == CubeFormat::GeoTiff ? "GTiff" : "ENVI",
+                                            header.columns, header.rows, header.channels, type,
+                                            co.List());
+    set_metadata(out->dataset(), header, format, options);
+    set_georeference(out->dataset(), header, format, path);
+    return out;
+}
+
+void commit_gdal(GdalOutput& out, const Image& header) {
+    if (!header.georef.arrays) {
+        out.commit();
+        return;
+    }
+    // The geolocation arrays and the image as one output: the arrays renamed first, the
+    // image (and its ENVI header, which names them) last.
+    std::unique_ptr<GdalOutput> arrays =
+        stage_geolocation(header.georef.geolocation_path, *header.georef.arrays);
+    std::vector<Move> image_moves = out.finish();
+    std::vector<Move> moves = arrays->finish();
+    moves.insert(moves.end(), image_moves.begin(), image_moves.end());
+    commit_moves(moves);
+}
 
 void validate_gtiff_options(const std::string& path, const std::vector<std::string>& options) {
     gdal_init();

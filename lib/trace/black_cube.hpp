@@ -1,6 +1,7 @@
 // The warning a black radiance cube deserves, whatever -q says.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "core/report.hpp"
@@ -18,5 +19,12 @@ inline constexpr float kBlackRadiance = 1e-12f;
 // the cube in the message.
 void alarm_if_black(const image::Image& radiance, const std::string& path,
                     const Reporter& reporter);
+// The same from the largest magnitude of a cube's values, found as its rows went by
+// (largest_magnitude), for a cube of `values` values (none: no alarm).
+void alarm_if_black(float largest, std::size_t values, const std::string& path,
+                    const Reporter& reporter);
+// The largest magnitude among rows [first_row, first_row + rows) of every channel of
+// `image`, or `so_far` when larger.
+float largest_magnitude(const image::Image& image, long first_row, long rows, float so_far = 0);
 
 }  // namespace sigchain::trace

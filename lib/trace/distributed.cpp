@@ -76,11 +76,11 @@ void grow(image::Image& image, long rows) {
 
 bool distributed_worker() { return farm_worker(); }
 
-bool render_rows(const RenderInputs& inputs, const RenderOptions& options,
-                 const Reporter& reporter, RenderResult& result) {
+bool render_rows(const RenderInputs& inputs, const RenderOptions& options, long ring_rows,
+                 const RowSink& sink, const Reporter& reporter, RenderResult& result) {
     if (!farm_available()) {
         ProgressScope bar(reporter, "rendering");
-        result = render(inputs, options, bar.callback());
+        result = render_streamed(inputs, options, ring_rows, sink, bar.callback());
         return true;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -120,6 +120,7 @@ bool render_rows(const RenderInputs& inputs, const RenderOptions& options,
         if (progress) progress(done, rows);
     };
     if (run_farm(job) == FarmRole::Worker) return false;
+    if (sink && rows > 0) sink(RenderedRows{result.radiance, result.truth, 0, 0, rows});
     std::vector<std::string>& skipped = result.stats.skipped;
     skipped.erase(std::remove(skipped.begin(), skipped.end(), kNoWorldNote), skipped.end());
     if (result.stats.sky_samples + result.stats.background_samples == 0)

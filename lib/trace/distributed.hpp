@@ -9,14 +9,18 @@
 
 #include "core/report.hpp"
 #include "trace/render.hpp"
+#include "trace/render_stream.hpp"
 
 namespace sigchain::trace {
 
-// Renders options' rows into `result`, with `reporter`'s progress bar ("rendering").
-// Returns false on an MPI worker (rank > 0), which must write nothing: rank 0 alone
-// holds the whole result. Throws what render() throws.
-bool render_rows(const RenderInputs& inputs, const RenderOptions& options,
-                 const Reporter& reporter, RenderResult& result);
+// Renders options' rows and hands them to `sink` in row order (render_stream.hpp), with
+// `reporter`'s progress bar ("rendering"): in one process as they complete, held in a
+// ring of `ring_rows` rows (render_streamed); over MPI, on rank 0, all at once when
+// every tile has arrived, rank 0 holding the whole image. `result` receives the
+// statistics (and the ring, or the whole image under MPI). Returns false on an MPI
+// worker (rank > 0), which must write nothing. Throws what render() and `sink` throw.
+bool render_rows(const RenderInputs& inputs, const RenderOptions& options, long ring_rows,
+                 const RowSink& sink, const Reporter& reporter, RenderResult& result);
 
 // Whether this process is an MPI worker (farm_worker: a rank other than 0 of a job of
 // more than one rank), known before MPI is set up. Always false without SIGCHAIN_MPI.

@@ -15,5 +15,8 @@ inline constexpr const char* kSiRadianceUnits = "W m-2 sr-1 um-1";
 // 1e4 (1 W cm-2 = 1e4 W m-2), the cube's units set to kSiRadianceUnits; reflectance,
 // transmission and the geometric layers as they are. `truth` may be empty.
 void to_si_units(image::Image& cube, image::Image& truth);
+// The same for the values of rows [first_row, first_row + rows) of both images alone
+// (a render's rows as they are written; the units are the header's).
+void rows_to_si_units(image::Image& cube, image::Image& truth, long first_row, long rows);
 
 }  // namespace sigchain::trace

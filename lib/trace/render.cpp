@@ -15,6 +15,8 @@
 #include "core/parallel.hpp"
 #include "trace/adjacency.hpp"
 #include "trace/material_fraction.hpp"
+#include "trace/render_stream.hpp"
+#include "trace/sample_stats.hpp"
 #include "trace/sampling.hpp"
 #include "trace/tracer.hpp"
 #include "trace/uncertainty.hpp"
@@ -197,80 +199,6 @@ void put_truth(const TraceContext& c, const std::vector<double>& truth_acc, long
     if (hits == 0) put(kViewAngle, cam.view_angle_deg(d));
 }
 
-// Per-band running mean and sum of squared deviations (Welford, 1962) of a pixel's
-// primary samples at the band-centre spectral sample: the sampling truth layers
-// (trace(1) --standard-error) and --convergence's stopping rule.
-struct SampleStats {
-    long n = 0;
-    std::vector<double> mean, m2;
-    bool keep = false;           // keep the samples (--convergence's block estimate)
-    std::vector<double> values;  // sample-major, per band: the block estimate's input
-    void reset(std::size_t bands, bool keep_values) {
-        n = 0;
-        mean.assign(bands, 0.0);
-        m2.assign(bands, 0.0);
-        keep = keep_values;
-        values.clear();
-    }
-    // Standard error from kBlocks consecutive blocks of the samples (each block of a
-    // (0,2)-sequence is itself stratified): the spread of the block means, which
-    // includes what stratification gains; sqrt(s^2 / n) below 2 kBlocks samples.
-    static constexpr long kBlocks = 8;
-    double block_error(std::size_t b) const {
-        const long m = n / kBlocks;
-        if (m < 2) return standard_error(b);
-        const std::size_t bands = mean.size();
-        double sum = 0, sum2 = 0;
-        for (long k = 0; k < kBlocks; ++k) {
-            double s = 0;
-            for (long i = k * m; i < (k + 1) * m; ++i)
-                s += values[static_cast<std::size_t>(i) * bands + b];
-            s /= static_cast<double>(m);
-            sum += s;
-            sum2 += s * s;
-        }
-        const double kb = kBlocks, var = std::max(0.0, (sum2 - sum * sum / kb) / (kb - 1));
-        return std::sqrt(var / kb);
-    }
-    void add(const std::vector<double>& sample, const std::vector<std::size_t>& centre) {
-        ++n;
-        if (keep)
-            for (std::size_t b = 0; b < centre.size(); ++b) values.push_back(sample[centre[b]]);
-        for (std::size_t b = 0; b < centre.size(); ++b) {
-            const double x = sample[centre[b]], d = x - mean[b];
-            mean[b] += d / static_cast<double>(n);
-            m2[b] += d * (x - mean[b]);
-        }
-    }
-    // Standard error of the mean, sqrt(s^2 / n) with s^2 = m2 / (n - 1); -1 below 2 samples.
-    double standard_error(std::size_t b) const {
-        if (n < 2) return -1;
-        return std::sqrt(m2[b] / static_cast<double>(n - 1) / static_cast<double>(n));
-    }
-    // max over bands of standard error / |mean| (0 / 0 counts as 0, x / 0 as infinite).
-    double relative_error() const {
-        double worst = 0;
-        for (std::size_t b = 0; b < mean.size(); ++b) {
-            const double se = block_error(b);
-            if (se < 0) return std::numeric_limits<double>::infinity();
-            if (se == 0) continue;
-            worst = std::max(worst, mean[b] == 0 ? std::numeric_limits<double>::infinity()
-                                                 : se / std::abs(mean[b]));
-        }
-        return worst;
-    }
-    // max over bands of the standard error (infinite below 2 samples).
-    double absolute_error() const {
-        double worst = 0;
-        for (std::size_t b = 0; b < mean.size(); ++b) {
-            const double se = block_error(b);
-            if (se < 0) return std::numeric_limits<double>::infinity();
-            worst = std::max(worst, se);
-        }
-        return worst;
-    }
-};
-
 // Primary samples of pixel (row, col): samples_per_pixel stratified over the pixel, or
 // with --convergence batches of MIN at the points of the pixel's (0,2)-sequence (so
 // the samples so far stay stratified as batches are added; their other random numbers
@@ -443,6 +371,12 @@ std::vector<std::string> truth_layer_names(const radiometry::SpectralGrid& grid,
 
 RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
                     const std::function<void(long, long)>& progress) {
+    return render_streamed(inputs, options, 0, {}, progress);
+}
+
+RenderResult render_streamed(const RenderInputs& inputs, const RenderOptions& options,
+                             long ring_rows, const RowSink& sink,
+                             const std::function<void(long, long)>& progress) {
     auto start = std::chrono::steady_clock::now();
     if (options.uncertainty_layers && (!options.truth || !inputs.uncertainty))
         throw std::invalid_argument("render: uncertainty layers need truth and uncertainties");
@@ -452,15 +386,22 @@ RenderResult render(const RenderInputs& inputs, const RenderOptions& options,
     long row_end =
         options.row_end < 0 ? cam.rows() : std::clamp(options.row_end, row_begin, cam.rows());
     long rows = row_end - row_begin;
-    RenderResult res = empty_result(inputs, options, rows);
+    // Row r is rendered into row r % ring of the ring, which the sink receives in order.
+    const long ring = ring_rows <= 0 ? rows : std::min(ring_rows, rows);
+    RenderResult res = empty_result(inputs, options, ring);
     const std::size_t truth_layers = options.truth ? res.truth.channel_names.size() : 0;
 
     const ParallelOptions parallel{options.threads, progress};
     WorkerStates<RowWorker> workers(parallel_workers(rows, parallel));
-    parallel_for(rows, parallel, [&](long r, unsigned worker) {
-        RowWorker& w = workers.get(worker, [&] { return RowWorker(c, truth_layers); });
-        render_row(c, w, row_begin + r, r, res);
-    });
+    parallel_for_ordered(
+        rows, ring, parallel,
+        [&](long r, unsigned worker) {
+            RowWorker& w = workers.get(worker, [&] { return RowWorker(c, truth_layers); });
+            render_row(c, w, row_begin + r, r % ring, res);
+        },
+        [&](long first, long n) {
+            if (sink) sink(RenderedRows{res.radiance, res.truth, first, first % ring, n});
+        });
     workers.each([&](const RowWorker& w) {
         const RayCounters& k = w.tracer.counters();
         res.stats.primary_rays += k.primary;

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/farm.hpp"
 #include "core/process.hpp"
 #include "core/output.hpp"
 #include "core/text.hpp"
@@ -33,9 +34,9 @@
 #include "trace/distributed.hpp"
 #include "trace/georef.hpp"
 #include "trace/like_grid.hpp"
-#include "trace/radiance_units.hpp"
 #include "trace/ground_layers.hpp"
 #include "trace/part.hpp"
+#include "trace/trace_output.hpp"
 #include "trace/uncertainty.hpp"
 
 namespace sigchain::trace {
@@ -134,8 +135,11 @@ Setup read_setup(const TraceJob& job) {
 }
 
 // Refuses, before anything is read or allocated, a radiance cube (4-byte floats, one
-// band per spectral sample) larger than the memory this process may use (trace(1)).
+// band per spectral sample) larger than the memory this process may use, when it is
+// to be held whole: by rank 0 of an MPI farm, which gathers it (trace(1), MPI). One
+// process writes the rows as they complete and holds a ring of them (trace_output.hpp).
 void check_cube_size(const TraceJob& job, const Setup& st, std::size_t samples) {
+    if (!farm_available()) return;
     double bytes = 4.0 * static_cast<double>(st.row_end - st.row_begin) *
                    static_cast<double>(st.adv.columns) * static_cast<double>(samples);
     double usable = usable_memory_bytes();
@@ -332,43 +336,6 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     if (s.hits == 0) reporter.warn("no primary ray hit the scene: check the look angles");
 }
 
-// What decides the truth cube's sampling layers (truth_layer_names).
-RenderOptions render_options_layers(const TraceJob& job) {
-    RenderOptions o;
-    o.sampling_layers = !job.truth_path.empty() && (job.standard_error || job.convergence);
-    o.uncertainty_layers = !job.truth_path.empty() && !job.uncertainty_path.empty();
-    return o;
-}
-
-// The radiance cube (a band per spectral sample) and the truth cube, each atomically.
-void write_outputs(const TraceJob& job, const image::WriteOptions& write_options,
-                   const radiometry::SpectralGrid& grid, const image::Georeference& georef,
-                   const std::string& type_name, RenderResult& result) {
-    image::Image& cube = result.radiance;
-    cube.georef = georef;
-    cube.sensor_type = type_name;
-    cube.wavelength_um = grid.wavelength_um;
-    cube.units = kRadianceUnits;
-    if (!job.truth_path.empty())
-        result.truth.channel_names = truth_layer_names(grid, render_options_layers(job));
-    if (job.si_radiance_units) to_si_units(cube, result.truth);
-    if (cube.channel_names.size() != grid.size()) {
-        cube.channel_names.clear();
-        for (std::size_t k = 0; k < grid.size(); ++k)
-            cube.channel_names.push_back(grid.band_names[grid.band_of_sample[k]] + " " +
-                                         format("%.6g", grid.wavelength_um[k]) + " um");
-    }
-    image::write_cube(job.output_path, cube, image::cube_format_of(job.output_path), write_options);
-    if (job.truth_path.empty()) return;
-    image::Image& truth = result.truth;
-    truth.wavelength_um.clear();
-    truth.units.clear();
-    truth.georef = georef;
-    truth.georef.arrays.reset();  // written with the radiance cube
-    truth.sensor_type = type_name;
-    image::write_cube(job.truth_path, truth, image::cube_format_of(job.truth_path), write_options);
-}
-
 // Wall seconds of trace's phases (-v): what the set-up takes beside the rendering.
 struct PhaseTimes {
     using Clock = std::chrono::steady_clock;
@@ -444,6 +411,27 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
     const InputUncertainty uncertainty = read_input_uncertainty(job.uncertainty_path, materials);
     inputs.uncertainty = &uncertainty;
+    const std::optional<double> plane = options.background == BackgroundChoice::None
+                                            ? std::nullopt
+                                            : std::optional<double>(scene.bounds().lower[2]);
+    const long rows = st.row_end - st.row_begin, columns = camera.columns();
+    // The cubes are written as their rows complete (rank 0 alone writes under MPI), so
+    // their georeferencing is made before the render; what it reports is told after
+    // the render, where -v has always told it.
+    const HeldReports georef_reports(reporter);
+    std::unique_ptr<TraceOutputs> outputs;
+    if (!distributed_worker()) {
+        image::Georeference georef;
+        if (st.like)
+            georef = like_georeference(*st.like, st.row_begin);
+        else if (place)
+            georef = georeference_render(camera, scene, *place, !job.crs.empty(), plane,
+                                         st.row_begin, st.row_end, st.adv.rows,
+                                         image::geolocation_name(job.output_path), georef_reports);
+        outputs = std::make_unique<TraceOutputs>(
+            job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, options,
+            georef, sensor_type(camera), rows, columns);
+    }
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
                   std::to_string(st.adv.columns) + " columns, " +
@@ -454,34 +442,31 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
                   ", " + sampling_name(job.sampling) + " sampling");
     RenderResult result;
     times.other = times.lap();
-    if (!render_rows(inputs, options, reporter, result)) return report;  // an MPI worker
+    const std::size_t floats =
+        grid.size() + (options.truth ? truth_layer_names(grid, options).size() : 0);
+    RowSink sink;
+    if (outputs) sink = [&outputs](const RenderedRows& r) { outputs->write(r); };
+    if (!render_rows(inputs, options, ring_rows(rows, columns, floats, options.threads), sink,
+                     reporter, result))
+        return report;  // an MPI worker
     const double render_seconds = times.lap();
+    result.radiance = {};  // the ring: its rows are written
+    result.truth = {};
     report.stats = result.stats;
-    report.rows = result.radiance.rows;
-    report.columns = result.radiance.columns;
+    report.rows = rows;
+    report.columns = columns;
     // With --convergence, what the pixels took (-v).
-    report_stats(result.stats, job.convergence ? result.radiance.rows * result.radiance.columns : 0,
-                 reporter);
+    report_stats(result.stats, job.convergence ? rows * columns : 0, reporter);
     report_phases(times, render_seconds, reporter);
-    image::Georeference georef;
-    const std::optional<double> plane = options.background == BackgroundChoice::None
-                                            ? std::nullopt
-                                            : std::optional<double>(scene.bounds().lower[2]);
     if (!job.igm_path.empty() || !job.glt_path.empty()) {
         std::string note;
         write_ground_layers(camera, scene, place, options.meters_per_unit, plane, st.row_begin,
                             st.row_end, job.igm_path, job.glt_path, note);
         reporter.info(note);
     }
-    if (st.like)
-        georef = like_georeference(*st.like, st.row_begin);
-    else if (place)
-        georef = georeference_render(camera, scene, *place, !job.crs.empty(), plane, st.row_begin,
-                                     st.row_end, st.adv.rows,
-                                     image::geolocation_name(job.output_path), reporter);
-    write_outputs(job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, georef,
-                  sensor_type(camera), result);
-    alarm_if_black(result.radiance, job.output_path, reporter);
+    georef_reports.release();
+    outputs->commit();
+    alarm_if_black(outputs->largest_radiance(), outputs->values(), job.output_path, reporter);
     return report;
 }
 

@@ -86,6 +86,21 @@ full_disk_sweep() {
     [ ! -e c.geoloc.tif ]
 }
 
+@test "trace's GeoTIFF rows on a full disk: the scratch file they wait in fails as an error" {
+    # A GeoTIFF's rows wait in a raw file beside it (pwrite) until its bands are
+    # written one after the other; a failed write there ends the run like any other.
+    local n
+    for n in 1 2 40 100; do
+        run -1 --separate-stderr strace -f -o /dev/null -e inject=pwrite64:error=ENOSPC:when=$n \
+            small_trace -o c.tif --truth t.tif
+        [[ "$stderr" == *": c.tif: write error: No space left on device" ||
+            "$stderr" == *": t.tif: write error: No space left on device" ]] ||
+            fail "pwrite $n: $stderr"
+        [ ! -e c.tif ] && [ ! -e t.tif ] && [ ! -e c.geoloc.tif ] || fail "pwrite $n: output left"
+        assert_no_temp_files .
+    done
+}
+
 @test "merge_tiles on a full disk, and parts whose size disagrees with their header" {
     local k
     for k in 1 2 3; do small_trace --tile $k/3 -o part$k.img; done
