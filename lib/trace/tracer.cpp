@@ -314,13 +314,14 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
             for (std::size_t k = 0; k < m_c.n; ++k) solar[k] = w * m_c.sun_e[k] * vis[k];
         }
     }
+    const HemispherePass pass{p, m_index};
     double sky_view = m_strategy->add_hemisphere(*this, m, f, p, wo_l, down);
     for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * (solar[k] + down[k]);
     double t_k = m_c.emission ? temperature_k(hit) : -1;
     if (m_c.emission) add_emission(m, curve, theta_o, t_k, out);
     if (!truth) return;
     keep_truth(visibility, sky_view, t_k, rho, solar, down, *truth);
-    if (m_c.opt.uncertainty_layers) keep_sun_rates(m, f, wo_l, rho, solar, *truth);
+    if (m_c.opt.uncertainty_layers) keep_sun_rates(m, f, wo_l, rho, solar, pass, *truth);
 }
 
 // The truth of a primary hit; its spectral buffers outlive the arena scope of

@@ -134,7 +134,8 @@ struct HitTruth {
     const double* solar = nullptr;       // reflected solar radiance per sample
     const double* downwelled = nullptr;  // reflected sky + neighbours per sample
     // With RenderOptions::uncertainty_layers: d(solar)/d(sun zenith) per degree and
-    // d(solar)/d(SPECULARITY) per sample (tracer_uncertainty.cpp); else null.
+    // d(solar + downwelled)/d(SPECULARITY), the sun's and the sky's, per sample
+    // (tracer_uncertainty.cpp); else null.
     const double* solar_per_zenith = nullptr;
     const double* solar_per_specularity = nullptr;
 };
@@ -201,17 +202,32 @@ private:
                     const geo::Vec3& wo, double* out, HitTruth* truth);
     void keep_truth(double visibility, double sky_view, double t_k, const double* rho,
                     const double* solar, const double* down, HitTruth& truth);
-    // The solar term's rates in sun zenith and SPECULARITY of a primary hit into the
-    // truth (tracer_uncertainty.cpp): `sun` the unreflected solar term w F E tau1 V per
-    // sample, `rho` the reflectance; for a split material each part apart (no
-    // SPECULARITY rate).
+    // Where a primary hit's hemisphere pass began: the point above the facet and the
+    // sample's random-number counter, so that the uncertainty's second pass over the
+    // same rays (keep_specularity_rate) draws the same numbers.
+    struct HemispherePass {
+        geo::Vec3 p;
+        std::uint64_t index = 0;
+    };
+    // The rates of a primary hit into the truth (tracer_uncertainty.cpp): the solar
+    // term's in sun zenith, and the reflected radiance's in SPECULARITY (sun and sky);
+    // `sun` the unreflected solar term w F E tau1 V per sample, `rho` the reflectance;
+    // for a split material each part apart.
     void keep_sun_rates(const radiometry::MaterialOptics& m, const FacetFrame& f,
                         const geo::Vec3& wo_l, const double* rho, const double* sun,
-                        HitTruth& truth);
+                        const HemispherePass& pass, HitTruth& truth);
     void keep_split_sun_rates(const radiometry::MaterialOptics& m,
                               const radiometry::ReflectanceSplit& w, const FacetFrame& f,
                               const geo::Vec3& wo_l, const double* rho_d, const double* sun_d,
-                              const double* rho_s, const double* sun_s, HitTruth& truth);
+                              const double* rho_s, const double* sun_s, const HemispherePass& pass,
+                              HitTruth& truth);
+    // d(reflected radiance)/d(SPECULARITY) per sample into m_truth_per_specularity: the
+    // parts' incoming sun and sky at unit weight (the hemisphere's rays again, from
+    // `pass`), the specular part's times rho_s less the diffuse part's times rho_d.
+    void keep_specularity_rate(const radiometry::MaterialOptics& m,
+                               const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                               const geo::Vec3& wo_l, const double* rho_d, const double* rho_s,
+                               const HemispherePass& pass);
     // The strategy's sun weight times the incoming fall-off for the sun along `sun`.
     double sun_weight_toward(const radiometry::MaterialOptics& m, const FacetFrame& f,
                              const geo::Vec3& wo_l, const geo::Vec3& sun) const;

@@ -164,10 +164,11 @@ void Tracer::shade_full_split(const scene::Hit& hit, const MaterialOptics& m,
     const ReflectanceSplit w = m.split_weights(cos_o);
     const Vec3 p = geo::add(point, geo::scale(n, m_c.eps));
     const double visibility = add_split_sun(m, w, f, p, wo_l, true, sun_d, sun_s);
+    const HemispherePass pass{p, m_index};
     const double sky_view =
         m_strategy->add_hemisphere_split(*this, m, w, f, p, wo_l, down_d, down_s);
     if (truth && m_c.opt.uncertainty_layers)
-        keep_split_sun_rates(m, w, f, wo_l, rho_d, sun_d, rho_s, sun_s, *truth);
+        keep_split_sun_rates(m, w, f, wo_l, rho_d, sun_d, rho_s, sun_s, pass, *truth);
     // Reuse the buffers: sun_d becomes the reflected solar radiance, down_d the
     // reflected sky and neighbours, rho_s the reflectance a uniform sky sees.
     for (std::size_t k = 0; k < m_c.n; ++k) {

@@ -78,7 +78,7 @@ void PixelUncertainty::clear() { std::fill(m_acc.begin(), m_acc.end(), 0.0); }
 
 // The partials of L = tau2 (solar + downwelled + emitted) + L_us (White (1996), section
 // 5.1.2's Big Equation at the primary hit): solar is linear in Es and in tau1, the
-// reflected part in the hit's reflectance, the downwelled part in L_ds.
+// reflected part in the hit's reflectance and in SPECULARITY, the downwelled part in L_ds.
 void PixelUncertainty::add_hit(std::size_t band, const HitTerms& t) {
     const InputUncertainty& u = *m_u;
     double* a = &m_acc[band * m_slots];
@@ -94,7 +94,7 @@ void PixelUncertainty::add_hit(std::size_t band, const HitTerms& t) {
     const double reflected = t.tau2 * (t.solar + t.downwelled);  // r dL/dr
     a[kGlobalSlots + 2 * m] +=
         contribution(u.reflectance[m], reflected, t.r > 0 ? reflected / t.r : 0.0);
-    const double per_s = t.tau2 * t.solar_per_specularity;  // dL/ds, the sun's part
+    const double per_s = t.tau2 * t.solar_per_specularity;  // dL/ds: the sun's and the sky's
     a[kGlobalSlots + 2 * m + 1] += contribution(u.specularity[m], t.specularity * per_s, per_s);
 }
 

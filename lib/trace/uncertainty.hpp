@@ -44,7 +44,9 @@ struct HitTerms {
     double solar = 0;       // rho E_s tau1 cos(sigma)/pi F V (the Big Equation's solar part)
     double downwelled = 0;  // rho times the sky and neighbours' irradiance term
     double solar_per_zenith_deg = 0;  // d(solar)/d(sun zenith), per degree
-    double solar_per_specularity = 0; // d(solar)/d(SPECULARITY)
+    // d(solar + downwelled)/d(SPECULARITY): the sun's and the sky's (and neighbours')
+    // parts both, though the name says solar (HitTruth's, which render.cpp copies).
+    double solar_per_specularity = 0;
     double tau1 = 1;                  // sun to ground transmittance at the sample
     double r = 0;                     // the hit material's 1 - eps at the sample
     double specularity = 0;           // the hit material's SPECULARITY

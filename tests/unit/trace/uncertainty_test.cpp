@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "input_draws.hpp"
 #include "io/adv.hpp"
 #include "io/mat.hpp"
 #include "io/rad.hpp"
@@ -31,7 +32,6 @@ namespace {
 
 const std::string kData = SIGCHAIN_TEST_DATA "/trace/";
 const std::string kScene = SIGCHAIN_TEST_DATA "/white1996/box_on_plane.gdb";
-constexpr double kPi = 3.14159265358979323846;
 
 struct Training {
     io::Adv adv = io::read_adv_file(kData + "box.adv");
@@ -84,53 +84,9 @@ RenderResult render_with(const Training& t, const radiometry::Atmosphere& atm,
     return render(in, o);
 }
 
-// One draw of the inputs: `z` standard normal numbers applied to the .rad terms, the
-// sun zenith and each material's reflectance as the sigmas say (relative: x (1 + s z);
-// absolute: x + s z). The sun zenith moves tau1 by Beer's law in a plane-parallel
-// column, tau1(z') = tau1(z)^(cos z / cos z'), the model the layer differentiates.
-struct Draw {
-    double es = 0, tau1 = 0, tau2 = 0, lus = 0, lds = 0, zenith = 0;
-    std::vector<double> reflectance;
-};
-
-double moved(const Sigma& s, double x, double z) {
-    return s.relative ? x * (1 + s.value * z) : x + s.value * z;
-}
-
-std::vector<io::Rad> perturbed_rads(std::vector<io::Rad> rads, const InputUncertainty& u,
-                                    const Draw& d) {
-    for (io::Rad& r : rads) {
-        const double z0 = r.sky->sun_zenith_deg, z1 = z0 + u.sun_zenith_deg * d.zenith;
-        const double power = std::cos(z0 * kPi / 180) / std::cos(z1 * kPi / 180);
-        r.sky->sun_zenith_deg = z1;
-        for (io::RadSample& s : r.samples) {
-            s.solar_irradiance = moved(u.es, s.solar_irradiance, d.es);
-            s.sun_transmission =
-                std::clamp(moved(u.tau1, std::pow(s.sun_transmission, power), d.tau1), 0.0, 1.0);
-        }
-        for (io::RadView& v : r.views)
-            for (io::RadPathSample& p : v.path) {
-                p.transmission = std::clamp(moved(u.tau2, p.transmission, d.tau2), 0.0, 1.0);
-                p.scattered_radiance = moved(u.lus, p.scattered_radiance, d.lus);
-            }
-        if (r.sky->upwelled)
-            for (io::RadUpwelledCell& c : r.sky->upwelled->cells)
-                for (double& l : c.scattered_radiance) l = moved(u.lus, l, d.lus);
-        for (io::RadSkyCell& c : r.sky->cells)
-            for (double& l : c.scattered_radiance) l = moved(u.lds, l, d.lds);
-    }
-    return rads;
-}
-
-radiometry::MaterialLibrary perturbed_materials(const radiometry::MaterialLibrary& lib,
-                                                const InputUncertainty& u, const Draw& d) {
-    std::vector<radiometry::MaterialOptics> all = lib.materials();
-    for (std::size_t i = 0; i < all.size(); ++i)
-        for (auto& curve : all[i].emissivity)
-            for (double& eps : curve)
-                eps = 1 - std::clamp(moved(u.reflectance[i], 1 - eps, d.reflectance[i]), 0.0, 1.0);
-    return radiometry::MaterialLibrary::from_optics(std::move(all));
-}
+using draws::Draw;
+using draws::perturbed_materials;
+using draws::perturbed_rads;
 
 int layer(const RenderResult& r, const std::string& name) {
     const auto& n = r.truth.channel_names;
@@ -151,7 +107,8 @@ void expect_monte_carlo_agrees(const RenderResult& base, const radiometry::Spect
     std::mt19937_64 rng(20261203);
     std::normal_distribution<double> normal;
     for (int i = 0; i < draws; ++i) {
-        Draw d{normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), normal(rng), {}};
+        Draw d;
+        for (double* x : {&d.es, &d.tau1, &d.tau2, &d.lus, &d.lds, &d.zenith}) *x = normal(rng);
         for (std::size_t m = 0; m < materials; ++m) d.reflectance.push_back(normal(rng));
         const RenderResult r = render_draw(d);
         for (std::size_t b = 0; b < bands; ++b) {
@@ -280,7 +237,7 @@ TEST(Uncertainty, EachInputAloneMatchesItsPartial) {
         for (int i = 0; i < draws; ++i) {
             const double z = normal(rng);
             zs += z, zs2 += z * z;
-            Draw d{z, z, z, z, z, z, std::vector<double>(materials, z)};
+            Draw d{z, z, z, z, z, z, std::vector<double>(materials, z), {}};
             const radiometry::Atmosphere atm = Training::atmosphere(perturbed_rads(t.rads, u, d));
             const RenderResult r =
                 render_with(t, atm, perturbed_materials(t.materials, u, d), options(rows), nullptr);
