@@ -212,8 +212,9 @@ EOF2
 # data/scenes/olinda `make etm`: Olinda as ETM+ scanned it (olinda_etm.adv: 16 detectors,
 # bidirectional, scan-line corrector, 30 m from 705 km at 6.8 km/s), with the frame
 # chain's fitted materials, resampled onto the reference grid. Held-out floors as
-# olinda.bats's (ROC 0.75 per band, RMS 25 DN); this chain gives ROC 0.800 (band 4) to
-# 0.938 (band 2), RMS 9.4-23.0 DN, and the frame camera's 0.800-0.927, 9.6-23.0 DN.
+# olinda.bats's (ROC 0.75 per band, RMS 25 DN); today's values, beside the frame
+# camera's, are the generated table of data/scenes/olinda/README.md ("As ETM+ scanned
+# it"; the lowest ROC, band 4's, is about 0.8).
 @test "scanners: Olinda as ETM+ scanned it stays within the held-out floors" {
     [ -x "$SIGCHAIN_BIN/olinda_scene" ] || skip "olinda_scene not built in $SIGCHAIN_BIN"
     cp -r "$SIGCHAIN_SOURCE_DIR/data/scenes/olinda" scene
