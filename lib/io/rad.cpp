@@ -3,7 +3,9 @@
 
 #include <array>
 #include <cmath>
+#include <exception>
 
+#include "core/parallel.hpp"
 #include "io/rad_lines.hpp"
 #include "io/rad_sky.hpp"
 #include "io/spectral_curve.hpp"
@@ -296,6 +298,24 @@ void write_rad(std::ostream& out, const Rad& rad) {
                 << format_number(p.scattered_radiance) << '\n';
     }
     if (rad.sky) write_sky_block(out, rad);
+}
+
+std::vector<Rad> read_rad_files(const std::vector<std::string>& paths, unsigned threads) {
+    std::vector<Rad> rads(paths.size());
+    std::vector<std::exception_ptr> errors(paths.size());
+    ParallelOptions parallel;
+    parallel.threads = threads;
+    parallel_for(static_cast<long>(paths.size()), parallel, [&](long i, unsigned) {
+        const auto k = static_cast<std::size_t>(i);
+        try {
+            rads[k] = read_rad_file(paths[k]);
+        } catch (...) {
+            errors[k] = std::current_exception();  // every file is read: the first in order wins
+        }
+    });
+    for (const auto& e : errors)
+        if (e) std::rethrow_exception(e);
+    return rads;
 }
 
 FormatHandler rad_format() {

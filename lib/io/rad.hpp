@@ -66,8 +66,8 @@ struct RadUpwelledCell {
 // L_us and L_ue over view zenith x azimuth (optional, SIGCHAIN_RAD 1.1): the full
 // azimuth dependence the legacy view-angle table keeps in one vertical plane only.
 struct RadUpwelled {
-    long zenith_count = 0;   // rings (view zeniths, increasing)
-    long azimuth_count = 0;  // cells per ring (same azimuths in every ring, increasing)
+    long zenith_count = 0;               // rings (view zeniths, increasing)
+    long azimuth_count = 0;              // cells per ring (same azimuths in every ring, increasing)
     std::vector<RadUpwelledCell> cells;  // ring by ring
     bool operator==(const RadUpwelled&) const = default;
 };
@@ -123,6 +123,10 @@ struct Rad {
 Rad parse_rad(const TextInput& in);
 void write_rad(std::ostream& out, const Rad& rad);
 inline Rad read_rad_file(const std::string& path) { return parse_rad(TextInput::from_file(path)); }
+// read_rad_file of every path, the files spread over `threads` threads (0: every core;
+// parallel_for), in the paths' order. A file that fails throws what read_rad_file
+// throws for it: the first such file in the paths' order, whatever the threads did.
+std::vector<Rad> read_rad_files(const std::vector<std::string>& paths, unsigned threads = 0);
 FormatHandler rad_format();
 
 }  // namespace sigchain::io

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <vector>
@@ -513,4 +515,32 @@ TEST(RadBad, CouplingLines) {
     v = with_coupling();
     v.push_back("DIFFUSE_UP 0 0.06 0.05");  // line 49: one too many
     EXPECT_NE(error_of(join(v)).find("t.rad:49:"), std::string::npos) << error_of(join(v));
+}
+
+// read_rad_files: the tables of many bands read on several threads, in the paths' order;
+// of several bad files, the first in that order is the one reported.
+TEST(Rad, ReadManyFilesInOrderFirstErrorInOrder) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(::testing::TempDir()) / "rad_read_many";
+    fs::create_directories(dir);
+    std::vector<std::string> paths;
+    for (int k = 0; k < 12; ++k) {
+        auto lines = with_sky();
+        lines[22] = "SUN " + std::to_string(10 + k) + " 180";  // each file its own
+        paths.push_back((dir / ("band-" + std::to_string(k + 1) + ".rad")).string());
+        std::ofstream(paths.back()) << join(lines);
+    }
+    const std::vector<Rad> rads = read_rad_files(paths, 2);
+    ASSERT_EQ(rads.size(), paths.size());
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        EXPECT_EQ(rads[k], read_rad_file(paths[k]));
+        EXPECT_EQ(rads[k].sky->sun_zenith_deg, 10.0 + static_cast<double>(k));
+    }
+    std::ofstream(paths[4]) << edited(13, "0.5 20000 0.19 1.5", with_sky());
+    std::ofstream(paths[9]) << "garbage\n";
+    for (unsigned threads : {1u, 2u, 4u})
+        EXPECT_EQ(test::data_error_of([&] { read_rad_files(paths, threads); }),
+                  test::data_error_of([&] { read_rad_file(paths[4]); }))
+            << threads << " threads";
+    fs::remove_all(dir);
 }
