@@ -141,7 +141,8 @@ int main(int argc, char** argv) {
         "--tmp keys that match no facet, or facets without a temperature, are an error");
     tool.add_options()("sampling",
                        cli::po::value<std::string>()->default_value("golfball")->value_name("NAME"),
-                       "hemisphere sampling: dirsig, golfball or montecarlo")(
+                       "hemisphere sampling: golfball, montecarlo, dirsig (DIRSIG 3) or proposed "
+                       "(White's proposed model)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", cli::po::value<std::string>()->value_name("N|auto"),
         "secondary hits followed (default auto: as deep as an estimate says the "
