@@ -129,7 +129,7 @@ band_bytes() {
     run -1 cmp -s four.img one.img
 }
 
-@test "trace --sampling dirsig and montecarlo stay near golfball on a Lambertian scene" {
+@test "trace --sampling dirsig, montecarlo and proposed stay near golfball on a Lambertian scene" {
     trace_ok $(inputs) --sampling golfball -o golf.img
     trace_ok $(inputs) --sampling dirsig -o dirsig.img
     trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 256 -o mc.img
@@ -142,6 +142,13 @@ band_bytes() {
     run -0 compare --pixelwise --fail-max 1e-3 dirsig.img golf.img
     run -0 compare --pixelwise --fail-max 1e-3 mc.img golf.img
     run -1 cmp -s mc.img golf.img
+    # White's proposed model samples the primary hit with the golf ball; its 10 deg rule
+    # acts only on glossy facets a hemisphere ray meets, and this scene has none: the
+    # pixels are golfball's, byte for byte (the header records the other command).
+    trace_ok $(inputs) --sampling proposed -o proposed.img
+    run -0 cmp proposed.img golf.img
+    run -2 trace $(inputs) --sampling white -o w.img
+    [[ "$output" == *"unknown strategy 'white' (dirsig, golfball, montecarlo or proposed)"* ]]
 }
 
 @test "trace --golfball-jitter changes golfball's rays, repeatably" {
