@@ -37,7 +37,9 @@ TEST(AtmosSingleScatter, PseudoSphericalBeamAgreesWithTheSolver) {
         EXPECT_NEAR(ss.levels[i].direct_down, p.beam_mu0 * std::exp(-slant[i]), 1e-13);
         for (std::size_t j = 0; j < ss.levels[i].intensity.size(); ++j) {
             const double d = ds.levels[i].intensity[j];
-            if (d > 0) EXPECT_NEAR(ss.levels[i].intensity[j] / d, 1.0, 1e-4) << i << " " << j;
+            if (d > 0) {
+                EXPECT_NEAR(ss.levels[i].intensity[j] / d, 1.0, 1e-4) << i << " " << j;
+            }
         }
     }
 }

@@ -88,7 +88,9 @@ TEST(Quadrature, GaussHalfRangeIsExactAndTheSameWhenAskedAgain) {
         for (std::size_t i = 0; i < mu8.size(); ++i) s8 += w8[i] * std::pow(mu8[i], k);
         for (std::size_t i = 0; i < mu4.size(); ++i) s4 += w4[i] * std::pow(mu4[i], k);
         EXPECT_NEAR(s8, 1.0 / (k + 1), 1e-14) << k;
-        if (k < 8) EXPECT_NEAR(s4, 1.0 / (k + 1), 1e-14) << k;
+        if (k < 8) {
+            EXPECT_NEAR(s4, 1.0 / (k + 1), 1e-14) << k;
+        }
     }
 }
 
