@@ -4,7 +4,6 @@
 // of his section 5.2.3 step 4 instead: "if sunlit, the solar radiance term ... [is]
 // attenuated by the spectral_ems plus alpha if the sun is within 10 degrees of the
 // specular direction. If greater than 10 degrees, ... by only the spectral_ems".
-#include <algorithm>
 #include <cmath>
 
 #include "trace/tracer.hpp"
@@ -15,7 +14,8 @@ using geo::Vec3;
 using radiometry::MaterialOptics;
 
 namespace {
-constexpr double kProposedSunConeDeg = 10;  // White (1996), section 5.2.3 step 4
+// cos(10 deg): the sun's cone about the mirror direction, White (1996), section 5.2.3 step 4.
+const double kProposedSunConeCos = std::cos(10 * kPi / 180);
 }  // namespace
 
 double Tracer::secondary_sun_weight(const MaterialOptics& m, const Vec3& sun_l, const Vec3& wo_l,
@@ -38,8 +38,7 @@ double Tracer::secondary_specular_sun(const MaterialOptics& m, double specular, 
     if (m_c.opt.sampling != Sampling::Proposed)
         return lobe ? specular * m.brdf.lobe_weight(sun_l, wo_l) : 0.0;
     const Vec3 mir = radiometry::mirror(wo_l);
-    const double c = std::clamp(geo::dot(mir, sun_l), -1.0, 1.0);
-    if (std::acos(c) * kDeg > kProposedSunConeDeg) return 0;
+    if (geo::dot(mir, sun_l) < kProposedSunConeCos) return 0;
     return lobe ? specular * m.brdf.lobe_weight(mir, wo_l) : specular * cos_sun / kPi;
 }
 
