@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/numeric.hpp"
+
 namespace sigchain::radiometry {
 namespace {
-
-constexpr double kRadToDeg = 57.29577951308232;
 
 // std::upper_bound(v, x)'s index (the first element > x) in increasing `v`, found from
 // a guess by even spacing and corrected step by step: the same index, without the
@@ -76,8 +76,8 @@ SkyInterpolator::SkyInterpolator(const Atmosphere& atmosphere) : m_atm(atmospher
 void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double> out,
                           bool emitted) const {
     if (m_rings == 0 || !(dir[2] > 0)) return;
-    const double zenith = std::acos(std::min(1.0, dir[2])) * kRadToDeg;
-    double azimuth = std::atan2(dir[0], dir[1]) * kRadToDeg;  // clockwise from north
+    const double zenith = std::acos(std::min(1.0, dir[2])) * kDegPerRad;
+    double azimuth = std::atan2(dir[0], dir[1]) * kDegPerRad;  // clockwise from north
     if (azimuth < 0) azimuth += 360;
 
     // Rings: r0 below, r1 above, f the fraction toward r1; above the first centre the
