@@ -72,6 +72,7 @@ struct Placement {
     std::size_t mesh = 0;
     std::string prefix;
     Matrix3 normal{};
+    Affine transform{};  // object -> scene
 };
 
 }  // namespace
@@ -181,7 +182,7 @@ void Scene::Impl::grow_bounds(const std::vector<float>& v, const Affine& t) {
 
 void Scene::place(std::size_t mesh, const Affine& t, std::string key_prefix) {
     if (mesh >= m_impl->meshes.size()) throw std::out_of_range("Scene::place: no such mesh");
-    Placement p{mesh, std::move(key_prefix), normal_matrix(t)};
+    Placement p{mesh, std::move(key_prefix), normal_matrix(t), t};
     auto id = static_cast<unsigned>(m_impl->placements.size());
     Mesh& target = m_impl->meshes[mesh];
     RTCGeometry direct =
@@ -326,6 +327,63 @@ const FacetOrigin& Scene::origin(std::size_t mesh, std::uint32_t facet) const {
 Bounds Scene::bounds() const { return m_impl->bounds; }
 
 std::size_t Scene::triangle_count() const { return m_impl->placed_triangles; }
+
+namespace {
+
+geo::Vec3 transformed(const Affine& t, const float* v) {
+    geo::Vec3 p;
+    for (int r = 0; r < 3; ++r)
+        p[r] = t[4 * r] * v[0] + t[4 * r + 1] * v[1] + t[4 * r + 2] * v[2] + t[4 * r + 3];
+    return p;
+}
+
+// The plane through a placed triangle (scene frame), its normal's sign fixed (Plane);
+// none for a degenerate triangle.
+std::optional<Plane> triangle_plane(const geo::Vec3& a, const geo::Vec3& b, const geo::Vec3& c) {
+    geo::Vec3 n = geo::cross(geo::sub(b, a), geo::sub(c, a));
+    const double len = geo::norm(n);
+    if (!(len > 0)) return std::nullopt;
+    n = geo::scale(n, 1 / len);
+    const int lead = std::abs(n[0]) > 0 ? 0 : std::abs(n[1]) > 0 ? 1 : 2;
+    if (n[lead] < 0) n = geo::scale(n, -1);
+    return Plane{n, geo::dot(n, a)};
+}
+
+}  // namespace
+
+std::vector<Plane> Scene::facet_planes(const std::function<bool(const FacetAttributes&)>& keep,
+                                       std::size_t limit) const {
+    std::vector<Plane> planes;
+    const Bounds b = bounds();
+    double extent = 1;
+    if (!b.empty())
+        for (int i = 0; i < 3; ++i)
+            extent = std::max({extent, std::abs(b.lower[i]), std::abs(b.upper[i])});
+    const double offset_tol = 1e-6 * extent;
+    for (const Placement& p : m_impl->placements) {
+        const Mesh& mesh = m_impl->meshes[p.mesh];
+        if (mesh.data.triangle_facet.empty()) continue;
+        const auto* index = static_cast<const unsigned*>(rtcGetGeometryBufferData(
+            rtcGetGeometry(mesh.scene, 0), RTC_BUFFER_TYPE_INDEX, 0));
+        const float* v = mesh.data.vertices.data();
+        for (std::size_t t = 0; t < mesh.data.triangle_facet.size(); ++t) {
+            if (!keep(mesh.data.facets[mesh.data.triangle_facet[t]])) continue;
+            const auto plane =
+                triangle_plane(transformed(p.transform, v + 3 * index[3 * t]),
+                               transformed(p.transform, v + 3 * index[3 * t + 1]),
+                               transformed(p.transform, v + 3 * index[3 * t + 2]));
+            if (!plane) continue;
+            const bool known = std::any_of(planes.begin(), planes.end(), [&](const Plane& q) {
+                return geo::dot(q.normal, plane->normal) > 1 - 1e-9 &&
+                       std::abs(q.offset - plane->offset) <= offset_tol;
+            });
+            if (known) continue;
+            planes.push_back(*plane);
+            if (planes.size() > limit) return planes;
+        }
+    }
+    return planes;
+}
 
 Scene load_gdb_scene(const std::string& path, double scale) {
     Scene s;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -77,6 +78,13 @@ std::string facet_key(const std::string& key_prefix, const FacetOrigin& origin);
 // Triangulates a .gdb (quads split along the 0-2 diagonal).
 MeshData mesh_from_gdb(const io::Gdb& gdb);
 
+// A plane of the scene frame: normal . x = offset, the normal a unit vector whose first
+// non-zero component is positive (one plane whichever way its facets face).
+struct Plane {
+    geo::Vec3 normal{};
+    double offset = 0;  // scene units
+};
+
 struct Bounds {
     geo::Vec3 lower{};
     geo::Vec3 upper{};
@@ -123,6 +131,12 @@ public:
     // Axis-aligned bounds of everything placed (empty() if nothing was).
     Bounds bounds() const;
     std::size_t triangle_count() const;  // over placed copies
+    // The distinct planes of the placed triangles whose facet `keep` accepts, in
+    // placement and triangle order, at most `limit` + 1 of them (more than `limit`: the
+    // caller's to refuse or skip). Two triangles share a plane when their normals agree
+    // to 1e-9 in cosine and their offsets to 1e-6 of the scene's extent.
+    std::vector<Plane> facet_planes(const std::function<bool(const FacetAttributes&)>& keep,
+                                    std::size_t limit) const;
 
 private:
     struct Impl;

@@ -301,6 +301,7 @@ std::vector<std::string> skipped(const TraceContext& c) {
                       " (the last is closed with the sun and an unobstructed sky)");
     if (c.bounces == 0) out.push_back("light from neighbouring facets (bounces 0)");
     if (!c.adjacency->active()) out.push_back(c.adjacency->skipped());
+    if (!c.sun_images_skipped.empty()) out.push_back(c.sun_images_skipped);
     return out;
 }
 

@@ -80,6 +80,11 @@ struct RenderOptions {
     // uncertainty of the pixel radiance from RenderInputs::uncertainty (uncertainty.hpp;
     // trace(1) --uncertainty).
     bool uncertainty_layers = false;
+    // golfball and montecarlo: the sun's image in each plane of the scene's mirror
+    // (delta) facets lights every primary hit that sees it, when those facets lie in at
+    // most this many planes (one ray toward each image and a shadow ray from the mirror;
+    // tracer_sun_images.cpp); more planes, or 0: no image (said with --verbose).
+    int sun_image_planes = 16;
 };
 
 // Facet temperatures (kelvin) by facet key ("1-1-1", "2.3/1-1-1"; tmp(5)).

@@ -82,6 +82,7 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
     c.background = make_background(c);
     c.bounce_estimate = estimate_bounces(c);
     c.bounces = opt.bounces == kAutoBounces ? c.bounce_estimate.bounces : opt.bounces;
+    find_mirror_planes(c);
     if (opt.uncertainty_layers) prepare_uncertainty(c);
     return c;
 }

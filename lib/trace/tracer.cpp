@@ -316,6 +316,7 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
     }
     const HemispherePass pass{p, m_index};
     double sky_view = m_strategy->add_hemisphere(*this, m, f, p, wo_l, down);
+    if (!m_c.mirror_planes.empty()) add_sun_images(m, f, p, wo_l, down);
     for (std::size_t k = 0; k < m_c.n; ++k) out[k] += rho[k] * (solar[k] + down[k]);
     double t_k = m_c.emission ? temperature_k(hit) : -1;
     if (m_c.emission) add_emission(m, curve, theta_o, t_k, out);

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "geo/vec3.hpp"
@@ -63,6 +64,11 @@ struct TraceContext {
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;
     Background background;                           // below the horizon (world.hpp)
+    // The planes of the scene's mirror facets whose sun images light primary hits
+    // (RenderOptions::sun_image_planes; find_mirror_planes), and why there are none when
+    // the scene has mirrors, for --verbose ("" otherwise).
+    std::vector<scene::Plane> mirror_planes;
+    std::string sun_images_skipped;
     // With RenderOptions::uncertainty_layers (prepare_uncertainty): the sun moved by
     // +-zenith_step_deg in zenith, and per sample tau1 and tau1(z +- step) / tau1(z)
     // by Beer's law in a plane-parallel column (column_depth), for the solar term's
@@ -73,6 +79,9 @@ struct TraceContext {
 };
 
 TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
+// Fills the context's mirror planes (above) from the scene and its materials
+// (tracer_sun_images.cpp).
+void find_mirror_planes(TraceContext& c);
 // Fills the context's uncertainty fields (above) from its atmosphere (tracer_uncertainty.cpp).
 void prepare_uncertainty(TraceContext& c);
 
@@ -247,6 +256,22 @@ private:
     void split_reflectances(const scene::Hit& hit, const radiometry::MaterialOptics& m,
                             const scene::FacetAttributes& a, int curve, double theta_o_deg,
                             double* rho_d, double* rho_s);
+    // The sun's images in the context's mirror planes seen from p (just above a primary
+    // hit's facet, frame f), weighted as the strategy weights the sun (sun_weight) and
+    // added to `acc`; the split form into the diffuse and specular sums
+    // (tracer_sun_images.cpp).
+    void add_sun_images(const radiometry::MaterialOptics& m, const FacetFrame& f,
+                        const geo::Vec3& p, const geo::Vec3& wo_l, double* acc);
+    void add_sun_images_split(const radiometry::MaterialOptics& m,
+                              const radiometry::ReflectanceSplit& w, const FacetFrame& f,
+                              const geo::Vec3& p, const geo::Vec3& wo_l, double* diffuse,
+                              double* specular);
+    // The image of the sun in `plane` seen from p above a facet of normal n: its
+    // direction into `dir` and its irradiance normal to the beam per sample into `e`
+    // (the sun's, times the mirror's specular reflectance and the mirror point's view of
+    // the sun); false when p does not see it.
+    bool sun_image(const scene::Plane& plane, const geo::Vec3& p, const geo::Vec3& n,
+                   geo::Vec3& dir, double* e);
     // The sun's weight at a secondary hit (wo_l toward the ray's origin, facet frame):
     // (1 - s) cos/pi plus the specular part, secondary_specular_sun (tracer_secondary.cpp).
     double secondary_sun_weight(const radiometry::MaterialOptics& m, const geo::Vec3& sun_l,

@@ -167,6 +167,7 @@ void Tracer::shade_full_split(const scene::Hit& hit, const MaterialOptics& m,
     const HemispherePass pass{p, m_index};
     const double sky_view =
         m_strategy->add_hemisphere_split(*this, m, w, f, p, wo_l, down_d, down_s);
+    if (!m_c.mirror_planes.empty()) add_sun_images_split(m, w, f, p, wo_l, down_d, down_s);
     if (truth && m_c.opt.uncertainty_layers)
         keep_split_sun_rates(m, w, f, wo_l, rho_d, sun_d, rho_s, sun_s, pass, *truth);
     // Reuse the buffers: sun_d becomes the reflected solar radiance, down_d the

@@ -287,3 +287,34 @@ TEST(SceneNormals, MirroringPlacementKeepsNormalsOutward) {
     EXPECT_NEAR(west->distance, 9, 1e-6);
     EXPECT_NEAR(west->normal[0], -1, 1e-12);
 }
+
+// Facet planes: the box's six faces (two triangles each) are six planes; its top and
+// bottom's materials (10, 11) select two; a placed copy turned 90 deg about z and moved
+// has the analytic planes of the turned box; a second copy in the same place adds none;
+// `limit` stops the search one plane past it.
+TEST(ScenePlanes, DistinctPlanesOfTheSelectedFacetsInTheSceneFrame) {
+    scene::Scene s;
+    std::size_t m = s.add_mesh(box_mesh());
+    s.place(m, scene::identity_affine());
+    s.place(m, make_affine({1, 1, 1}, 0, 90, {10, 0, 0}));  // x -> y, y -> -x: x 9..10, y 0..1
+    s.place(m, make_affine({1, 1, 1}, 0, 90, {10, 0, 0}));
+    s.commit();
+    auto all = [](const scene::FacetAttributes&) { return true; };
+    // Untouched box: x = 0, x = 1, y = 0, y = 1, z = 0, z = 2; turned: x = 9, x = 10 (its
+    // y faces), y = 0 (shared with the first box), y = 1 (shared), z = 0, z = 2 (shared).
+    EXPECT_EQ(s.facet_planes(all, 100).size(), 8u);
+    auto flats = s.facet_planes(
+        [](const scene::FacetAttributes& a) { return a.material_id <= 11; }, 100);
+    ASSERT_EQ(flats.size(), 2u);
+    for (const scene::Plane& p : flats) {
+        EXPECT_NEAR(p.normal[2], 1, 1e-12);  // the sign convention: first non-zero component > 0
+        EXPECT_TRUE(std::abs(p.offset) < 1e-9 || std::abs(p.offset - 2) < 1e-6) << p.offset;
+    }
+    // The turned box's x faces (its y = 0 and y = 1 faces, ids 12 and 13) at x = 10 and 9.
+    auto turned = s.facet_planes(
+        [](const scene::FacetAttributes& a) { return a.material_id == 12; }, 100);
+    ASSERT_EQ(turned.size(), 2u);  // y = 0 of the first box, x = 10 of the turned one
+    EXPECT_NEAR(turned[1].normal[0], 1, 1e-12);
+    EXPECT_NEAR(turned[1].offset, 10, 1e-6);
+    EXPECT_EQ(s.facet_planes(all, 3).size(), 4u);
+}
