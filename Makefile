@@ -39,6 +39,7 @@ install: configure
 # The main job: the Olinda scene against the real Landsat-7 image, then the sample
 # files of White (1996) and the training scene (scripts/demo), ending with a summary.
 # Builds only the tools and man pages it needs (the tests with `make test`).
+# DEMO_IMAGES=docs/images also refreshes the README's pictures of its renders.
 demo: deps
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS) >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target tools
