@@ -160,6 +160,11 @@ public:
     // Options parsed but not listed by --help (deprecated aliases kept for old scripts).
     po::options_description_easy_init add_hidden_options() { return m_hidden.add_options(); }
 
+    // The long names of the options added so far (not the hidden ones), in the order
+    // they were added, the shared ones first: a command that declares its options in
+    // groups (trace's rendering and shadow-history options) learns each group's names
+    // from the names its declarations added.
+    std::vector<std::string> option_names() const;
     // Parses argv as run() does (po::error or UsageError on a bad command line), for a
     // command's tests (lib/commands) that check the Job a command line makes.
     po::variables_map parse(int argc, const char* const* argv) const;
