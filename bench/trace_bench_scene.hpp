@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/numeric.hpp"
 #include "scene/scene.hpp"
 
 namespace sigchain::bench {
@@ -16,15 +17,10 @@ namespace sigchain::bench {
 inline constexpr double kTerrainExtentM = 1000;  // terrain side, metres (scene units)
 inline constexpr int kTerrainBlock = 100;        // terrain cells per facet side
 
-inline std::uint64_t splitmix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31);
-}
+// A uniform in [0, 1), advancing `state` by one splitmix64 hash (core/numeric.hpp).
 inline double unit_random(std::uint64_t& state) {
     state = splitmix64(state);
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
+    return unit_interval(state);
 }
 
 // Rolling terrain height (m) at (x, y).

@@ -20,6 +20,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 
 namespace sigchain::atmos {
@@ -223,11 +224,7 @@ double default_visibility(int ihaze) {
 // Relative humidity (percent) of the profile at z, linear in altitude, clamped.
 double profile_rh(const Profile& p, double z) {
     if (p.size() == 0) return 70;
-    if (z <= p.z_km.front()) return p.rh_percent.front();
-    if (z >= p.z_km.back()) return p.rh_percent.back();
-    const auto hi = std::size_t(std::upper_bound(p.z_km.begin(), p.z_km.end(), z) - p.z_km.begin());
-    const double f = (z - p.z_km[hi - 1]) / (p.z_km[hi] - p.z_km[hi - 1]);
-    return p.rh_percent[hi - 1] + f * (p.rh_percent[hi] - p.rh_percent[hi - 1]);
+    return interpolate_clamped(p.z_km, p.rh_percent, z);
 }
 
 // The deck's visibility (km), its model's default for VIS 0; for the desert model
@@ -390,10 +387,8 @@ double AerosolModel::region_extinction055(int region, double z_km) const {
     const auto& b = m_beta055_km1[region];
     if (z_km <= m_z_km.front()) return b.front();
     if (z_km >= m_z_km.back()) return z_km == m_z_km.back() ? b.back() : 0.0;
-    const auto hi =
-        std::size_t(std::upper_bound(m_z_km.begin(), m_z_km.end(), z_km) - m_z_km.begin());
-    const double f = (z_km - m_z_km[hi - 1]) / (m_z_km[hi] - m_z_km[hi - 1]);
-    return log_or_linear(b[hi - 1], b[hi], f);
+    const Bracket at = bracket(m_z_km, z_km);
+    return log_or_linear(b[at.k], b[at.k + 1], at.t);
 }
 
 // Exact integral (km-1 x km) of one region's 0.55-um extinction over [z_lo, z_hi].
@@ -424,10 +419,9 @@ double AerosolModel::region_column055(int region, double z_lo_km, double z_hi_km
 std::array<double, 3> AerosolModel::region_optics(int region, double wavelength_um) const {
     const auto& w = m_wavelength_um;
     const Optics& o = m_optics[region];
-    const double l = std::clamp(wavelength_um, w.front(), w.back());
-    std::size_t hi = std::size_t(std::upper_bound(w.begin(), w.end(), l) - w.begin());
-    hi = std::clamp<std::size_t>(hi, 1, w.size() - 1);
-    const double f = (l - w[hi - 1]) / (w[hi] - w[hi - 1]);
+    const Bracket b = bracket(w, wavelength_um);
+    const std::size_t hi = b.k + 1;
+    const double f = b.t;
     auto lerp = [&](const std::vector<double>& v) { return v[hi - 1] + f * (v[hi] - v[hi - 1]); };
     return {lerp(o.ext), lerp(o.abs), lerp(o.g)};
 }

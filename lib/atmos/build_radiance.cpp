@@ -19,6 +19,7 @@
 #include "atmos/stream_choice.hpp"
 #include "core/error.hpp"
 #include "core/farm.hpp"
+#include "core/numeric.hpp"
 #include "core/parallel.hpp"
 #include "core/text.hpp"
 #include "geo/solar_position.hpp"
@@ -26,8 +27,6 @@
 namespace sigchain::atmos {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 // The options the samples are solved with: the COUPLING terms (rad(5)) describe the
 // atmosphere over a black ground, for trace to add the scene's own ground to the sky;
@@ -130,8 +129,7 @@ void report_column(const ColumnModel& column, const io::Snd& snd, RadianceReport
 std::vector<double> sample_wavenumbers(const io::Snd& snd) {
     std::vector<double> nus;
     for (const io::SndBand& band : snd.bands)
-        for (long s = band.sample_count() - 1; s >= 0; --s)
-            nus.push_back(band.min_wavenumber_cm1 + s * band.increment_cm1);
+        for (long s = band.sample_count() - 1; s >= 0; --s) nus.push_back(band.wavenumber_cm1(s));
     return nus;
 }
 
@@ -344,12 +342,12 @@ io::Rad rad_header(const io::SndBand& band, const io::Snd& snd, const std::vecto
                    double height_km) {
     io::Rad rad;
     const long n = band.sample_count();
-    const double max_nu = band.min_wavenumber_cm1 + (n - 1) * band.increment_cm1;
+    const double max_nu = band.wavenumber_cm1(n - 1);
     rad.sensor_altitude_km = snd.sensor_altitude_km;
     rad.min_wavenumber_cm1 = band.min_wavenumber_cm1;
     rad.max_wavenumber_cm1 = max_nu;
-    rad.min_wavelength_um = 1e4 / max_nu;
-    rad.max_wavelength_um = 1e4 / band.min_wavenumber_cm1;
+    rad.min_wavelength_um = um_from_cm1(max_nu);
+    rad.max_wavelength_um = um_from_cm1(band.min_wavenumber_cm1);
     rad.wavenumber_increment_cm1 = band.increment_cm1;
     rad.min_view_angle_deg = views.front();
     rad.max_view_angle_deg = views.back();
@@ -357,7 +355,7 @@ io::Rad rad_header(const io::SndBand& band, const io::Snd& snd, const std::vecto
     for (double v : views) {
         io::RadView view;
         view.view_angle_deg = v;
-        view.range_km = height_km / std::cos(v * kDeg);
+        view.range_km = height_km / std::cos(v * kRadPerDeg);
         rad.views.push_back(view);
     }
     return rad;
@@ -440,7 +438,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             solar,
                             solved,
                             views,
-                            std::cos(sun.zenith_deg * kDeg),
+                            std::cos(sun.zenith_deg * kRadPerDeg),
                             sun.zenith_deg < 90 && choices.solar,
                             distance_factor,
                             phase_moments(o.streams),

@@ -20,6 +20,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 
 namespace sigchain::atmos {
@@ -91,10 +92,10 @@ std::optional<CloudModel> CloudModel::from_deck(const io::CdkCard2& card2, doubl
 
 double level_value(const std::vector<double>& z, const std::vector<double>& v, double z_km) {
     if (z_km < z.front() || z_km > z.back()) return 0;
-    std::size_t hi = std::size_t(std::upper_bound(z.begin(), z.end(), z_km) - z.begin());
-    if (hi >= z.size()) return v.back();
-    const double f = (z_km - z[hi - 1]) / (z[hi] - z[hi - 1]);
-    const double a = v[hi - 1], b = v[hi];
+    if (!(z_km < z.back())) return v.back();  // the top level (or NaN)
+    const Bracket at = bracket(z, z_km);
+    const double f = at.t;
+    const double a = v[at.k], b = v[at.k + 1];
     return a > 0 && b > 0 ? a * std::pow(b / a, f) : a + f * (b - a);
 }
 
@@ -121,10 +122,9 @@ double level_integral(const std::vector<double>& z, const std::vector<double>& v
 std::array<double, 3> table_optics(const std::vector<double>& wl, const std::vector<double>& ext,
                                    const std::vector<double>& abs, const std::vector<double>& g,
                                    double wavelength_um) {
-    const double l = std::clamp(wavelength_um, wl.front(), wl.back());
-    std::size_t hi = std::size_t(std::upper_bound(wl.begin(), wl.end(), l) - wl.begin());
-    hi = std::clamp<std::size_t>(hi, 1, wl.size() - 1);
-    const double f = (l - wl[hi - 1]) / (wl[hi] - wl[hi - 1]);
+    const Bracket b = bracket(wl, wavelength_um);
+    const std::size_t hi = b.k + 1;
+    const double f = b.t;
     auto lerp = [&](const std::vector<double>& v) { return v[hi - 1] + f * (v[hi] - v[hi - 1]); };
     return {lerp(ext), lerp(abs), lerp(g)};
 }

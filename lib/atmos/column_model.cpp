@@ -10,6 +10,7 @@
 #include "atmos/deck_options.hpp"
 #include "atmos/rayleigh.hpp"
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "core/vector_clones.hpp"
 
@@ -213,7 +214,7 @@ double ColumnModel::scattering_optical_depth(double nu_cm1) const {
 }
 
 std::vector<LayerOptics> ColumnModel::layers_without_gas(double nu_cm1) const {
-    const double wavelength_um = 1e4 / nu_cm1;
+    const double wavelength_um = um_from_cm1(nu_cm1);
     std::array<bool, 4> has{};
     for (int r = 0; m_mie && r < 4; ++r) has[r] = has_mie_phase(r, wavelength_um);
     std::vector<LayerOptics> out(m_profile.size() - 1);

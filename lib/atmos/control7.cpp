@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/numeric.hpp"
 #include "io/rsd.hpp"
 
 namespace sigchain::atmos {
@@ -442,8 +443,8 @@ double time_answer_hours(double value) {
 
 io::CdkSpectral wavelength_to_card4(double start_um, double end_um, int intervals) {
     io::CdkSpectral s;
-    s.v1_cm1 = 1e4 / end_um;
-    s.v2_cm1 = 1e4 / start_um;
+    s.v1_cm1 = cm1_from_um(end_um);
+    s.v2_cm1 = cm1_from_um(start_um);
     double dv = (s.v2_cm1 - s.v1_cm1) / intervals;
     s.dv_cm1 = std::max(5.0, 5.0 * std::round(dv / 5.0));
     return s;

@@ -8,14 +8,13 @@
 #include "atmos/cirrus.hpp"
 #include "atmos/cloud.hpp"
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "geo/solar_position.hpp"
 
 namespace sigchain::atmos {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 std::string run_prefix(std::size_t k, std::size_t runs) {
     return runs > 1 ? "run " + std::to_string(k + 1) + ": " : "";
@@ -89,13 +88,14 @@ double wrap360(double a) {
 // The sun over an observer from the sub-solar point (spherical Earth): zenith is the
 // great-circle distance, azimuth the initial bearing toward it. Longitudes deg west.
 DeckSun subsolar_sun(double lat, double lon_w, double sun_lat, double sun_lon_w) {
-    const double p1 = lat * kDeg, p2 = sun_lat * kDeg;
-    const double dl = (lon_w - sun_lon_w) * kDeg;  // east longitude difference, sun - observer
+    const double p1 = lat * kRadPerDeg, p2 = sun_lat * kRadPerDeg;
+    const double dl =
+        (lon_w - sun_lon_w) * kRadPerDeg;  // east longitude difference, sun - observer
     const double c = std::sin(p1) * std::sin(p2) + std::cos(p1) * std::cos(p2) * std::cos(dl);
     const double az =
         std::atan2(std::sin(dl) * std::cos(p2),
                    std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl));
-    return {std::acos(std::clamp(c, -1.0, 1.0)) / kDeg, wrap360(az / kDeg)};
+    return {std::acos(std::clamp(c, -1.0, 1.0)) / kRadPerDeg, wrap360(az / kRadPerDeg)};
 }
 
 }  // namespace
@@ -192,10 +192,11 @@ std::optional<DeckSun> deck_sun(const io::CdkRun& run, int year, double view_azi
 }
 
 double sun_separation_deg(const DeckSun& a, const DeckSun& b) {
-    const double za = a.zenith_deg * kDeg, zb = b.zenith_deg * kDeg;
-    const double c = std::cos(za) * std::cos(zb) +
-                     std::sin(za) * std::sin(zb) * std::cos((a.azimuth_deg - b.azimuth_deg) * kDeg);
-    return std::acos(std::clamp(c, -1.0, 1.0)) / kDeg;
+    const double za = a.zenith_deg * kRadPerDeg, zb = b.zenith_deg * kRadPerDeg;
+    const double c =
+        std::cos(za) * std::cos(zb) +
+        std::sin(za) * std::sin(zb) * std::cos((a.azimuth_deg - b.azimuth_deg) * kRadPerDeg);
+    return std::acos(std::clamp(c, -1.0, 1.0)) / kRadPerDeg;
 }
 
 }  // namespace sigchain::atmos

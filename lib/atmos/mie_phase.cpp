@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "core/vector_clones.hpp"
 #include "rt/quadrature.hpp"
@@ -17,7 +18,6 @@ namespace sigchain::atmos {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180;
 
 // Interpolates a to b at fraction f: in ln when both are positive (PHASEF).
 double log_lerp(double a, double b, double f) {
@@ -47,14 +47,6 @@ void legendre(double x, std::vector<double>& out) {
     if (out.size() > 1) out[1] = x;
     for (std::size_t k = 2; k < out.size(); ++k)
         out[k] = ((2 * k - 1) * x * out[k - 1] - (k - 1) * out[k - 2]) / k;
-}
-
-// Index of the interval [v[i], v[i+1]] holding x (clamped to the ends) and the fraction.
-std::pair<std::size_t, double> bracket(const std::vector<double>& v, double x) {
-    x = std::clamp(x, v.front(), v.back());
-    std::size_t hi = std::size_t(std::upper_bound(v.begin(), v.end(), x) - v.begin());
-    hi = std::clamp<std::size_t>(hi, 1, v.size() - 1);
-    return {hi - 1, (x - v[hi - 1]) / (v[hi] - v[hi - 1])};
 }
 
 // ln P at the nodes where both ends of each interval are positive (PHASEF's ln-linear
@@ -164,7 +156,7 @@ const MomentNodes& moment_nodes(const std::vector<double>& angle_deg, int nmom, 
     rt::gauss_half_range(gauss_points, nodes, weights);
     m.per = nodes.size();
     for (std::size_t i = 0; i + 1 < angle_deg.size(); ++i) {
-        const double a = angle_deg[i] * kDeg, b = angle_deg[i + 1] * kDeg;
+        const double a = angle_deg[i] * kRadPerDeg, b = angle_deg[i + 1] * kRadPerDeg;
         for (std::size_t q = 0; q < nodes.size(); ++q) {
             const double t = a + (b - a) * nodes[q];
             m.fraction.push_back(nodes[q]);
@@ -224,7 +216,7 @@ TabulatedPhase truncate_forward_peak(const TabulatedPhase& p, double cone_deg, d
 
 double phase_from_moments(const std::vector<double>& chi, double angle_deg) {
     std::vector<double> pk(chi.size());
-    legendre(std::cos(angle_deg * kDeg), pk);
+    legendre(std::cos(angle_deg * kRadPerDeg), pk);
     double s = 0;
     for (std::size_t k = 0; k < chi.size(); ++k) s += (2 * k + 1) * chi[k] * pk[k];
     return s / (4 * kPi);
@@ -274,7 +266,7 @@ TabulatedPhase MiePhaseTable::model(int model, double wavelength_um) const {
 }
 
 std::pair<double, double> MiePhaseTable::wavelength_interval(double wavelength_um) const {
-    const std::size_t i = bracket(m_wavelengths, wavelength_um).first;
+    const std::size_t i = bracket(m_wavelengths, wavelength_um).k;
     return {m_wavelengths[i], m_wavelengths[i + 1]};
 }
 

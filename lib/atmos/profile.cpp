@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 
 namespace sigchain::atmos {
@@ -98,9 +99,9 @@ double interpolate(const std::vector<double>& z, const std::vector<double>& v, d
                    bool logarithmic) {
     if (at <= z.front()) return v.front();
     if (at >= z.back()) return v.back();
-    const auto hi = std::size_t(std::upper_bound(z.begin(), z.end(), at) - z.begin());
-    const std::size_t lo = hi - 1;
-    const double f = (at - z[lo]) / (z[hi] - z[lo]);
+    const Bracket b = bracket(z, at);
+    const std::size_t lo = b.k, hi = lo + 1;
+    const double f = b.t;
     if (logarithmic && v[lo] > 0 && v[hi] > 0) return v[lo] * std::pow(v[hi] / v[lo], f);
     return v[lo] + f * (v[hi] - v[lo]);
 }
@@ -388,10 +389,7 @@ Profile resample(const Profile& p, double z_lo_km, double z_hi_km,
     Profile out;
     out.model = p.model;
     for (double at : levels) {
-        const auto it = std::upper_bound(p.z_km.begin(), p.z_km.end(), at);
-        const std::size_t hi =
-            std::min<std::size_t>(std::max<std::ptrdiff_t>(it - p.z_km.begin(), 1), p.size() - 1);
-        const std::size_t lo = hi - 1;
+        const std::size_t lo = interval_index(p.z_km, at), hi = lo + 1;
         const double f = (at - p.z_km[lo]) / (p.z_km[hi] - p.z_km[lo]);
         const double t = p.t_k[lo] + f * (p.t_k[hi] - p.t_k[lo]);
         const double pr = density_between(p.p_mb[lo], p.p_mb[hi], f);

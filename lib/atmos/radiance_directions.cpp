@@ -5,11 +5,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/numeric.hpp"
+
 namespace sigchain::atmos {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 std::size_t index_of(const std::vector<double>& v, double x) {
     return static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
@@ -31,7 +31,7 @@ struct Pending {
 // solver's azimuth of propagation relative to the beam's).
 struct ViewGeometry {
     double view_azimuth_deg, sun_azimuth_deg;
-    double mu(double v) const { return std::cos(std::abs(v) * kDeg); }
+    double mu(double v) const { return std::cos(std::abs(v) * kRadPerDeg); }
     double phi(double v) const {
         return wrap_degrees(view_azimuth_deg + (v < 0 ? 180.0 : 0.0) - sun_azimuth_deg);
     }
@@ -52,7 +52,7 @@ std::vector<Pending> cell_subsamples(Directions& d, double z0, double z1, double
     std::vector<Pending> subs;
     const int na = da >= 360 && !d.azimuth_means_only ? std::max(n, kRingAzimuths) : n;
     for (int p = 0; p < n; ++p) {
-        const double c0 = std::cos(z0 * kDeg), c1 = std::cos(z1 * kDeg);
+        const double c0 = std::cos(z0 * kRadPerDeg), c1 = std::cos(z1 * kRadPerDeg);
         const double mu = c0 + (c1 - c0) * (p + 0.5) / n;
         for (int q = 0; q < na; ++q) {
             const double a = a0 + da * (q + 0.5) / na;
@@ -79,7 +79,8 @@ std::vector<std::vector<Pending>> add_sky(Directions& d, double sun_azimuth_deg,
             io::RadSkyCell cell;
             cell.zenith_deg = z0 + dz / 2;
             cell.azimuth_deg = a0 + da / 2;
-            cell.solid_angle_sr = (std::cos(z0 * kDeg) - std::cos(z1 * kDeg)) * da * kDeg;
+            cell.solid_angle_sr =
+                (std::cos(z0 * kRadPerDeg) - std::cos(z1 * kRadPerDeg)) * da * kRadPerDeg;
             d.cells.push_back(cell);
             pending.push_back(cell_subsamples(d, z0, z1, a0, da, n, sun_azimuth_deg));
         }
@@ -104,7 +105,7 @@ void add_upwelled(Directions& d, const std::vector<double>& view_angles_deg, dou
 // Where every view, upwelled node and sky subsample lands in the sorted lists.
 void index_directions(Directions& d, const std::vector<double>& view_angles_deg,
                       const ViewGeometry& view, const std::vector<std::vector<Pending>>& pending) {
-    for (double z : d.up_zenith_deg) d.up_mu.push_back(index_of(d.umu, std::cos(z * kDeg)));
+    for (double z : d.up_zenith_deg) d.up_mu.push_back(index_of(d.umu, std::cos(z * kRadPerDeg)));
     for (double a : d.up_azimuth_deg)
         d.up_phi.push_back(index_of(d.phi, wrap_degrees(a - view.sun_azimuth_deg)));
     for (double v : view_angles_deg) {

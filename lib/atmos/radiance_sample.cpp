@@ -10,6 +10,7 @@
 #include "atmos/rayleigh.hpp"
 #include "atmos/single_scatter.hpp"
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "rt/coupling.hpp"
 #include "rt/discrete_ordinates.hpp"
 #include "rt/planck.hpp"
@@ -17,8 +18,6 @@
 namespace sigchain::atmos {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 // The solver's layers (top first) at one wavenumber.
 std::vector<rt::Layer> solver_layers(const std::vector<LayerOptics>& column, int moments) {
@@ -209,7 +208,7 @@ std::vector<double> beam_airmass(const SampleSetup& s, const std::vector<LayerOp
 // scene's) and no emission from space.
 rt::Result solve_emission(const SampleSetup& s, const std::vector<LayerOptics>& c,
                           const rt::Problem& prob, double nu) {
-    const double wavelength = 1e4 / nu;
+    const double wavelength = um_from_cm1(nu);
     const std::size_t sensor_level = s.column.sensor_level();
     std::vector<double> planck;  // every level's
     for (double t : s.column.profile().t_k) planck.push_back(rt::planck_radiance(wavelength, t));
@@ -259,7 +258,7 @@ void read_tables(const SampleSetup& s, const Solutions& sol, const std::vector<L
     const Directions& dirs = s.dirs;
     for (std::size_t v = 0; v < s.views_deg.size(); ++v) {
         io::RadPathSample p;
-        const double mu_v = std::cos(s.views_deg[v] * kDeg);
+        const double mu_v = std::cos(s.views_deg[v] * kRadPerDeg);
         p.transmission = s.column.direct_transmittance(nu, col, 0, s.column.sensor_level(), mu_v);
         p.scattered_radiance = intensity(s, sol.solar, 0, dirs.view_mu[v], dirs.view_phi[v]);
         p.emitted_radiance = intensity(s, sol.thermal_up, 0, dirs.view_mu[v], dirs.view_phi[v]);
@@ -289,7 +288,7 @@ void read_tables(const SampleSetup& s, const Solutions& sol, const std::vector<L
 void read_coupling(const SampleSetup& s, rt::Problem&& prob, const rt::Result& solar,
                    SampleResult& res) {
     std::vector<double> mus;
-    for (double v : s.views_deg) mus.push_back(std::cos(v * kDeg));
+    for (double v : s.views_deg) mus.push_back(std::cos(v * kRadPerDeg));
     const double sensor_tau = prob.utau[0];
     const rt::SurfaceCoupling c = rt::surface_coupling(std::move(prob), sensor_tau, mus);
     res.spherical_albedo = c.spherical_albedo;
@@ -374,7 +373,7 @@ SamplePrep prepare_sample(const SampleSetup& s, double nu) {
     SamplePrep p;
     p.nu = nu;
     p.moments = s.moments;
-    const double wavelength = 1e4 / nu;
+    const double wavelength = um_from_cm1(nu);
     // IPH 2: the Mie functions once for every solve of the sample.
     if (s.column.mie() && !s.mie) p.mie = mie_optics(s.column, wavelength, s.moments);
     p.col = s.column.layers(nu);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 
 namespace sigchain::atmos {
 
@@ -38,7 +39,7 @@ constexpr double kEq30Limit_um = 1.0;
 // follows Bodhaine's full calculation to 0.1 %, so above 1 um eq. 30's value at 1 um
 // is continued with this shape (continuous at 1 um).
 double lowtran_shape(double l_um) {
-    const double nu = 1e4 / l_um;
+    const double nu = cm1_from_um(l_um);
     return nu * nu * nu * nu / (9.38076e18 - 1.08426e9 * nu * nu);
 }
 

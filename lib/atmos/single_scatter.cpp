@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/numeric.hpp"
 #include "rt/quadrature.hpp"
 
 namespace sigchain::atmos {
@@ -12,7 +13,6 @@ namespace sigchain::atmos {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180;
 
 // Legendre polynomials P_0..P_n at x, into out (size n + 1).
 void legendre(double x, std::vector<double>& out) {
@@ -126,7 +126,7 @@ rt::Result single_scattering(const rt::Problem& p) {
             const double s = std::sqrt(std::max(0.0, 1 - mu * mu));
             for (double phi : p.phi_deg) {
                 // Propagation (mu, phi) against the beam's (-mu0, phi0).
-                phases(-mu * mu0 + s * s0 * std::cos((phi - p.beam_phi0_deg) * kDeg));
+                phases(-mu * mu0 + s * s0 * std::cos((phi - p.beam_phi0_deg) * kRadPerDeg));
                 lv.intensity.push_back(scale * path_integral(p, col, t, mu, phase_n));
             }
         }

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/numeric.hpp"
+
 namespace sigchain::atmos {
 
 namespace {
@@ -42,7 +44,7 @@ double exp_between(double a, double b, double f) {
 }  // namespace
 
 double air_refractivity(double p_mb, double t_k) {
-    constexpr double nu = 1e4 / 0.55;  // cm-1
+    constexpr double nu = cm1_from_um(0.55);
     constexpr double a = nu / 1.14e5, b = nu / 6.24e4;
     return (83.42 + 185.08 / (1 - a * a) + 4.11 / (1 - b * b)) * (p_mb * 288.15) /
            (1013.25 * t_k) * 1e-6;

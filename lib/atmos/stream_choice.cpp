@@ -103,9 +103,7 @@ int phase_moments(int streams) { return std::max(streams, kPhaseMoments); }
 
 std::vector<double> probe_wavenumbers(const ColumnModel& column, const io::SndBand& band) {
     const long n = band.sample_count();
-    auto nu = [&](long s) {
-        return band.min_wavenumber_cm1 + static_cast<double>(s) * band.increment_cm1;
-    };
+    auto nu = [&](long s) { return band.wavenumber_cm1(s); };
     std::vector<double> probes{nu((n - 1) / 2)};
     long most = 0;
     double most_tau = -1;

@@ -12,6 +12,7 @@
 #include "atmos/deck_options.hpp"
 #include "atmos/radiance_directions.hpp"
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "geo/solar_position.hpp"
 #include "io/tape7.hpp"
@@ -21,7 +22,6 @@ namespace sigchain::atmos {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 // Angles and altitudes agree when within the 3 decimals LOWTRAN 7's F10.3 fields keep.
 constexpr double kAngleTolerance_deg = 0.01;
 constexpr double kAltitudeTolerance_km = 0.001;
@@ -82,7 +82,7 @@ PathSetup path_setup(const io::Cdk& deck, const io::Snd& snd, const RadianceOpti
 io::CdkSpectral spectral_span(const io::Snd& snd) {
     double lo = 1e300, hi = 0, step = 1e300, half = 0;
     for (const io::SndBand& b : snd.bands) {
-        const double max_nu = b.min_wavenumber_cm1 + (b.sample_count() - 1) * b.increment_cm1;
+        const double max_nu = b.wavenumber_cm1(b.sample_count() - 1);
         lo = std::min(lo, b.min_wavenumber_cm1);
         hi = std::max(hi, max_nu);
         step = std::min(step, b.increment_cm1);
@@ -264,7 +264,7 @@ std::function<double(const io::Tape7Row&)> view_thermal(const Run& r) {
     const double t_k = e->boundary_temperature_k;
     return [t_k](const io::Tape7Row& row) {
         const double ground =
-            rt::planck_radiance(1e4 / row.wavenumber_cm1, t_k) * row.transmittance;
+            rt::planck_radiance(um_from_cm1(row.wavenumber_cm1), t_k) * row.transmittance;
         return std::max(0.0, io::per_micrometre(row.path_thermal, row.wavenumber_cm1) - ground);
     };
 }
@@ -367,17 +367,17 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
         for (const io::T7mSky& cell : list.sky) {
             const double z0 = cell.zenith_deg - list.sky_zenith_step_deg / 2;
             const double z1 = cell.zenith_deg + list.sky_zenith_step_deg / 2;
-            s.cells.push_back(
-                {cell.zenith_deg,
-                 cell.azimuth_deg,
-                 (std::cos(z0 * kDeg) - std::cos(z1 * kDeg)) * list.sky_azimuth_step_deg * kDeg,
-                 {},
-                 {}});
+            s.cells.push_back({cell.zenith_deg,
+                               cell.azimuth_deg,
+                               (std::cos(z0 * kRadPerDeg) - std::cos(z1 * kRadPerDeg)) *
+                                   list.sky_azimuth_step_deg * kRadPerDeg,
+                               {},
+                               {}});
         }
         for (long k = band.sample_count() - 1; k >= 0; --k) {
-            const double nu = band.min_wavenumber_cm1 + k * band.increment_cm1;
+            const double nu = band.wavenumber_cm1(k);
             const Sampler mean{nu, band.increment_cm1 / 2};
-            io::RadSample sample{1e4 / nu, nu, 0, 0};
+            io::RadSample sample{um_from_cm1(nu), nu, 0, 0};
             if (sun && deck.runs.front().card1.iemsct == 2) {  // IEMSCT 1: no sun
                 sample.solar_irradiance = mean(*sun, es);
                 sample.sun_transmission = std::clamp(mean(*sun, tau1), 0.0, 1.0);

@@ -10,12 +10,11 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 
 namespace sigchain::geo {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // One periodic term A cos(B + C * JME) of table A4.2 (A in 1e-8 rad or 1e-8 AU, B rad,
 // C rad per Julian millennium).
@@ -317,8 +316,8 @@ SolarPosition solar_position(const SolarPositionInput& in) {
     const std::span<const Term> l_tables[] = {kL0, kL1, kL2, kL3, kL4, kL5};
     const std::span<const Term> b_tables[] = {kB0, kB1};
     const std::span<const Term> r_tables[] = {kR0, kR1, kR2, kR3, kR4};
-    const double l_deg = wrap_360(earth_value(l_tables, jme) / kDeg);
-    const double b_deg = earth_value(b_tables, jme) / kDeg;
+    const double l_deg = wrap_360(earth_value(l_tables, jme) / kRadPerDeg);
+    const double b_deg = earth_value(b_tables, jme) / kRadPerDeg;
     const double r_au = earth_value(r_tables, jme);
     out.earth_sun_distance_au = r_au;
 
@@ -339,7 +338,7 @@ SolarPosition solar_position(const SolarPositionInput& in) {
     for (const NutationTerm& t : kNutation) {
         double arg = 0;
         for (int j = 0; j < 5; ++j) arg += x[j] * t.y[j];
-        arg *= kDeg;
+        arg *= kRadPerDeg;
         sum_psi += (t.a + t.b * jce) * std::sin(arg);
         sum_eps += (t.c + t.d * jce) * std::cos(arg);
     }
@@ -356,11 +355,11 @@ SolarPosition solar_position(const SolarPositionInput& in) {
         upow *= u;
     }
     const double eps_deg = eps0_arcsec / 3600.0 + delta_eps_deg;
-    const double eps = eps_deg * kDeg;
+    const double eps = eps_deg * kRadPerDeg;
 
     // 3.6-3.7 Aberration correction and apparent sun longitude (eq. 26-27).
     const double delta_tau_deg = -20.4898 / (3600.0 * r_au);
-    const double lambda = (theta_deg + delta_psi_deg + delta_tau_deg) * kDeg;
+    const double lambda = (theta_deg + delta_psi_deg + delta_tau_deg) * kRadPerDeg;
 
     // 3.8 Apparent sidereal time at Greenwich (eq. 28-29).
     const double nu0_deg = wrap_360(280.46061837 + 360.98564736629 * (jd - 2451545.0) +
@@ -368,20 +367,20 @@ SolarPosition solar_position(const SolarPositionInput& in) {
     const double nu_deg = nu0_deg + delta_psi_deg * std::cos(eps);
 
     // 3.9-3.10 Geocentric sun right ascension and declination (eq. 30-31).
-    const double beta = beta_deg * kDeg;
+    const double beta = beta_deg * kRadPerDeg;
     const double alpha_deg =
         wrap_360(std::atan2(std::sin(lambda) * std::cos(eps) - std::tan(beta) * std::sin(eps),
                             std::cos(lambda)) /
-                 kDeg);
+                 kRadPerDeg);
     const double delta = std::asin(std::sin(beta) * std::cos(eps) +
                                    std::cos(beta) * std::sin(eps) * std::sin(lambda));
 
     // 3.11 Observer local hour angle (eq. 32).
-    const double h = wrap_360(nu_deg + in.longitude_east_deg - alpha_deg) * kDeg;
+    const double h = wrap_360(nu_deg + in.longitude_east_deg - alpha_deg) * kRadPerDeg;
 
     // 3.12 Topocentric right ascension and declination (eq. 33-38).
-    const double xi = 8.794 / (3600.0 * r_au) * kDeg;
-    const double phi = in.latitude_deg * kDeg;
+    const double xi = 8.794 / (3600.0 * r_au) * kRadPerDeg;
+    const double phi = in.latitude_deg * kRadPerDeg;
     const double uu = std::atan(0.99664719 * std::tan(phi));
     const double xx = std::cos(uu) + in.elevation_m / 6378140.0 * std::cos(phi);
     const double yy = 0.99664719 * std::sin(uu) + in.elevation_m / 6378140.0 * std::sin(phi);
@@ -392,17 +391,17 @@ SolarPosition solar_position(const SolarPositionInput& in) {
 
     // 3.13 Topocentric local hour angle (eq. 39).
     const double h_prime = h - delta_alpha;
-    out.declination_deg = delta_prime / kDeg;
-    out.hour_angle_deg = h_prime / kDeg;
+    out.declination_deg = delta_prime / kRadPerDeg;
+    out.hour_angle_deg = h_prime / kRadPerDeg;
 
     // 3.14 Topocentric zenith angle (eq. 40-44).
     const double e0_deg = std::asin(std::sin(phi) * std::sin(delta_prime) +
                                     std::cos(phi) * std::cos(delta_prime) * std::cos(h_prime)) /
-                          kDeg;
+                          kRadPerDeg;
     double delta_e_deg = 0;
     if (e0_deg >= -(0.26667 + in.refraction_at_sunrise_deg))  // sun above the horizon
         delta_e_deg = in.pressure_mb / 1010.0 * 283.0 / (273.0 + in.temperature_c) * 1.02 /
-                      (60.0 * std::tan((e0_deg + 10.3 / (e0_deg + 5.11)) * kDeg));
+                      (60.0 * std::tan((e0_deg + 10.3 / (e0_deg + 5.11)) * kRadPerDeg));
     out.zenith_no_refraction_deg = 90.0 - e0_deg;
     out.zenith_deg = 90.0 - (e0_deg + delta_e_deg);
 
@@ -410,7 +409,7 @@ SolarPosition solar_position(const SolarPositionInput& in) {
     const double gamma_deg =
         std::atan2(std::sin(h_prime),
                    std::cos(h_prime) * std::sin(phi) - std::tan(delta_prime) * std::cos(phi)) /
-        kDeg;
+        kRadPerDeg;
     out.azimuth_deg = wrap_360(gamma_deg + 180.0);
     return out;
 }

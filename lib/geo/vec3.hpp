@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/numeric.hpp"
+
 namespace sigchain::geo {
 
 // A std::array, so that readers, Embree wrappers and images share its layout.
@@ -53,8 +55,7 @@ inline Vec3 direction_from_angles(double zenith_rad, double azimuth_rad) {
 
 // The same from angles in degrees (multiplied by pi/180 first).
 inline Vec3 direction_from_degrees(double zenith_deg, double azimuth_deg) {
-    constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-    return direction_from_angles(zenith_deg * kDegToRad, azimuth_deg * kDegToRad);
+    return direction_from_angles(zenith_deg * kRadPerDeg, azimuth_deg * kRadPerDeg);
 }
 
 }  // namespace sigchain::geo

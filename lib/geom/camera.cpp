@@ -5,11 +5,11 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 
 namespace sigchain::geom {
 
 FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file) {
-    constexpr double kDeg = std::numbers::pi / 180.0;
     FrameCamera cam;
     cam.position = adv.camera;
     Vec3 los{adv.target[0] - adv.camera[0], adv.target[1] - adv.camera[1],
@@ -17,7 +17,7 @@ FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file) {
     if (geo::dot(los, los) == 0)
         throw DataError({adv_file, adv.lines.camera}, "camera point equals target point: no line of sight");
     cam.forward = geo::unit(los);
-    double a = adv.azimuth_deg * kDeg;
+    double a = adv.azimuth_deg * kRadPerDeg;
     Vec3 h{-std::sin(a), std::cos(a), 0.0};
     double along = geo::dot(h, cam.forward);
     Vec3 r{h[0] - along * cam.forward[0], h[1] - along * cam.forward[1],
@@ -28,7 +28,7 @@ FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file) {
                                            "the image");
     r = geo::unit(r);
     Vec3 up = geo::cross(r, cam.forward);  // = -(forward x right)
-    double t = adv.twist_deg * kDeg;
+    double t = adv.twist_deg * kRadPerDeg;
     cam.right = geo::unit({std::cos(t) * r[0] + std::sin(t) * up[0],
                            std::cos(t) * r[1] + std::sin(t) * up[1],
                            std::cos(t) * r[2] + std::sin(t) * up[2]});

@@ -8,13 +8,12 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 
 namespace sigchain::geom {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Vec3 axpy(double a, const Vec3& x, const Vec3& y) {
     return {a * x[0] + y[0], a * x[1] + y[1], a * x[2] + y[2]};
@@ -80,7 +79,7 @@ Trajectory Trajectory::straight(const Vec3& start, double speed, double heading_
                                 double roll_deg, double pitch_deg, double t_begin, double t_end,
                                 Jitter jitter) {
     Trajectory t;
-    const double h = heading_deg * kDeg;
+    const double h = heading_deg * kRadPerDeg;
     const Vec3 v{speed * std::sin(h), speed * std::cos(h), 0.0};
     t_end = std::max(t_end, t_begin + 1.0);  // two records with increasing times
     io::TrjRecord a{t_begin, start, roll_deg, pitch_deg, heading_deg, v, 0};
@@ -93,20 +92,13 @@ Trajectory Trajectory::straight(const Vec3& start, double speed, double heading_
 
 namespace {
 
-// A standard normal number from (seed, step, axis): splitmix64 (Steele, Lea & Flood
-// 2014) of the counter, two uniforms, Box-Muller's cosine branch.
+// A standard normal number from (seed, step, axis): splitmix64 of the counter, two
+// uniforms, Box-Muller's cosine branch (core/numeric.hpp).
 double normal_of(std::uint64_t seed, std::uint64_t step, int axis) {
-    const auto mix = [](std::uint64_t x) {
-        x += 0x9e3779b97f4a7c15ULL;
-        x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-        return x ^ (x >> 31);
-    };
-    const std::uint64_t a = mix(mix(seed) ^ (3 * step + static_cast<std::uint64_t>(axis)));
-    const std::uint64_t b = mix(a);
-    const double u1 = (static_cast<double>(a >> 11) + 0.5) * 0x1.0p-53;  // (0, 1)
-    const double u2 = static_cast<double>(b >> 11) * 0x1.0p-53;
-    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
+    const std::uint64_t a =
+        splitmix64(splitmix64(seed) ^ (3 * step + static_cast<std::uint64_t>(axis)));
+    const double u1 = open_unit_interval(a), u2 = unit_interval(splitmix64(a));
+    return box_muller(std::log(u1), u2);
 }
 
 // At most this many walk steps (10^4 s of flight at kWalkStep_s; 240 MB).
@@ -123,7 +115,7 @@ void Trajectory::prepare_walk() {
                         "a random-walk jitter over " + format_number(t_end() - t_begin()) +
                             " s needs more than 10^7 steps of 1 ms");
     m_walk.assign(static_cast<std::size_t>(steps) + 1, Vec3{});
-    const double sd = std::sqrt(kWalkStep_s) * kDeg;
+    const double sd = std::sqrt(kWalkStep_s) * kRadPerDeg;
     for (std::size_t j = 1; j < m_walk.size(); ++j)
         for (int k = 0; k < 3; ++k)
             m_walk[j][k] =
@@ -133,7 +125,7 @@ void Trajectory::prepare_walk() {
 Vec3 Trajectory::jitter_offset_rad(double t) const {
     Vec3 off{};
     for (int k = 0; k < 3; ++k)
-        off[k] = m_jitter.amplitude_deg[k] * kDeg *
+        off[k] = m_jitter.amplitude_deg[k] * kRadPerDeg *
                  std::sin(2 * std::numbers::pi * m_jitter.frequency_hz[k] * t);
     if (m_walk.empty()) return off;
     const double x =
@@ -151,8 +143,8 @@ void Trajectory::prepare() {
     m_attitudes.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const io::TrjRecord& r = m_records[i];
-        m_attitudes[i] =
-            attitude_quaternion(r.roll_deg * kDeg, r.pitch_deg * kDeg, r.yaw_deg * kDeg);
+        m_attitudes[i] = attitude_quaternion(r.roll_deg * kRadPerDeg, r.pitch_deg * kRadPerDeg,
+                                             r.yaw_deg * kRadPerDeg);
         if (r.velocity) {
             m_tangents[i] = *r.velocity;
             continue;
@@ -165,10 +157,8 @@ void Trajectory::prepare() {
 }
 
 Pose Trajectory::pose(double t) const {
-    const auto it = std::upper_bound(m_records.begin(), m_records.end(), t,
-                                     [](double v, const io::TrjRecord& r) { return v < r.time_s; });
-    std::size_t i = static_cast<std::size_t>(it - m_records.begin());
-    i = std::clamp<std::size_t>(i, 1, m_records.size() - 1) - 1;  // interval [i, i + 1]
+    // Interval [i, i + 1]: the first or the last one outside the records.
+    const std::size_t i = interval_index(m_records, t, &io::TrjRecord::time_s);
     const io::TrjRecord &a = m_records[i], &b = m_records[i + 1];
     const double h = b.time_s - a.time_s, s = (t - a.time_s) / h;
     // Cubic Hermite basis (e.g. de Boor, "A practical guide to splines", ch. IV).

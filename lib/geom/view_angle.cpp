@@ -7,12 +7,11 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 
 namespace sigchain::geom {
 
-namespace {
-constexpr double kRad = 180.0 / std::numbers::pi;
-}  // namespace
+namespace {}  // namespace
 
 void AngleAccumulator::add(double v) {
     lo = std::min(lo, v);
@@ -31,14 +30,14 @@ double world_view_angle_deg(double view_angle_deg) {
 Vec3 reference_direction(const FrameCamera& cam) {
     Vec3 h{cam.forward[0], cam.forward[1], 0.0};
     double n = std::hypot(h[0], h[1]);
-    if (n > std::sin(0.01 / kRad)) return {h[0] / n, h[1] / n, 0.0};
+    if (n > std::sin(0.01 / kDegPerRad)) return {h[0] / n, h[1] / n, 0.0};
     Vec3 up{-cam.down[0], -cam.down[1], 0.0};
     return geo::unit(up);
 }
 
 double signed_view_angle_deg(const Vec3& d, const Vec3& ref) {
     Vec3 u = geo::unit(d);
-    double off_nadir = std::acos(std::clamp(-u[2], -1.0, 1.0)) * kRad;
+    double off_nadir = std::acos(std::clamp(-u[2], -1.0, 1.0)) * kDegPerRad;
     double along = u[0] * ref[0] + u[1] * ref[1];
     return along < 0 ? -off_nadir : off_nadir;
 }
@@ -58,7 +57,7 @@ ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& sce
     if (b.empty()) throw DataError({}, "the scene has no facets");
     ViewAngleReport rep;
     Vec3 ref = reference_direction(cam);
-    rep.reference_azimuth_deg = std::fmod(std::atan2(ref[0], ref[1]) * kRad + 360.0, 360.0);
+    rep.reference_azimuth_deg = std::fmod(std::atan2(ref[0], ref[1]) * kDegPerRad + 360.0, 360.0);
 
     AngleAccumulator box;
     for (int i = 0; i < 8; ++i) {

@@ -7,13 +7,12 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/numeric.hpp"
 #include "io/spectral_curve.hpp"
 
 namespace sigchain::io {
 
 namespace {
-
-constexpr double kUmCm = 1e4;  // wavelength (um) = 1e4 / wavenumber (cm-1)
 
 long read_curve_count(LineCursor& c) {
     const char* what = "number of emissivity curves";
@@ -119,7 +118,7 @@ EmsCurve read_curve(LineCursor& c, Ems& ems, long index, long count) {
         std::reverse(curve.wavenumber_cm1.begin(), curve.wavenumber_cm1.end());
         std::reverse(curve.emissivity.begin(), curve.emissivity.end());
     }
-    for (double wn : curve.wavenumber_cm1) curve.wavelength_um.push_back(kUmCm / wn);
+    for (double wn : curve.wavenumber_cm1) curve.wavelength_um.push_back(um_from_cm1(wn));
     return curve;
 }
 
@@ -151,7 +150,7 @@ void write_curve(std::ostream& out, const EmsCurve& curve, EmsLayout layout, std
     out << index << '\n';
     bool exact = curve.wavenumber_cm1.size() == curve.wavelength_um.size();
     for (std::size_t i = 0; i < curve.wavelength_um.size(); ++i) {
-        double wn = exact ? curve.wavenumber_cm1[i] : kUmCm / curve.wavelength_um[i];
+        double wn = exact ? curve.wavenumber_cm1[i] : cm1_from_um(curve.wavelength_um[i]);
         out << format_number(wn) << ' ' << format_number(curve.emissivity[i]) << '\n';
     }
 }

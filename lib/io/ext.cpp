@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/numeric.hpp"
 #include "io/spectral_curve.hpp"
 
 namespace sigchain::io {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 
+#include "core/numeric.hpp"
 #include "core/parallel.hpp"
 #include "io/rad_lines.hpp"
 #include "io/rad_sky.hpp"
@@ -14,7 +15,6 @@ namespace sigchain::io {
 
 namespace {
 
-constexpr double kUmCm = 1e4;  // wavelength (um) = 1e4 / wavenumber (cm-1)
 // build_radiance (DIRSIG) prints 6 decimals: 0.595238 for 1e4/16800 is 6e-7 off.
 constexpr double kWavelengthRelTol = 1e-5;
 constexpr double kGridTol = 1e-3;  // grid points and counts: fraction of an increment
@@ -78,13 +78,13 @@ void check_count(const Header& h, HeaderField count, double min, double max, dou
 }
 
 bool is_reciprocal(double wavelength_um, double wavenumber_cm1) {
-    double want = kUmCm / wavenumber_cm1;
+    double want = um_from_cm1(wavenumber_cm1);
     return !(std::fabs(wavelength_um - want) > kWavelengthRelTol * want);
 }
 
 void check_reciprocal(const SourceLocation& at, std::string_view token, double wavelength_um,
                       double wavenumber_cm1, const char* what) {
-    double want = kUmCm / wavenumber_cm1;
+    double want = um_from_cm1(wavenumber_cm1);
     if (!is_reciprocal(wavelength_um, wavenumber_cm1))
         throw DataError(at, std::string("expected ") + what + " 1e4 / " +
                                 format_number(wavenumber_cm1) + " = " + format_number(want) +

@@ -21,6 +21,10 @@ struct SndBand {
     // floor((max - min) / increment + 1e-6) + 1: max is included when the span is a
     // whole number of increments (snd(5)).
     long sample_count() const;
+    // Sample k's wavenumber (cm-1): min + k * increment.
+    double wavenumber_cm1(long k) const {
+        return min_wavenumber_cm1 + static_cast<double>(k) * increment_cm1;
+    }
     bool operator==(const SndBand&) const = default;
 };
 

@@ -74,14 +74,4 @@ CurveRows read_curve_rows(LineCursor& cursor, const CurveRowSpec& spec,
     return rows;
 }
 
-double interpolate_clamped(const std::vector<double>& x, const std::vector<double>& y, double at) {
-    if (std::isnan(at)) return std::numeric_limits<double>::quiet_NaN();
-    if (at <= x.front()) return y.front();
-    if (at >= x.back()) return y.back();
-    auto hi = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
-    std::size_t lo = hi - 1;
-    double t = (at - x[lo]) / (x[hi] - x[lo]);
-    return y[lo] + t * (y[hi] - y[lo]);
-}
-
 }  // namespace sigchain::io

@@ -1,5 +1,6 @@
-// Shared pieces of the spectral formats (.ems, .ext, .rad): strict bounded numbers,
-// reading "x y" curve rows, and clamped linear interpolation.
+// Shared pieces of the spectral formats (.ems, .ext, .rad): strict bounded numbers and
+// reading "x y" curve rows (their clamped interpolation: interpolate_clamped,
+// core/numeric.hpp).
 #pragma once
 
 #include <string_view>
@@ -41,10 +42,5 @@ struct CurveRows {
 // ("curve 0") goes into messages.
 CurveRows read_curve_rows(LineCursor& cursor, const CurveRowSpec& spec,
                           std::string_view curve_label);
-
-// Linear interpolation of y(x) on a strictly increasing grid `x` (same size as `y`,
-// not empty). Outside [x.front(), x.back()] the end value is returned (clamped, no
-// extrapolation); a NaN `at` gives NaN.
-double interpolate_clamped(const std::vector<double>& x, const std::vector<double>& y, double at);
 
 }  // namespace sigchain::io

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 
 namespace sigchain::landcover {
 
@@ -45,10 +46,10 @@ std::vector<int> cloud_mask(const std::vector<const geo::GeoRaster*>& images,
             dark[r * columns + c] = all_hold(rq.dark, px) ? 1 : 0;
         }
     // Shadow of a cloud at height h: h / tan(elevation) from it, away from the sun.
-    const double deg = std::numbers::pi / 180;
-    const double away = (rq.sun_azimuth_deg + 180) * deg;
+    const double away = (rq.sun_azimuth_deg + 180) * kRadPerDeg;
     const double east = std::sin(away), north = std::cos(away);
-    const double per_m = 1 / std::tan(rq.sun_elevation_deg * deg);  // displacement per m of h
+    const double per_m =
+        1 / std::tan(rq.sun_elevation_deg * kRadPerDeg);  // displacement per m of h
     const double step_h = rq.pixel_m / per_m;  // one pixel of displacement
     std::vector<int> mask = cloud;
     for (double h = rq.min_height_m; h <= rq.max_height_m + 1e-9; h += step_h) {

@@ -9,19 +9,12 @@
 
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/output.hpp"
 
 namespace sigchain::landcover {
 
 namespace {
-
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-    if (at <= x.front()) return y.front();
-    if (at >= x.back()) return y.back();
-    const auto hi = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
-    const double t = (at - x[hi - 1]) / (x[hi] - x[hi - 1]);
-    return y[hi - 1] + t * (y[hi] - y[hi - 1]);
-}
 
 // A spectrum named relative to the materials file's folder, else to the data directory
 // (data/spectra/ holds the published ones, in the source tree and an installed copy).
@@ -36,7 +29,7 @@ std::string spectrum_path(const std::filesystem::path& folder, const std::string
 }  // namespace
 
 double Spectrum::at(double wavelength_um) const {
-    return interpolate(this->wavelength_um, reflectance, wavelength_um);
+    return interpolate_clamped(this->wavelength_um, reflectance, wavelength_um);
 }
 
 Spectrum parse_spectrum(const TextInput& in) {
@@ -120,7 +113,7 @@ std::map<std::string, std::vector<double>> read_scales(const std::string& path,
 }
 
 std::size_t band_of(const io::Snd& snd, double wavelength_um) {
-    const double nu = 1e4 / wavelength_um;  // cm-1
+    const double nu = cm1_from_um(wavelength_um);
     std::size_t best = 0;
     double best_gap = INFINITY;
     for (std::size_t b = 0; b < snd.bands.size(); ++b) {
@@ -156,8 +149,8 @@ void write_material_ems(const std::vector<Material>& materials, const io::Snd& s
         std::set<double> rows;
         const auto own = m.wavelengths_um();
         for (const auto& b : snd.bands) {
-            const double lo = 1e4 / b.max_wavenumber_cm1 - kMarginUm;
-            const double hi = 1e4 / b.min_wavenumber_cm1 + kMarginUm;
+            const double lo = um_from_cm1(b.max_wavenumber_cm1) - kMarginUm;
+            const double hi = um_from_cm1(b.min_wavenumber_cm1) + kMarginUm;
             rows.insert({lo, hi});
             rows.insert(std::lower_bound(own.begin(), own.end(), lo),
                         std::upper_bound(own.begin(), own.end(), hi));

@@ -10,16 +10,13 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
-#include "io/spectral_curve.hpp"
+#include "core/numeric.hpp"
 #include "radiometry/atmosphere_data.hpp"
-#include "radiometry/bracket.hpp"
 
 namespace sigchain::radiometry {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegToRad = kPi / 180;
 // Two files' sun positions agree when within this (deg; atmosphere.hpp).
 constexpr double kSunTolerance_deg = 0.01;
 // Two files' view angles or sky-cell centres agree when within this (deg): the .rad
@@ -167,7 +164,7 @@ void Atmosphere::Data::build_sky_grid(const io::RadSky& sky) {
         d.azimuth_hi_deg[c] = 0.5 * (ac[c] + next);
     }
     for (int r = 1; r < d.rings; ++r)
-        d.ring_cos_edges.push_back(std::cos(d.ring_edges_deg[r] * kDegToRad));
+        d.ring_cos_edges.push_back(std::cos(d.ring_edges_deg[r] * kRadPerDeg));
     d.uniform_azimuth_step_deg = 360.0 / d.columns;
     for (int c = 0; c < d.columns; ++c) {
         double lo = c > 0 ? d.azimuth_hi_deg[c - 1] : d.azimuth_hi_deg.back() - 360;
@@ -227,9 +224,9 @@ SkyCell Atmosphere::Data::merge_sky_cell(const std::vector<io::Rad>& rads, std::
     // a_lo), so that lookup (sky_cell), solid angles and irradiance describe one
     // partition of the hemisphere (the file's values agree when its centres lie
     // midway, as build_radiance and uniform_rad write them).
-    double c_lo = std::cos(cell.zenith_lo_deg * kDegToRad);
-    double c_hi = std::cos(cell.zenith_hi_deg * kDegToRad);
-    cell.solid_angle_sr = (c_lo - c_hi) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
+    double c_lo = std::cos(cell.zenith_lo_deg * kRadPerDeg);
+    double c_hi = std::cos(cell.zenith_hi_deg * kRadPerDeg);
+    cell.solid_angle_sr = (c_lo - c_hi) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kRadPerDeg;
     cell.direction =
         geo::direction_from_degrees(cell.zenith_deg, cell.azimuth_deg);
     for (const auto& rad : rads) {
@@ -240,10 +237,10 @@ SkyCell Atmosphere::Data::merge_sky_cell(const std::vector<io::Rad>& rads, std::
                             src.emitted_radiance.end());
     }
     // Int cos(z) d(omega) over the cell = 0.5 (sin^2 z_hi - sin^2 z_lo) (a_hi - a_lo).
-    double s_hi = std::sin(cell.zenith_hi_deg * kDegToRad);
-    double s_lo = std::sin(cell.zenith_lo_deg * kDegToRad);
-    double projected =
-        0.5 * (s_hi * s_hi - s_lo * s_lo) * (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kDegToRad;
+    double s_hi = std::sin(cell.zenith_hi_deg * kRadPerDeg);
+    double s_lo = std::sin(cell.zenith_lo_deg * kRadPerDeg);
+    double projected = 0.5 * (s_hi * s_hi - s_lo * s_lo) *
+                       (cell.azimuth_hi_deg - cell.azimuth_lo_deg) * kRadPerDeg;
     for (std::size_t k = 0; k < grid.size(); ++k) {
         sky_irradiance[k] += cell.scattered[k] * projected;
         sky_emitted_irradiance[k] += cell.emitted[k] * projected;
@@ -326,8 +323,8 @@ void Atmosphere::path(const geo::Vec3& line_of_sight, double view_angle_deg, std
     // View zenith off nadir and azimuth of the line of sight (clockwise from north).
     const double len = geo::norm(line_of_sight);
     if (!(len > 0)) throw std::invalid_argument("Atmosphere::path: zero line of sight");
-    const double zenith = std::acos(std::clamp(-line_of_sight[2] / len, -1.0, 1.0)) / kDegToRad;
-    double azimuth = std::atan2(line_of_sight[0], line_of_sight[1]) / kDegToRad;
+    const double zenith = std::acos(std::clamp(-line_of_sight[2] / len, -1.0, 1.0)) / kRadPerDeg;
+    double azimuth = std::atan2(line_of_sight[0], line_of_sight[1]) / kRadPerDeg;
     if (azimuth < 0) azimuth += 360;
     const Bracket bz = bracket(d.up_zenith_deg, zenith);
     const std::size_t i = bz.k, i1 = bz.next(d.up_zenith_deg.size());
@@ -364,7 +361,7 @@ void Atmosphere::path(const geo::Vec3& line_of_sight, double view_angle_deg, std
 }
 
 double Atmosphere::range_km(double view_angle_deg) const {
-    return io::interpolate_clamped(m_data->view_angles_deg, m_data->range_km, view_angle_deg);
+    return interpolate_clamped(m_data->view_angles_deg, m_data->range_km, view_angle_deg);
 }
 
 double Atmosphere::min_view_angle_deg() const { return m_data->view_angles_deg.front(); }
@@ -385,7 +382,7 @@ int Atmosphere::sky_cell(const geo::Vec3& dir) const {
     int ring = static_cast<int>(rit - d.ring_cos_edges.begin());
     if (d.columns == 1) return ring;
     double lo = d.azimuth_hi_deg.back() - 360;
-    double azimuth = std::atan2(dir[0], dir[1]) / kDegToRad;  // clockwise from north
+    double azimuth = std::atan2(dir[0], dir[1]) / kRadPerDeg;  // clockwise from north
     while (azimuth < lo) azimuth += 360;
     while (azimuth >= lo + 360) azimuth -= 360;
     int column;

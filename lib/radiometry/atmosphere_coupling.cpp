@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "radiometry/atmosphere_data.hpp"
-#include "radiometry/bracket.hpp"
 
 namespace sigchain::radiometry {
 

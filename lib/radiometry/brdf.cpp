@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core/numeric.hpp"
 #include "radiometry/brdf_table.hpp"
 
 namespace sigchain::radiometry {
@@ -18,7 +19,6 @@ namespace sigchain::radiometry {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDegToRad = kPi / 180;
 // m(theta_o) is tabulated on a uniform grid of u = cos(theta_o) in [0, 1]: m is an even
 // function of theta_o, hence smooth in u at normal incidence, and the grid is densest
 // in angle near grazing, where narrow lobes cross the horizon (step 1/2048 in u is
@@ -93,7 +93,7 @@ struct Brdf::Impl {
 
     // Cone radius (rad) for a viewer at theta_o (rad): linear between the rows.
     double cone_radius(double theta_o_rad) const {
-        double x = std::clamp(theta_o_rad / (15 * kDegToRad), 0.0, 6.0);
+        double x = std::clamp(theta_o_rad / (15 * kRadPerDeg), 0.0, 6.0);
         int i = std::min(static_cast<int>(x), 5);
         double f = x - i;
         return radius_rad[i] + f * (radius_rad[i + 1] - radius_rad[i]);
@@ -294,7 +294,7 @@ Brdf Brdf::cone(double half_angle_deg) {
         cached_lobe({LobeShape::Uniform, {half_angle_deg}}, [&] {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::Uniform;
-            impl->half_angle_rad = half_angle_deg * kDegToRad;
+            impl->half_angle_rad = half_angle_deg * kRadPerDeg;
             impl->cos_half_angle = std::cos(impl->half_angle_rad);
             impl->uniform_density = 1 / (2 * kPi * (1 - impl->cos_half_angle));
             impl->build_table();
@@ -313,7 +313,7 @@ Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg) {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::LinearCone;
             for (int i = 0; i < 7; ++i)
-                impl->radius_rad[i] = std::max(base_radius_deg[i], kMinConeRadiusDeg) * kDegToRad;
+                impl->radius_rad[i] = std::max(base_radius_deg[i], kMinConeRadiusDeg) * kRadPerDeg;
             impl->build_table();
             return std::shared_ptr<const void>(impl);
         }));
@@ -336,7 +336,7 @@ Brdf Brdf::linear_cone(const std::array<double, 7>& base_radius_deg,
 double Brdf::depth_albedo(double cos_theta_o) const {
     if (!m_depth) return 0;
     const double theta = std::acos(std::clamp(cos_theta_o, 0.0, 1.0));
-    const double x = std::clamp(theta / (15 * kDegToRad), 0.0, 6.0);
+    const double x = std::clamp(theta / (15 * kRadPerDeg), 0.0, 6.0);
     const int i = std::min(static_cast<int>(x), 5);
     const double f = x - i;
     const double alpha = (*m_depth)[i] + f * ((*m_depth)[i + 1] - (*m_depth)[i]);
@@ -364,7 +364,7 @@ Brdf Brdf::exponential(double width_deg) {
         cached_lobe({LobeShape::Exponential, {width_deg}}, [&] {
             auto impl = std::make_shared<Impl>();
             impl->shape = LobeShape::Exponential;
-            double k = 1 / (width_deg * kDegToRad);
+            double k = 1 / (width_deg * kRadPerDeg);
             impl->k_per_rad = k;
             // Int_sphere e^(-k alpha) = 2 pi (1 + e^(-k pi)) / (1 + k^2).
             impl->exp_norm = (1 + k * k) / (2 * kPi * (1 + std::exp(-k * kPi)));

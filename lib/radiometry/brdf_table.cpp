@@ -2,12 +2,12 @@
 // the table's albedo, tabulated-CDF importance sampling (brdf_table.hpp, brdf(5)).
 #include "radiometry/brdf_table.hpp"
 
-#include "radiometry/bracket.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "core/numeric.hpp"
 
 namespace sigchain::radiometry {
 

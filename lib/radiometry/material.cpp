@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "io/brdf.hpp"
 #include "io/ext.hpp"
 
@@ -130,13 +131,12 @@ void fall_off_statistics(MaterialOptics& o) {
         return;
     }
     constexpr int kSteps = 900;
-    constexpr double kDegToRad = std::numbers::pi / 180;
     double sum = 0;
     for (int i = 0; i < kSteps; ++i) {
         const double theta = (i + 0.5) * 90.0 / kSteps;
-        sum += fall_off_at(o.fall_off, theta) * std::sin(2 * theta * kDegToRad);
+        sum += fall_off_at(o.fall_off, theta) * std::sin(2 * theta * kRadPerDeg);
     }
-    o.mean_fall_off = sum * (90.0 / kSteps) * kDegToRad;  // Int F sin(2 theta) d(theta)
+    o.mean_fall_off = sum * (90.0 / kSteps) * kRadPerDeg;  // Int F sin(2 theta) d(theta)
 }
 
 // SPECULAR_CURVE (mat(5)): a curve of the entry's .ems, and not with a cone whose depth
@@ -366,21 +366,15 @@ void MaterialOptics::transmittance(double cos_theta, double thickness,
         out[k] = io::transmittance(extinction_per_km[k], d_km, cos_theta);
 }
 
-// z by Box-Muller from two splitmix64-hashed uniforms of (seed, key1, key2) (Steele, Lea
-// & Flood 2014's mix; the constants tell this draw from trace's other random numbers).
+// z by Box-Muller from two splitmix64-hashed uniforms of (seed, key1, key2)
+// (core/numeric.hpp; the constants tell this draw from trace's other random numbers).
 double MaterialOptics::texture_gain(std::uint64_t seed, std::uint64_t key1,
                                     std::uint64_t key2) const {
     if (!gaussian_texture || gaussian_sigma <= 0) return 1;
-    auto mix = [](std::uint64_t z) {
-        z += 0x9e3779b97f4a7c15ULL;
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    };
-    std::uint64_t h = mix(mix(mix(seed ^ 0x7465787475726531ULL) ^ key1) ^ (key2 + 0x632be59bULL));
-    double u1 = static_cast<double>(h >> 11) * 0x1.0p-53;
-    double u2 = static_cast<double>(mix(h) >> 11) * 0x1.0p-53;
-    double z = std::sqrt(-2 * std::log1p(-u1)) * std::cos(2 * std::numbers::pi * u2);
+    const std::uint64_t h = splitmix64(splitmix64(splitmix64(seed ^ 0x7465787475726531ULL) ^ key1) ^
+                                       (key2 + 0x632be59bULL));
+    const double u1 = unit_interval(h), u2 = unit_interval(splitmix64(h));
+    const double z = box_muller(std::log1p(-u1), u2);  // u1 in [0, 1)
     return std::max(0.0, 1 + gaussian_sigma * z);
 }
 

@@ -5,13 +5,10 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/numeric.hpp"
 #include "radiometry/atmosphere.hpp"
 
 namespace sigchain::radiometry {
-
-namespace {
-constexpr double kDegToRad = std::numbers::pi / 180;
-}  // namespace
 
 io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith_deg,
                     double sun_azimuth_deg, double sun_irradiance_at_ground, double sky_radiance,
@@ -25,16 +22,17 @@ io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith
     io::Rad rad;
     rad.sensor_altitude_km = 1;
     rad.min_wavelength_um = wl.front(), rad.max_wavelength_um = wl.back();
-    rad.min_wavenumber_cm1 = 1e4 / wl.back(), rad.max_wavenumber_cm1 = 1e4 / wl.front();
+    rad.min_wavenumber_cm1 = cm1_from_um(wl.back());
+    rad.max_wavenumber_cm1 = cm1_from_um(wl.front());
     rad.wavenumber_increment_cm1 =
         wl.size() > 1 ? (rad.max_wavenumber_cm1 - rad.min_wavenumber_cm1) / (wl.size() - 1) : 0;
     rad.min_view_angle_deg = va.front(), rad.max_view_angle_deg = va.back();
     rad.view_angle_increment_deg = va.size() > 1 ? (va.back() - va.front()) / (va.size() - 1) : 0;
-    for (double w : wl) rad.samples.push_back({w, 1e4 / w, sun_irradiance_at_ground, 1.0});
+    for (double w : wl) rad.samples.push_back({w, cm1_from_um(w), sun_irradiance_at_ground, 1.0});
     for (double a : va) {
         io::RadView v;
         v.view_angle_deg = a;
-        v.range_km = rad.sensor_altitude_km / std::cos(std::min(std::abs(a), 89.0) * kDegToRad);
+        v.range_km = rad.sensor_altitude_km / std::cos(std::min(std::abs(a), 89.0) * kRadPerDeg);
         v.path.assign(wl.size(), io::RadPathSample{tau2, 0.0, path_radiance});
         rad.views.push_back(std::move(v));
     }
@@ -49,8 +47,8 @@ io::Rad uniform_rad(const std::vector<double>& wavelengths_um, double sun_zenith
             cell.azimuth_deg = (c + 0.5) * da;
             // Exact: (cos z_lo - cos z_hi)(a_hi - a_lo).
             cell.solid_angle_sr =
-                (std::cos(r * dz * kDegToRad) - std::cos((r + 1) * dz * kDegToRad)) * da *
-                kDegToRad;
+                (std::cos(r * dz * kRadPerDeg) - std::cos((r + 1) * dz * kRadPerDeg)) * da *
+                kRadPerDeg;
             cell.scattered_radiance.assign(wl.size(), sky_radiance);
             cell.emitted_radiance.assign(wl.size(), 0.0);
             sky.cells.push_back(std::move(cell));

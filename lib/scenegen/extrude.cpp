@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/numeric.hpp"
+
 namespace sigchain::scenegen {
 
 namespace {
@@ -136,12 +138,8 @@ std::vector<std::array<int, 3>> triangulate(const Ring& ring) {
 }
 
 int storeys(std::int64_t feature_id, std::uint64_t seed) {
-    // splitmix64 (Steele, Lea and Flood, "Fast splittable pseudorandom number
-    // generators", OOPSLA 2014): one step from seed ^ id.
-    std::uint64_t z = (seed ^ static_cast<std::uint64_t>(feature_id)) + 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
+    // One step of splitmix64 (core/numeric.hpp) from seed ^ id.
+    const std::uint64_t z = splitmix64(seed ^ static_cast<std::uint64_t>(feature_id));
     return kMinStoreys + static_cast<int>(z % (kMaxStoreys - kMinStoreys + 1));
 }
 

@@ -6,19 +6,13 @@
 #include <cmath>
 #include <memory>
 
+#include "core/numeric.hpp"
 #include "core/output.hpp"
 #include "scenegen/hawkeye_meshes.hpp"
 
 namespace sigchain::scenegen {
 
 namespace m = hawkeye_material;
-
-std::uint64_t SplitMix64::next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-}
 
 double HawkeyeTerrain::gorge_centre_m(double y) const {
     return meander_amplitude_m * std::sin(2 * M_PI * y / meander_wavelength_m + meander_phase);

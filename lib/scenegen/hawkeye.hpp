@@ -19,21 +19,6 @@
 
 namespace sigchain::scenegen {
 
-// A deterministic generator (splitmix64, Steele, Lea & Flood, "Fast splittable
-// pseudorandom number generators", OOPSLA 2014): the same numbers on every platform,
-// unlike the standard library's distributions.
-class SplitMix64 {
-public:
-    explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next();
-    // Uniform in [0, 1) from the top 53 bits.
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    double uniform(double a, double b) { return a + (b - a) * uniform(); }
-
-private:
-    std::uint64_t state_;
-};
-
 // The scene's fixed dimensions (White (1996), section 4.1.1: "1.1 km by 1.1 km with the Genesee River
 // running south to north through the middle", a "200 foot gorge" (61 m; sigchain
 // uses 60 m), "rolling hills, 50 to 75 feet high" (15-23 m; sigchain uses 15-25 m)).

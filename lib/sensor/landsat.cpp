@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "sensor/band.hpp"
 
@@ -128,8 +129,7 @@ double response_area_nm(const std::vector<double>& wl, const std::vector<double>
         const double t = (x - wl[i]) / (wl[i + 1] - wl[i]);
         return value(i) + t * (value(i + 1) - value(i));
     };
-    std::size_t i = std::upper_bound(wl.begin(), wl.end(), a) - wl.begin();
-    i = i == 0 ? 0 : i - 1;
+    std::size_t i = interval_index(wl, a);  // a in [wl.front(), wl.back())
     double sum = 0;
     for (; i + 1 < n && wl[i] < b; ++i) {
         const double lo = std::max(a, wl[i]), hi = std::min(b, wl[i + 1]);
@@ -176,7 +176,7 @@ BandSpectrum band_spectrum(const std::vector<double>& wl, const std::vector<doub
     std::vector<double> nu(count), wl_um(count);
     for (long k = 0; k < count; ++k) {
         nu[k] = s.band.max_wavenumber_cm1 - k * inc;
-        wl_um[k] = 1e4 / nu[k];
+        wl_um[k] = um_from_cm1(nu[k]);
     }
     // sensorize weights sample k by R_k x w_k (w_k its midpoint width in um); R_k = A_k / w_k
     // makes that weight A_k, the response's area over the sample's interval nu_k +- inc/2.

@@ -6,15 +6,15 @@
 #include <numbers>
 #include <sstream>
 
-#include "geo/scene_clock.hpp"
 #include "core/error.hpp"
+#include "core/numeric.hpp"
+#include "geo/scene_clock.hpp"
 
 namespace sigchain::thermal {
 
 namespace {
 
 constexpr double kKelvinOffset = 273.15;
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 std::string hours_str(double h) {
     std::ostringstream s;
@@ -41,11 +41,9 @@ WeatherSample interpolate_weather(const io::Wth& wth, double time_h, const std::
                                                      : hours_str(rows.front().time_h) + " to " +
                                                            hours_str(rows.back().time_h) + " h") +
                                        ") does not cover " + hours_str(time_h) + " h");
-    auto upper = std::upper_bound(rows.begin(), rows.end(), time_h,
-                                  [](double t, const io::WthRow& r) { return t < r.time_h; });
-    std::size_t i1 =
-        std::min<std::size_t>(static_cast<std::size_t>(upper - rows.begin()), rows.size() - 1);
-    std::size_t i0 = i1 > 0 ? i1 - 1 : 0;
+    // The rows around time_h; before the first (within the tolerance) that row alone.
+    const std::size_t i0 = rows.size() > 1 ? interval_index(rows, time_h, &io::WthRow::time_h) : 0;
+    const std::size_t i1 = time_h < rows.front().time_h ? 0 : std::min(i0 + 1, rows.size() - 1);
     const io::WthRow& a = rows[i0];
     const io::WthRow& b = rows[i1];
     double f = b.time_h > a.time_h ? (time_h - a.time_h) / (b.time_h - a.time_h) : 0.0;
@@ -85,7 +83,7 @@ double convection_coefficient(double wind_m_s) { return 5.7 + 3.8 * std::max(win
 
 double air_mass(double zenith_deg) {
     double z = std::min(zenith_deg, 90.0);
-    return 1.0 / (std::cos(z * kDegToRad) + 0.50572 * std::pow(96.07995 - z, -1.6364));
+    return 1.0 / (std::cos(z * kRadPerDeg) + 0.50572 * std::pow(96.07995 - z, -1.6364));
 }
 
 double clear_sky_direct_normal_w_m2(double zenith_deg, double earth_sun_au) {
@@ -97,7 +95,7 @@ double clear_sky_direct_normal_w_m2(double zenith_deg, double earth_sun_au) {
 double clear_sky_diffuse_horizontal_w_m2(double zenith_deg, double earth_sun_au) {
     if (zenith_deg >= 90) return 0;
     return 0.1 * clear_sky_direct_normal_w_m2(zenith_deg, earth_sun_au) *
-           std::cos(zenith_deg * kDegToRad);
+           std::cos(zenith_deg * kRadPerDeg);
 }
 
 namespace {
@@ -114,7 +112,7 @@ EnvironmentStep environment_at(const io::Wth& wth, const std::string& wth_file, 
     const double eps_sky =
         sky_emissivity(clear_sky_emissivity(w.air_k, w.vapour_pressure_hpa), 1 - w.sky_exposure);
     e.sky_longwave_w_m2 = eps_sky * kStefanBoltzmann * std::pow(w.air_k, 4);
-    const double z = sp.zenith_deg * kDegToRad, az = sp.azimuth_deg * kDegToRad;
+    const double z = sp.zenith_deg * kRadPerDeg, az = sp.azimuth_deg * kRadPerDeg;
     e.sun = geo::direction_from_angles(z, az);
     e.sun_up = sp.zenith_deg < 90;
     const double cos_z = std::cos(z);

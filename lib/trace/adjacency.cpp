@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "radiometry/bracket.hpp"
+#include "core/numeric.hpp"
 #include "trace/tracer.hpp"
 
 namespace sigchain::trace {
@@ -130,7 +130,7 @@ void Adjacency::add_path(double view_angle_deg, double* lus) const {
     if (!m_active) return;
     const std::size_t n = m_rho_bar.size();
     const auto& t = m_view_deg;
-    const radiometry::Bracket br = radiometry::bracket(t, view_angle_deg);
+    const Bracket br = bracket(t, view_angle_deg);
     const std::size_t i = br.k, j = br.next(t.size());
     const double f = br.t;
     const double* a = &m_l_adj[i * n];

@@ -8,27 +8,21 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/numeric.hpp"
+
 namespace sigchain::trace {
 
-// splitmix64's output function (Steele, Lea, Flood 2014, "Fast splittable
-// pseudorandom number generators"): a bijective 64-bit mix.
-constexpr std::uint64_t mix64(std::uint64_t z) {
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
 // Uniform in [0, 1) from (seed, row, column, sample, index): each coordinate is
-// folded in through mix64, so neighbouring counters give unrelated numbers.
+// folded in through splitmix64 (core/numeric.hpp), so neighbouring counters give
+// unrelated numbers.
 inline double uniform01(std::uint64_t seed, std::uint64_t row, std::uint64_t column,
                         std::uint64_t sample, std::uint64_t index) {
-    std::uint64_t h = mix64(seed);
-    h = mix64(h ^ row);
-    h = mix64(h ^ (column + 0x632be59bd9b4e019ULL));
-    h = mix64(h ^ (sample + 0x8cb92ba72f3d8dd7ULL));
-    h = mix64(h ^ (index + 0x3c6ef372fe94f82aULL));
-    return static_cast<double>(h >> 11) * 0x1.0p-53;
+    std::uint64_t h = splitmix64(seed);
+    h = splitmix64(h ^ row);
+    h = splitmix64(h ^ (column + 0x632be59bd9b4e019ULL));
+    h = splitmix64(h ^ (sample + 0x8cb92ba72f3d8dd7ULL));
+    h = splitmix64(h ^ (index + 0x3c6ef372fe94f82aULL));
+    return unit_interval(h);
 }
 
 // Offset (row, column) in [0, 1)^2 of primary sample `i` of `n` in a pixel: the unit

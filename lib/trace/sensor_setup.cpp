@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
 #include "io/trj.hpp"
@@ -14,8 +15,6 @@
 namespace sigchain::trace {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The .adv, its path (for the trajectory's folder) and the scene's geodetic origin.
 struct AdvAt {
@@ -91,7 +90,7 @@ std::unique_ptr<Sensor> make_line_scanner(const AdvAt& at) {
     g.detectors = a.detectors_per_scan.value_or(1);
     g.scans = a.rows / g.detectors;
     g.samples = a.columns;
-    g.half_angle_rad = a.scan_half_angle_deg.value() * kDeg;
+    g.half_angle_rad = a.scan_half_angle_deg.value() * kRadPerDeg;
     g.scan_period_s = a.scan_period_s.value();
     // The detector's along-track angle: its pitch seen from the focal length.
     g.ifov_rad = a.pixel_pitch_um * 1e-3 / a.focal_length_mm;

@@ -17,12 +17,13 @@
 #include <cstdio>
 #include <cstring>
 
-#include "geo/scene_clock.hpp"
-#include "geo/solar_position.hpp"
 #include "core/error.hpp"
 #include "core/farm.hpp"
+#include "core/numeric.hpp"
 #include "core/output.hpp"
 #include "core/parallel.hpp"
+#include "geo/scene_clock.hpp"
+#include "geo/solar_position.hpp"
 #include "io/mat.hpp"
 #include "trace/render.hpp"
 #include "trace/sampling.hpp"
@@ -32,7 +33,6 @@ namespace sigchain::trace {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 using geo::Vec3;
 
@@ -221,7 +221,8 @@ std::vector<SunStep> sun_history(const io::Snd& snd, long steps, double step_hou
         const geo::SolarPosition sp = geo::sun_at_wth_hours(io::scene_site(snd), s.time_hours);
         s.zenith_deg = sp.zenith_deg;
         s.azimuth_deg = sp.azimuth_deg;
-        s.direction = geo::direction_from_angles(sp.zenith_deg * kDeg, sp.azimuth_deg * kDeg);
+        s.direction =
+            geo::direction_from_angles(sp.zenith_deg * kRadPerDeg, sp.azimuth_deg * kRadPerDeg);
         s.up = sp.zenith_deg < 90;
         out.push_back(s);
     }
@@ -287,8 +288,7 @@ radiometry::SpectralGrid snd_grid(const io::Snd& snd) {
         const io::SndBand& band = snd.bands[b];
         std::vector<double> wl;
         for (long k = 0; k < band.sample_count(); ++k)
-            wl.push_back(1e4 / (band.min_wavenumber_cm1 +
-                                static_cast<double>(k) * band.increment_cm1));  // um
+            wl.push_back(um_from_cm1(band.wavenumber_cm1(k)));
         std::sort(wl.begin(), wl.end());
         for (double w : wl) {
             g.wavelength_um.push_back(w);

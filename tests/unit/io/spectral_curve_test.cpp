@@ -8,20 +8,6 @@
 using namespace sigchain;
 using namespace sigchain::io;
 
-TEST(SpectralCurve, InterpolateClamped) {
-    std::vector<double> x = {1, 2, 4};
-    std::vector<double> y = {10, 20, 0};
-    EXPECT_EQ(interpolate_clamped(x, y, 1), 10);
-    EXPECT_EQ(interpolate_clamped(x, y, 2), 20);
-    EXPECT_EQ(interpolate_clamped(x, y, 4), 0);
-    EXPECT_DOUBLE_EQ(interpolate_clamped(x, y, 1.5), 15);
-    EXPECT_DOUBLE_EQ(interpolate_clamped(x, y, 3), 10);
-    EXPECT_EQ(interpolate_clamped(x, y, 0), 10);
-    EXPECT_EQ(interpolate_clamped(x, y, 9), 0);
-    EXPECT_EQ(interpolate_clamped({5}, {7}, 1), 7);
-    EXPECT_TRUE(std::isnan(interpolate_clamped(x, y, std::nan(""))));
-}
-
 TEST(SpectralCurve, ParseAtLeast) {
     SourceLocation at{"f", 2};
     EXPECT_EQ(parse_at_least("0", at, "x", 0), 0);
