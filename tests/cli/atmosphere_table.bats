@@ -3,12 +3,10 @@
 # Also requires: build_radiance
 load test_helper
 
-# The script on this build, timed: skipped when it takes more than 30 s (it takes well
-# under a second on the build it was written on: 3 one-sample bands, one view).
+# The script on this build, always run: 3 one-sample bands and one view, 0.5 s on a
+# shared 2-core machine (a slow machine makes the case slow, never skipped).
 table() {
-    local start=$SECONDS
     run -0 --separate-stderr sh "$SIGCHAIN_SOURCE_DIR/scripts/atmosphere-table" "$SIGCHAIN_BIN/.."
-    (( SECONDS - start <= 30 )) || skip "atmosphere-table took $((SECONDS - start)) s"
 }
 
 @test "atmosphere-table: a Markdown table of 3 rows (0.45, 0.55, 0.65 um) and 7 columns" {
