@@ -141,9 +141,14 @@ void write_float(const std::string& path, const Image& image, const WriteOptions
 // green the one between nearest 0.55 um. DataError naming `path` (the preview) when
 // fewer than 3 (or none has a wavelength).
 std::vector<int> true_colour_bands(const Image& image, const std::string& path);
-// An 8-bit RGB preview of those bands (sensorize(1), --preview), stretched linearly
+// The channels of a preview: true_colour_bands' three when the image has them, else
+// one band shown in grey, the shortest by centre wavelength (the first without
+// wavelengths): a thermal or near-infrared sensor's.
+std::vector<int> preview_bands(const Image& image);
+// An 8-bit preview of preview_bands (sensorize(1), --preview): RGB, or one grey
+// channel; each channel stretched linearly
 // from the 2nd percentile (0) to the 98th (255), clipped and rounded: each band on
-// its own, or with `common` one stretch for the three (their values pooled), which
+// its own, or with `common` one stretch for all (their values pooled), which
 // keeps how bright one band is beside another. Where the percentiles coincide, the
 // smallest and largest values; no spread at all gives mid-grey, a NaN pixel 0.
 Image true_colour_preview(const Image& image, const std::string& path, bool common = false);

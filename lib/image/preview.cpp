@@ -1,4 +1,5 @@
-// True-colour previews of multi-band images (sensorize(1), --preview).
+// Previews of multi-band images (sensorize(1), --preview): true colour, or one band in
+// grey.
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -63,10 +64,22 @@ std::vector<int> true_colour_bands(const Image& image, const std::string& path) 
     return {red, green, blue};
 }
 
+std::vector<int> preview_bands(const Image& image) {
+    int visible = 0;
+    for (double w : image.wavelength_um) visible += w >= kVisibleMinUm && w <= kVisibleMaxUm;
+    if (visible >= 3) return true_colour_bands(image, "");
+    if (image.wavelength_um.empty()) return {0};
+    const auto shortest = std::min_element(image.wavelength_um.begin(), image.wavelength_um.end());
+    return {static_cast<int>(shortest - image.wavelength_um.begin())};
+}
+
 Image true_colour_preview(const Image& image, const std::string& path, bool common) {
-    const std::vector<int> bands = true_colour_bands(image, path);
-    Image rgb(image.rows, image.columns, 3);
-    rgb.channel_names = {"R", "G", "B"};
+    if (image.channels < 1) throw DataError({path, 0}, "a preview needs at least one band");
+    const std::vector<int> bands = preview_bands(image);
+    const int n = static_cast<int>(bands.size());
+    Image rgb(image.rows, image.columns, n);
+    rgb.channel_names = n == 3 ? std::vector<std::string>{"R", "G", "B"}
+                               : std::vector<std::string>{"grey"};
     const std::size_t plane = image.plane_size();
     std::pair<double, double> pooled{0, 0};
     if (common) {
@@ -76,7 +89,7 @@ Image true_colour_preview(const Image& image, const std::string& path, bool comm
             all.insert(all.end(), image.data.begin() + b * plane, image.data.begin() + (b + 1) * plane);
         pooled = stretch(all);
     }
-    for (int o = 0; o < 3; ++o) {
+    for (int o = 0; o < n; ++o) {
         const auto first = image.data.begin() + bands[o] * plane;
         const std::vector<float> values(first, first + plane);
         const auto [lo, hi] = common ? pooled : stretch(values);

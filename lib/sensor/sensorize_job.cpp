@@ -232,7 +232,7 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
         out.wavelength_um.push_back(centre_wavelength_um(wavelengths, sens[b].response, widths));
         out.fwhm_um.push_back(fwhm_um(wavelengths, sens[b].response));
     }
-    // The preview is made first: a cube without 3 visible bands then leaves no output.
+    // The preview is made first: a cube it cannot show then leaves no output.
     radiance.wavelength_um = out.wavelength_um;
     const image::Image preview =
         job.preview_path.empty()

@@ -28,6 +28,20 @@ TEST(Preview, RedIsTheLongestVisibleBandBlueTheShortest) {
     EXPECT_THROW(true_colour_bands(Image(1, 1, 3), "p.png"), DataError);  // no wavelengths
 }
 
+TEST(Preview, FewerThanThreeVisibleBandsGiveTheShortestBandInGrey) {
+    // A thermal pair (10.8, 8.6 um): one grey channel, the 8.6 um band, stretched as
+    // every channel is (2nd to 98th percentile); without wavelengths, the first band.
+    EXPECT_EQ(preview_bands(ramp({10.8, 8.6})), (std::vector<int>{1}));
+    EXPECT_EQ(preview_bands(ramp({0.66, 0.86, 0.48, 0.56})), (std::vector<int>{0, 3, 2}));
+    EXPECT_EQ(preview_bands(Image(1, 1, 2)), (std::vector<int>{0}));
+    const Image grey = true_colour_preview(ramp({10.8, 8.6}), "p.png");
+    ASSERT_EQ(grey.channels, 1);
+    EXPECT_EQ(grey.channel_names, (std::vector<std::string>{"grey"}));
+    const Image rgb = true_colour_preview(ramp({0.45, 0.55, 0.65}), "p.png");
+    // The grey channel is the stretched band, as a true-colour channel of the same values.
+    for (std::size_t p = 0; p < grey.plane_size(); ++p) ASSERT_EQ(grey.data[p], rgb.data[p]);
+}
+
 // Over 0..100 the 2nd and 98th percentiles (nearest rank of 101 values) are 2 and 98:
 // value v maps to (v - 2) / 96 * 255, rounded, clipped; so 2 -> 0, 50 -> 128 (127.5
 // rounded half away from zero), 98 -> 255, and every band, whatever its scale, alike.
