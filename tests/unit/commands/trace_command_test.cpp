@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
+#include "command_line.hpp"
 
 namespace sigchain::commands {
 namespace {
@@ -26,13 +26,8 @@ std::vector<std::string> with(std::vector<std::string> base, const std::vector<s
 }
 
 // The command line `args` (after the tool's name) as trace parses it.
-cli::po::variables_map parsed(std::vector<std::string> args) {
-    cli::Cli tool(trace_info());
-    add_trace_options(tool);
-    args.insert(args.begin(), "trace");
-    std::vector<const char*> argv;
-    for (const auto& a : args) argv.push_back(a.c_str());
-    return tool.parse(static_cast<int>(argv.size()), argv.data());
+cli::po::variables_map parsed(const std::vector<std::string>& args) {
+    return testing::parse_line(trace_info(), add_trace_options, args);
 }
 
 trace::TraceJob render_job(const std::vector<std::string>& args) {
@@ -46,18 +41,13 @@ trace::ShadowJob history_job(const std::vector<std::string>& args) {
 
 // The usage error of `args` for the Job that --shadow-history chooses, or "" when none.
 std::string usage_error(const std::vector<std::string>& args) {
-    try {
+    return testing::usage_error_of([&] {
         const auto vm = parsed(args);
         if (vm.count("shadow-history"))
             shadow_job(vm);
         else
             trace_job(vm, cli::Context("trace", -1, false));
-    } catch (const UsageError& e) {
-        return e.what();
-    } catch (const std::exception& e) {  // po::error: a malformed value or unknown option
-        return std::string("po: ") + e.what();
-    }
-    return "";
+    });
 }
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
