@@ -70,6 +70,9 @@ void add_rendering_options(cli::Cli& tool) {
         "background", value<std::string>()->value_name("WHAT"),
         "what rays below the horizon see beyond the scene: mean (of the scene seen "
         "from above; default), none, or a MATERIAL_ID of the .mat")(
+        "sky-lookup", value<std::string>()->value_name("exact|table[:N]"),
+        "how rays leaving the scene read the sky: exact (interpolated; default) or "
+        "table (an N x N table, default 64: faster, approximate)")(
         "rows", value<std::string>()->value_name("A:B"), "render rows A to B-1 only")(
         "truth", value<std::string>()->value_name("FILE"), "also write the truth layers to FILE")(
         "tmp", value<std::string>()->value_name("FILE"), "facet temperatures (.tmp): add emission")(
@@ -179,6 +182,8 @@ void read_rendering_options(const cli::po::variables_map& vm, trace::TraceJob& j
         job.hemisphere_samples = cli::integer(vm, "hemisphere-samples");
     if (vm.count("bounces")) job.bounces = trace::parse_bounces(vm["bounces"].as<std::string>());
     if (vm.count("background")) job.background = vm["background"].as<std::string>();
+    if (vm.count("sky-lookup"))
+        job.sky_table_side = trace::parse_sky_lookup(text(vm, "sky-lookup"));
     if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
     job.tile = cli::tile(vm);
     job.truth_path = text(vm, "truth");

@@ -417,6 +417,7 @@ RenderResult render_streamed(const RenderInputs& inputs, const RenderOptions& op
     res.stats.skipped = skipped(c);
     res.stats.background = c.background.description;
     res.stats.bounces = bounce_report(c);
+    res.stats.sky_lookup = sky_lookup_description(c);
     if (res.stats.sky_samples + res.stats.background_samples == 0)
         res.stats.skipped.push_back("the world beyond the scene for primary rays (none left it)");
     res.stats.seconds =

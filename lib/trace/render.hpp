@@ -70,6 +70,10 @@ struct RenderOptions {
     ConvergenceError convergence_error = ConvergenceError::Relative;
     BackgroundChoice background = BackgroundChoice::Mean;
     long background_material = 0;  // MATERIAL_ID, with BackgroundChoice::Material
+    // --sky-lookup table:N: rays that leave the scene upward read the sky from an N x N
+    // table (radiometry/sky_table.hpp) instead of interpolating it; 0 (exact): they
+    // interpolate (radiometry/sky_interpolation.hpp).
+    int sky_table_side = 0;
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)
     // Ground-sky coupling and adjacency effect (adjacency.hpp; trace(1) RADIOMETRY):
     // on when the .rad has COUPLING terms; the environment's mean reflectance is taken
@@ -120,6 +124,7 @@ struct RenderStats {
     std::vector<std::string> skipped;  // what was not modelled, for --verbose
     std::string background;            // how the background world was made (world.hpp)
     std::string bounces;               // the bounce depth and its estimate, for --verbose
+    std::string sky_lookup;            // how the sky is read (world.hpp), for --verbose
 };
 
 struct RenderResult {

@@ -78,6 +78,7 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
         facet_temperatures(in, c);
     }
     c.sky.emplace(atm);
+    if (opt.sky_table_side > 0) c.sky_table.emplace(atm, opt.sky_table_side, c.emission);
     c.column_depth = atm.column_optical_depth();
     c.background = make_background(c);
     c.bounce_estimate = estimate_bounces(c);

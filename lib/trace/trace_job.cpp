@@ -295,6 +295,7 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
     if (job.bounces) options.bounces = *job.bounces;
     parse_background(job.background, options);
+    options.sky_table_side = job.sky_table_side;
     options.golfball_jitter = job.golfball_jitter;
     options.seed = job.seed;
     options.threads = job.threads;
@@ -325,6 +326,7 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
                   " Mrays/s");
     if (!s.background.empty()) reporter.info(s.background);
     if (!s.bounces.empty()) reporter.info(s.bounces);
+    if (!s.sky_lookup.empty()) reporter.info(s.sky_lookup);
     if (pixels > 0)
         reporter.info(
             format("%.2f", static_cast<double>(s.pixel_samples) / static_cast<double>(pixels)) +

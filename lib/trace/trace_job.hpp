@@ -43,6 +43,7 @@ struct TraceJob {
     bool golfball_jitter = false;            // golfball: each cell's ray at random inside the cell
     std::optional<int> bounces;              // 0 to kMaxBounces; default: RenderOptions's
     std::string background = "mean";        // "mean", "none" or a MATERIAL_ID (world.hpp)
+    int sky_table_side = 0;                  // --sky-lookup table:N; 0: exact (RenderOptions)
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores
     std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
@@ -86,8 +87,13 @@ Sampling parse_sampling(const std::string& name);
 // relative, absolute or rms (--convergence-error); anything else is a UsageError.
 ConvergenceError parse_convergence_error(const std::string& name);
 std::string sampling_name(Sampling sampling);
+
 // "mean", "none" or a MATERIAL_ID (an integer) into options; else UsageError.
 void parse_background(const std::string& text, RenderOptions& options);
+// --sky-lookup: "exact" (0), "table" (kDefaultSkyTableSide) or "table:N" (N, an integer
+// from SkyTable::kMinSide to kMaxSide) as RenderOptions::sky_table_side; else UsageError.
+inline constexpr int kDefaultSkyTableSide = 64;
+int parse_sky_lookup(const std::string& text);
 // "auto" (kAutoBounces) or an integer 0 to kMaxBounces; else UsageError.
 int parse_bounces(const std::string& text);
 // "A:B" with 0 <= A < B (integers) as [A, B); else UsageError naming `option`.

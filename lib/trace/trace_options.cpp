@@ -12,6 +12,7 @@
 #include "core/text.hpp"
 #include "image/image.hpp"
 #include "io/adv.hpp"
+#include "radiometry/sky_table.hpp"
 #include "trace/trace_job.hpp"
 
 namespace sigchain::trace {
@@ -67,6 +68,19 @@ void parse_background(const std::string& text, RenderOptions& options) {
         throw UsageError("--background: expected mean, none or a MATERIAL_ID, not '" + text + "'");
     options.background = BackgroundChoice::Material;
     options.background_material = id;
+}
+
+int parse_sky_lookup(const std::string& text) {
+    using radiometry::SkyTable;
+    if (text == "exact") return 0;
+    if (text == "table") return kDefaultSkyTableSide;
+    long side = 0;
+    if (text.rfind("table:", 0) == 0 && parse_count(std::string_view(text).substr(6), side) &&
+        side >= SkyTable::kMinSide && side <= SkyTable::kMaxSide)
+        return static_cast<int>(side);
+    throw UsageError("--sky-lookup: expected exact, table or table:N (N cells a side, " +
+                     std::to_string(SkyTable::kMinSide) + " to " +
+                     std::to_string(SkyTable::kMaxSide) + "), not '" + text + "'");
 }
 
 std::string sampling_name(Sampling sampling) {

@@ -96,6 +96,9 @@ double Tracer::sun_visibility(const Vec3& p, double* vis) {
 std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, double tnear,
                                         int depth, int transmissions, double* out,
                                         HitTruth* truth) {
+    // A secondary ray that leaves the scene upward reads the sky's table: its cell is
+    // fetched from memory while Embree follows the ray.
+    if (depth > 0 && m_c.sky_table) m_c.sky_table->prefetch(dir);
     auto hit = m_c.in.scene->intersect(origin, dir, tnear, INFINITY);
     if (!hit) {
         if (depth > 0) add_world(origin, dir, out);
@@ -138,7 +141,7 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
 // plane below it (world.hpp), added to `out`.
 void Tracer::add_world(const Vec3& origin, const Vec3& dir, double* out) const {
     if (dir[2] > 0) {
-        m_c.sky->add(dir, 1.0, {out, m_c.n}, m_c.emission);
+        add_sky(m_c, dir, out);
     } else if (background_distance(m_c.background, origin, dir) >= 0) {
         const auto& l = m_c.background.radiance;
         for (std::size_t k = 0; k < m_c.n; ++k) out[k] += l[k];

@@ -10,7 +10,8 @@
 //   horizontal facet; y = z x x.
 // - A ray that leaves the scene sees the world beyond it (world.hpp): above the ENU
 //   horizon the sky (L_ds, plus L_de with emission) interpolated between the .rad's
-//   cells, below it the background plane. A primary ray's miss is the renderer's.
+//   cells (or read from its table: --sky-lookup), below it the background plane. A
+//   primary ray's miss is the renderer's.
 // - Radiance in W cm-2 sr-1 um-1, irradiance W cm-2 um-1, distances in scene units.
 #pragma once
 
@@ -27,6 +28,7 @@
 #include "trace/arena.hpp"
 #include "trace/bounce_estimate.hpp"
 #include "radiometry/sky_interpolation.hpp"
+#include "radiometry/sky_table.hpp"
 #include "trace/render.hpp"
 #include "trace/world.hpp"
 
@@ -60,6 +62,9 @@ struct TraceContext {
     int bounces = 1;                 // opt.bounces, kAutoBounces resolved by the estimate
     BounceEstimate bounce_estimate;  // of the scene (bounce_estimate.hpp)
     std::optional<radiometry::SkyInterpolator> sky;  // the sky between the .rad's cells
+    // With RenderOptions::sky_table_side > 0: that sky tabulated (sky_table.hpp), read
+    // instead of it by add_sky (world.hpp).
+    std::optional<radiometry::SkyTable> sky_table;
     // The column's vertical optical depth per sample (Atmosphere::column_optical_depth;
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;

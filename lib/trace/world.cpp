@@ -122,11 +122,33 @@ double background_distance(const Background& b, const Vec3& origin, const Vec3& 
     return (origin[2] - b.height) / -dir[2];
 }
 
+void add_sky(const TraceContext& c, const Vec3& dir, double* out) {
+    if (c.sky_table)
+        c.sky_table->add(dir, 1.0, {out, c.n});
+    else
+        c.sky->add(dir, 1.0, {out, c.n}, c.emission);
+}
+
+std::string sky_lookup_description(const TraceContext& c) {
+    const std::size_t cells = c.in.atmosphere->sky_cells().size();
+    if (!c.sky_table)
+        return "sky lookup: exact (four-neighbour interpolation between the .rad's " +
+               std::to_string(cells) + " sky cells; --sky-lookup)";
+    const int side = c.sky_table->side();
+    const double kib = 4.0 * side * side * static_cast<double>(cells > 0 ? c.n : 0) / 1024;
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "sky lookup: table %d x %d (the interpolation at each cell's centre, read by "
+                  "nearest cell, at most %.2f deg away; %.0f KiB)",
+                  side, side, c.sky_table->max_cell_radius_rad() * kDeg, kib);
+    return buf;
+}
+
 void effective_sky(const TraceContext& c, const Sensor& sensor, const Vec3& dir, double* out,
                    double* tau2, double* lus, double* lue) {
     const std::size_t n = c.n;
     std::fill(out, out + n, 0.0);
-    c.sky->add(dir, 1.0, {out, n}, c.emission);  // the sky at the ground
+    add_sky(c, dir, out);  // the sky at the ground
     const Vec3 down{dir[0], dir[1], -dir[2]};
     c.in.atmosphere->path(down, sensor.view_angle_deg(down), {tau2, n}, {lus, n}, {lue, n});
     double* path = lus;  // L_us (+ L_ue): the air's path radiance below the sensor

@@ -1,10 +1,12 @@
 // What a ray sees when it leaves the scene (trace(1), THE WORLD BEYOND THE SCENE).
 //
 // - Above the horizon: the downwelled sky of the .rad, interpolated between its cells
-//   (radiometry/sky_interpolation.hpp). A secondary ray takes it as it arrives at the
-//   ground. A primary ray takes the sky as seen at the sensor's altitude (the
-//   "effective sky radiance" of White (1996), section 3.4): the ground's sky less the
-//   path radiance of the air between ground and sensor, over that air's transmittance,
+//   (radiometry/sky_interpolation.hpp), or with --sky-lookup table:N that interpolation
+//   tabulated on N x N cells and read by nearest cell (radiometry/sky_table.hpp). A
+//   secondary ray takes it as it arrives at the ground. A primary ray takes the sky as
+//   seen at the sensor's altitude (the "effective sky radiance" of White (1996),
+//   section 3.4): the ground's sky less the path radiance of the air between ground
+//   and sensor, over that air's transmittance,
 //   L_eff = min(L_0, max(0, L_0 - L_p) / tau2), with tau2 and L_p the .rad's path terms
 //   of the mirrored (downward) line of sight, which crosses the same air at the same
 //   slant; exact for a sensor at the ground (tau2 = 1, L_p = 0).
@@ -58,6 +60,14 @@ void for_each_seen_from_above(const scene::Scene& scene, double x0, double x1, d
 // The distance along `dir` from `origin` to the background plane, or a negative
 // value when the ray does not meet it.
 double background_distance(const Background& b, const geo::Vec3& origin, const geo::Vec3& dir);
+
+// The sky at the ground along `dir` (L_ds, plus L_de with emission; header) added to
+// `out` (the context's n samples): the table when the context has one, else the
+// interpolation. Nothing at or below the horizon.
+void add_sky(const TraceContext& c, const geo::Vec3& dir, double* out);
+// How add_sky reads the sky, for --verbose: "sky lookup: exact (...)" or
+// "sky lookup: table N x N (...)".
+std::string sky_lookup_description(const TraceContext& c);
 
 // The effective sky radiance (header) of a primary ray `dir` (dir[2] > 0) into `out`;
 // tau2, lus and lue are scratch; every buffer holds the context's n samples.
