@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "geo/gdal_dataset.hpp"
+
 namespace sigchain::geo {
 
 Crs crs_from_user(const std::string& text) {
@@ -38,8 +40,7 @@ Crs crs_from_user(const std::string& text) {
 Crs raster_crs(const std::string& path) {
     gdal_init();
     check_sidecars(path);
-    std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(
-        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    const GdalDataset ds = open_dataset(path);
     if (!ds) throw IoError(path + ": cannot open: " + gdal_message());
     return Crs::from_ogr(ds->GetSpatialRef());
 }

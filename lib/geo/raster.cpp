@@ -10,15 +10,11 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "geo/gdal_dataset.hpp"
 
 namespace sigchain::geo {
 
 namespace {
-
-struct DatasetCloser {
-    void operator()(GDALDataset* ds) const { GDALClose(ds); }
-};
-using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
 
 void read_band(GDALDataset& ds, int band, GeoRaster& r, const std::string& path) {
     double* dst = r.values.data() + static_cast<std::size_t>(band) * r.rows * r.columns;
@@ -48,8 +44,7 @@ GeoRaster read_geo_raster(const std::string& path, Bands bands, double use_bytes
                           const char* use) {
     gdal_init();
     check_sidecars(path);
-    Dataset ds(static_cast<GDALDataset*>(
-        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    const GdalDataset ds = open_dataset(path);
     if (!ds) throw IoError(path + ": cannot open the raster: " + gdal_message());
     if (ds->GetRasterCount() < 1) throw DataError({path, 0}, "the raster has no band");
     GeoRaster r;

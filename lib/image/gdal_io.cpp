@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
+#include "geo/gdal_dataset.hpp"
 #include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "image/internal.hpp"
@@ -170,8 +171,7 @@ Image read_gdal(const std::string& path) {
     gdal_init();
     const std::string data_path = envi_data_file(path);
     geo::check_sidecars(data_path);
-    std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
-        data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    const geo::GdalDataset ds = geo::open_dataset(data_path);
     if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
     if (ds->GetRasterCount() < 1) throw DataError({path, 0}, "the image has no bands");
     check_envi_size(*ds, path, data_path);
@@ -206,8 +206,7 @@ Provenance read_provenance(const std::string& path) {
     gdal_init();
     const std::string data_path = envi_data_file(path);
     geo::check_sidecars(data_path);
-    std::unique_ptr<GDALDataset> ds(static_cast<GDALDataset*>(GDALOpenEx(
-        data_path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    const geo::GdalDataset ds = geo::open_dataset(data_path);
     if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
     Provenance p;
     const std::string prefix = "sigchain_";

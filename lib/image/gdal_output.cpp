@@ -215,8 +215,7 @@ std::vector<Move> GdalOutput::finish() {
     if (CPLGetLastErrorType() >= CE_Failure)
         throw IoError(m_target + ": write error: " + failure(errno));
     // Read back what was written: the bytes on disk, or the reason they are not.
-    std::unique_ptr<GDALDataset> back(static_cast<GDALDataset*>(GDALOpenEx(
-        m_temp.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    geo::GdalDataset back = geo::open_dataset(m_temp);
     if (!back) throw IoError(m_target + ": write error: the file written cannot be read back: " +
                              failure(errno));
     verify(*back);

@@ -9,6 +9,7 @@
 
 #include "core/digest.hpp"
 #include "core/output.hpp"
+#include "geo/gdal_dataset.hpp"
 
 namespace sigchain::image {
 
@@ -74,7 +75,7 @@ private:
     TempDir m_folder;
     std::string m_temp;
     long m_columns, m_rows;
-    std::unique_ptr<GDALDataset> m_ds;
+    geo::GdalDataset m_ds;
     std::vector<std::string> m_files;
     std::vector<Written> m_written;  // per band, 0-based
     bool m_exact = true;

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "geo/crs.hpp"
+#include "geo/gdal_dataset.hpp"
 #include "image/gdal_output.hpp"
 
 namespace sigchain::image {
@@ -59,9 +60,7 @@ std::unique_ptr<GdalOutput> stage_geolocation(const std::string& path,
 }
 
 GeolocationArrays read_geolocation(const std::string& path) {
-    gdal_init();
-    std::unique_ptr<GDALDataset> src(static_cast<GDALDataset*>(
-        GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    const geo::GdalDataset src = geo::open_dataset(path);
     if (!src || src->GetRasterCount() != 2)
         throw DataError({path, 0}, "not a geolocation array file (2 bands): " + gdal_message());
     GeolocationArrays a;

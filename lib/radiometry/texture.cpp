@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "geo/crs.hpp"
+#include "geo/gdal_dataset.hpp"
 #include "radiometry/material.hpp"
 
 namespace sigchain::radiometry {
@@ -38,8 +39,8 @@ std::shared_ptr<const TextureMap> read_texture_map(const std::string& path,
                                                    const MaterialOptics& m) {
     geo::gdal_init();
     geo::check_sidecars(path);
-    std::unique_ptr<GDALDataset> ds(
-        static_cast<GDALDataset*>(GDALOpen(path.c_str(), GA_ReadOnly)));
+    // As GDALOpen(GA_ReadOnly) did: GDAL says why a file is not a raster it reads.
+    const geo::GdalDataset ds = geo::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VERBOSE_ERROR);
     if (!ds) texture_error(m, "cannot read TEXTURE_FILE " + path + ": " + geo::gdal_message());
     auto t = std::make_shared<TextureMap>();
     t->file = path;

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
+#include "geo/gdal_dataset.hpp"
 #include "geo/georef.hpp"
 #include "io/check.hpp"
 #include "io/odb.hpp"
@@ -283,10 +284,7 @@ void assemble_mesh(const std::string& path, const LoadOptions& options, SceneSin
 bool is_raster(const std::string& path) {
     geo::gdal_init();
     geo::check_sidecars(path);
-    GDALDatasetH d = GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr,
-                                nullptr, nullptr);
-    if (d) GDALClose(d);
-    return d != nullptr;
+    return geo::open_dataset(path) != nullptr;
 }
 
 // A lone DEM: heights in metres, placed in scene units.

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "geo/crs.hpp"
+#include "geo/gdal_dataset.hpp"
 
 namespace sigchain::scenegen {
 
@@ -16,10 +17,6 @@ namespace {
 
 // The errors in this file name the file without a line: a GeoPackage (SQLite) or other
 // OGR source has no lines. They name the feature (its fid) where there is one.
-
-struct DatasetCloser {
-    void operator()(GDALDataset* ds) const { GDALClose(ds); }
-};
 
 Ring outer_ring(const OGRPolygon& polygon, const std::string& path, std::int64_t fid) {
     if (polygon.getNumInteriorRings() > 0)
@@ -48,9 +45,7 @@ void check_crs(const OGRLayer& layer, const std::string& path, std::string& name
 }  // namespace
 
 Footprints read_footprints(const std::string& path) {
-    geo::gdal_init();
-    std::unique_ptr<GDALDataset, DatasetCloser> ds(static_cast<GDALDataset*>(
-        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    const geo::GdalDataset ds = geo::open_dataset(path, GDAL_OF_VECTOR);
     if (!ds) throw IoError(path + ": " + geo::gdal_message());
     if (ds->GetLayerCount() < 1) throw DataError({path, 0}, "expected a vector layer, found none");
     OGRLayer* layer = ds->GetLayer(0);
