@@ -3,7 +3,8 @@
 # hawkeye scene, error per second of the Monte Carlo estimate, side by side.
 #
 # The scene: data/scenes/hawkeye (seed 4: terrain, ~850 instanced structures, ~3000
-# instanced trees), its oblique camera (oblique.adv, White (1996), section 4.4) cut to
+# instanced trees), its oblique camera (oblique.adv, White (1996), section 4.4; CC_VIEW=nadir
+# its nadir one, nadir.adv) cut to
 # $CC_SIZE pixels on a side as scripts/chart cuts it (same field of view), its .snd and
 # the pipeline's .rad tables (make -C data/scenes/hawkeye: control7, build_radiance).
 # bench/cycles_export (cycles_export.cpp) writes the facets as trace assembles them
@@ -15,6 +16,9 @@
 # trace renders the same files with --sampling montecarlo --bounces 1 --no-adjacency
 # --background none (no ground-sky coupling and no background plane, which Cycles'
 # set-up lacks); its error is taken on the same three band-centre samples of its cube.
+# The row "trace-def" is trace with the set-up flags alone: the sampling a user gets
+# without naming a strategy, samples per pixel or hemisphere samples (the .adv's,
+# or what trace chooses; its -v line is printed under the table).
 #
 # Each renderer's N-sample image is measured against ITS OWN converged reference
 # (trace at $CC_TRACE_REF_SPP, Cycles at $CC_CYCLES_REF_SPP samples per pixel, other
@@ -40,7 +44,9 @@
 # two set-ups are comparable, and for information that of the radiance at the sensor.
 # Without Blender it prints "skipped: blender not found" and exits 0 (BLENDER=PROGRAM
 # names another). Knobs [defaults]: CC_SIZE [128], CC_SPP ["4 16 64"], CC_RUNS [3],
-# CC_THREADS [2], CC_TRACE_REF_SPP [1024], CC_TRACE_REF_HEMI [4] (the reference's
+# CC_THREADS [2], CC_VIEW [oblique], CC_DEFAULT [1] (0: no trace-def row),
+# CC_DEFAULT_FLAGS [""] (flags added to the trace-def row: a candidate default measured),
+# CC_TRACE_REF_SPP [1024], CC_TRACE_REF_HEMI [4] (the reference's
 # --hemisphere-samples), CC_CYCLES_REF_SPP [1024], CC_HEMI ["1 64"] (trace's
 # --hemisphere-samples rows), CC_WORK [BUILD/cycles_compare] (work files, kept; the
 # references are reused by a rerun of the same size and samples: remove them after a
@@ -65,39 +71,49 @@ trace_ref_spp="${CC_TRACE_REF_SPP:-1024}"
 cycles_ref_spp="${CC_CYCLES_REF_SPP:-1024}"
 trace_ref_hemi="${CC_TRACE_REF_HEMI:-4}"
 hemis="${CC_HEMI:-1 64}"
-work="${CC_WORK:-$build/cycles_compare}"
+view="${CC_VIEW:-oblique}"
+default_row="${CC_DEFAULT:-1}"
+work="${CC_WORK:-$build/cycles_compare}/$view"
 mkdir -p "$work/export"
 work="$(cd "$work" && pwd)"
 H="$top/data/scenes/hawkeye"
 stats() { python3 "$here/cycles_stats.py" "$@"; }
 now() { date +%s.%N; }
 
-# The oblique camera with its longer side cut to $size pixels and the pixel pitch
+# The camera with its longer side cut to $size pixels and the pixel pitch
 # scaled by the same factor (scripts/chart's shrink).
 awk -v size="$size" '
     !/^[ \t]*(#|$)/ && !/=/ { if (++k == 5) { r = $1; c = $2; m = (r > c ? r : c)
         f = (m > size ? m / size : 1); print int(r / f + 0.5), int(c / f + 0.5); next } }
     /^[ \t]*pixel_pitch_um[ \t]*=/ { split($0, a, "="); print "pixel_pitch_um = " (a[2] + 0) * f; next }
-    { print }' "$H/oblique.adv" > "$work/oblique.adv"
+    { print }' "$H/$view.adv" > "$work/view.adv"
 out="$work/out"
 rads="$out/hawkeye-1.rad $out/hawkeye-2.rad $out/hawkeye-3.rad"
 # shellcheck disable=SC2086
-make -s -C "$H" VIEW=oblique ADV="$work/oblique.adv" OUT="$out" SIGCHAIN_BIN="$bin" \
+make -s -C "$H" VIEW="$view" ADV="$work/view.adv" OUT="$out" SIGCHAIN_BIN="$bin" \
     $rads "$out/hawkeye.snd" >&2
 odb="$work/scene-4/hawkeye.odb"
 # shellcheck disable=SC2086
-"$export_bin" "$work/oblique.adv" "$odb" "$H/hawkeye.mat" $rads "$work/export" >&2
+"$export_bin" "$work/view.adv" "$odb" "$H/hawkeye.mat" $rads "$work/export" >&2
 bands=$(awk '$1 == "cube_bands" { print $2 "," $3 "," $4 }' "$work/export/scene.txt")
 
 # run_trace SPP HEMI SEED OUT [EXTRA...] -> "render_seconds total_seconds"
 run_trace() {
     spp=$1 hemi=$2 seed=$3 img=$4
     shift 4
+    run_trace_with "$seed" "$img" --sampling montecarlo --samples-per-pixel "$spp" \
+        --hemisphere-samples "$hemi" "$@"
+}
+
+# run_trace_with SEED OUT [FLAGS...]: trace with the set-up flags and FLAGS (the
+# sampling trace chooses when FLAGS name none) -> "render_seconds total_seconds"
+run_trace_with() {
+    seed=$1 img=$2
+    shift 2
     t0=$(now)
     # shellcheck disable=SC2086
-    (cd "$H" && "$bin/trace" -v --sampling montecarlo --bounces 1 --no-adjacency \
-        --background none --samples-per-pixel "$spp" --hemisphere-samples "$hemi" \
-        --seed "$seed" --threads "$threads" "$@" "$work/oblique.adv" "$out/hawkeye.snd" \
+    (cd "$H" && "$bin/trace" -v --bounces 1 --no-adjacency --background none \
+        --seed "$seed" --threads "$threads" "$@" "$work/view.adv" "$out/hawkeye.snd" \
         "$odb" hawkeye.mat $rads -o "$img") 2> "$work/trace.log" ||
         { cat "$work/trace.log" >&2; exit 1; }
     t1=$(now)
@@ -139,6 +155,13 @@ while [ "$i" -lt "$runs" ]; do
         echo "== run $i: cycles $n spp ==" >&2
         echo "cycles $n $(run_cycles "$n" 0 "$work/cycles_$n.raw")" >> "$work/times.txt"
     done
+    if [ "$default_row" = 1 ]; then
+        echo "== run $i: trace with its default sampling ==" >&2
+        # shellcheck disable=SC2086
+        echo "trace-def 0 $(run_trace_with 1 "$work/trace_default.img" ${CC_DEFAULT_FLAGS:-})" \
+            >> "$work/times.txt"
+        grep -m 1 'per pixel' "$work/trace.log" > "$work/default_sampling.txt" || :
+    fi
 done
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
@@ -155,8 +178,23 @@ for n in $spps; do
             $1, $2, $3, $4, $5, 100 * $6, 1 / ($6 * $6 * $3) }'
     done
 done
+if [ "$default_row" = 1 ]; then
+    e=$(stats error "$work/trace_default.img" "$tref.img" "$bands")
+    r=$(awk '$1 == "trace-def" { print $3 }' "$work/times.txt" | median)
+    t=$(awk '$1 == "trace-def" { print $4 }' "$work/times.txt" | median)
+    echo "trace-def - $r $t $e" | awk '{ printf "%-10s %5s %10.3f %10.3f %10.4g %8.3f%% %10.4g\n",
+        $1, $2, $3, $4, $5, 100 * $6, 1 / ($6 * $6 * $3) }'
+    # Its efficiency against Cycles' at each N (the same measure, 1 / (rel_rms^2 s)).
+    for n in $spps; do
+        ec=$(stats error "$work/cycles_$n.raw" "$cref.raw" - | awk '{ print $2 }')
+        rc=$(awk -v n="$n" '$1 == "cycles" && $2 == n { print $3 }' "$work/times.txt" | median)
+        echo "$(echo "$e" | awk '{ print $2 }') $r $ec $rc $n" | awk '{ printf "trace-def / cycles %d spp: %.2fx the error per second\n",
+            $5, ($3 * $3 * $4) / ($1 * $1 * $2) }'
+    done
+    echo "trace-def's sampling: $(cat "$work/default_sampling.txt" 2>/dev/null)"
+fi
 ratio=$(stats ratio "$tref.truth.img" "$cref.raw" hawkeye-1,hawkeye-2,hawkeye-3)
 echo "converged mean surface-leaving radiance, trace / Cycles (bands 1, 2, 3, all): $ratio"
 echo "converged mean radiance at the sensor (trace's path terms included): $(stats sensor "$tref.img" "$bands" "$cref.raw")"
-echo "($runs runs each, alternating; medians; ${size}-pixel oblique hawkeye view; $threads threads;"
+echo "($runs runs each, alternating; medians; ${size}-pixel $view hawkeye view; $threads threads;"
 echo " errors against each renderer's own reference: trace $trace_ref_spp spp x $trace_ref_hemi, Cycles $cycles_ref_spp spp)"

@@ -60,8 +60,9 @@ void add_rendering_options(cli::Cli& tool) {
         "--tmp keys that match no facet, or facets without a temperature, are an error");
     tool.add_options()("sampling",
                        value<std::string>()->default_value("golfball")->value_name("NAME"),
-                       "hemisphere sampling: golfball, montecarlo, dirsig (DIRSIG 3) or proposed "
-                       "(White's proposed model)")(
+                       "hemisphere sampling: golfball, montecarlo, dirsig (DIRSIG 3), proposed "
+                       "(White's proposed model) or auto (montecarlo, samples until 3 % "
+                       "relative error per pixel)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", value<std::string>()->value_name("N|auto"),
         "secondary hits followed (default auto: as deep as an estimate says the "
@@ -105,6 +106,9 @@ void add_rendering_options(cli::Cli& tool) {
     tool.add_number("hemisphere-samples", "N", cli::integers(1, 1000000),
                     "montecarlo: rays per hit; dirsig: diffuse pattern size (1-1000000; "
                     "default 64)");
+    tool.add_number("sun-images", "N", cli::integers(0, 1000),
+                    "golfball, montecarlo: trace the sun's image in mirror facets lying in at "
+                    "most N planes (0-1000; default 16; 0: none)");
     tool.add_number("adjacency-radius", "M", cli::positive(1e7),
                     "radius of the environment whose mean reflectance couples (> 0; "
                     "default 1000 m)");
@@ -175,13 +179,18 @@ std::string text(const cli::po::variables_map& vm, const char* name) {
 // The rendering options of trace_job: sampling, the depth of the paths, the outputs'
 // extras (truth, layers, units, CRS).
 void read_rendering_options(const cli::po::variables_map& vm, trace::TraceJob& job) {
-    job.sampling = trace::parse_sampling(vm["sampling"].as<std::string>());
+    if (text(vm, "sampling") == "auto")
+        job.accuracy_sampling = true;
+    else
+        job.sampling = trace::parse_sampling(text(vm, "sampling"));
     if (vm.count("samples-per-pixel"))
         job.samples_per_pixel = cli::integer(vm, "samples-per-pixel");
     if (vm.count("hemisphere-samples"))
         job.hemisphere_samples = cli::integer(vm, "hemisphere-samples");
     if (vm.count("bounces")) job.bounces = trace::parse_bounces(vm["bounces"].as<std::string>());
     if (vm.count("background")) job.background = vm["background"].as<std::string>();
+    if (vm.count("sun-images"))
+        job.sun_image_planes = static_cast<int>(cli::integer(vm, "sun-images"));
     if (vm.count("sky-lookup"))
         job.sky_table_side = trace::parse_sky_lookup(text(vm, "sky-lookup"));
     if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());

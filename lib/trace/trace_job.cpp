@@ -287,13 +287,35 @@ Temperatures read_temperatures(const TraceJob& job, const radiometry::SpectralGr
     return temperatures;
 }
 
+// The samples per pixel and the strategy, for -v: what was named, or what trace chose.
+std::string sampling_report(const TraceJob& job, const RenderOptions& o) {
+    const std::string count =
+        o.convergence_min > 0 ? std::to_string(o.convergence_min) + " to " +
+                                    std::to_string(o.convergence_max) + " sample(s) per pixel"
+                              : std::to_string(o.samples_per_pixel) + " sample(s) per pixel";
+    if (!sampling_by_accuracy(job))
+        return (job.convergence ? "--convergence " : "") + count + ", " +
+               sampling_name(o.sampling) + " sampling";
+    char threshold[32];
+    std::snprintf(threshold, sizeof threshold, "%g", 100 * o.convergence_threshold);
+    return count + ", montecarlo sampling with 1 hemisphere ray per sample, chosen by "
+           "accuracy (--sampling auto): samples added until the relative standard error of "
+           "each pixel is under " + std::string(threshold) + " % in every band";
+}
+
 RenderOptions render_options(const TraceJob& job, const Setup& st) {
     RenderOptions options;
     options.sampling = job.sampling;
     options.samples_per_pixel = job.samples_per_pixel.value_or(st.adv.samples_per_pixel);
     if (job.hemisphere_samples) options.hemisphere_samples = *job.hemisphere_samples;
+    const bool by_accuracy = sampling_by_accuracy(job);
+    if (by_accuracy) {
+        options.sampling = Sampling::MonteCarlo;
+        options.hemisphere_samples = 1;
+    }
     if (job.max_transmissions) options.max_transmissions = *job.max_transmissions;
     if (job.bounces) options.bounces = *job.bounces;
+    if (job.sun_image_planes) options.sun_image_planes = *job.sun_image_planes;
     parse_background(job.background, options);
     options.sky_table_side = job.sky_table_side;
     options.golfball_jitter = job.golfball_jitter;
@@ -304,11 +326,12 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     options.truth = !job.truth_path.empty();
     options.sampling_layers = options.truth && (job.standard_error || job.convergence);
     options.uncertainty_layers = options.truth && !job.uncertainty_path.empty();
-    if (job.convergence) {
-        options.convergence_min = job.convergence->min;
-        options.convergence_max = job.convergence->max;
-        options.convergence_threshold = job.convergence->threshold;
-        options.convergence_error = job.convergence->error;
+    if (job.convergence || by_accuracy) {
+        const Convergence& c = by_accuracy ? kAccuracySampling.convergence : *job.convergence;
+        options.convergence_min = c.min;
+        options.convergence_max = c.max;
+        options.convergence_threshold = c.threshold;
+        options.convergence_error = c.error;
     }
     options.meters_per_unit = io::meters_per_unit(st.adv.units);
     options.adjacency = job.adjacency;
@@ -437,11 +460,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
                   std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
                   std::to_string(st.adv.columns) + " columns, " +
-                  (job.convergence
-                       ? "--convergence " + std::to_string(options.convergence_min) + " to " +
-                             std::to_string(options.convergence_max) + " sample(s) per pixel"
-                       : std::to_string(options.samples_per_pixel) + " sample(s) per pixel") +
-                  ", " + sampling_name(job.sampling) + " sampling");
+                  sampling_report(job, options));
     RenderResult result;
     times.other = times.lap();
     const std::size_t floats =
@@ -458,7 +477,7 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     report.rows = rows;
     report.columns = columns;
     // With --convergence, what the pixels took (-v).
-    report_stats(result.stats, job.convergence ? rows * columns : 0, reporter);
+    report_stats(result.stats, options.convergence_min > 0 ? rows * columns : 0, reporter);
     report_phases(times, render_seconds, reporter);
     if (!job.igm_path.empty() || !job.glt_path.empty()) {
         std::string note;

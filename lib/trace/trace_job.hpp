@@ -37,12 +37,16 @@ struct TraceJob {
     bool strict = false;                 // --strict: .tmp keys that match no facet, or
                                          // facets without one, are an error
     Sampling sampling = Sampling::Golfball;
+    // --sampling auto: the sampling chosen by accuracy (kAccuracySampling), not with a
+    // strategy's own settings (samples per pixel, hemisphere samples, jitter, --convergence).
+    bool accuracy_sampling = false;
     std::optional<long> samples_per_pixel;   // default: the .adv's samples_per_pixel
     std::optional<long> hemisphere_samples;  // default: RenderOptions's
     std::optional<int> max_transmissions;    // default: RenderOptions's
     bool golfball_jitter = false;            // golfball: each cell's ray at random inside the cell
     std::optional<int> bounces;              // 0 to kMaxBounces; default: RenderOptions's
     std::string background = "mean";        // "mean", "none" or a MATERIAL_ID (world.hpp)
+    std::optional<int> sun_image_planes;     // --sun-images; default: RenderOptions's
     int sky_table_side = 0;                  // --sky-lookup table:N; 0: exact (RenderOptions)
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores
@@ -88,6 +92,17 @@ Sampling parse_sampling(const std::string& name);
 ConvergenceError parse_convergence_error(const std::string& name);
 std::string sampling_name(Sampling sampling);
 
+// The sampling of --sampling auto (trace(1) SAMPLING BY ACCURACY): montecarlo with one
+// hemisphere ray per camera ray, camera rays added in
+// batches of `convergence.min` at each pixel's (0,2)-sequence until the relative
+// standard error of its mean is under `convergence.threshold` in every band, or
+// `convergence.max` rays.
+struct AccuracySampling {
+    Convergence convergence{8, 512, 0.03, ConvergenceError::Relative};
+};
+inline const AccuracySampling kAccuracySampling{};
+// True when `job`'s sampling is kAccuracySampling's (--sampling auto).
+bool sampling_by_accuracy(const TraceJob& job);
 // "mean", "none" or a MATERIAL_ID (an integer) into options; else UsageError.
 void parse_background(const std::string& text, RenderOptions& options);
 // --sky-lookup: "exact" (0), "table" (kDefaultSkyTableSide) or "table:N" (N, an integer

@@ -97,6 +97,8 @@ std::string sampling_name(Sampling sampling) {
     return "?";
 }
 
+bool sampling_by_accuracy(const TraceJob& job) { return job.accuracy_sampling; }
+
 int parse_bounces(const std::string& text) {
     if (text == "auto") return kAutoBounces;
     long n = 0;
@@ -184,6 +186,16 @@ void check_job(const TraceJob& job) {
     if (!job.uncertainty_path.empty() && job.truth_path.empty())
         throw UsageError("--uncertainty: its layers are in the truth cube: give --truth FILE");
     if (job.convergence) check_convergence(*job.convergence, job.samples_per_pixel.has_value());
+    if (job.accuracy_sampling) {
+        for (const auto& [given, option] :
+             {std::pair{job.samples_per_pixel.has_value(), "--samples-per-pixel"},
+              std::pair{job.hemisphere_samples.has_value(), "--hemisphere-samples"},
+              std::pair{job.golfball_jitter, "--golfball-jitter"},
+              std::pair{job.convergence.has_value(), "--convergence"}})
+            if (given)
+                throw UsageError(std::string("--sampling auto chooses its own samples: not with ") +
+                                 option);
+    }
     if (job.hemisphere_samples && *job.hemisphere_samples < 1)
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)

@@ -46,7 +46,9 @@ band_bytes() {
 }
 
 @test "trace renders the box scene as the golden ENVI cube" {
-    trace_ok $(inputs) -o out.img
+    # The golden cube is the golf ball at the .adv's 4 samples per pixel (White's
+    # sampling); trace's own default is checked below (sampling by accuracy).
+    trace_ok $(inputs) --sampling golfball -o out.img
     # Float rounding differs between compilers and libm builds by a few ulps of the
     # radiances (about 0.001 to 0.05 W cm-2 sr-1 um-1 here): 1e-6 is 20 ulps of the
     # largest value and far below any modelling change.
@@ -122,7 +124,8 @@ band_bytes() {
 }
 
 @test "trace --samples-per-pixel overrides the .adv's samples_per_pixel" {
-    trace_ok $(inputs) -o four.img
+    # With a strategy named, the .adv's samples_per_pixel (4) is the count.
+    trace_ok $(inputs) --sampling golfball -o four.img
     trace_ok $(inputs) --samples-per-pixel 4 -o four_again.img
     run -0 cmp four.img four_again.img
     trace_ok $(inputs) --samples-per-pixel 1 -o one.img
@@ -152,7 +155,7 @@ band_bytes() {
 }
 
 @test "trace --golfball-jitter changes golfball's rays, repeatably" {
-    trace_ok $(inputs) -o centres.img
+    trace_ok $(inputs) --sampling golfball -o centres.img
     trace_ok $(inputs) --golfball-jitter -o jitter.img
     trace_ok $(inputs) --golfball-jitter --threads 1 -o jitter_again.img
     run -1 cmp -s centres.img jitter.img
@@ -218,7 +221,25 @@ band_bytes() {
     [[ "$stderr" == *"trace: scene: "*" facets, "*" triangles; 2 material(s)"* ]] || fail "$stderr"
     [[ "$stderr" == *"emission is left out"* ]] || fail "$stderr"
     [[ "$stderr" == *" rays ("*" primary, "*"Mrays/s"* ]] || fail "$stderr"
+    [[ "$stderr" == *"4 sample(s) per pixel, golfball sampling"* ]] || fail "$stderr"
     [[ "$stderr" == *"1024 primary"* ]] || fail "16 x 16 x 4 primary rays: $stderr"
+}
+
+@test "trace --sampling auto: chosen by accuracy, repeatable, said by -v; not with a count of its own" {
+    # montecarlo, 1 hemisphere ray, samples until 3 % relative standard error (trace(1)
+    # SAMPLING BY ACCURACY); the same cube for any thread count.
+    run -0 --separate-stderr trace -v --sampling auto $(inputs) -o auto.img --threads 1
+    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample, chosen by accuracy (--sampling auto)"* ]] ||
+        fail "$stderr"
+    [[ "$stderr" == *"primary sample(s) per pixel on average, at most "* ]] || fail "$stderr"
+    trace_ok --sampling auto $(inputs) -o auto2.img --threads 2
+    run -0 cmp auto.img auto2.img
+    # It is --convergence 8,512,0.03 with montecarlo and one hemisphere ray, byte for byte.
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 1 --convergence 8,512,0.03 \
+        -o named.img
+    run -0 cmp auto.img named.img
+    trace_bad 2 "--sampling auto chooses its own samples: not with --convergence" \
+        --sampling auto --convergence 4,8,0.1 $(inputs) -o out.img
 }
 
 @test "trace -v splits the wall time into the set-up's phases and the render" {
@@ -674,4 +695,28 @@ coupled_inputs() {
     run -0 compare --pixelwise --fail-max 1 c.tif si/c.tif
     run -2 --separate-stderr trace $(inputs) --radiance-units W/sr -o x.img
     [[ "$stderr" == *"--radiance-units W/sr: expected W/cm2/sr/um or W/m2/sr/um"* ]]
+}
+
+@test "trace: a mirror box lights the lawn with the sun's image; --sun-images 0 leaves it out and -v says so" {
+    # box.mat with the box (pine wood, 37) a mirror: SPECULARITY 1 and the default
+    # REFLECTANCE_MODEL dirsig (a delta lobe). Its sunlit walls show the sun's image to
+    # the lawn in front of them (trace(1), RADIOMETRY: the sun in a mirror).
+    sed '/MATERIAL_ID = 37/,/MATERIAL_ENTRY_END/ s/^SPECULARITY = 0.0/SPECULARITY = 1.0/' \
+        "$DATA/box.mat" > mirror.mat
+    cp "$DATA/grass.ems" "$DATA/wood.ems" .
+    run -0 --separate-stderr trace -v $(inputs "$GDB" mirror.mat) -o with.img
+    [[ "$stderr" != *"sun's images"* ]] || fail "stderr: $stderr"
+    run -0 --separate-stderr trace -v --sun-images 0 $(inputs "$GDB" mirror.mat) -o without.img
+    [[ "$stderr" == *"trace: not modelled: the sun's images in mirror facets (they lie in more than 0 planes: --sun-images)"* ]] ||
+        fail "stderr: $stderr"
+    run -1 cmp -s with.img without.img
+    # dirsig (DIRSIG 3) traces no image, and says why.
+    run -0 --separate-stderr trace -v --sampling dirsig $(inputs "$GDB" mirror.mat) -o d.img
+    [[ "$stderr" == *"not modelled: the sun's images in mirror facets (dirsig: DIRSIG 3's sun enters every specular part)"* ]] ||
+        fail "stderr: $stderr"
+    # The option belongs to the render, not to the shadow history.
+    run -2 --separate-stderr trace --shadow-history --sun-images 4 "$DATA/box.snd" "$GDB" \
+        mirror.mat -o out.shd
+    [[ "$stderr" == *"--sun-images does not apply to --shadow-history"* ]] || fail "stderr: $stderr"
+    assert_no_temp_files .
 }

@@ -63,6 +63,15 @@ TEST(TraceCommand, RenderInputsOutputAndDefaults) {
     EXPECT_EQ(job.rad_paths, (std::vector<std::string>{"b1.rad", "b2.rad"}));
     EXPECT_EQ(job.output_path, "cube.img");
     EXPECT_EQ(job.sampling, trace::Sampling::Golfball);
+    EXPECT_FALSE(trace::sampling_by_accuracy(job));
+    // --sampling auto: the sampling chosen by accuracy (trace(1) SAMPLING BY ACCURACY),
+    // which sets its own counts.
+    EXPECT_TRUE(trace::sampling_by_accuracy(
+        render_job(with(kRender, {"-o", "cube.img", "--sampling", "auto"}))));
+    const auto both = render_job(
+        with(kRender, {"-o", "c.img", "--sampling", "auto", "--samples-per-pixel", "4"}));
+    EXPECT_EQ(testing::usage_error_of([&] { trace::check_job(both); }),
+              "--sampling auto chooses its own samples: not with --samples-per-pixel");
     EXPECT_EQ(job.seed, 1u);
     EXPECT_EQ(job.threads, 0u);
     EXPECT_EQ(job.background, "mean");
@@ -236,7 +245,8 @@ const std::map<std::string, std::string> kRenderValues{{"co", "COMPRESS=DEFLATE"
                                                        {"convergence-error", "rms"},
                                                        {"samples-per-pixel", "4"},
                                                        {"hemisphere-samples", "16"},
-                                                       {"adjacency-radius", "500"}};
+                                                       {"adjacency-radius", "500"},
+                                                       {"sun-images", "4"}};
 
 TEST(TraceCommand, EveryRenderingOptionIsRefusedWithTheShadowHistory) {
     for (const auto& o : trace_option_groups().rendering) {
