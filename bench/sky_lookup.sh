@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # What trace --sky-lookup table:N buys and costs, side by side in one run.
 #   bench/sky_lookup.sh BUILD [N...]        (default N: 32 64 128)
-# Environment: ROUNDS [5] rounds, SIZE [128] pixels on the image's longer side, SCENES
-# ["training hawkeye"] (hawkeye: its oblique camera).
+# Environment: ROUNDS [7] rounds, SIZE [128] pixels on the image's longer side, SCENES
+# ["training hawkeye"] (hawkeye: its oblique camera), TRACE_FLAGS ["--sampling
+# golfball"] options for every render (e.g. "--sampling montecarlo").
 #
 # For each scene of data/scenes, its trace inputs made by the scene's own rules (into a
 # temporary folder: the source tree is not written), the camera cut or grown to SIZE
@@ -12,7 +13,8 @@
 # the machine's load falls on all of them alike. Printed per scene and lookup, medians
 # over the rounds: the process's CPU seconds (user + system; set-up included) and the
 # render's seconds (trace -v), the ratios exact / table of each (of two renders of one
-# round; above 1: the table is faster), and the accuracy cost: the relative RMS difference of the cube from the exact cube,
+# round; above 1: the table is faster; the CPU ratio's range over the rounds beside it),
+# and the accuracy cost: the relative RMS difference of the cube from the exact cube,
 # sqrt(sum d^2 / sum L^2) over every pixel and spectral sample, and the largest
 # |d| / L among pixels with L above a tenth of the mean. For scale, the sampling
 # noise of the same render: the relative RMS difference between the exact cube and one
@@ -24,7 +26,7 @@ BIN=$(cd "$1/bin" && pwd)
 shift
 SIDES=("${@:-32 64 128}")
 read -r -a SIDES <<< "${SIDES[*]}"
-ROUNDS=${ROUNDS:-5} SIZE=${SIZE:-128} SCENES=${SCENES:-training hawkeye}
+ROUNDS=${ROUNDS:-7} SIZE=${SIZE:-128} TRACE_FLAGS=${TRACE_FLAGS---sampling golfball} SCENES=${SCENES:-training hawkeye}
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
@@ -80,6 +82,8 @@ bench_scene() {
     local rest=() f
     for f in $inputs; do [ "$f" = "$adv" ] || rest+=("$f"); done
     local opts=(-v --threads 1)
+    read -r -a extra <<< "$TRACE_FLAGS"
+    opts+=("${extra[@]}")
     [ -n "$tmp" ] && opts+=(--tmp "$tmp")
     run() { # run LOOKUP OUTPUT [OPTIONS...]
         local l=$1 o=$2
@@ -109,18 +113,21 @@ bench_scene() {
     local rows cols
     read -r rows cols < <(awk '!/^[ \t]*(#|$)/ && !/=/ { if (++k == 5) { print $1, $2; exit } }' \
         "$W/$name.adv")
-    echo "== $name: ${rows}x$cols pixels, $ROUNDS rounds, one thread; medians over the rounds"
-    printf '%-10s %8s %8s %10s %10s %10s %8s\n' lookup cpu_s render_s cpu_ratio \
-        render_ratio rel_rms max_rel
+    echo "== $name: ${rows}x$cols pixels, $ROUNDS rounds, one thread${TRACE_FLAGS:+, $TRACE_FLAGS};" \
+        "medians over the rounds"
+    printf '%-10s %8s %8s %10s %12s %10s %10s %8s\n' lookup cpu_s render_s cpu_ratio \
+        "(range)" render_ratio rel_rms max_rel
     col() { awk -v k="$1" '{ print $k }' "$2" | median; }
-    printf '%-10s %8s %8s %10s %10s %10s %8s\n' exact "$(col 1 "$W/$name-exact.secs")" \
-        "$(col 2 "$W/$name-exact.secs")" - - 0 0
+    spread() { awk -v k="$1" 'NR == 1 || $k < lo { lo = $k } NR == 1 || $k > hi { hi = $k }
+        END { printf "%.2f-%.2f", lo, hi }' "$2"; }
+    printf '%-10s %8s %8s %10s %12s %10s %10s %8s\n' exact "$(col 1 "$W/$name-exact.secs")" \
+        "$(col 2 "$W/$name-exact.secs")" - - - 0 0
     for s in "${SIDES[@]}"; do
         l=table:$s
         read -r rms worst < <(difference "$W/$name-$l.img" "$W/$name-exact.img")
-        printf '%-10s %8s %8s %10.3f %10.3f %10s %8s\n' "$l" "$(col 1 "$W/$name-$l.secs")" \
+        printf '%-10s %8s %8s %10.3f %12s %10.3f %10s %8s\n' "$l" "$(col 1 "$W/$name-$l.secs")" \
             "$(col 2 "$W/$name-$l.secs")" "$(col 1 "$W/$name-$l.ratios")" \
-            "$(col 2 "$W/$name-$l.ratios")" "$rms" "$worst"
+            "$(spread 1 "$W/$name-$l.ratios")" "$(col 2 "$W/$name-$l.ratios")" "$rms" "$worst"
     done
     awk -v n="$noise" 'BEGIN { printf "sampling noise of the exact render (another --seed, / sqrt 2): rel_rms %.3g\n", n / sqrt(2) }'
 }

@@ -10,8 +10,8 @@
 //   horizontal facet; y = z x x.
 // - A ray that leaves the scene sees the world beyond it (world.hpp): above the ENU
 //   horizon the sky (L_ds, plus L_de with emission) interpolated between the .rad's
-//   cells (or read from its table: --sky-lookup), below it the background plane. A
-//   primary ray's miss is the renderer's.
+//   cells (or, for a secondary ray, read from its table: --sky-lookup), below it the
+//   background plane. A primary ray's miss is the renderer's.
 // - Radiance in W cm-2 sr-1 um-1, irradiance W cm-2 um-1, distances in scene units.
 #pragma once
 

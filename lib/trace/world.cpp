@@ -138,8 +138,9 @@ std::string sky_lookup_description(const TraceContext& c) {
     const double kib = 4.0 * side * side * static_cast<double>(cells > 0 ? c.n : 0) / 1024;
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "sky lookup: table %d x %d (the interpolation at each cell's centre, read by "
-                  "nearest cell, at most %.2f deg away; %.0f KiB)",
+                  "sky lookup: table %d x %d for rays from facets (the interpolation at each "
+                  "cell's centre, read by nearest cell, at most %.2f deg away; %.0f KiB); "
+                  "camera rays interpolate",
                   side, side, c.sky_table->max_cell_radius_rad() * kDeg, kib);
     return buf;
 }
@@ -148,7 +149,9 @@ void effective_sky(const TraceContext& c, const Sensor& sensor, const Vec3& dir,
                    double* tau2, double* lus, double* lue) {
     const std::size_t n = c.n;
     std::fill(out, out + n, 0.0);
-    add_sky(c, dir, out);  // the sky at the ground
+    // The sky at the ground, interpolated whatever --sky-lookup says: a table's cells
+    // would show in the image as steps.
+    c.sky->add(dir, 1.0, {out, n}, c.emission);
     const Vec3 down{dir[0], dir[1], -dir[2]};
     c.in.atmosphere->path(down, sensor.view_angle_deg(down), {tau2, n}, {lus, n}, {lue, n});
     double* path = lus;  // L_us (+ L_ue): the air's path radiance below the sensor

@@ -1,9 +1,10 @@
 // What a ray sees when it leaves the scene (trace(1), THE WORLD BEYOND THE SCENE).
 //
 // - Above the horizon: the downwelled sky of the .rad, interpolated between its cells
-//   (radiometry/sky_interpolation.hpp), or with --sky-lookup table:N that interpolation
-//   tabulated on N x N cells and read by nearest cell (radiometry/sky_table.hpp). A
-//   secondary ray takes it as it arrives at the ground. A primary ray takes the sky as
+//   (radiometry/sky_interpolation.hpp). A secondary ray takes it as it arrives at the
+//   ground, with --sky-lookup table:N from that interpolation tabulated on N x N cells
+//   and read by nearest cell (radiometry/sky_table.hpp). A primary ray (always
+//   interpolated: the table's cells would show as steps in the image) takes the sky as
 //   seen at the sensor's altitude (the "effective sky radiance" of White (1996),
 //   section 3.4): the ground's sky less the path radiance of the air between ground
 //   and sensor, over that air's transmittance,
@@ -61,9 +62,9 @@ void for_each_seen_from_above(const scene::Scene& scene, double x0, double x1, d
 // value when the ray does not meet it.
 double background_distance(const Background& b, const geo::Vec3& origin, const geo::Vec3& dir);
 
-// The sky at the ground along `dir` (L_ds, plus L_de with emission; header) added to
-// `out` (the context's n samples): the table when the context has one, else the
-// interpolation. Nothing at or below the horizon.
+// The sky at the ground along a secondary ray's `dir` (L_ds, plus L_de with emission;
+// header) added to `out` (the context's n samples): the table when the context has
+// one, else the interpolation. Nothing at or below the horizon.
 void add_sky(const TraceContext& c, const geo::Vec3& dir, double* out);
 // How add_sky reads the sky, for --verbose: "sky lookup: exact (...)" or
 // "sky lookup: table N x N (...)".

@@ -3,7 +3,8 @@
 #
 # trace --sky-lookup on the box scene of trace.bats (trace_helper.bash): exact by default,
 # the same bytes when named; a table is said by -v, renders the same bytes on 1 and 2
-# threads and stays near the exact cube; bad values are usage errors.
+# threads and stays near the exact cube, while camera rays that see the sky keep the
+# interpolation; bad values are usage errors.
 
 bats_require_minimum_version 1.5.0
 load test_helper
@@ -19,7 +20,7 @@ load trace_helper
 @test "trace --sky-lookup table[:N]: 64 by default, said by -v, same bytes on any threads, near exact" {
     trace_ok $(inputs) -o exact.img
     run -0 --separate-stderr trace -v --sky-lookup table --threads 1 $(inputs) -o t1.img
-    [[ "$stderr" == *"sky lookup: table 64 x 64 (the interpolation at each cell's centre"* ]] ||
+    [[ "$stderr" == *"sky lookup: table 64 x 64 for rays from facets (the interpolation"* ]] ||
         fail "$stderr"
     trace_ok --sky-lookup table:64 --threads 2 $(inputs) -o t2.img
     cmp t1.img t2.img
@@ -33,6 +34,27 @@ load trace_helper
     rel=$(sed -n 's/.*"name": "all".*"mean_relative": \([^,]*\),.*/\1/p' <<< "$output")
     [ -n "$rel" ] || fail "no mean_relative in: $output"
     awk -v r="$rel" 'BEGIN { exit !(r > 0 && r < 0.002) }' || fail "mean relative error $rel"
+}
+
+@test "trace --sky-lookup table: camera rays that see the sky keep the interpolation" {
+    # The box camera lowered to 2 m and turned to the horizon: its top row sees only sky.
+    sed -e 's/^10 10 0\t/10 10 2\t/' -e 's/^10 -10 30\t/10 -40 2\t/' \
+        -e 's/^56.31 -90 0\t/0 -90 0\t/' "$DATA/box.adv" > horizon.adv
+    local args=(horizon.adv "$DATA/box.snd" "$GDB" "$DATA/box.mat" "$DATA/band1.rad"
+        "$DATA/band2.rad")
+    run -0 --separate-stderr trace -v "${args[@]}" -o exact.img
+    [[ "$stderr" =~ trace:\ [1-9][0-9]*\ primary\ sample\(s\)\ saw\ the\ sky ]] || fail "$stderr"
+    trace_ok --sky-lookup table:4 "${args[@]}" -o table.img
+    local bands b
+    bands=$(sed -n 's/^bands *= *//p' exact.hdr)
+    for ((b = 0; b < bands; b++)); do
+        # Row 0 of band b (16 float32 pixels; ENVI, band sequential): the same bytes.
+        cmp <(dd if=exact.img bs=64 skip=$((b * 16)) count=1 status=none) \
+            <(dd if=table.img bs=64 skip=$((b * 16)) count=1 status=none) ||
+            fail "band $b: the sky row differs"
+    done
+    # ... while the hemisphere rays of the rows below read the coarse table.
+    ! cmp -s exact.img table.img || fail "a 4 x 4 table changed nothing"
 }
 
 @test "trace --sky-lookup: a bad value is a usage error" {
