@@ -62,6 +62,7 @@ trace                   samples-per-pixel      0     65537                 int
 trace                   hemisphere-samples     0     1000001               int
 trace                   max-transmissions      -1    1001                  int
 trace                   adjacency-radius       0     1e8                   real
+trace                   sun-images             -1    1001                  int
 trace                   history-hours          0     8761                  real
 trace                   history-step-minutes   0     1441                  real
 trace                   points-per-facet       0     1000001               int
