@@ -94,28 +94,10 @@ TEST(AccuracySampling, TheDefaultMeetsItsStatedErrorOnTheTrainingScene) {
         refs[static_cast<std::size_t>(i)] = render_with(t, cam, ref);
     }
     const int centre = static_cast<int>(t.atm.grid().band_centre_sample(0));
-    // The share of the pixels of `r` that took fewer than `cap` samples whose centre
-    // sample lies within 1.96 x hypot(T |t|, reference error) of the truth t.
-    const auto coverage_of = [&](const RenderResult& r, double cap, long& stopped, long& judged) {
-        const int samples = layer(r, "samples");
-        long inside = 0;
-        stopped = judged = 0;
-        for (long row = 0; row < 16; ++row)
-            for (long col = 0; col < 16; ++col) {
-                if (r.truth.at(samples, row, col) >= cap) continue;  // ran to MAX: no claim
-                ++stopped;
-                const double r0 = refs[0].radiance.at(centre, row, col);
-                const double r1 = refs[1].radiance.at(centre, row, col);
-                const double tr = 0.5 * (r0 + r1), e_ref = 0.5 * std::abs(r0 - r1);
-                if (e_ref >= 0.25 * kThreshold * std::abs(tr)) continue;
-                const double bound = 1.96 * std::hypot(kThreshold * std::abs(tr), e_ref);
-                inside += std::abs(r.radiance.at(centre, row, col) - tr) <= bound;
-                ++judged;
-            }
-        return judged ? static_cast<double>(inside) / static_cast<double>(judged) : 0.0;
-    };
-    long stopped = 0, judged = 0;
-    const double coverage = coverage_of(run, static_cast<double>(kMax), stopped, judged);
+    const test::Coverage cov = test::convergence_coverage(run, refs[0], refs[1], centre,
+                                                          kThreshold, static_cast<double>(kMax));
+    const long stopped = cov.stopped, judged = cov.judged;
+    const double coverage = cov.share;
     RecordProperty("coverage", std::to_string(coverage));
     RecordProperty("stopped_pixels", std::to_string(stopped));
     RecordProperty("judged_pixels", std::to_string(judged));
@@ -136,8 +118,10 @@ TEST(AccuracySampling, TheDefaultMeetsItsStatedErrorOnTheTrainingScene) {
     o.convergence_min = 2;
     o.convergence_max = 2;
     o.convergence_threshold = 1.0;
-    long stopped_min = 0, judged_min = 0;
-    const double at_min = coverage_of(render_with(t, cam, o), INFINITY, stopped_min, judged_min);
+    const double at_min =
+        test::convergence_coverage(render_with(t, cam, o), refs[0], refs[1], centre, kThreshold,
+                                   INFINITY)
+            .share;
     RecordProperty("coverage_at_2_samples", std::to_string(at_min));
     EXPECT_LT(at_min, 0.91);
 }

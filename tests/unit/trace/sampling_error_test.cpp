@@ -232,30 +232,11 @@ TEST(SamplingError, ConvergedPixelsLieWithinTheThresholdOfAReference) {
         ref.threads = 2;
         refs[static_cast<std::size_t>(i)] = render_with(f, cam, ref);
     }
-    // The share of the pixels of `r` that stopped before MAX whose centre sample lies within
-    // 1.96 x hypot(T |t|, reference error) of the truth t; `stopped` and `judged` counted.
-    const auto coverage_of = [&](const RenderResult& r, long& stopped, long& judged) {
-        const int samples = layer(r, "samples");
-        long inside = 0;
-        stopped = judged = 0;
-        for (long row = 0; row < 16; ++row)
-            for (long col = 0; col < 16; ++col) {
-                if (r.truth.at(samples, row, col) >= 256) continue;  // ran to MAX: no claim
-                ++stopped;
-                // Channel 0: the band's centre sample (SpectralGrid::band_centre_sample),
-                // where the stopping rule estimates the error.
-                const double r0 = refs[0].radiance.at(0, row, col);
-                const double r1 = refs[1].radiance.at(0, row, col);
-                const double t = 0.5 * (r0 + r1), e_ref = 0.5 * std::abs(r0 - r1);
-                if (e_ref >= 0.25 * kThreshold * std::abs(t)) continue;
-                const double bound = 1.96 * std::hypot(kThreshold * std::abs(t), e_ref);
-                inside += std::abs(r.radiance.at(0, row, col) - t) <= bound;
-                ++judged;
-            }
-        return judged ? static_cast<double>(inside) / static_cast<double>(judged) : 0.0;
-    };
-    long stopped = 0, trials = 0;
-    const double coverage = coverage_of(run, stopped, trials);
+    // Channel 0: the band's centre sample (SpectralGrid::band_centre_sample), where the
+    // stopping rule estimates the error.
+    const test::Coverage cov = test::convergence_coverage(run, refs[0], refs[1], 0, kThreshold, 256);
+    const long stopped = cov.stopped, trials = cov.judged;
+    const double coverage = cov.share;
     ::testing::Test::RecordProperty("coverage", std::to_string(coverage));
     ::testing::Test::RecordProperty("stopped_pixels", std::to_string(stopped));
     ::testing::Test::RecordProperty("judged_pixels", std::to_string(trials));
@@ -268,8 +249,9 @@ TEST(SamplingError, ConvergedPixelsLieWithinTheThresholdOfAReference) {
     // The check has teeth: pixels stopped at MIN whatever their error (a threshold every
     // pixel meets) fall short of it against the same T.
     o.convergence_threshold = 1.0;
-    long stopped_min = 0, judged_min = 0;
-    const double at_min = coverage_of(render_with(f, cam, o), stopped_min, judged_min);
+    const double at_min =
+        test::convergence_coverage(render_with(f, cam, o), refs[0], refs[1], 0, kThreshold, 256)
+            .share;
     ::testing::Test::RecordProperty("coverage_stopped_at_min", std::to_string(at_min));
     EXPECT_LT(at_min, 0.91);
 }
