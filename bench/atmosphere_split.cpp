@@ -38,12 +38,13 @@
 #include "atmos/column_model.hpp"
 #include "atmos/mie_layers.hpp"
 #include "atmos/single_scatter.hpp"
-#include "atmos/stream_choice.hpp"
+#include "atmos_table/stream_choice.hpp"
 #include "io/cdk.hpp"
 #include "rt/discrete_ordinates.hpp"
 
 using namespace sigchain;
 using namespace sigchain::atmos;
+using namespace sigchain::atmos_table;  // phase_moments(streams)
 
 namespace {
 
@@ -230,7 +231,7 @@ int main(int argc, char** argv) {
     try {
         const std::string data_dir = argv[1];
         const io::Cdk deck = io::read_cdk_file(argv[2]);
-        RadianceOptions o;
+        ColumnOptions o;
         o.data_dir = data_dir;
         const ColumnModel column(deck.runs.front(), std::stod(argv[3]), o);
         const double mu0 = std::cos(std::stod(argv[4]) * kDeg);

@@ -17,11 +17,12 @@
 #include <thread>
 #include <vector>
 
-#include "atmos/build_radiance.hpp"
 #include "atmos/column_model.hpp"
 #include "atmos/spherical_path.hpp"
+#include "atmos_table/build_radiance.hpp"
 
 namespace atmos = sigchain::atmos;
+namespace atmos_table = sigchain::atmos_table;
 
 namespace {
 
@@ -32,7 +33,7 @@ const std::string kSource = SIGCHAIN_SOURCE_DIR;
 double seconds_for(const sigchain::io::Cdk& deck, const sigchain::io::Snd& snd, unsigned threads,
                    int repeats, bool coupling = true, int max_gas_terms = 12, bool cpu = false,
                    bool gas_pairs = true) {
-    atmos::RadianceOptions o;
+    atmos_table::RadianceOptions o;
     o.data_dir = kSource + "/data";
     o.threads = threads;
     o.coupling = coupling;
@@ -42,7 +43,7 @@ double seconds_for(const sigchain::io::Cdk& deck, const sigchain::io::Snd& snd, 
     for (int r = 0; r < repeats; ++r) {
         const auto start = std::chrono::steady_clock::now();
         const std::clock_t cpu_start = std::clock();
-        const auto rads = atmos::build_radiance(deck, snd, o);
+        const auto rads = atmos_table::build_radiance(deck, snd, o);
         const double s =
             cpu ? static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC
                 : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -93,10 +94,10 @@ int main() {
     // on one thread: with them, and with one equivalent depth per layer (max_gas_terms 1,
     // as before the sums); the solves per sample from the report.
     {
-        atmos::RadianceOptions o;
+        atmos_table::RadianceOptions o;
         o.data_dir = kSource + "/data";
-        atmos::RadianceReport rep;
-        (void)atmos::build_radiance(deck, snd, o, &rep);
+        atmos_table::RadianceReport rep;
+        (void)atmos_table::build_radiance(deck, snd, o, &rep);
         const double sums = seconds_for(deck, snd, 1, 3, true, 12, true);
         const double one = seconds_for(deck, snd, 1, 3, true, 1, true);
         std::printf("  gas exponential sums: %.3f s with, %.3f s with one depth (1 thread, CPU "
@@ -104,9 +105,9 @@ int main() {
                     sums, one, sums / one, rep.gas_term_solves, samples);
         // A second, strongly overlapping gas fitted too (the O2 B and gamma bands under
         // H2O in band 3), side by side: with, and with the strongest gas's sum only.
-        atmos::RadianceReport single;
+        atmos_table::RadianceReport single;
         o.gas_pairs = false;
-        (void)atmos::build_radiance(deck, snd, o, &single);
+        (void)atmos_table::build_radiance(deck, snd, o, &single);
         const double pairs = seconds_for(deck, snd, 1, 3, true, 12, true, true);
         const double strongest = seconds_for(deck, snd, 1, 3, true, 12, true, false);
         std::printf("  overlapping gas pairs: %.3f s with, %.3f s strongest gas only (1 thread, "
@@ -120,10 +121,10 @@ int main() {
     // sun traced to every level of the Hawkeye column, at most what a run traces (once
     // per column: to the kept levels; the lines of sight need no search).
     {
-        atmos::RadianceOptions o;
+        atmos_table::RadianceOptions o;
         o.data_dir = kSource + "/data";
-        atmos::RadianceReport rep;
-        (void)atmos::build_radiance(deck, snd, o, &rep);
+        atmos_table::RadianceReport rep;
+        (void)atmos_table::build_radiance(deck, snd, o, &rep);
         const atmos::ColumnModel column(deck.runs.front(), snd.sensor_altitude_km, o);
         const double zenith_rad = rep.sun_zenith_deg * std::numbers::pi / 180;
         double rays = 1e300;
@@ -148,13 +149,13 @@ int main() {
         one.view_min_deg = one.view_max_deg = 0;
         one.view_increment_deg = 1;
         auto sky = [&](int n, double* seconds) {
-            atmos::RadianceOptions o;
+            atmos_table::RadianceOptions o;
             o.data_dir = kSource + "/data";
             o.threads = 1;
             o.coupling = false;
             o.sky_subsamples = n;
             const std::clock_t start = std::clock();
-            const auto rads = atmos::build_radiance(deck, one, o);
+            const auto rads = atmos_table::build_radiance(deck, one, o);
             *seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
             return rads[0].sky->cells;
         };
@@ -194,9 +195,9 @@ int main() {
         sigchain::io::Snd one = snd;
         one.view_min_deg = one.view_max_deg = 0;
         one.view_increment_deg = 1;
-        auto timed = [&](int streams, atmos::RadianceReport* rep, unsigned threads = 1,
-                         double tolerance = atmos::kDefaultStreamTolerance) {
-            atmos::RadianceOptions o;
+        auto timed = [&](int streams, atmos_table::RadianceReport* rep, unsigned threads = 1,
+                         double tolerance = atmos_table::kDefaultStreamTolerance) {
+            atmos_table::RadianceOptions o;
             o.data_dir = kSource + "/data";
             o.threads = threads;
             o.streams = streams;
@@ -208,18 +209,18 @@ int main() {
             double best = 1e300;
             for (int r = 0; r < 3; ++r) {
                 const auto start = std::chrono::steady_clock::now();
-                (void)atmos::build_radiance(deck, one, o, rep);
+                (void)atmos_table::build_radiance(deck, one, o, rep);
                 best = std::min(best, std::chrono::duration<double>(
                                           std::chrono::steady_clock::now() - start)
                                           .count());
             }
             return best;
         };
-        atmos::RadianceReport rep16, rep_auto;
+        atmos_table::RadianceReport rep16, rep_auto;
         const double t16 = timed(16, &rep16);
-        const double t_auto = timed(atmos::kAutoStreams, &rep_auto);
-        const double t_auto2 = timed(atmos::kAutoStreams, nullptr, 2);
-        const double t_auto5 = timed(atmos::kAutoStreams, nullptr, 1, 0.05);
+        const double t_auto = timed(atmos_table::kAutoStreams, &rep_auto);
+        const double t_auto2 = timed(atmos_table::kAutoStreams, nullptr, 2);
+        const double t_auto5 = timed(atmos_table::kAutoStreams, nullptr, 1, 0.05);
         std::printf("one line of sight (nadir, 1 sky cell, %ld samples, 1 thread, best of 3): "
                     "16 streams %.3f s, auto %.3f s (x%.2f); against LOWTRAN 7's %.0f ms: "
                     "x%.1f and x%.1f\n",
@@ -244,10 +245,10 @@ int main() {
     }
     snd.view_min_deg = snd.view_max_deg = 0;
     snd.view_increment_deg = 1;
-    atmos::RadianceOptions o;
+    atmos_table::RadianceOptions o;
     o.data_dir = kSource + "/data";
-    atmos::RadianceReport rep;
-    const auto rads = atmos::build_radiance(deck, snd, o, &rep);
+    atmos_table::RadianceReport rep;
+    const auto rads = atmos_table::build_radiance(deck, snd, o, &rep);
     std::printf("sun zenith %.3f deg, azimuth %.3f deg; ground %.3f km, sensor %.3f km, "
                 "visibility %.2f km\n",
                 rep.sun_zenith_deg, rep.sun_azimuth_deg, rep.ground_km, rep.sensor_km,

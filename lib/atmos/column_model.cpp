@@ -7,7 +7,6 @@
 #include <functional>
 #include <numbers>
 
-#include "atmos/deck_options.hpp"
 #include "atmos/rayleigh.hpp"
 #include "core/error.hpp"
 #include "core/numeric.hpp"
@@ -24,7 +23,11 @@ std::size_t index_of(const std::vector<double>& v, double x) {
 
 }  // namespace
 
-ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const RadianceOptions& o) {
+bool deck_mie_phase(const io::CdkCard1& card1, const io::CdkGeometry& geometry) {
+    return card1.iemsct == 1 || (card1.iemsct == 2 && geometry.iph == 2);
+}
+
+ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const ColumnOptions& o) {
     const Profile full = profile_from_deck(run, o.data_dir);
     const double ground = run.card2.ground_altitude_km > full.bottom_km()
                               ? run.card2.ground_altitude_km
@@ -66,7 +69,7 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const Radiance
     aerosol_card.icld = 0;  // the cloud, rain and cirrus are m_cloud's, m_rain's, m_cirrus's
     // CARD 2D: with a cloud (ICLD 1-11) LOWTRAN 7 makes the cloud aerosol region 2, so
     // only IREG(1) (the boundary layer) is the aerosol's; IREG(2) is the cloud's
-    // (deck_options refuses the others).
+    // (build_radiance refuses the others: atmos_table/deck_options.cpp).
     std::optional<io::CdkUserOptics> aerosol_user = run.user_optics;
     if (aerosol_user && CloudModel::modelled(run.card2.icld))
         for (std::size_t r = 1; r < aerosol_user->regions.size(); ++r)

@@ -16,15 +16,20 @@
 #include "atmos/aerosol.hpp"
 #include "atmos/cirrus.hpp"
 #include "atmos/cloud.hpp"
+#include "atmos/column_options.hpp"
 #include "atmos/gas_absorption.hpp"
 #include "atmos/mie_phase.hpp"
 #include "atmos/profile.hpp"
-#include "atmos/radiance_options.hpp"
 #include "atmos/rain.hpp"
 #include "atmos/spherical_path.hpp"
 #include "io/cdk.hpp"
 
 namespace sigchain::atmos {
+
+// Whether the deck's aerosols scatter by LOWTRAN 7's Mie phase functions: IPH 2 with
+// IEMSCT 2, and IEMSCT 1, whose deck has no CARD 3A1 to override the models' own
+// functions (IPH 0 and 1 are the user's; man build_radiance(1), DECK FIELDS).
+bool deck_mie_phase(const io::CdkCard1& card1, const io::CdkGeometry& geometry);
 
 // The optical properties of one layer at one wavenumber.
 struct LayerOptics {
@@ -46,7 +51,7 @@ struct LayerOptics {
 class ColumnModel {
 public:
     // Throws DataError when the sensor does not lie above the ground.
-    ColumnModel(const io::CdkRun& run, double sensor_km, const RadianceOptions& options);
+    ColumnModel(const io::CdkRun& run, double sensor_km, const ColumnOptions& options);
     ColumnModel(const ColumnModel&) = delete;
     ColumnModel& operator=(const ColumnModel&) = delete;
 

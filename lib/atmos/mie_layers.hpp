@@ -3,7 +3,7 @@
 // region; mie_phase.*) and Henyey-Greenstein (cloud, and aerosol without a Mie
 // function): its Legendre moments for the solver's delta-M truncation (Wiscombe 1977,
 // J. Atmos. Sci. 34, 1408) and the exact mixture for the Nakajima & Tanaka (1988, JQSRT
-// 40, 51) TMS correction and for single scattering. Internal to lib/atmos.
+// 40, 51) TMS correction and for single scattering. Used by lib/atmos_table's spectral samples.
 #pragma once
 
 #include <array>

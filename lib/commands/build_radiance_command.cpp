@@ -53,19 +53,19 @@ void add_build_radiance_options(cli::Cli& tool) {
     tool.add_threads_option();
 }
 
-atmos::BuildRadianceJob build_radiance_job(const cli::po::variables_map& vm) {
+atmos_table::BuildRadianceJob build_radiance_job(const cli::po::variables_map& vm) {
     const auto inputs = cli::args(vm, "input");
     if (inputs.size() != 2) throw sigchain::UsageError("expected two inputs: CDK SND");
-    atmos::BuildRadianceJob job;
+    atmos_table::BuildRadianceJob job;
     job.cdk_path = inputs[0];
     job.snd_path = inputs[1];
     if (vm.count("write-decks")) job.write_decks_dir = vm["write-decks"].as<std::string>();
     if (vm.count("from-tape7")) job.from_tape7 = vm["from-tape7"].as<std::string>();
     if (job.write_decks_dir.empty()) job.output_pattern = cli::output_path(vm);
     if (vm.count("data-dir")) job.data_dir = vm["data-dir"].as<std::string>();
-    atmos::RadianceOptions& o = job.options;
+    atmos_table::RadianceOptions& o = job.options;
     o.streams = cli::keyword_given(vm, "streams", "auto")
-                    ? atmos::kAutoStreams
+                    ? atmos_table::kAutoStreams
                     : static_cast<int>(cli::integer(vm, "streams"));
     o.stream_tolerance = cli::real(vm, "stream-tolerance");
     o.sky_zenith_step_deg = cli::real(vm, "sky-zenith-step");
@@ -81,7 +81,7 @@ atmos::BuildRadianceJob build_radiance_job(const cli::po::variables_map& vm) {
 }
 
 int run_build_radiance_command(const cli::po::variables_map& vm, cli::Context& ctx) {
-    atmos::run(build_radiance_job(vm), ctx);
+    atmos_table::run(build_radiance_job(vm), ctx);
     return 0;
 }
 

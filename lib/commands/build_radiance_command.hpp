@@ -3,7 +3,7 @@
 // main.cpp only wires them to cli::Cli.
 #pragma once
 
-#include "atmos/build_radiance_job.hpp"
+#include "atmos_table/build_radiance_job.hpp"
 #include "cli/cli.hpp"
 
 namespace sigchain::commands {
@@ -15,7 +15,7 @@ void add_build_radiance_options(cli::Cli& tool);
 // The Job of a parsed command line; UsageError for other than two inputs, no -o without
 // --write-decks. The solver's options keep RadianceOptions's defaults where an option
 // has none of its own (--view-azimuth: the deck's; --merge-tau: the solver's).
-atmos::BuildRadianceJob build_radiance_job(const cli::po::variables_map& vm);
+atmos_table::BuildRadianceJob build_radiance_job(const cli::po::variables_map& vm);
 // The whole command: the Job and its run. Returns the exit status.
 int run_build_radiance_command(const cli::po::variables_map& vm, cli::Context& ctx);
 

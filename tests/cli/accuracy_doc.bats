@@ -1,7 +1,7 @@
 #!/usr/bin/env bats
 # Tests: scripts/accuracy (docs/accuracy.md) and scripts/chapter5 (docs/chapter5.md):
 # the committed pages are what the scripts write today
-# Also requires: unit_rt, unit_atmos, unit_thermal, unit_trace, unit_radiometry,
+# Also requires: unit_rt, unit_atmos, unit_atmos_table, unit_thermal, unit_trace, unit_radiometry,
 # build_radiance, scripts/atmosphere-table, tests/cli/build_radiance_clouds.bats, python3
 # Every figure of these pages comes from a run of the tests that check it; a figure
 # typed by hand, or left from an older run, goes stale. Each test regenerates a page
@@ -55,7 +55,7 @@ PY
 }
 
 @test "accuracy: docs/accuracy.md holds today's figures (every test passed, each figure to 1e-6)" {
-    needs unit_rt unit_atmos unit_thermal unit_trace
+    needs unit_rt unit_atmos unit_atmos_table unit_thermal unit_trace
     [ -x "$SIGCHAIN_BIN/build_radiance" ] || skip "build_radiance not built"
     run -0 --separate-stderr python3 "$SIGCHAIN_SOURCE_DIR/scripts/accuracy" "$SIGCHAIN_BIN/.." fresh.md
     run -0 same_figures "$SIGCHAIN_SOURCE_DIR/docs/accuracy.md" fresh.md

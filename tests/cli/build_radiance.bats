@@ -8,7 +8,7 @@ load test_helper
 DATA="$SIGCHAIN_SOURCE_DIR/tests/data/build_radiance"
 HAWKEYE="$GOLDEN/control7/hawkeye.cdk"
 # A coarse sky and 8 streams keep each run well under a second; the physics is
-# checked by the unit tests (tests/unit/atmos, tests/unit/rt).
+# checked by the unit tests (tests/unit/atmos, tests/unit/atmos_table, tests/unit/rt).
 QUICK=(--streams 8 --sky-zenith-step 15 --sky-azimuth-step 30 --sky-subsamples 1)
 
 # The value of line N of a file.

@@ -5,13 +5,13 @@
 
 #include <iostream>
 
-#include "atmos/control7.hpp"
-#include "atmos/control7_job.hpp"
 #include "cli/cli.hpp"
+#include "control7/control7.hpp"
+#include "control7/control7_job.hpp"
 #include "core/error.hpp"
 
 namespace cli = sigchain::cli;
-namespace atmos = sigchain::atmos;
+namespace control7 = sigchain::control7;
 
 int main(int argc, char** argv) {
     cli::Cli tool({"control7",
@@ -29,14 +29,14 @@ int main(int argc, char** argv) {
         "write the deck to FILE ('-' standard output; default: the deck-name answer)");
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         if (vm.count("list-questions")) {
-            for (const auto& q : atmos::control7_questions())
+            for (const auto& q : control7::control7_questions())
                 std::cout << q.key << '\t' << q.text << '\n';
             return 0;
         }
-        atmos::Control7Job job;
+        control7::Control7Job job;
         if (vm.count("answer"))
             job.overrides =
-                atmos::parse_answer_overrides(vm["answer"].as<std::vector<std::string>>());
+                control7::parse_answer_overrides(vm["answer"].as<std::vector<std::string>>());
         if (vm.count("answers")) {
             job.answers_path = vm["answers"].as<std::string>();
         } else if (::isatty(0) == 1) {
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
             job.prompts = &std::cerr;
         }
         if (vm.count("output")) job.output_path = vm["output"].as<std::string>();
-        atmos::run(job, ctx);
+        control7::run(job, ctx);
         return 0;
     });
 }

@@ -158,7 +158,7 @@ TEST(AtmosCloud, CombineWeightsSsaByExtinctionAndGByScattering) {
 // ground, GNDALT 0) on LOWTRAN 7's sphere of 6371.23 km.
 TEST(AtmosCloud, OvercastDeckDarkensTheDirectBeam) {
     auto deck = io::read_cdk_file(kSource + "/tests/data/build_radiance/rural23.cdk");
-    RadianceOptions o;
+    ColumnOptions o;
     o.data_dir = kData;
     const io::CdkRun clear = deck.runs[0];
     io::CdkRun overcast = clear;
@@ -192,7 +192,7 @@ TEST(AtmosCloud, OvercastDeckDarkensTheDirectBeam) {
 // reaching the ground (direct and diffuse) add up to the incident mu0 F0.
 TEST(AtmosCloud, NonAbsorbingOvercastColumnConservesEnergy) {
     auto deck = io::read_cdk_file(kSource + "/tests/data/build_radiance/rural23.cdk");
-    RadianceOptions o;
+    ColumnOptions o;
     o.data_dir = kData;
     io::CdkRun run = deck.runs[0];
     run.card2.ihaze = 0;

@@ -128,7 +128,7 @@ TEST(MieLayers, MeanIsTheSumOfEvaluateBitForBit) {
 TEST(MieLayers, InterpolatedMomentsMatchTheFunctionsOwn) {
     const io::Cdk deck =
         io::read_cdk_file(SIGCHAIN_SOURCE_DIR "/tests/golden/control7/hawkeye.cdk");
-    RadianceOptions o;
+    ColumnOptions o;
     o.data_dir = kData;
     const ColumnModel column(deck.runs.front(), 1.0, o);
     ASSERT_TRUE(column.mie());

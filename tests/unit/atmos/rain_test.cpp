@@ -123,7 +123,7 @@ TEST(AtmosRain, DrizzleProfileStopsAtItsCloudTop) {
 // levels' re-layering moves it by 1.3e-8, cloud_test.cpp).
 TEST(AtmosRain, VerticalTransmittanceIsBeerOfTheRainExtinction) {
     auto deck = io::read_cdk_file(kSource + "/tests/data/build_radiance/rural23.cdk");
-    RadianceOptions o;
+    ColumnOptions o;
     o.data_dir = kData;
     const io::CdkRun clear = deck.runs[0];
     io::CdkRun wet = clear;

@@ -13,7 +13,7 @@ namespace {
 using testing::parse_line;
 using testing::usage_error_of;
 
-atmos::BuildRadianceJob job_of(const std::vector<std::string>& args) {
+atmos_table::BuildRadianceJob job_of(const std::vector<std::string>& args) {
     return build_radiance_job(parse_line(build_radiance_info(), add_build_radiance_options, args));
 }
 
@@ -27,7 +27,7 @@ TEST(BuildRadianceCommand, DefaultsAreTheSolversOwn) {
     EXPECT_EQ(job.snd_path, "s.snd");
     EXPECT_EQ(job.output_pattern, "band-%d.rad");
     EXPECT_TRUE(job.data_dir.empty() && job.write_decks_dir.empty() && job.from_tape7.empty());
-    const atmos::RadianceOptions defaults;
+    const atmos_table::RadianceOptions defaults;
     const auto& o = job.options;
     EXPECT_EQ(o.streams, defaults.streams);
     EXPECT_DOUBLE_EQ(o.stream_tolerance, defaults.stream_tolerance);
@@ -73,7 +73,7 @@ TEST(BuildRadianceCommand, EachOptionReachesTheJob) {
                              "--from-tape7",
                              "runs.t7m"});
     const auto& o = job.options;
-    EXPECT_EQ(o.streams, atmos::kAutoStreams);
+    EXPECT_EQ(o.streams, atmos_table::kAutoStreams);
     EXPECT_DOUBLE_EQ(o.stream_tolerance, 0.02);
     EXPECT_DOUBLE_EQ(o.sky_zenith_step_deg, 10);
     EXPECT_DOUBLE_EQ(o.sky_azimuth_step_deg, 30);
