@@ -32,7 +32,7 @@ using namespace sigchain;
 using geo::Vec3;
 
 // Parallel nadir rays: pixel (r, c) aims at (x0 + c pitch, y0 - r pitch, 0).
-class Nadir final : public trace::Sensor {
+class Nadir final : public imaging::Sensor {
 public:
     Nadir(long side, double pitch, double x0, double y0)
         : m_side(side), m_pitch(pitch), m_x0(x0), m_y0(y0) {}

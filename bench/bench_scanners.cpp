@@ -22,12 +22,12 @@
 #include <vector>
 
 #include "bench_timing.hpp"
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
+#include "imaging/sensor.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
 #include "trace/render.hpp"
-#include "trace/sensor.hpp"
 #include "trace_bench_scene.hpp"
 
 namespace {
@@ -50,8 +50,8 @@ radiometry::Atmosphere bench_atmosphere() {
 }
 
 // 1000 x 64 pixels of 9 um behind 33.75 mm: 0.4 m on the ground from 1500 m.
-geom::FrameCamera frame_camera() {
-    geom::FrameCamera cam;
+imaging::FrameCamera frame_camera() {
+    imaging::FrameCamera cam;
     cam.position = {0, 0, 1500};
     cam.forward = {0, 0, -1};
     cam.right = {1, 0, 0};
@@ -66,21 +66,21 @@ geom::FrameCamera frame_camera() {
 // 64 detectors of 9 um behind 33.75 mm (0.4 m from 1500 m), 1000 lines 0.4 m apart
 // (100 m/s, 4 ms), flying north from y = -200 m, along a .trj-style trajectory of 11
 // records with a gentle roll so that the interpolation is exercised.
-trace::PushbroomSensor pushbroom() {
+imaging::PushbroomSensor pushbroom() {
     io::Trj trj;
     for (int k = 0; k <= 10; ++k) {
         const double t = 0.4 * k;
         trj.records.push_back(
             {t, {0, -200 + 100 * t, 1500}, 0.2 * std::sin(t), 0, 0, geo::Vec3{0, 100, 0}, k + 2});
     }
-    trace::PushbroomGeometry g;
+    imaging::PushbroomGeometry g;
     g.lines = 1000;
     g.detectors = 64;
     g.focal_length_mm = 33.75;
     g.pitch_mm = 0.009;
     g.line_period_s = 0.004;
     g.integration_time_s = 0.004;
-    return trace::PushbroomSensor(geom::Trajectory(trj, "bench.trj"), g);
+    return imaging::PushbroomSensor(imaging::Trajectory(trj, "bench.trj"), g);
 }
 
 double render_cpu(const trace::RenderInputs& in, const trace::RenderOptions& opt) {
@@ -89,7 +89,7 @@ double render_cpu(const trace::RenderInputs& in, const trace::RenderOptions& opt
     return cpu_seconds() - c0;
 }
 
-double rays_cpu(const trace::Sensor& s) {
+double rays_cpu(const imaging::Sensor& s) {
     const double c0 = cpu_seconds();
     double sink = 0;
     for (int pass = 0; pass < 20; ++pass)
@@ -137,8 +137,8 @@ int main(int argc, char** argv) {
     const std::size_t samples = atmosphere.grid().size();
     const auto materials = radiometry::MaterialLibrary::from_optics(
         {radiometry::grey_material(1, 0.12, samples), radiometry::grey_material(2, 0.2, samples)});
-    const trace::FrameSensor frame(frame_camera());
-    const trace::PushbroomSensor push = pushbroom();
+    const imaging::FrameSensor frame(frame_camera());
+    const imaging::PushbroomSensor push = pushbroom();
     const trace::RenderInputs in_frame{&sc, &atmosphere, &materials, &frame, nullptr};
     const trace::RenderInputs in_push{&sc, &atmosphere, &materials, &push, nullptr};
     trace::RenderOptions opt;

@@ -24,7 +24,8 @@
 #include <thread>
 #include <vector>
 
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
+#include "imaging/sensor.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
@@ -70,8 +71,8 @@ double peak_memory_mib() {
 
 // 512 x 512 nadir camera 1500 m above the terrain's centre, north up, 9 um pixels
 // behind a 9 mm lens: a 768 m footprint.
-geom::FrameCamera bench_camera(long side) {
-    geom::FrameCamera cam;
+imaging::FrameCamera bench_camera(long side) {
+    imaging::FrameCamera cam;
     cam.position = {0, 0, 1500};
     cam.forward = {0, 0, -1};
     cam.right = {1, 0, 0};
@@ -257,7 +258,7 @@ geo::Vec3 golf_direction(const trace::GolfRay& g, const GolfFrame& f) {
 // Casts `primary` rays through the pixels (spp per pixel, jittered), then spreads
 // `hemisphere` intersection rays (random upward directions) and `shadow` occlusion
 // rays (toward the sun) evenly over the primary hits.
-BareResult bare_loop(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t primary,
+BareResult bare_loop(const BareScene& b, const imaging::FrameCamera& cam, std::uint64_t primary,
                      std::uint64_t hemisphere, std::uint64_t shadow, unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
     const std::uint64_t spp = std::max<std::uint64_t>(1, primary / pixels);
@@ -331,7 +332,7 @@ geo::Vec3 hit_normal(const RTCRayHit& rh, const std::vector<scene::Affine>& tree
 // mirror azimuth (golfball.hpp); per golf-ball ray that hits, a shadow ray to the sun
 // from that hit (when the sun is above it). Offsets: 1e-6 of the scene's extent, as
 // render() does.
-BareResult bare_golfball(const BareScene& b, const geom::FrameCamera& cam, std::uint64_t spp,
+BareResult bare_golfball(const BareScene& b, const imaging::FrameCamera& cam, std::uint64_t spp,
                          const std::vector<scene::Affine>& trees, double extent, unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
     GolfLoop run(extent);
@@ -392,7 +393,7 @@ void occluded(const int* valid, RTCScene s, RTCIntersectContext* c, RTCRay8* r) 
 }
 
 template <int kLanes, class RayHitN, class RayN>
-BareResult bare_golfball_packets(const BareScene& b, const geom::FrameCamera& cam,
+BareResult bare_golfball_packets(const BareScene& b, const imaging::FrameCamera& cam,
                                  const std::vector<scene::Affine>& trees, double extent,
                                  unsigned threads) {
     const std::size_t pixels = static_cast<std::size_t>(cam.rows) * cam.columns;
@@ -546,8 +547,8 @@ int main(int argc, char** argv) {
     const auto materials = radiometry::MaterialLibrary::from_optics(
         {radiometry::grey_material(1, 0.12, samples), radiometry::grey_material(2, 0.2, samples),
          radiometry::grey_material(3, 0.08, samples), radiometry::grey_material(4, 0.3, samples)});
-    const geom::FrameCamera cam = bench_camera(side);
-    const trace::FrameSensor generator(cam);
+    const imaging::FrameCamera cam = bench_camera(side);
+    const imaging::FrameSensor generator(cam);
 
     trace::RenderInputs inputs;
     inputs.scene = &sc;

@@ -44,7 +44,8 @@
 #include <vector>
 
 #include "bench_timing.hpp"
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
+#include "imaging/sensor.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
@@ -106,9 +107,9 @@ radiometry::Atmosphere bench_atmosphere() {
 // IMAGE_SIDE^2 camera 100 m above the terrain's south-west corner, looking north-east
 // 8 deg below the horizon with a 40 deg field of view: sky above the horizon, the
 // background plane beyond the terrain's far corner (about 4 deg below), then terrain.
-geom::FrameCamera oblique_camera(long side) {
+imaging::FrameCamera oblique_camera(long side) {
     const double depression = 8 * kDegToRad, h = std::sqrt(0.5);
-    geom::FrameCamera cam;
+    imaging::FrameCamera cam;
     cam.position = {-480, -480, 100};
     cam.forward = {h * std::cos(depression), h * std::cos(depression), -std::sin(depression)};
     cam.right = {h, -h, 0};
@@ -312,7 +313,7 @@ int main(int argc, char** argv) {
     const auto materials = radiometry::MaterialLibrary::from_optics(
         {radiometry::grey_material(1, 0.12, samples), radiometry::grey_material(2, 0.2, samples),
          radiometry::grey_material(3, 0.08, samples), radiometry::grey_material(4, 0.3, samples)});
-    const trace::FrameSensor sensor(oblique_camera(a.side));
+    const imaging::FrameSensor sensor(oblique_camera(a.side));
     const trace::RenderInputs in{&sc, &atmosphere, &materials, &sensor, nullptr};
 
     trace::RenderOptions base;  // trace's defaults: world, adjacency, 1 bounce

@@ -2,7 +2,8 @@
 // find_min_max_view_angle: prints rays per second on a 10^5-triangle terrain.
 #include <benchmark/benchmark.h>
 
-#include "geom/view_angle.hpp"
+#include "imaging/sensor.hpp"
+#include "imaging/view_angle.hpp"
 #include "scene/scene.hpp"
 
 namespace {
@@ -38,10 +39,10 @@ void BM_FieldOfView(benchmark::State& state) {
     adv.azimuth_deg = 180;
     adv.focal_length_mm = 8;
     adv.rows = adv.columns = 512;
-    auto cam = geom::frame_camera(adv);
+    const imaging::FrameSensor sensor(imaging::frame_camera(adv));
     std::size_t rays = 0;
     for (auto _ : state) {
-        auto rep = geom::find_view_angles(cam, s, static_cast<int>(state.range(0)));
+        auto rep = imaging::find_view_angles(sensor, s, static_cast<int>(state.range(0)));
         rays += rep.rays_cast;
         benchmark::DoNotOptimize(rep);
     }

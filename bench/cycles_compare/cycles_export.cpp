@@ -6,7 +6,7 @@
 //                      (x east, y north, z up, metres), one `usemtl mID_cCURVE` group
 //                      per material id and .ems curve, triangles as trace meshes them
 //   OUTDIR/scene.txt   key-value lines: the camera (position, forward, right, down,
-//                      focal length, pixel pitch, rows, columns: lib/geom/camera.cpp),
+//                      focal length, pixel pitch, rows, columns: lib/imaging/camera.cpp),
 //                      the sun (direction toward it, irradiance at the ground normal to
 //                      it per channel), the sky (the .rad sky's horizontal irradiance over
 //                      pi per channel: a uniform sky of the same irradiance), the cube
@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
 #include "io/adv.hpp"
 #include "io/mat.hpp"
 #include "io/rad.hpp"
@@ -121,7 +121,7 @@ int run(int argc, char** argv) {
     if (rads.size() < 3) throw UsageError("cycles_export: three .rad files (channels) are needed");
     auto adv = io::read_adv_file(adv_path);
     if (adv.units != io::LengthUnit::Meters) throw UsageError("cycles_export: the .adv must be in m");
-    auto cam = geom::frame_camera(adv, adv_path);
+    auto cam = imaging::frame_camera(adv, adv_path);
     auto atm = radiometry::Atmosphere::from_rads(rads, rad_files);
     const auto& grid = atm.grid();
     auto lib = radiometry::MaterialLibrary::load(io::read_mat_file(mat_path), mat_path, grid);

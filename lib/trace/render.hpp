@@ -11,12 +11,15 @@
 #include <vector>
 
 #include "image/image.hpp"
+#include "imaging/sensor.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
-#include "trace/sensor.hpp"
 
 namespace sigchain::trace {
+
+// The renderer draws its rays from lib/imaging's sensors.
+using imaging::Sensor;
 
 // trace --sampling: DIRSIG 3's scheme, the golf ball, Monte Carlo, and White (1996)'s
 // proposed model (section 5.2.3: the golf ball at the primary hit, the 10 deg rule for the

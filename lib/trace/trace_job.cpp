@@ -17,10 +17,12 @@
 #include "core/text.hpp"
 #include "geo/georef.hpp"
 #include "geo/solar_position.hpp"
-#include "geom/camera.hpp"
-#include "geom/view_angle.hpp"
 #include "image/geolocation.hpp"
 #include "image/image.hpp"
+#include "imaging/georef.hpp"
+#include "imaging/ground_layers.hpp"
+#include "imaging/like_grid.hpp"
+#include "imaging/view_angle.hpp"
 #include "io/adv.hpp"
 #include "io/mat.hpp"
 #include "io/odb.hpp"
@@ -32,9 +34,6 @@
 #include "scene/load.hpp"
 #include "trace/black_cube.hpp"
 #include "trace/distributed.hpp"
-#include "trace/georef.hpp"
-#include "trace/like_grid.hpp"
-#include "trace/ground_layers.hpp"
 #include "trace/part.hpp"
 #include "trace/trace_output.hpp"
 #include "trace/uncertainty.hpp"
@@ -67,9 +66,9 @@ void check_view_angles(const Sensor& camera, const radiometry::Atmosphere& atm,
         geo::Vec3 origin{}, direction{};
         camera.ray(row, column, origin, direction);
         // Above the horizon a ray takes the path terms of its mirrored line of sight,
-        // and within 1 deg of the horizon those of 89 deg (geom::world_view_angle_deg,
+        // and within 1 deg of the horizon those of 89 deg (imaging::world_view_angle_deg,
         // as find_min_max_view_angle makes the tables for the world beyond the scene).
-        const double va = geom::world_view_angle_deg(camera.view_angle_deg(direction));
+        const double va = imaging::world_view_angle_deg(camera.view_angle_deg(direction));
         lo = std::min(lo, va);
         hi = std::max(hi, va);
     };
@@ -98,7 +97,7 @@ struct Setup {
     io::Adv adv;
     io::Snd snd;
     long row_begin = 0, row_end = 0;
-    std::optional<LikeGrid> like;  // --like: the raster's grid, whose size the image takes
+    std::optional<imaging::LikeGrid> like;  // --like: the raster's grid, whose size the image takes
 };
 
 Setup read_setup(const TraceJob& job) {
@@ -111,7 +110,7 @@ Setup read_setup(const TraceJob& job) {
                          " .rad file(s) were given (one per band, in band order)");
     if (!job.like_path.empty()) {
         if (!job.crs.empty()) throw UsageError("--like takes the raster's CRS: not with --crs");
-        st.like = read_like_grid(job.like_path);
+        st.like = imaging::read_like_grid(job.like_path);
         st.adv.rows = st.like->rows;
         st.adv.columns = st.like->columns;
     }
@@ -415,15 +414,16 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     std::string crs_note = "map CRS: the --like raster's";
     const geo::LatLon origin{st.snd.latitude_deg, st.snd.longitude_east_deg};
     const double mpu = io::meters_per_unit(st.adv.units);
-    const std::optional<GeoPlacement> place =
-        st.like ? GeoPlacement{origin.latitude_deg, origin.longitude_deg, mpu, st.like->crs}
-                : geo_placement(job.crs, job.scene_path, origin, mpu, job.snd_path, crs_note);
+    const std::optional<imaging::GeoPlacement> place =
+        st.like ? imaging::GeoPlacement{origin.latitude_deg, origin.longitude_deg, mpu, st.like->crs}
+                : imaging::geo_placement(job.crs, job.scene_path, origin, mpu, job.snd_path, crs_note);
     if (!crs_note.empty()) reporter.info(crs_note);
-    std::unique_ptr<Sensor> sensor = make_sensor(
-        st.adv, job.adv_path, SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
+    std::unique_ptr<Sensor> sensor = imaging::make_sensor(
+        st.adv, job.adv_path,
+        imaging::SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
     if (st.like)
-        sensor = make_grid_sensor(std::move(sensor), *st.like, *place, scene,
-                                  scene.bounds().lower[2]);
+        sensor = imaging::make_grid_sensor(std::move(sensor), *st.like, *place, scene,
+                                           scene.bounds().lower[2]);
     const Sensor& camera = *sensor;
     reporter.info("sensor: " + camera.summary());
     check_view_angles(camera, atmosphere, reporter);
@@ -448,11 +448,11 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     if (!distributed_worker()) {
         image::Georeference georef;
         if (st.like)
-            georef = like_georeference(*st.like, st.row_begin);
+            georef = imaging::like_georeference(*st.like, st.row_begin);
         else if (place)
-            georef = georeference_render(camera, scene, *place, !job.crs.empty(), plane,
-                                         st.row_begin, st.row_end, st.adv.rows,
-                                         image::geolocation_name(job.output_path), georef_reports);
+            georef = imaging::georeference_render(
+                camera, scene, *place, !job.crs.empty(), plane, st.row_begin, st.row_end,
+                st.adv.rows, image::geolocation_name(job.output_path), georef_reports);
         outputs = std::make_unique<TraceOutputs>(
             job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, options,
             georef, sensor_type(camera), rows, columns);
@@ -481,8 +481,8 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     report_phases(times, render_seconds, reporter);
     if (!job.igm_path.empty() || !job.glt_path.empty()) {
         std::string note;
-        write_ground_layers(camera, scene, place, options.meters_per_unit, plane, st.row_begin,
-                            st.row_end, job.igm_path, job.glt_path, note);
+        imaging::write_ground_layers(camera, scene, place, options.meters_per_unit, plane,
+                                     st.row_begin, st.row_end, job.igm_path, job.glt_path, note);
         reporter.info(note);
     }
     georef_reports.release();

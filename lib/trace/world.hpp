@@ -28,10 +28,14 @@
 #include "geo/vec3.hpp"
 #include "scene/scene.hpp"
 
+namespace sigchain::imaging {
+class Sensor;
+}  // namespace sigchain::imaging
+
 namespace sigchain::trace {
 
 struct TraceContext;
-class Sensor;
+using imaging::Sensor;
 
 // The background plane, made once per render (make_background).
 struct Background {

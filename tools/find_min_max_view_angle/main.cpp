@@ -3,12 +3,10 @@
 #include "cli/cli.hpp"
 #include "core/error.hpp"
 #include "core/output.hpp"
-#include "geom/view_angle_job.hpp"
-#include "trace/view_angle_job.hpp"
+#include "imaging/view_angle_job.hpp"
 
 namespace cli = sigchain::cli;
-namespace geom = sigchain::geom;
-namespace trace = sigchain::trace;
+namespace imaging = sigchain::imaging;
 
 int main(int argc, char** argv) {
     cli::Cli tool({"find_min_max_view_angle",
@@ -33,7 +31,7 @@ int main(int argc, char** argv) {
     return tool.run(argc, argv, [](const cli::po::variables_map& vm, cli::Context& ctx) {
         auto inputs = cli::args(vm, "input");
         if (inputs.size() != 2) throw sigchain::UsageError("expected two files: ADV and SCENE");
-        trace::ViewAngleJob job;
+        imaging::ViewAngleJob job;
         job.adv_path = inputs[0];
         job.scene_path = inputs[1];
         job.snd_line = vm.count("snd") > 0;
@@ -42,16 +40,16 @@ int main(int argc, char** argv) {
                            in.landuse_map,  in.up_axis,     in.strict_mesh};
         const auto& method = vm["method"].as<std::string>();
         if (method == "scene-bounding-box")
-            job.method = geom::ViewAngleMethod::BoundingBox;
+            job.method = imaging::ViewAngleMethod::BoundingBox;
         else if (method != "field-of-view")
             throw sigchain::UsageError("unknown method '" + method +
                                        "' (field-of-view or scene-bounding-box)");
         job.grid = static_cast<int>(cli::integer(vm, "grid"));
         if (vm.count("origin"))
-            job.origin = geom::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
+            job.origin = imaging::parse_geo_origin(vm["origin"].as<std::string>(), "--origin");
         sigchain::require_outputs_distinct({cli::output_path(vm)}, inputs);
         sigchain::AtomicOutput out(cli::output_path(vm));
-        trace::run_view_angle_job(job, out.stream(), ctx);
+        imaging::run_view_angle_job(job, out.stream(), ctx);
         out.commit();
         return 0;
     });

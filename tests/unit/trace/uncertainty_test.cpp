@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "input_draws.hpp"
+#include "imaging/sensor.hpp"
 #include "io/adv.hpp"
 #include "io/mat.hpp"
 #include "io/rad.hpp"
@@ -24,7 +25,6 @@
 #include "radiometry/material.hpp"
 #include "scene/load.hpp"
 #include "trace/render.hpp"
-#include "trace/sensor.hpp"
 #include "trace/uncertainty.hpp"
 
 namespace sigchain::trace {
@@ -43,7 +43,7 @@ struct Training {
     radiometry::MaterialLibrary materials =
         radiometry::MaterialLibrary::load(mat, kData + "box.mat", atm.grid());
     scene::Scene scene = load();
-    std::unique_ptr<Sensor> sensor = make_sensor(adv, kData + "box.adv");
+    std::unique_ptr<Sensor> sensor = imaging::make_sensor(adv, kData + "box.adv");
 
     static radiometry::Atmosphere atmosphere(const std::vector<io::Rad>& r) {
         return radiometry::Atmosphere::from_rads(r, {"band1.rad", "band2.rad"});
@@ -308,7 +308,7 @@ TEST(Uncertainty, FirstOrderAgainstMonteCarloOnThePipelinesTrainingScene) {
     lo.scene_meters_per_unit = io::meters_per_unit(adv.units);
     lo.origin = scene::GeoOrigin{snd.latitude_deg, snd.longitude_east_deg, 0.0};
     const scene::Scene scene = scene::load_scene(dir + "training.gdb", lo);
-    const std::unique_ptr<Sensor> sensor = make_sensor(adv, dir + "training.adv");
+    const std::unique_ptr<Sensor> sensor = imaging::make_sensor(adv, dir + "training.adv");
     const InputUncertainty u = read_input_uncertainty(kData + "training.unc", materials);
     RenderOptions o;
     o.samples_per_pixel = 1;

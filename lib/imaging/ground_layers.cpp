@@ -1,5 +1,5 @@
 // The IGM and GLT of a scanner image (ground_layers.hpp; cube(5), GEOLOCATION LAYERS).
-#include "trace/ground_layers.hpp"
+#include "imaging/ground_layers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "image/image.hpp"
 #include "image/layers.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 namespace {
 
@@ -185,4 +185,4 @@ void write_ground_layers(const Sensor& sensor, const scene::Scene& scene,
     note += (note.empty() ? "" : "; ") + std::string(buf);
 }
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -1,6 +1,6 @@
-// Tests for the GLT of lib/trace/ground_layers: every cell names the pixel whose ground
+// Tests for the GLT of lib/imaging/ground_layers: every cell names the pixel whose ground
 // point is nearest its centre (checked by brute force), within reach, and none beyond.
-#include "trace/ground_layers.hpp"
+#include "imaging/ground_layers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@ namespace {
 
 // A 30 x 20 image whose ground points lie on a sheared, wavy grid: column spacing 1.0,
 // row spacing 2.0 (rows run south), with a sideways wobble like a jittering platform.
-trace::GroundGrid wavy_grid() {
-    trace::GroundGrid g;
+imaging::GroundGrid wavy_grid() {
+    imaging::GroundGrid g;
     g.rows = 30;
     g.columns = 20;
     for (long r = 0; r < g.rows; ++r)
@@ -31,8 +31,8 @@ trace::GroundGrid wavy_grid() {
 }  // namespace
 
 TEST(GroundLayers, GltIsTheNearestPixelWithinReach) {
-    const trace::GroundGrid g = wavy_grid();
-    const trace::Glt t = trace::make_glt(g, "t.tif");
+    const imaging::GroundGrid g = wavy_grid();
+    const imaging::Glt t = imaging::make_glt(g, "t.tif");
     // sqrt(1 x 2) from the median spacings; the sideways shift between rows (0.1 plus
     // the wobble's change) lengthens the row spacing of 2 by under 1 %.
     EXPECT_NEAR(t.cell, std::sqrt(2.0), 0.01 * std::sqrt(2.0));
@@ -61,9 +61,9 @@ TEST(GroundLayers, GltIsTheNearestPixelWithinReach) {
 }
 
 TEST(GroundLayers, NoGroundIsAnError) {
-    trace::GroundGrid g;
+    imaging::GroundGrid g;
     g.rows = 2;
     g.columns = 2;
     g.map_xy.assign(4, {NAN, NAN});
-    EXPECT_THROW(trace::make_glt(g, "t.tif"), DataError);
+    EXPECT_THROW(imaging::make_glt(g, "t.tif"), DataError);
 }

@@ -1,6 +1,6 @@
 // Platform pose over time: Hermite positions and slerped attitudes between trajectory
 // records (trajectory.hpp, trj(5)).
-#include "geom/trajectory.hpp"
+#include "imaging/trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "core/numeric.hpp"
 #include "core/text.hpp"
 
-namespace sigchain::geom {
+namespace sigchain::imaging {
 
 namespace {
 
@@ -194,4 +194,4 @@ void Trajectory::require_covers(double t0, double t1, const std::string& what) c
                                                              what + " spans " + span(t0, t1));
 }
 
-}  // namespace sigchain::geom
+}  // namespace sigchain::imaging

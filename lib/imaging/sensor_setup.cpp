@@ -9,10 +9,10 @@
 #include "core/numeric.hpp"
 #include "core/text.hpp"
 #include "geo/crs.hpp"
+#include "imaging/sensor.hpp"
 #include "io/trj.hpp"
-#include "trace/sensor.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 namespace {
 
@@ -25,9 +25,9 @@ struct AdvAt {
 
 // The keys were checked against the sensor kind (io::check_sensor_keys): the values a
 // kind needs are there.
-geom::Jitter jitter_of(const AdvAt& at) {
+Jitter jitter_of(const AdvAt& at) {
     const io::Adv& a = at.adv;
-    geom::Jitter j;
+    Jitter j;
     if (a.jitter_amplitude_deg) {
         j.amplitude_deg = *a.jitter_amplitude_deg;
         j.frequency_hz = *a.jitter_frequency_hz;
@@ -53,20 +53,20 @@ void place_geodetic(const AdvAt& at, const std::string& file, io::Trj& trj) {
 // The platform: the .trj the `trajectory` key names (relative to the .adv's folder), or a
 // straight flight from the camera point (line 2) at platform_speed_mps toward
 // platform_heading_deg, over [t0, t1].
-geom::Trajectory platform_of(const AdvAt& at, double t0, double t1) {
+Trajectory platform_of(const AdvAt& at, double t0, double t1) {
     const io::Adv& a = at.adv;
-    const geom::Jitter jitter = jitter_of(at);
+    const Jitter jitter = jitter_of(at);
     if (!a.trajectory.empty()) {
         std::filesystem::path p(a.trajectory);
         if (p.is_relative()) p = std::filesystem::path(at.path).parent_path() / p;
         const std::string file = p.lexically_normal().string();
         io::Trj trj = io::read_trj_file(file);
         if (trj.geodetic) place_geodetic(at, file, trj);
-        return geom::Trajectory(trj, file, jitter);
+        return Trajectory(trj, file, jitter);
     }
     const double speed_mps = a.platform_speed_mps.value();
     const double heading = a.platform_heading_deg.value();
-    return geom::Trajectory::straight(a.camera, speed_mps / io::meters_per_unit(a.units), heading,
+    return Trajectory::straight(a.camera, speed_mps / io::meters_per_unit(a.units), heading,
                                       a.platform_roll_deg.value_or(0),
                                       a.platform_pitch_deg.value_or(0), t0, t1, jitter);
 }
@@ -115,7 +115,7 @@ std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_p
         case io::SensorKind::Frame:
             break;
     }
-    return std::make_unique<FrameSensor>(geom::frame_camera(adv, adv_path));
+    return std::make_unique<FrameSensor>(frame_camera(adv, adv_path));
 }
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -1,8 +1,8 @@
 // The find_min_max_view_angle job (White (1996), section 4.2.3.3): the view-angle range
 // of every ray of the sensor an .adv describes (make_sensor, as trace builds it: a frame
-// camera, or a pushbroom or line scanner on its trajectory with its jitter) over a scene.
-// Here, above lib/geom, because the scanners' rays are trace's (sensor.hpp); the frame
-// camera's range and the report are lib/geom's (view_angle.*, view_angle_job.*).
+// camera, or a pushbroom or line scanner on its trajectory with its jitter) over a
+// scene, by find_view_angles (view_angle.hpp); its report: the .snd line, the table of
+// both methods, the --origin option.
 #pragma once
 
 #include <optional>
@@ -10,35 +10,25 @@
 #include <string>
 
 #include "core/report.hpp"
-#include "geom/view_angle.hpp"
-#include "geom/view_angle_job.hpp"
+#include "imaging/view_angle.hpp"
 #include "scene/load.hpp"
-#include "trace/sensor.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
+
+enum class ViewAngleMethod { BoundingBox, FieldOfView };
 
 struct ViewAngleJob {
     std::string adv_path;
     std::string scene_path;         // .gdb, .odb, a mesh or a DEM raster (scene::assemble_scene)
     scene::SceneInput scene_input;  // the scene options (materials optional: geometry only)
     bool snd_line = false;          // print only the .snd line of `method`
-    geom::ViewAngleMethod method = geom::ViewAngleMethod::FieldOfView;
+    ViewAngleMethod method = ViewAngleMethod::FieldOfView;
     int grid = 256;  // interior rays per image axis (field-of-view)
     // The scene's geodetic origin (--origin): where DEM objects of an .odb and a
     // geodetic .trj (at height 0, as trace places it about the .snd's) are placed.
     // Without it a DEM given as the scene places itself (scene::lone_dem_origin).
     std::optional<scene::GeoOrigin> origin{};
 };
-
-// Both methods for any sensor, as geom::find_view_angles does for a frame camera: the
-// field-of-view method casts sensor.ray() through every border pixel centre, the four
-// image corners and an interior grid of at most `grid` x `grid` positions, each ray's
-// angle by sensor.view_angle_deg (world_view_angle_deg's for a ray that misses); the
-// bounding-box method takes the scene box's corners from the origin of every border
-// ray (a moving platform's positions over the image). Throws DataError if the scene is
-// empty.
-geom::ViewAngleReport find_view_angles(const Sensor& sensor, const scene::Scene& scene,
-                                       int grid = 256);
 
 // Runs the job and writes the report (or the .snd line) to `out`; the scene's warnings
 // (a mesh file's degenerate facets skipped, coincident .odb instances) go to
@@ -47,4 +37,18 @@ geom::ViewAngleReport find_view_angles(const Sensor& sensor, const scene::Scene&
 void run_view_angle_job(const ViewAngleJob& job, std::ostream& out,
                         const Reporter& reporter = Reporter());
 
-}  // namespace sigchain::trace
+// "LAT,LON" or "LAT,LON,HEIGHT" (deg north, deg east, metres above the WGS84
+// ellipsoid) as an origin; throws UsageError naming `option` otherwise.
+scene::GeoOrigin parse_geo_origin(const std::string& text, const std::string& option);
+
+// Writes `report` to `out`: the .snd line of `method` (snd_line) or the table of both
+// methods. Throws DataError (at `adv_path`) when the field-of-view method is asked for
+// and no ray hits the scene in `scene_path`.
+void write_view_angle_report(const ViewAngleReport& report, ViewAngleMethod method, bool snd_line,
+                             const std::string& adv_path, const std::string& scene_path,
+                             std::ostream& out);
+
+// "a b c" rounded outward to the increment, as a .snd view-angle line.
+std::string snd_view_angle_line(double min_deg, double max_deg, double increment_deg);
+
+}  // namespace sigchain::imaging

@@ -2,13 +2,13 @@
 #include <cmath>
 #include <utility>
 
-#include "geom/view_angle.hpp"
-#include "trace/sensor.hpp"
+#include "imaging/sensor.hpp"
+#include "imaging/view_angle.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
-FrameSensor::FrameSensor(geom::FrameCamera camera) : m_camera(std::move(camera)) {
-    geo::Vec3 ref = geom::reference_direction(m_camera);
+FrameSensor::FrameSensor(FrameCamera camera) : m_camera(std::move(camera)) {
+    geo::Vec3 ref = reference_direction(m_camera);
     m_reference_azimuth_deg = std::atan2(ref[0], ref[1]) * 180.0 / M_PI;
 }
 
@@ -21,7 +21,7 @@ void FrameSensor::ray(double row, double column, geo::Vec3& origin, geo::Vec3& d
 }
 
 double FrameSensor::view_angle_deg(const geo::Vec3& direction) const {
-    return geom::signed_view_angle_deg(direction, view_angle_reference());
+    return signed_view_angle_deg(direction, view_angle_reference());
 }
 
 geo::Vec3 FrameSensor::view_angle_reference() const {
@@ -34,4 +34,4 @@ std::string FrameSensor::summary() const {
            std::to_string(m_camera.columns) + " pixels from one position";
 }
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -1,5 +1,5 @@
 // The georeferencing of trace's outputs: the map-grid fit and the geolocation arrays.
-#include "trace/georef.hpp"
+#include "imaging/georef.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "image/geolocation.hpp"
 #include "scene/load.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 namespace {
 
@@ -165,4 +165,4 @@ image::Georeference georeference_render(const Sensor& sensor, const scene::Scene
     return georef;
 }
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "imaging/georef.hpp"
+#include "imaging/sensor.hpp"
 #include "scene/scene.hpp"
-#include "trace/georef.hpp"
-#include "trace/sensor.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 // Each pixel's ground position in the output frame: map easting and northing (the map
 // CRS's units) when geo-placed, else scene x and y (scene units); NaN where the pixel
@@ -50,4 +50,4 @@ void write_ground_layers(const Sensor& sensor, const scene::Scene& scene,
                          const std::string& igm_path, const std::string& glt_path,
                          std::string& note);
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

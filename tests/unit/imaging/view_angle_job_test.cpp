@@ -1,17 +1,17 @@
-// Tests for the view-angle range of scanners (lib/trace/view_angle_job.*) over flat
+// Tests for the view-angle range of scanners (lib/imaging/view_angle.*) over flat
 // ground, against the analytic off-nadir angle of a body-frame ray. A level platform's
 // body z is nadir, so a ray along body (x, y, z) is acos(z / |(x, y, z)|) off nadir;
 // a roll r turns the across-track pair (y, z) by -r (trj(5): right wing down turns the
 // nadir ray to the left), so its across-track angle atan(y / z) becomes atan(y / z) - r
 // and cos(off nadir) = cos(atan(y / z) - r) |(y, z)| / |(x, y, z)|.
-#include "trace/view_angle_job.hpp"
+#include "imaging/view_angle_job.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "test_scene.hpp"
-#include "trace/sensor.hpp"
+#include "imaging/sensor.hpp"
+#include "test_geometry.hpp"
 
 using namespace sigchain;
 using geo::Vec3;
@@ -26,10 +26,10 @@ constexpr double kTolDeg = 1e-9;
 
 // Flat ground z = 0, 20 km square about the origin.
 scene::Scene ground() {
-    trace::test::Mesh m;
+    imaging::test::Mesh m;
     const double e = 1e4;
     m.quad({{{-e, -e, 0}, {e, -e, 0}, {e, e, 0}, {-e, e, 0}}}, 1);
-    return trace::test::single(std::move(m.data));
+    return imaging::test::single(std::move(m.data));
 }
 
 // A platform flying north at 50 m/s, 1000 m up, level, rolled by `roll_deg`.
@@ -82,8 +82,8 @@ TEST(ScannerViewAngles, LineScannerCoversItsScanAngles) {
     const double alpha = 2 * 10e-3 / 20;  // rad
     for (double A : {10.0, 40.0})
         for (double roll : {0.0, 4.0, -2.5}) {
-            const auto s = trace::make_sensor(line_scanner(A, roll), "l.adv");
-            const geom::ViewAngleReport rep = trace::find_view_angles(*s, sc, 64);
+            const auto s = imaging::make_sensor(line_scanner(A, roll), "l.adv");
+            const imaging::ViewAngleReport rep = imaging::find_view_angles(*s, sc, 64);
             ASSERT_TRUE(rep.field_of_view) << A << " " << roll;
             const double sa = std::sin(alpha), ca = std::cos(alpha);
             const double hi =
@@ -116,13 +116,13 @@ TEST(ScannerViewAngles, LineScannerCoversItsScanAngles) {
 // beta^2 / (2 (phi - |r|)) (2.5e-4 deg here).
 TEST(ScannerViewAngles, PushbroomRollShiftsTheRange) {
     const scene::Scene sc = ground();
-    const auto level = trace::make_sensor(pushbroom(0), "p.adv");
-    const geom::ViewAngleReport flat = trace::find_view_angles(*level, sc);
+    const auto level = imaging::make_sensor(pushbroom(0), "p.adv");
+    const imaging::ViewAngleReport flat = imaging::find_view_angles(*level, sc);
     const double x = 0.005, y = 32 * 0.01, f = 20;                    // mm
     const double beta = x / f / kDeg, phi = std::atan(y / f) / kDeg;  // deg
     for (double roll : {0.0, 0.5, -0.5}) {
-        const auto s = trace::make_sensor(pushbroom(roll), "p.adv");
-        const geom::ViewAngleReport rep = trace::find_view_angles(*s, sc);
+        const auto s = imaging::make_sensor(pushbroom(roll), "p.adv");
+        const imaging::ViewAngleReport rep = imaging::find_view_angles(*s, sc);
         ASSERT_TRUE(rep.field_of_view);
         EXPECT_NEAR(rep.field_of_view->max_deg, off_nadir_deg(x, y, f, roll * kDeg), kTolDeg);
         EXPECT_NEAR(rep.field_of_view->min_deg, -off_nadir_deg(x, -y, f, roll * kDeg), kTolDeg);
@@ -136,8 +136,8 @@ TEST(ScannerViewAngles, PushbroomRollShiftsTheRange) {
 // over a 20 km square from 1000 m up, a corner is atan(1e4 sqrt 2 / 1000) off nadir
 // from above the centre, and no position of the short flight sees one further off.
 TEST(ScannerViewAngles, BoundingBoxFromThePlatformPositions) {
-    const auto s = trace::make_sensor(pushbroom(0), "p.adv");
-    const geom::ViewAngleReport rep = trace::find_view_angles(*s, ground());
+    const auto s = imaging::make_sensor(pushbroom(0), "p.adv");
+    const imaging::ViewAngleReport rep = imaging::find_view_angles(*s, ground());
     const double corner = std::atan(1e4 * std::sqrt(2.0) / 1000) / kDeg;
     EXPECT_GT(rep.bounding_box.max_deg, corner - 0.01);
     EXPECT_LT(rep.bounding_box.max_deg, 90);
@@ -158,8 +158,8 @@ TEST(ScannerViewAngles, PushbroomJitterWidensTheRange) {
     io::Adv a = pushbroom(0);
     a.jitter_amplitude_deg = Vec3{J, 0, 0};
     a.jitter_frequency_hz = Vec3{1, 0, 0};
-    const auto s = trace::make_sensor(a, "p.adv");
-    const geom::ViewAngleReport rep = trace::find_view_angles(*s, ground());
+    const auto s = imaging::make_sensor(a, "p.adv");
+    const imaging::ViewAngleReport rep = imaging::find_view_angles(*s, ground());
     ASSERT_TRUE(rep.field_of_view);
     const double pitch = 0.01, f = 20;  // mm
     double hi = -90, lo = 90;

@@ -17,7 +17,7 @@
 #include "geo/vec3.hpp"
 #include "io/trj.hpp"
 
-namespace sigchain::geom {
+namespace sigchain::imaging {
 
 using geo::Vec3;
 
@@ -93,4 +93,4 @@ private:
     Vec3 jitter_offset_rad(double t) const;
 };
 
-}  // namespace sigchain::geom
+}  // namespace sigchain::imaging

@@ -13,11 +13,11 @@
 
 #include "geo/georef.hpp"
 #include "image/image.hpp"
+#include "imaging/georef.hpp"
+#include "imaging/sensor.hpp"
 #include "scene/scene.hpp"
-#include "trace/georef.hpp"
-#include "trace/sensor.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 // The grid of a raster: its CRS, geotransform and size.
 struct LikeGrid {
@@ -46,4 +46,4 @@ std::unique_ptr<Sensor> make_grid_sensor(std::unique_ptr<Sensor> frame, const Li
 // geotransform moved down to row_begin.
 image::Georeference like_georeference(const LikeGrid& grid, long row_begin);
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -1,7 +1,8 @@
 // Where a sensor's pixels see the ground of a geo-placed scene, and the georeferencing
 // of trace's outputs (cube(5), Georeferencing): a CRS and geotransform when the image
 // grid lies on a map grid, else per-pixel geolocation arrays. Written for any Sensor,
-// so the line scanner and pushbroom reuse it.
+// so the line scanner and pushbroom reuse it. The map side (CRS, scene ENU to map, the
+// least-squares geotransform) is lib/geo/georef.*, which knows no sensor and no scene.
 // Thread-safety: free functions; the scene and sensor are only read.
 #pragma once
 
@@ -13,10 +14,10 @@
 #include "geo/crs.hpp"
 #include "geo/georef.hpp"
 #include "image/image.hpp"
+#include "imaging/sensor.hpp"
 #include "scene/scene.hpp"
-#include "trace/sensor.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 // A scene placed on the Earth: its frame is east-north-up about the origin (the .snd's
 // latitude and longitude at height 0 on WGS84), and its map CRS.
@@ -93,4 +94,4 @@ image::Georeference georeference_render(const Sensor& sensor, const scene::Scene
                                         long row_end, long total_rows,
                                         const std::string& arrays_path, const Reporter& reporter);
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

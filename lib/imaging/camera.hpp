@@ -8,7 +8,7 @@
 #include "geo/vec3.hpp"
 #include "io/adv.hpp"
 
-namespace sigchain::geom {
+namespace sigchain::imaging {
 
 using geo::Vec3;
 
@@ -35,4 +35,4 @@ struct FrameCamera {
 // angles line) if the azimuth's vector is parallel to the line of sight.
 FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file = "");
 
-}  // namespace sigchain::geom
+}  // namespace sigchain::imaging

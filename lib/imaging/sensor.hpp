@@ -1,8 +1,10 @@
-// Primary-ray generation: the Sensor interface the renderer draws its rays from, the
-// frame camera (camera_rays.cpp), and the pushbroom and line scanners (scanners.cpp),
-// whose rays leave the platform's pose at the time each pixel is taken (White (1996),
-// sections 1.0 and 3.4: "frame cameras, line scanners, and pushbroom scanners"). The
-// renderer asks for nothing but a ray per image position and its view angle.
+// Primary-ray generation: the Sensor interface the renderer (lib/trace) draws its rays
+// from, the frame camera (camera_rays.cpp), and the pushbroom and line scanners
+// (scanners.cpp), whose rays leave the platform's pose at the time each pixel is taken
+// (White (1996), sections 1.0 and 3.4: "frame cameras, line scanners, and pushbroom
+// scanners"). The renderer asks for nothing but a ray per image position and its view
+// angle; find_min_max_view_angle (view_angle.hpp) and the georeferencing (georef.hpp)
+// ask the same.
 #pragma once
 
 #include <memory>
@@ -10,11 +12,11 @@
 #include <string>
 
 #include "geo/vec3.hpp"
-#include "geom/camera.hpp"
-#include "geom/trajectory.hpp"
+#include "imaging/camera.hpp"
+#include "imaging/trajectory.hpp"
 #include "io/adv.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 // A sensor's image geometry. Implementations are immutable after construction, so
 // one sensor serves every render thread at once.
@@ -41,26 +43,31 @@ public:
     // The horizontal unit direction (z = 0) toward which view_angle_deg is positive, for
     // find_min_max_view_angle's report. Default (test sensors): north.
     virtual geo::Vec3 view_angle_reference() const { return {0, 1, 0}; }
+    // The one point every ray leaves from, for a sensor that has one (a frame camera:
+    // find_view_angles's bounding box is seen from it); none (the default) for a
+    // sensor on a moving platform.
+    virtual std::optional<geo::Vec3> viewpoint() const { return std::nullopt; }
     // The sensor model's name ("frame camera", "pushbroom scanner", "line scanner") and
     // a one-line description of its geometry for -v (defaults for test sensors).
     virtual std::string kind() const { return "sensor"; }
     virtual std::string summary() const { return kind(); }
 };
 
-// The frame camera of a .adv (geom::FrameCamera): every ray from one position.
+// The frame camera of a .adv (FrameCamera): every ray from one position.
 class FrameSensor final : public Sensor {
 public:
-    explicit FrameSensor(geom::FrameCamera camera);
+    explicit FrameSensor(FrameCamera camera);
     long rows() const override;
     long columns() const override;
     void ray(double row, double column, geo::Vec3& origin, geo::Vec3& direction) const override;
     double view_angle_deg(const geo::Vec3& direction) const override;
     geo::Vec3 view_angle_reference() const override;
+    std::optional<geo::Vec3> viewpoint() const override { return m_camera.position; }
     std::string kind() const override { return "frame camera"; }
     std::string summary() const override;
 
 private:
-    geom::FrameCamera m_camera;
+    FrameCamera m_camera;
     double m_reference_azimuth_deg = 0;
 };
 
@@ -104,7 +111,7 @@ class PushbroomSensor final : public Sensor {
 public:
     // Throws DataError (at the .trj's first or last record) when the trajectory does
     // not cover the image's time span.
-    PushbroomSensor(geom::Trajectory trajectory, PushbroomGeometry g);
+    PushbroomSensor(Trajectory trajectory, PushbroomGeometry g);
     long rows() const override { return m_g.lines; }
     long columns() const override { return m_g.detectors; }
     void ray(double row, double column, geo::Vec3& origin, geo::Vec3& direction) const override;
@@ -119,14 +126,14 @@ public:
     double time_of(double row) const;
 
 private:
-    geom::Trajectory m_trajectory;
+    Trajectory m_trajectory;
     PushbroomGeometry m_g;
     geo::Vec3 m_reference{};  // horizontal across-track direction (view-angle sign)
 };
 
 class LineScannerSensor final : public Sensor {
 public:
-    LineScannerSensor(geom::Trajectory trajectory, LineScanGeometry g);
+    LineScannerSensor(Trajectory trajectory, LineScanGeometry g);
     long rows() const override { return m_g.scans * m_g.detectors; }
     long columns() const override { return m_g.samples; }
     void ray(double row, double column, geo::Vec3& origin, geo::Vec3& direction) const override;
@@ -139,7 +146,7 @@ public:
     double scan_angle_rad(double column) const;
 
 private:
-    geom::Trajectory m_trajectory;
+    Trajectory m_trajectory;
     LineScanGeometry m_g;
     geo::Vec3 m_reference{};
 };
@@ -158,4 +165,4 @@ struct SceneOrigin {
 std::unique_ptr<Sensor> make_sensor(const io::Adv& adv, const std::string& adv_path,
                                     std::optional<SceneOrigin> origin = std::nullopt);
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -1,4 +1,4 @@
-// Tests for the pushbroom and line scanners (lib/trace/scanners.cpp, sensor_setup.cpp)
+// Tests for the pushbroom and line scanners (lib/imaging/scanners.cpp, sensor_setup.cpp)
 // over flat ground, against the analytic ground sample distances: pushbroom along track
 // speed x line period and across track altitude x pitch / focal length (a flat focal
 // plane maps linearly onto a parallel ground plane); line scanner across track
@@ -11,9 +11,9 @@
 #include <fstream>
 
 #include "core/error.hpp"
-#include "test_scene.hpp"
-#include "trace/georef.hpp"
-#include "trace/sensor.hpp"
+#include "imaging/georef.hpp"
+#include "imaging/sensor.hpp"
+#include "test_geometry.hpp"
 
 using namespace sigchain;
 using geo::Vec3;
@@ -24,7 +24,7 @@ constexpr double kDeg = M_PI / 180;
 constexpr double kH = 1000;  // altitude (m)
 
 // Where the ray through (row, column) meets z = 0.
-Vec3 ground(const trace::Sensor& s, double row, double column) {
+Vec3 ground(const imaging::Sensor& s, double row, double column) {
     Vec3 o{}, d{};
     s.ray(row, column, o, d);
     const double t = -o[2] / d[2];
@@ -66,7 +66,7 @@ io::Adv line_adv(bool bidirectional) {
 
 std::string error_of(const io::Adv& adv) {
     try {
-        trace::make_sensor(adv, "s.adv");
+        imaging::make_sensor(adv, "s.adv");
     } catch (const DataError& e) {
         return e.what();
     }
@@ -77,7 +77,7 @@ std::string error_of(const io::Adv& adv) {
 
 // 1e-6 relative is the brief's bound; the geometry is exact up to rounding (~1e-12).
 TEST(Scanners, PushbroomGroundSampleDistances) {
-    const auto s = trace::make_sensor(pushbroom_adv(), "p.adv");
+    const auto s = imaging::make_sensor(pushbroom_adv(), "p.adv");
     EXPECT_EQ(s->kind(), "pushbroom scanner");
     EXPECT_EQ(s->rows(), 200);
     EXPECT_EQ(s->columns(), 64);
@@ -100,7 +100,7 @@ TEST(Scanners, PushbroomGroundSampleDistances) {
 // H tan r across track, and the across-track GSD at the centre grows by 1/cos^2 r.
 TEST(Scanners, RollingPlatformShiftsTheLine) {
     for (double roll : {3.0, -7.5}) {
-        const auto s = trace::make_sensor(pushbroom_adv(roll), "p.adv");
+        const auto s = imaging::make_sensor(pushbroom_adv(roll), "p.adv");
         const Vec3 g = ground(*s, 10.5, 32);
         EXPECT_NEAR(g[0] / (-kH * std::tan(roll * kDeg)), 1.0, 1e-6) << roll;
         EXPECT_NEAR(g[1], 50 * (0.1 + 0.002), 1e-9);
@@ -111,8 +111,8 @@ TEST(Scanners, RollingPlatformShiftsTheLine) {
 // checked by a central difference of 1e-3 column (its truncation error is ~1e-13
 // relative, its rounding ~1e-10).
 TEST(Scanners, LineScannerPanoramicGrowth) {
-    const auto s = trace::make_sensor(line_adv(false), "l.adv");
-    const auto* ls = dynamic_cast<const trace::LineScannerSensor*>(s.get());
+    const auto s = imaging::make_sensor(line_adv(false), "l.adv");
+    const auto* ls = dynamic_cast<const imaging::LineScannerSensor*>(s.get());
     ASSERT_NE(ls, nullptr);
     EXPECT_EQ(s->rows(), 40);
     const double step = 80 * kDeg / 400, h = 1e-3;
@@ -132,10 +132,10 @@ TEST(Scanners, LineScannerPanoramicGrowth) {
 // Detectors of one scan sit ifov apart along track (H x pitch / focal = 0.5 m at nadir);
 // scans start scan_period apart; a bidirectional scanner's odd scans run backward.
 TEST(Scanners, LineScannerScanTiming) {
-    const auto one = trace::make_sensor(line_adv(false), "l.adv");
-    const auto two = trace::make_sensor(line_adv(true), "l.adv");
-    const auto* a = dynamic_cast<const trace::LineScannerSensor*>(one.get());
-    const auto* b = dynamic_cast<const trace::LineScannerSensor*>(two.get());
+    const auto one = imaging::make_sensor(line_adv(false), "l.adv");
+    const auto two = imaging::make_sensor(line_adv(true), "l.adv");
+    const auto* a = dynamic_cast<const imaging::LineScannerSensor*>(one.get());
+    const auto* b = dynamic_cast<const imaging::LineScannerSensor*>(two.get());
     EXPECT_DOUBLE_EQ(a->time_of(4.5, 0), 0.1);  // scan 1 starts at 0.1 s
     EXPECT_DOUBLE_EQ(b->time_of(4.5, 0), 0.2);  // ... and, sweeping back, ends there
     EXPECT_DOUBLE_EQ(b->time_of(4.5, 400), 0.1);
@@ -163,7 +163,7 @@ TEST(Scanners, ScanLineCorrectorStraightensTheScans) {
     a.scan_period_s = 16 * 30.0 / 6800;
     for (bool slc : {false, true}) {
         a.scan_line_corrector = slc;
-        const auto s = trace::make_sensor(a, "etm.adv");
+        const auto s = imaging::make_sensor(a, "etm.adv");
         for (double row : {5.5, 21.5}) {  // a forward scan and a backward one
             const double dy = ground(*s, row, 400)[1] - ground(*s, row, 0)[1];
             const double want = slc ? 0.0 : (row < 16 ? 480.0 : -480.0);
@@ -181,12 +181,12 @@ TEST(Scanners, ScanLineCorrectorStraightensTheScans) {
 // 50 m/s with a 2 deg roll), each projects onto its detector's centre. 1e-6 of the
 // range: the brief's bound (the ground point comes from Embree's float hit distance, ~1e-7).
 TEST(Scanners, GroundPointsInvertThePushbroomRays) {
-    trace::test::Mesh m;
+    imaging::test::Mesh m;
     m.quad({Vec3{-300, -50, 0}, Vec3{300, -50, 0}, Vec3{300, 200, 0}, Vec3{-300, 200, 0}}, 1);
-    const scene::Scene scene = trace::test::single(m.data);
+    const scene::Scene scene = imaging::test::single(m.data);
     const io::Adv adv = pushbroom_adv(2);
-    const auto s = trace::make_sensor(adv, "p.adv");
-    const auto points = trace::pixel_ground_points(*s, scene, std::nullopt, 0, s->rows());
+    const auto s = imaging::make_sensor(adv, "p.adv");
+    const auto points = imaging::pixel_ground_points(*s, scene, std::nullopt, 0, s->rows());
     const double r = 2 * kDeg;
     const Vec3 right{std::cos(r), 0, -std::sin(r)}, down{-std::sin(r), 0, -std::cos(r)};
     for (long row = 0; row < s->rows(); row += 7)
@@ -234,7 +234,7 @@ TEST(Scanners, TrajectoryMustCoverTheImage) {
     a.platform_heading_deg.reset();
     a.trajectory = "short.trj";
     try {
-        trace::make_sensor(a, dir + "/p.adv");
+        imaging::make_sensor(a, dir + "/p.adv");
         FAIL() << "no error";
     } catch (const DataError& e) {
         const std::string trj = std::filesystem::path(dir + "/short.trj").lexically_normal();
@@ -243,7 +243,7 @@ TEST(Scanners, TrajectoryMustCoverTheImage) {
             trj + ":3: the trajectory ends at 1 s but the pushbroom image spans 0 to 1.994 s");
     }
     a.rows = 100;  // 0 to 0.994 s: covered, and the .trj's motion is used
-    const auto s = trace::make_sensor(a, dir + "/p.adv");
+    const auto s = imaging::make_sensor(a, dir + "/p.adv");
     EXPECT_NEAR(ground(*s, 50.5, 32)[1], 50 * 0.502, 1e-9);
 }
 
@@ -271,8 +271,8 @@ TEST(Scanners, GeodeticTrajectoryIsPlacedAboutTheOrigin) {
     a.rows = 100;
     a.line_period_s = 0.04;
     a.integration_time_s = 0.04;
-    EXPECT_THROW(trace::make_sensor(a, dir + "/p.adv"), DataError);  // no origin given
-    const auto s = trace::make_sensor(a, dir + "/p.adv", trace::SceneOrigin{-8, -34.9});
+    EXPECT_THROW(imaging::make_sensor(a, dir + "/p.adv"), DataError);  // no origin given
+    const auto s = imaging::make_sensor(a, dir + "/p.adv", imaging::SceneOrigin{-8, -34.9});
     Vec3 o{}, d{};
     s->ray(50, 32, o, d);  // u = 0 of line 50: t = 2 s, halfway
     EXPECT_NEAR(o[0], 0.0, 1e-6);

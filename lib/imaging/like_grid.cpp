@@ -1,5 +1,5 @@
 // trace --like: a sensor on a raster's map grid (like_grid.hpp).
-#include "trace/like_grid.hpp"
+#include "imaging/like_grid.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 #include "geo/crs.hpp"
 #include "geo/raster.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 LikeGrid read_like_grid(const std::string& path) {
     const geo::GeoRaster raster = geo::read_geo_raster(path, geo::Bands::None);
@@ -119,4 +119,4 @@ std::unique_ptr<Sensor> make_grid_sensor(std::unique_ptr<Sensor> frame, const Li
     return std::make_unique<GridSensor>(std::move(frame), grid, place, scene, plane_height);
 }
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

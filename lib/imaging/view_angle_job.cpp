@@ -1,14 +1,18 @@
-// find_min_max_view_angle's report: the .snd line, the table of both methods.
-#include "geom/view_angle_job.hpp"
+// The find_min_max_view_angle job: the sensor of the .adv, the scene, both methods; the
+// .snd line and the table of both methods.
+#include "imaging/view_angle_job.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
-#include "geom/view_angle.hpp"
+#include "imaging/sensor.hpp"
+#include "imaging/view_angle.hpp"
+#include "io/adv.hpp"
 
-namespace sigchain::geom {
+namespace sigchain::imaging {
 
 namespace {
 
@@ -32,7 +36,46 @@ void row(std::ostream& out, const char* name, const AngleRange& r) {
     out << buf;
 }
 
+// The scene's geodetic origin: --origin, or where a DEM given as the scene places itself.
+std::optional<scene::GeoOrigin> scene_origin(const ViewAngleJob& job, const Reporter& reporter) {
+    if (job.origin) return job.origin;
+    std::optional<scene::GeoOrigin> origin = scene::lone_dem_origin(job.scene_path);
+    if (origin) {
+        char where[96];
+        std::snprintf(where, sizeof where, "latitude %.6f deg, longitude %.6f deg",
+                      origin->latitude_deg, origin->longitude_east_deg);
+        reporter.info(job.scene_path + ": placed about its centre, " + where + " (no --origin)");
+    }
+    return origin;
+}
+
 }  // namespace
+
+void run_view_angle_job(const ViewAngleJob& job, std::ostream& out, const Reporter& reporter) {
+    const io::Adv adv = io::read_adv_file(job.adv_path);
+    const std::optional<scene::GeoOrigin> geo_origin = scene_origin(job, reporter);
+    // The sensor as trace makes it: its keys checked, its .trj found beside the .adv.
+    std::optional<SceneOrigin> origin;
+    if (geo_origin) origin = SceneOrigin{geo_origin->latitude_deg, geo_origin->longitude_east_deg};
+    const std::unique_ptr<Sensor> sensor = make_sensor(adv, job.adv_path, origin);
+    scene::LoadOptions load;
+    load.scene_meters_per_unit = io::meters_per_unit(adv.units);
+    // Geometry only: a degenerate facet is never hit, so a .gdb's or DEM's are skipped
+    // silently (trace names them), a mesh file's as trace skips them (or refuses them);
+    // nothing is shaded, so a lone mesh or DEM needs no materials.
+    load.allow_degenerate = true;
+    load.quiet_degenerate = true;
+    load.geometry_only = true;
+    load.origin = geo_origin;
+    load.input = job.scene_input;
+    scene::LoadReport report;
+    const scene::Scene sc = scene::load_scene(job.scene_path, load, &report);
+    for (const std::string& w : report.warnings) reporter.warn(w);
+    // The scene as a whole and the whole field of view: conditions of no single line.
+    if (sc.triangle_count() == 0) throw DataError({job.scene_path, 0}, "the scene has no facets");
+    const ViewAngleReport rep = find_view_angles(*sensor, sc, job.grid);
+    write_view_angle_report(rep, job.method, job.snd_line, job.adv_path, job.scene_path, out);
+}
 
 std::string snd_view_angle_line(double min_deg, double max_deg, double inc) {
     // Round outward to the increment so the .rad table covers the whole range.
@@ -88,4 +131,4 @@ void write_view_angle_report(const ViewAngleReport& rep, ViewAngleMethod method,
     row(out, "unclipped-image", rep.unclipped_field_of_view);
 }
 
-}  // namespace sigchain::geom
+}  // namespace sigchain::imaging

@@ -3,18 +3,20 @@
 //
 // A view angle is the angle between a ray from the sensor and nadir (-z), in
 // degrees, signed: positive when the ray's horizontal part points along the
-// reference azimuth, negative when it points against it. The reference azimuth is
-// the horizontal direction of the camera's line of sight or, for a line of sight
-// within 0.01 deg of nadir (or zenith), the image's up direction made horizontal.
+// reference azimuth, negative when it points against it. The reference azimuth is the
+// sensor's (Sensor::view_angle_reference): for a frame camera, the horizontal
+// direction of its line of sight or, for a line of sight within 0.01 deg of nadir (or
+// zenith), the image's up direction made horizontal; for a scanner, its across-track
+// direction.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
 #include "scene/scene.hpp"
 
-namespace sigchain::geom {
+namespace sigchain::imaging {
 
 struct AngleRange {
     double min_deg = 0;
@@ -47,7 +49,7 @@ struct ViewAngleReport {
 inline constexpr double kWorldMaxViewAngleDeg = 89;
 double world_view_angle_deg(double view_angle_deg);
 
-// Horizontal reference direction (unit, z = 0) for the sign of view angles.
+// A frame camera's reference direction (unit, z = 0) for the sign of its view angles.
 Vec3 reference_direction(const FrameCamera& cam);
 // Signed view angle (deg) of a ray direction from the sensor.
 double signed_view_angle_deg(const Vec3& direction, const Vec3& reference);
@@ -55,11 +57,16 @@ double signed_view_angle_deg(const Vec3& direction, const Vec3& reference);
 // the range, at most 1 deg and at least 0.01 deg.
 double suggested_increment_deg(double min_deg, double max_deg, int min_steps = 10);
 
-// Both methods. The field-of-view method casts the rays through every border
-// pixel centre and the four image corners, plus an interior grid of at most
-// `grid` x `grid` rays: the angles of those that hit the scene, and of those that
-// miss it, world_view_angle_deg's (none if no ray hits).
-// Throws DataError if the scene is empty.
-ViewAngleReport find_view_angles(const FrameCamera& cam, const scene::Scene& scene, int grid = 256);
+class Sensor;  // sensor.hpp
 
-}  // namespace sigchain::geom
+// Both methods for any sensor (White (1996), section 4.2.3.3). The field-of-view method
+// casts sensor.ray() through every border pixel centre, the four image corners and an
+// interior grid of at most `grid` x `grid` positions, each ray's angle by
+// sensor.view_angle_deg (world_view_angle_deg's for a ray that misses; no field of view
+// if no ray hits). The bounding-box method takes the scene box's corners from the
+// sensor's one viewpoint (a frame camera), else from the origin of every border ray
+// (a moving platform's positions over the image). Throws DataError if the scene is
+// empty.
+ViewAngleReport find_view_angles(const Sensor& sensor, const scene::Scene& scene, int grid = 256);
+
+}  // namespace sigchain::imaging

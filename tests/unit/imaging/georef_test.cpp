@@ -1,9 +1,9 @@
-// Tests for lib/geo/georef and lib/trace/georef: the geotransform of a nadir frame
+// Tests for lib/geo/georef and lib/imaging/georef: the geotransform of a nadir frame
 // camera against the analytic ground sample distance (altitude x pitch / focal length),
 // the alignment test that decides between a geotransform and geolocation arrays, and
 // the per-pixel ground points.
-#include "trace/georef.hpp"
-#include "trace/like_grid.hpp"
+#include "imaging/georef.hpp"
+#include "imaging/like_grid.hpp"
 
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -11,9 +11,9 @@
 #include <cmath>
 
 #include "geo/raster.hpp"
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
 #include "io/adv.hpp"
-#include "test_scene.hpp"
+#include "test_geometry.hpp"
 
 using namespace sigchain;
 using geo::Vec3;
@@ -34,7 +34,7 @@ geo::Crs local_tmerc(double lat, double lon) {
 
 // A frame camera `altitude_m` above (0, 0, 0) looking down at elevation `elevation_deg`
 // from the south (90: nadir; east right, north up), focal 100 mm, pitch 10 um.
-trace::FrameSensor camera(double altitude_m, double elevation_deg, double twist_deg = 0,
+imaging::FrameSensor camera(double altitude_m, double elevation_deg, double twist_deg = 0,
                           long rows = 48, long columns = 64) {
     io::Adv adv;
     const double back = altitude_m / std::tan(elevation_deg * M_PI / 180);
@@ -47,7 +47,7 @@ trace::FrameSensor camera(double altitude_m, double elevation_deg, double twist_
     adv.pixel_pitch_um = 10;
     adv.rows = rows;
     adv.columns = columns;
-    return trace::FrameSensor(geom::frame_camera(adv));
+    return imaging::FrameSensor(imaging::frame_camera(adv));
 }
 
 constexpr double kLat = 43.0833, kLon = -77.6667;
@@ -57,8 +57,8 @@ constexpr double kLat = 43.0833, kLon = -77.6667;
 // GSD = altitude x pitch / focal = 1000 m x 10 um / 100 mm = 0.1 m; the image's
 // top-left corner lies half the image west and north of the nadir point.
 TEST(Georef, NadirGeotransformIsTheGroundSampleDistance) {
-    const trace::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
-    const auto fit = trace::fit_map_grid(camera(1000, 90), place, 0, 48);
+    const imaging::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
+    const auto fit = imaging::fit_map_grid(camera(1000, 90), place, 0, 48);
     ASSERT_TRUE(fit);
     const geo::GeoTransform& g = fit->geotransform;
     const double gsd = 1000 * 10e-6 / 100e-3;
@@ -70,33 +70,33 @@ TEST(Georef, NadirGeotransformIsTheGroundSampleDistance) {
     EXPECT_NEAR(g[4], 0, 1e-9);
     EXPECT_NEAR(g[0], -32 * gsd, 1e-6);
     EXPECT_NEAR(g[3], 24 * gsd, 1e-6);
-    EXPECT_LT(fit->max_residual_px, trace::kGridAlignmentTolerancePx);
+    EXPECT_LT(fit->max_residual_px, imaging::kGridAlignmentTolerancePx);
 }
 
 // A --rows slice's geotransform starts at its first row.
 TEST(Georef, RowSliceShiftsTheOrigin) {
-    const trace::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
-    const auto whole = trace::fit_map_grid(camera(1000, 90), place, 0, 48);
-    const auto slice = trace::fit_map_grid(camera(1000, 90), place, 10, 20);
+    const imaging::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
+    const auto whole = imaging::fit_map_grid(camera(1000, 90), place, 0, 48);
+    const auto slice = imaging::fit_map_grid(camera(1000, 90), place, 10, 20);
     ASSERT_TRUE(whole && slice);
     EXPECT_NEAR(slice->geotransform[3], whole->geotransform[3] + 10 * whole->geotransform[5], 1e-6);
 }
 
 // A twisted nadir view is still an affine map (rotation terms); a tilted one is not.
 TEST(Georef, AlignmentAcceptsTwistRejectsTilt) {
-    const trace::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
-    const auto twisted = trace::fit_map_grid(camera(1000, 90, 30), place, 0, 48);
+    const imaging::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
+    const auto twisted = imaging::fit_map_grid(camera(1000, 90, 30), place, 0, 48);
     ASSERT_TRUE(twisted);
-    EXPECT_LT(twisted->max_residual_px, trace::kGridAlignmentTolerancePx);
+    EXPECT_LT(twisted->max_residual_px, imaging::kGridAlignmentTolerancePx);
     // Rotated by 30 deg: g2 / g1 = tan(30 deg) in magnitude.
     EXPECT_NEAR(std::abs(twisted->geotransform[2] / twisted->geotransform[1]),
                 std::tan(30 * M_PI / 180), 1e-9);
-    const auto tilted = trace::fit_map_grid(camera(1000, 60), place, 0, 48);
+    const auto tilted = imaging::fit_map_grid(camera(1000, 60), place, 0, 48);
     ASSERT_TRUE(tilted);
-    EXPECT_GT(tilted->max_residual_px, trace::kGridAlignmentTolerancePx);
+    EXPECT_GT(tilted->max_residual_px, imaging::kGridAlignmentTolerancePx);
     // A view across the horizon (0.05 deg down, 0.14 deg half field) has rays that
     // never reach the plane: no fit at all.
-    EXPECT_FALSE(trace::fit_map_grid(camera(1000, 0.05), place, 0, 48));
+    EXPECT_FALSE(imaging::fit_map_grid(camera(1000, 0.05), place, 0, 48));
 }
 
 // Exact affine ties give back their coefficients and a zero residual; one tie moved by
@@ -122,19 +122,19 @@ TEST(Georef, FitGeotransformOnExactAndPerturbedTies) {
 
 // Ground points: the scene where a ray hits it, else the plane, else NaN (no plane).
 TEST(Georef, PixelGroundPointsHitPlaneOrNothing) {
-    trace::test::Mesh m;
+    imaging::test::Mesh m;
     m.quad({Vec3{-0.6, -0.6, 2}, Vec3{0.6, -0.6, 2}, Vec3{0.6, 0.6, 2}, Vec3{-0.6, 0.6, 2}}, 1);
-    const scene::Scene scene = trace::test::single(m.data);
+    const scene::Scene scene = imaging::test::single(m.data);
     // 3 x 3 pixels of 1 m looking straight down: the middle one sees the quad at z = 2.
-    const trace::test::Ortho sensor(3, 3, 1.0, -1.5, 1.5, {0, 0, -1});
-    const auto with_plane = trace::pixel_ground_points(sensor, scene, -5.0, 0, 3);
+    const imaging::test::Ortho sensor(3, 3, 1.0, -1.5, 1.5, {0, 0, -1});
+    const auto with_plane = imaging::pixel_ground_points(sensor, scene, -5.0, 0, 3);
     ASSERT_EQ(with_plane.size(), 9u);
     EXPECT_DOUBLE_EQ(with_plane[4][2], 2.0);
     EXPECT_NEAR(with_plane[4][0], 0.0, 1e-6);
     EXPECT_DOUBLE_EQ(with_plane[0][2], -5.0);
     EXPECT_NEAR(with_plane[0][0], -1.0, 1e-9);  // pixel centre (0.5, 0.5)
     EXPECT_NEAR(with_plane[0][1], 1.0, 1e-9);
-    const auto no_plane = trace::pixel_ground_points(sensor, scene, std::nullopt, 0, 3);
+    const auto no_plane = imaging::pixel_ground_points(sensor, scene, std::nullopt, 0, 3);
     EXPECT_TRUE(std::isnan(no_plane[0][0]));
     EXPECT_DOUBLE_EQ(no_plane[4][2], 2.0);
 }
@@ -147,12 +147,12 @@ TEST(Georef, PixelGroundPointsHitPlaneOrNothing) {
 TEST(Georef, OlindaCameraImagesTheLandsatGrid) {
     const std::string dir = SIGCHAIN_SOURCE_DIR "/data/scenes/olinda/";
     const io::Adv adv = io::read_adv_file(dir + "olinda.adv");
-    const trace::FrameSensor sensor(geom::frame_camera(adv));
+    const imaging::FrameSensor sensor(imaging::frame_camera(adv));
     OGRSpatialReference utm25s;
     ASSERT_EQ(utm25s.importFromEPSG(31985), OGRERR_NONE);
     // The .snd's origin: 7.995376 S, 34.871272 W.
-    const trace::GeoPlacement place{-7.995376, -34.871272, 1.0, geo::Crs::from_ogr(&utm25s)};
-    const auto fit = trace::fit_map_grid(sensor, place, 0, adv.rows);
+    const imaging::GeoPlacement place{-7.995376, -34.871272, 1.0, geo::Crs::from_ogr(&utm25s)};
+    const auto fit = imaging::fit_map_grid(sensor, place, 0, adv.rows);
     ASSERT_TRUE(fit);
     const geo::GeoRaster landsat = geo::read_geo_raster(dir + "L7_ETMs.tif", geo::Bands::First);
     const geo::GeoTransform& g = fit->geotransform;
@@ -166,7 +166,7 @@ TEST(Georef, OlindaCameraImagesTheLandsatGrid) {
         }
     std::printf("Olinda: grid misfit %.5f pixel, offset from the Landsat grid %.4f pixel\n",
                 fit->max_residual_px, worst_px);
-    EXPECT_LT(fit->max_residual_px, trace::kGridAlignmentTolerancePx);
+    EXPECT_LT(fit->max_residual_px, imaging::kGridAlignmentTolerancePx);
     EXPECT_LT(worst_px, 0.1);  // the brief's criterion: a tenth of a pixel
 }
 
@@ -202,11 +202,11 @@ TEST(Georef, MapPositionToTheFrameInvertsMapXy) {
 // where the scene has a surface (a quad at z = 2 over cell (1, 1)) at that surface: the
 // top surface is found straight above the map position, whatever the camera's angle.
 TEST(Georef, GridSensorRaysReachTheCellsMapPositions) {
-    trace::test::Mesh m;
+    imaging::test::Mesh m;
     m.quad({Vec3{-0.6, -0.6, 2}, Vec3{0.6, -0.6, 2}, Vec3{0.6, 0.6, 2}, Vec3{-0.6, 0.6, 2}}, 1);
-    const scene::Scene scene = trace::test::single(m.data);
-    const trace::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
-    trace::LikeGrid grid;
+    const scene::Scene scene = imaging::test::single(m.data);
+    const imaging::GeoPlacement place{kLat, kLon, 1.0, local_tmerc(kLat, kLon)};
+    imaging::LikeGrid grid;
     grid.crs = place.map_crs;
     grid.geotransform = {-1.5, 1, 0, 1.5, 0, -1};  // 3 x 3 cells centred on the origin
     grid.rows = grid.columns = 3;
@@ -218,8 +218,8 @@ TEST(Georef, GridSensorRaysReachTheCellsMapPositions) {
     adv.focal_length_mm = 100;
     adv.pixel_pitch_um = 10;
     adv.rows = adv.columns = 8;
-    auto frame = std::make_unique<trace::FrameSensor>(geom::frame_camera(adv));
-    const auto sensor = trace::make_grid_sensor(std::move(frame), grid, place, scene, -5.0);
+    auto frame = std::make_unique<imaging::FrameSensor>(imaging::frame_camera(adv));
+    const auto sensor = imaging::make_grid_sensor(std::move(frame), grid, place, scene, -5.0);
     ASSERT_EQ(sensor->rows(), 3);
     ASSERT_EQ(sensor->columns(), 3);
     for (long r = 0; r < 3; ++r)
@@ -234,5 +234,5 @@ TEST(Georef, GridSensorRaysReachTheCellsMapPositions) {
             EXPECT_NEAR(o[1] + t * d[1], 1.0 - r, 1e-6) << r << ", " << c;
         }
     // Rows from 2 on (a --tile part): the geotransform's origin two cells down.
-    EXPECT_DOUBLE_EQ(trace::like_georeference(grid, 2).geotransform->at(3), -0.5);
+    EXPECT_DOUBLE_EQ(imaging::like_georeference(grid, 2).geotransform->at(3), -0.5);
 }

@@ -5,17 +5,17 @@
 #include <cstdio>
 #include <utility>
 
-#include "geom/view_angle.hpp"
-#include "trace/sensor.hpp"
+#include "imaging/sensor.hpp"
+#include "imaging/view_angle.hpp"
 
-namespace sigchain::trace {
+namespace sigchain::imaging {
 
 namespace {
 
 // The horizontal across-track direction at the middle of the image (body y, or body x
 // when y is vertical): the side of positive view angles.
-geo::Vec3 across_track_reference(const geom::Trajectory& trajectory, double t0, double t1) {
-    const geom::Pose p = trajectory.pose(0.5 * (t0 + t1));
+geo::Vec3 across_track_reference(const Trajectory& trajectory, double t0, double t1) {
+    const Pose p = trajectory.pose(0.5 * (t0 + t1));
     for (const geo::Vec3& v : {p.right, p.forward}) {
         const double n = std::hypot(v[0], v[1]);
         if (n > 1e-6) return {v[0] / n, v[1] / n, 0.0};
@@ -38,7 +38,7 @@ std::string span(double t0, double t1) {
 
 }  // namespace
 
-PushbroomSensor::PushbroomSensor(geom::Trajectory trajectory, PushbroomGeometry g)
+PushbroomSensor::PushbroomSensor(Trajectory trajectory, PushbroomGeometry g)
     : m_trajectory(std::move(trajectory)), m_g(g) {
     m_trajectory.require_covers(m_g.start_time_s, m_g.end_time_s(), "the pushbroom image");
     m_reference = across_track_reference(m_trajectory, m_g.start_time_s, m_g.end_time_s());
@@ -53,7 +53,7 @@ double PushbroomSensor::time_of(double row) const {
 void PushbroomSensor::ray(double row, double column, geo::Vec3& origin,
                           geo::Vec3& direction) const {
     const double u = split_row(row, m_g.lines).second;
-    const geom::Pose pose = m_trajectory.pose(time_of(row));
+    const Pose pose = m_trajectory.pose(time_of(row));
     const double x = (u - 0.5) * m_g.pitch_mm;
     const double y = (column - 0.5 * static_cast<double>(m_g.detectors)) * m_g.pitch_mm;
     origin = pose.position;
@@ -64,14 +64,14 @@ void PushbroomSensor::nominal_ray(double row, double column, geo::Vec3& origin,
                                   geo::Vec3& direction) const {
     const double t =
         m_g.start_time_s + (row - 0.5) * m_g.line_period_s + 0.5 * m_g.integration_time_s;
-    const geom::Pose pose = m_trajectory.pose(t);
+    const Pose pose = m_trajectory.pose(t);
     const double y = (column - 0.5 * static_cast<double>(m_g.detectors)) * m_g.pitch_mm;
     origin = pose.position;
     direction = geo::unit(pose.to_scene({0.0, y, m_g.focal_length_mm}));
 }
 
 double PushbroomSensor::view_angle_deg(const geo::Vec3& direction) const {
-    return geom::signed_view_angle_deg(direction, m_reference);
+    return signed_view_angle_deg(direction, m_reference);
 }
 
 std::string PushbroomSensor::summary() const {
@@ -80,7 +80,7 @@ std::string PushbroomSensor::summary() const {
            span(m_g.start_time_s, m_g.end_time_s());
 }
 
-LineScannerSensor::LineScannerSensor(geom::Trajectory trajectory, LineScanGeometry g)
+LineScannerSensor::LineScannerSensor(Trajectory trajectory, LineScanGeometry g)
     : m_trajectory(std::move(trajectory)), m_g(g) {
     m_trajectory.require_covers(m_g.start_time_s, m_g.end_time_s(), "the line-scanner image");
     m_reference = across_track_reference(m_trajectory, m_g.start_time_s, m_g.end_time_s());
@@ -110,14 +110,14 @@ void LineScannerSensor::ray(double row, double column, geo::Vec3& origin,
         alpha -= (tf - 0.5) * n * m_g.ifov_rad;
     }
     const double theta = scan_angle_rad(column);
-    const geom::Pose pose = m_trajectory.pose(time_of(row, column));
+    const Pose pose = m_trajectory.pose(time_of(row, column));
     origin = pose.position;
     direction = geo::unit(pose.to_scene(
         {std::sin(alpha), std::cos(alpha) * std::sin(theta), std::cos(alpha) * std::cos(theta)}));
 }
 
 double LineScannerSensor::view_angle_deg(const geo::Vec3& direction) const {
-    return geom::signed_view_angle_deg(direction, m_reference);
+    return signed_view_angle_deg(direction, m_reference);
 }
 
 std::string LineScannerSensor::summary() const {
@@ -129,4 +129,4 @@ std::string LineScannerSensor::summary() const {
            span(m_g.start_time_s, m_g.end_time_s());
 }
 
-}  // namespace sigchain::trace
+}  // namespace sigchain::imaging

@@ -1,6 +1,6 @@
-// Tests for lib/geom/trajectory: the attitude convention (trj(5)), slerp, and cubic
+// Tests for lib/imaging/trajectory: the attitude convention (trj(5)), slerp, and cubic
 // Hermite positions against polynomials they must reproduce exactly.
-#include "geom/trajectory.hpp"
+#include "imaging/trajectory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,12 +31,12 @@ io::TrjRecord record(double t, Vec3 p, double roll, double pitch, double yaw,
 TEST(Trajectory, AttitudeConvention) {
     io::Trj trj;
     trj.records = {record(0, {0, 0, 0}, 0, 0, 90), record(1, {0, 0, 0}, 0, 0, 90)};
-    geom::Pose p = geom::Trajectory(trj, "t.trj").pose(0.5);
+    imaging::Pose p = imaging::Trajectory(trj, "t.trj").pose(0.5);
     expect_near(p.forward, {1, 0, 0}, 1e-15);  // heading 90: east
     expect_near(p.right, {0, -1, 0}, 1e-15);   // right of east is south
     expect_near(p.down, {0, 0, -1}, 1e-15);
     trj.records = {record(0, {0, 0, 0}, 10, 20, 0), record(1, {0, 0, 0}, 10, 20, 0)};
-    p = geom::Trajectory(trj, "t.trj").pose(0);
+    p = imaging::Trajectory(trj, "t.trj").pose(0);
     expect_near(p.forward, {0, std::cos(20 * kDeg), std::sin(20 * kDeg)}, 1e-15);
     // R = Rz Ry Rx: body y = (0, cos r, sin r) in NED, turned by the pitch about y.
     const double r = 10 * kDeg, q = 20 * kDeg;
@@ -51,7 +51,7 @@ TEST(Trajectory, AttitudeConvention) {
 TEST(Trajectory, SlerpIsUniformInAngle) {
     io::Trj trj;
     trj.records = {record(0, {0, 0, 0}, 0, 0, 0), record(4, {0, 0, 0}, 0, 0, 90)};
-    const geom::Trajectory t(trj, "t.trj");
+    const imaging::Trajectory t(trj, "t.trj");
     for (double s : {0.25, 0.5, 0.9}) {
         const double h = 90 * s * kDeg;
         expect_near(t.pose(4 * s).forward, {std::sin(h), std::cos(h), 0}, 1e-12);
@@ -67,23 +67,23 @@ TEST(Trajectory, HermiteReproducesPolynomials) {
     io::Trj trj;
     for (double t : {0.0, 0.7, 2.0, 3.5})
         trj.records.push_back(record(t, cubic(t), 0, 0, 0, dcubic(t)));
-    const geom::Trajectory with_v(trj, "t.trj");
+    const imaging::Trajectory with_v(trj, "t.trj");
     for (double t = 0; t <= 3.5; t += 0.13) expect_near(with_v.pose(t).position, cubic(t), 1e-9);
     const auto quad = [](double t) { return Vec3{t * t, 2 * t, 7}; };
     trj.records.clear();
     for (double t : {0.0, 1.0, 2.0, 3.0}) trj.records.push_back(record(t, quad(t), 0, 0, 0));
-    const geom::Trajectory fd(trj, "t.trj");
+    const imaging::Trajectory fd(trj, "t.trj");
     for (double t = 1; t <= 2; t += 0.1) expect_near(fd.pose(t).position, quad(t), 1e-9);
 }
 
 TEST(Trajectory, StraightFlightAndCoverage) {
-    const geom::Trajectory t = geom::Trajectory::straight({10, 20, 500}, 50, 90, 0, 0, 2, 4);
+    const imaging::Trajectory t = imaging::Trajectory::straight({10, 20, 500}, 50, 90, 0, 0, 2, 4);
     expect_near(t.pose(3).position, {60, 20, 500}, 1e-9);
     expect_near(t.pose(3).forward, {1, 0, 0}, 1e-15);
     io::Trj trj;
     trj.records = {record(0, {0, 0, 0}, 0, 0, 0, std::nullopt, 2),
                    record(1, {0, 1, 0}, 0, 0, 0, std::nullopt, 3)};
-    const geom::Trajectory f(trj, "f.trj");
+    const imaging::Trajectory f(trj, "f.trj");
     EXPECT_NO_THROW(f.require_covers(0, 1, "the image"));
     try {
         f.require_covers(0.5, 2, "the image");
@@ -97,8 +97,8 @@ TEST(Trajectory, StraightFlightAndCoverage) {
 // The sine jitter turns the body by A sin(2 pi f t) about its own axes: a yaw jitter of
 // 2 deg at 0.25 Hz is 2 deg of heading at t = 1 s.
 TEST(Trajectory, SineJitter) {
-    const geom::Jitter j{{0, 0, 2}, {0, 0, 0.25}};
-    const geom::Trajectory t = geom::Trajectory::straight({0, 0, 0}, 0, 0, 0, 0, 0, 2, j);
+    const imaging::Jitter j{{0, 0, 2}, {0, 0, 0.25}};
+    const imaging::Trajectory t = imaging::Trajectory::straight({0, 0, 0}, 0, 0, 0, 0, 0, 2, j);
     expect_near(t.pose(1).forward, {std::sin(2 * kDeg), std::cos(2 * kDeg), 0}, 1e-15);
     expect_near(t.pose(2).forward, {0, 1, 0}, 1e-14);
 }
@@ -108,24 +108,24 @@ TEST(Trajectory, SineJitter) {
 // variance of the roll at t = 1 s is sigma^2 to within 25 % (the estimate's relative
 // standard deviation is sqrt(2 / 400) = 7 %: 25 % is 3.5 of them) and at t = 0 it is 0.
 TEST(Trajectory, SeededRandomWalkJitter) {
-    const auto roll_deg = [](const geom::Trajectory& t, double time) {
+    const auto roll_deg = [](const imaging::Trajectory& t, double time) {
         return std::asin(-t.pose(time).right[2]) / kDeg;  // level, heading north
     };
-    geom::Jitter j;
+    imaging::Jitter j;
     j.walk_deg = {0.5, 0, 0};
     j.seed = 7;
-    const geom::Trajectory a = geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
+    const imaging::Trajectory a = imaging::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
     const double late = roll_deg(a, 1.7), early = roll_deg(a, 0.3);
-    const geom::Trajectory b = geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
+    const imaging::Trajectory b = imaging::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
     EXPECT_EQ(roll_deg(b, 0.3), early);
     EXPECT_EQ(roll_deg(b, 1.7), late);
     j.seed = 8;
-    EXPECT_NE(roll_deg(geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j), 1.7), late);
+    EXPECT_NE(roll_deg(imaging::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j), 1.7), late);
     double sum = 0, sum2 = 0;
     const int n = 400;
     for (int seed = 0; seed < n; ++seed) {
         j.seed = static_cast<std::uint64_t>(seed);
-        const geom::Trajectory t = geom::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
+        const imaging::Trajectory t = imaging::Trajectory::straight({0, 0, 0}, 1, 0, 0, 0, 0, 2, j);
         EXPECT_NEAR(roll_deg(t, 0), 0.0, 1e-12);
         const double r = roll_deg(t, 1.0);
         sum += r;

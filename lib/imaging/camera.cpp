@@ -1,5 +1,5 @@
 // Frame camera geometry from an .adv look-angle file.
-#include "geom/camera.hpp"
+#include "imaging/camera.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/numeric.hpp"
 
-namespace sigchain::geom {
+namespace sigchain::imaging {
 
 FrameCamera frame_camera(const io::Adv& adv, const std::string& adv_file) {
     FrameCamera cam;
@@ -49,4 +49,4 @@ Vec3 FrameCamera::direction(double row, double column) const {
                       f * forward[2] + x * right[2] + y * down[2]});
 }
 
-}  // namespace sigchain::geom
+}  // namespace sigchain::imaging
