@@ -7,8 +7,8 @@
 
 #include <random>
 
-#include "sensor/mtf.hpp"
-#include "sensor/psf.hpp"
+#include "sensor_response/mtf.hpp"
+#include "sensor_response/psf.hpp"
 
 namespace {
 
@@ -26,13 +26,13 @@ std::vector<float> random_band() {
 
 void BM_MtfFilterFftw(benchmark::State& state) {
     const auto band = random_band();
-    sensor::MtfParams p;
+    sensor_response::MtfParams p;
     // The same Gaussian as the PSF below (plus the detector footprint).
     p.defocus_sigma_px = static_cast<double>(state.range(0));
     p.enabled = true;
-    const sensor::MtfChain chain(p, 0);
+    const sensor_response::MtfChain chain(p, 0);
     for (auto _ : state) {
-        auto out = sensor::apply_mtf(band, size, size, chain);
+        auto out = sensor_response::apply_mtf(band, size, size, chain);
         benchmark::DoNotOptimize(out);
     }
     state.SetItemsProcessed(state.iterations() * size * size);
@@ -41,9 +41,9 @@ BENCHMARK(BM_MtfFilterFftw)->Arg(2)->Arg(6)->Unit(benchmark::kMillisecond);
 
 void BM_PsfConvolveSpatial(benchmark::State& state) {
     const auto band = random_band();
-    const auto kernel = sensor::gaussian_kernel(static_cast<double>(state.range(0)));
+    const auto kernel = sensor_response::gaussian_kernel(static_cast<double>(state.range(0)));
     for (auto _ : state) {
-        auto out = sensor::convolve(band, size, size, kernel);
+        auto out = sensor_response::convolve(band, size, size, kernel);
         benchmark::DoNotOptimize(out);
     }
     state.SetItemsProcessed(state.iterations() * size * size);

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "compare/compare.hpp"
-#include "sensor/band.hpp"
+#include "sensor_response/band.hpp"
 #include "stats/stats.hpp"
 
 namespace {
@@ -27,9 +27,9 @@ void BM_BandRadiance(benchmark::State& state) {
     for (int i = 0; i < 30; ++i) cube.wavelength_um.push_back(0.4 + 0.01 * i);
     std::vector<double> response(10, 0.5);
     auto widths =
-        sensor::sample_widths_um({cube.wavelength_um.begin(), cube.wavelength_um.begin() + 10}, 10);
+        sensor_response::sample_widths_um({cube.wavelength_um.begin(), cube.wavelength_um.begin() + 10}, 10);
     for (auto _ : state) {
-        auto band = sensor::band_radiance(cube, {0, 10}, response, widths, "bench.sen");
+        auto band = sensor_response::band_radiance(cube, {0, 10}, response, widths, "bench.sen");
         benchmark::DoNotOptimize(band);
     }
     state.SetItemsProcessed(state.iterations() * 512 * 512);

@@ -26,7 +26,7 @@ lat=50.8027 lon=8.7715  # the Marburg subset's centre
 cheap="-q --streams 8 --sky-zenith-step 90 --sky-azimuth-step 360 --sky-subsamples 1 --upwelled-azimuth-step 360"
 
 # band_radiance RAD SEN COS_SUN: sum(R w L) / sum(R w), L = 0.3/pi Es cos tau1 tau2 + Lus + Lue,
-# w the midpoint widths of the .rad's wavelengths (sensor::sample_widths_um).
+# w the midpoint widths of the .rad's wavelengths (sensor_response::sample_widths_um).
 band_radiance() {
     awk -v cs="$3" '
     FNR == 1 { f++ ; n = 0 }

@@ -28,7 +28,7 @@ std::vector<std::string> split_list(const std::string& text, const char* option)
 }
 
 // --target LAT,LON into the Job.
-void read_target(const cli::po::variables_map& vm, sensor::LandsatJob& job) {
+void read_target(const cli::po::variables_map& vm, sensor_response::LandsatJob& job) {
     if (!vm.count("target")) return;
     const auto v = cli::parse_number_list("--target", vm["target"].as<std::string>(),
                                           {cli::reals(-90, 90), cli::reals(-180, 180)}, "LAT,LON");
@@ -37,7 +37,7 @@ void read_target(const cli::po::variables_map& vm, sensor::LandsatJob& job) {
 }
 
 // --view-angles MIN,MAX,INC into the Job.
-void read_view_angles(const cli::po::variables_map& vm, sensor::LandsatJob& job) {
+void read_view_angles(const cli::po::variables_map& vm, sensor_response::LandsatJob& job) {
     const auto view = cli::parse_number_list(
         "--view-angles", vm["view-angles"].as<std::string>(),
         {cli::reals(-90, 90), cli::reals(-90, 90), cli::positive(180)}, "MIN,MAX,INC");
@@ -87,8 +87,8 @@ void add_landsat_sensor_options(cli::Cli& tool) {
     tool.add_required_output_option("DIR", "write DIR/NAME.snd and DIR/NAME-bK.sen; required");
 }
 
-sensor::LandsatJob landsat_sensor_job(const cli::po::variables_map& vm) {
-    sensor::LandsatJob job;
+sensor_response::LandsatJob landsat_sensor_job(const cli::po::variables_map& vm) {
+    sensor_response::LandsatJob job;
     job.mtl_path = cli::args(vm, "mtl").at(0);
     if (vm.count("rsr")) job.rsr_paths = vm["rsr"].as<std::vector<std::string>>();
     if (job.rsr_paths.empty())
@@ -103,7 +103,7 @@ sensor::LandsatJob landsat_sensor_job(const cli::po::variables_map& vm) {
     if (vm.count("increment")) job.spectral.increment_cm1 = cli::real(vm, "increment");
     job.spectral.threshold = cli::real(vm, "threshold");
     if (vm.count("gain"))
-        job.gain_overrides = sensor::parse_gain_overrides(vm["gain"].as<std::string>());
+        job.gain_overrides = sensor_response::parse_gain_overrides(vm["gain"].as<std::string>());
     if (!vm.count("print-bands")) job.out_dir = cli::output_path(vm);
     return job;
 }
@@ -111,12 +111,12 @@ sensor::LandsatJob landsat_sensor_job(const cli::po::variables_map& vm) {
 int run_landsat_sensor_command(const cli::po::variables_map& vm, cli::Context& ctx) {
     const auto job = landsat_sensor_job(vm);
     if (vm.count("print-bands")) {
-        const auto bands = sensor::landsat_bands(job);
+        const auto bands = sensor_response::landsat_bands(job);
         for (std::size_t i = 0; i < bands.size(); ++i) std::cout << (i ? "," : "") << bands[i];
         std::cout << '\n';
         return 0;
     }
-    sensor::run_landsat_job(job, ctx);
+    sensor_response::run_landsat_job(job, ctx);
     return 0;
 }
 

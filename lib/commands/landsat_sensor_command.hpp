@@ -4,7 +4,7 @@
 #pragma once
 
 #include "cli/cli.hpp"
-#include "sensor/landsat_job.hpp"
+#include "sensor_response/landsat_job.hpp"
 
 namespace sigchain::commands {
 
@@ -15,7 +15,7 @@ void add_landsat_sensor_options(cli::Cli& tool);
 // The Job of a parsed command line; UsageError for an empty name in --bands, a bad
 // --target or --view-angles (MAX below MIN) or --gain, no -o (unless --print-bands).
 // Without --rsr the data directory is resolved (IoError when it does not exist).
-sensor::LandsatJob landsat_sensor_job(const cli::po::variables_map& vm);
+sensor_response::LandsatJob landsat_sensor_job(const cli::po::variables_map& vm);
 // The whole command: with --print-bands the bands on standard output, else the Job's
 // run. Returns the exit status.
 int run_landsat_sensor_command(const cli::po::variables_map& vm, cli::Context& ctx);

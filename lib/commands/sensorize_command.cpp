@@ -10,8 +10,6 @@
 
 namespace sigchain::commands {
 
-namespace sensor = sigchain::sensor;
-
 namespace {
 
 constexpr long double kInfinity = std::numeric_limits<long double>::infinity();
@@ -42,8 +40,8 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& op
 }
 
 // The MTF chain's parameters from the --mtf-* options (sensorize(1), MTF).
-sensor::MtfParams mtf_from(const cli::po::variables_map& vm) {
-    sensor::MtfParams p;
+sensor_response::MtfParams mtf_from(const cli::po::variables_map& vm) {
+    sensor_response::MtfParams p;
     auto number = [&](const char* name, double& to) {
         if (!vm.count(name)) return;
         to = cli::real(vm, name);
@@ -89,7 +87,7 @@ std::string mtf_value(double v) {
 
 }  // namespace
 
-void report_sensorize(const sensor::SensorizeReport& r, const sensor::SensorizeJob& job,
+void report_sensorize(const sensor_response::SensorizeReport& r, const sensor_response::SensorizeJob& job,
                       const cli::Context& ctx) {
     if (!r.cube_has_wavelengths)
         ctx.warn(job.cube_path + ": no wavelength list: spectral samples weighted equally");
@@ -130,10 +128,10 @@ std::uint64_t noise_seed(const cli::po::variables_map& vm, const cli::Context& c
 
 }  // namespace
 
-sensor::SensorizeJob sensorize_job(const cli::po::variables_map& vm, const cli::Context& ctx) {
+sensor_response::SensorizeJob sensorize_job(const cli::po::variables_map& vm, const cli::Context& ctx) {
     auto inputs = cli::args(vm, "input");
     if (inputs.size() < 2) throw sigchain::UsageError("expected a cube and at least one .sen file");
-    sensor::SensorizeJob job;
+    sensor_response::SensorizeJob job;
     job.cube_path = inputs[0];
     job.sen_paths.assign(inputs.begin() + 1, inputs.end());
     // Missing -o: check_job's usage error says what -o must name (image or directory).
@@ -162,8 +160,8 @@ sensor::SensorizeJob sensorize_job(const cli::po::variables_map& vm, const cli::
     if (job.calibrate) {
         for (const char* o : {"card1", "card2", "target1", "target2"})
             if (!vm.count(o)) throw sigchain::UsageError(std::string("--calibrate needs --") + o);
-        job.calibration.card1 = sensor::parse_box(vm["card1"].as<std::string>(), "--card1");
-        job.calibration.card2 = sensor::parse_box(vm["card2"].as<std::string>(), "--card2");
+        job.calibration.card1 = sensor_response::parse_box(vm["card1"].as<std::string>(), "--card1");
+        job.calibration.card2 = sensor_response::parse_box(vm["card2"].as<std::string>(), "--card2");
         job.calibration.target1 = parse_targets(vm["target1"].as<std::string>(), "--target1");
         job.calibration.target2 = parse_targets(vm["target2"].as<std::string>(), "--target2");
     }
@@ -230,9 +228,9 @@ void add_sensorize_options(cli::Cli& tool) {
 
 int run_sensorize_command(const cli::po::variables_map& vm, cli::Context& ctx) {
     const auto job = sensorize_job(vm, ctx);
-    const auto result = sensor::run_sensorize(job);
+    const auto result = sensor_response::run_sensorize(job);
     report_sensorize(result, job, ctx);
-    if (job.calibrate) sensor::write_calibration_table(std::cout, result);
+    if (job.calibrate) sensor_response::write_calibration_table(std::cout, result);
     return 0;
 }
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "cli/cli.hpp"
-#include "sensor/sensorize_job.hpp"
+#include "sensor_response/sensorize_job.hpp"
 
 namespace sigchain::commands {
 
@@ -16,10 +16,10 @@ void add_sensorize_options(cli::Cli& tool);
 // (a cube and no .sen, --preview-stretch without --preview, --calibrate without its
 // cards and targets, both --seed and --noise-seed, a malformed --mtf-* list). The
 // deprecated --noise-seed is warned about through `ctx`.
-sensor::SensorizeJob sensorize_job(const cli::po::variables_map& vm, const cli::Context& ctx);
+sensor_response::SensorizeJob sensorize_job(const cli::po::variables_map& vm, const cli::Context& ctx);
 // The run's report: clipped pixels per band (a warning when any), the MTF at Nyquist
 // (-v), a cube without wavelengths.
-void report_sensorize(const sensor::SensorizeReport& r, const sensor::SensorizeJob& job,
+void report_sensorize(const sensor_response::SensorizeReport& r, const sensor_response::SensorizeJob& job,
                       const cli::Context& ctx);
 // The whole command: the Job, the run, the report, and with --calibrate the table on
 // standard output. Returns the exit status.

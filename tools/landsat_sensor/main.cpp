@@ -1,6 +1,6 @@
 // landsat_sensor: a Landsat MTL file and relative spectral responses -> the scene node (.snd)
 // and one sensor band file (.sen) per band, to render a scene as that Landsat scene saw it
-// (lib/sensor/landsat_job.hpp).
+// (lib/sensor_response/landsat_job.hpp).
 #include "cli/cli.hpp"
 #include "commands/landsat_sensor_command.hpp"
 

@@ -12,7 +12,7 @@ namespace {
 using testing::parse_line;
 using testing::usage_error_of;
 
-sensor::LandsatJob job_of(const std::vector<std::string>& args) {
+sensor_response::LandsatJob job_of(const std::vector<std::string>& args) {
     return landsat_sensor_job(parse_line(landsat_sensor_info(), add_landsat_sensor_options, args));
 }
 

@@ -13,7 +13,7 @@ namespace sigchain::commands {
 namespace {
 
 // The Job of `args` (after the tool's name), as sensorize would make it.
-sensor::SensorizeJob job_of(std::vector<std::string> args) {
+sensor_response::SensorizeJob job_of(std::vector<std::string> args) {
     cli::Cli tool(sensorize_info());
     add_sensorize_options(tool);
     args.insert(args.begin(), "sensorize");

@@ -1,5 +1,5 @@
-// Tests for the sensor band model (lib/sensor/band): grouping, widths, L̄, counts.
-#include "sensor/band.hpp"
+// Tests for the sensor band model (lib/sensor_response/band): grouping, widths, L̄, counts.
+#include "sensor_response/band.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 
 using namespace sigchain;
-using namespace sigchain::sensor;
+using namespace sigchain::sensor_response;
 
 namespace {
 

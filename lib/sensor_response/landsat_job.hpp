@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/report.hpp"
-#include "sensor/landsat.hpp"
+#include "sensor_response/landsat.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 struct LandsatJob {
     std::string mtl_path;
@@ -42,4 +42,4 @@ void run_landsat_job(const LandsatJob& job, const Reporter& report);
 // its extension).
 std::string landsat_output_name(const LandsatJob& job);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

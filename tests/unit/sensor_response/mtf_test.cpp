@@ -1,5 +1,5 @@
-// Tests for the MTF chain and its FFTW3 frequency-domain filter (lib/sensor/mtf).
-#include "sensor/mtf.hpp"
+// Tests for the MTF chain and its FFTW3 frequency-domain filter (lib/sensor_response/mtf).
+#include "sensor_response/mtf.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 
 using namespace sigchain;
-using namespace sigchain::sensor;
+using namespace sigchain::sensor_response;
 
 namespace {
 

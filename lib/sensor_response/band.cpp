@@ -1,5 +1,5 @@
 // Band-effective radiance and digital counts (White (1996), section 3.2; sen(5)).
-#include "sensor/band.hpp"
+#include "sensor_response/band.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 std::vector<BandSamples> group_bands(const std::vector<io::Sen>& sens,
                                      const std::vector<std::string>& sen_paths, int cube_bands,
@@ -130,4 +130,4 @@ void apply_gain_bias(std::vector<float>& values, double gain, double bias) {
     for (float& v : values) v = static_cast<float>(gain * v + bias);
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

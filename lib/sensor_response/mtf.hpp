@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // sinc(x) = sin(πx) / (πx), sinc(0) = 1.
 double sinc(double x);
@@ -111,4 +111,4 @@ MtfBandReport apply_band_mtf(std::vector<float>& plane, long rows, long columns,
                              const MtfParams& params, double wavelength_um,
                              const std::string& cube_path);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

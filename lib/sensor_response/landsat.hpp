@@ -12,7 +12,7 @@
 #include "io/mtl.hpp"
 #include "io/snd.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // ---- Calibration ------------------------------------------------------------------------
 
@@ -95,4 +95,4 @@ BandSpectrum band_spectrum(const std::vector<double>& wavelength_nm,
 double response_area_nm(const std::vector<double>& wavelength_nm,
                         const std::vector<double>& response, double a_nm, double b_nm);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -1,5 +1,5 @@
 // Gaussian and tabulated point-spread functions, clamp-to-edge convolution.
-#include "sensor/psf.hpp"
+#include "sensor_response/psf.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 namespace {
 
@@ -80,4 +80,4 @@ std::vector<float> convolve(const std::vector<float>& plane, long rows, long col
     return out;
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -1,4 +1,4 @@
-// Tests for sensor noise statistics and point-spread functions (lib/sensor).
+// Tests for sensor noise statistics and point-spread functions (lib/sensor_response).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <numeric>
 
 #include "core/error.hpp"
-#include "sensor/noise.hpp"
-#include "sensor/psf.hpp"
+#include "sensor_response/noise.hpp"
+#include "sensor_response/psf.hpp"
 
 using namespace sigchain;
-using namespace sigchain::sensor;
+using namespace sigchain::sensor_response;
 
 namespace {
 

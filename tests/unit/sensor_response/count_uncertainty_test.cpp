@@ -1,16 +1,16 @@
-// sensorize --uncertainty (lib/sensor/count_uncertainty, noise_variance): the counts'
+// sensorize --uncertainty (lib/sensor_response/count_uncertainty, noise_variance): the counts'
 // uncertainty is the input part through the gain and the noise model's variance in
 // quadrature; the variance is checked against the spread add_noise draws.
-#include "sensor/count_uncertainty.hpp"
+#include "sensor_response/count_uncertainty.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "sensor/noise.hpp"
+#include "sensor_response/noise.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 TEST(CountUncertainty, InputThroughGainAndNoiseInQuadrature) {
     NoiseModel noise;
@@ -50,4 +50,4 @@ TEST(CountUncertainty, NoiseVarianceMatchesTheDrawnNoise) {
     EXPECT_EQ(noise_variance(signal, NoiseModel{}), 0.0);
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

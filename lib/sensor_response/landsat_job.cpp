@@ -1,6 +1,6 @@
 // landsat_sensor's Job (man landsat_sensor(1)): the MTL's calibration and the response
 // tables into a .snd and one .sen per band, written as one set.
-#include "sensor/landsat_job.hpp"
+#include "sensor_response/landsat_job.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -15,7 +15,7 @@
 #include "io/sen.hpp"
 #include "io/snd.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 namespace {
 
@@ -224,4 +224,4 @@ void run_landsat_job(const LandsatJob& job, const Reporter& report) {
     commit_together(all);
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -1,9 +1,9 @@
 // Shot (Poisson) and read (Gaussian) noise on digital counts; see noise.hpp for the model.
-#include "sensor/noise.hpp"
+#include "sensor_response/noise.hpp"
 
 #include <random>
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 double noise_variance(double signal_counts, const NoiseModel& model) {
     double var = model.read_noise_counts * model.read_noise_counts;
@@ -32,4 +32,4 @@ void add_noise(std::vector<float>& counts, double bias, const NoiseModel& model,
     }
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

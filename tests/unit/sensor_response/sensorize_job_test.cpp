@@ -1,5 +1,5 @@
-// Tests for the sensorize job (lib/sensor/sensorize_job): calibration and outputs.
-#include "sensor/sensorize_job.hpp"
+// Tests for the sensorize job (lib/sensor_response/sensorize_job): calibration and outputs.
+#include "sensor_response/sensorize_job.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "io/sen.hpp"
 
 using namespace sigchain;
-using namespace sigchain::sensor;
+using namespace sigchain::sensor_response;
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // The noise model (sensorize(1) NOISE). A pixel's noise-free count is
 // c = gain * L̄ + bias; its signal part s = gain * L̄ (counts above the bias) is taken
@@ -30,4 +30,4 @@ double noise_variance(double signal_counts, const NoiseModel& model);
 void add_noise(std::vector<float>& counts, double bias, const NoiseModel& model,
                std::uint64_t stream);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

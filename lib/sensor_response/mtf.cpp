@@ -1,5 +1,5 @@
 // The MTF chain and its frequency-domain filter (FFTW3, double precision).
-#include "sensor/mtf.hpp"
+#include "sensor_response/mtf.hpp"
 
 #include <fftw3.h>
 
@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 namespace {
 
@@ -186,4 +186,4 @@ MtfBandReport apply_band_mtf(std::vector<float>& plane, long rows, long columns,
     return {wavelength_um, chain.terms(0.5, 0)};
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -1,12 +1,12 @@
 // Two-point gain and bias from two gray cards (White (1996), section 4.2.4).
-#include "sensor/calibrate.hpp"
+#include "sensor_response/calibrate.hpp"
 
 #include <cmath>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 PixelBox parse_box(const std::string& text, const std::string& option) {
     const auto fields = split_fields(text, true);
@@ -56,4 +56,4 @@ GainBias solve_gain_bias(double radiance1, double count1, double radiance2, doub
     return gb;
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -9,7 +9,7 @@
 #include "image/image.hpp"
 #include "io/sen.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // The cube bands (spectral samples) that belong to one sensor band.
 struct BandSamples {
@@ -71,4 +71,4 @@ ClipCount quantise(std::vector<float>& counts, int bits);
 // digital count = gain * L̄ + bias (sen(5)), unrounded.
 void apply_gain_bias(std::vector<float>& values, double gain, double bias);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -1,5 +1,5 @@
 // The sensorize job (White (1996), section 4.2.3.10, 4.2.4): cube + .sen files -> counts, radiance or gains.
-#include "sensor/sensorize_job.hpp"
+#include "sensor_response/sensorize_job.hpp"
 
 #include <cctype>
 #include <filesystem>
@@ -12,10 +12,10 @@
 #include "image/geolocation.hpp"
 #include "image/image.hpp"
 #include "io/sen.hpp"
-#include "sensor/count_uncertainty.hpp"
-#include "sensor/psf.hpp"
+#include "sensor_response/count_uncertainty.hpp"
+#include "sensor_response/psf.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 namespace {
 
 std::string stem_of(const std::string& path) {
@@ -261,4 +261,4 @@ void write_calibration_table(std::ostream& out, const SensorizeReport& report) {
             << format_number(row.solved.bias) << '\n';
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

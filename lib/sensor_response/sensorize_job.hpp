@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "image/image.hpp"
-#include "sensor/band.hpp"
-#include "sensor/calibrate.hpp"
-#include "sensor/mtf.hpp"
-#include "sensor/noise.hpp"
+#include "sensor_response/band.hpp"
+#include "sensor_response/calibrate.hpp"
+#include "sensor_response/mtf.hpp"
+#include "sensor_response/noise.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 struct CalibrationSetup {
     PixelBox card1, card2;        // pixel boxes of the two gray cards in the cube
@@ -75,4 +75,4 @@ SensorizeReport run_sensorize(const SensorizeJob& job);
 // the cards' band radiance, their targets, the solved gain and bias.
 void write_calibration_table(std::ostream& out, const SensorizeReport& report);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

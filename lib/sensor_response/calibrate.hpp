@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // A pixel box, 0-based, inclusive: rows row0..row1, columns column0..column1.
 struct PixelBox {
@@ -31,4 +31,4 @@ struct GainBias {
 GainBias solve_gain_bias(double radiance1, double count1, double radiance2, double count2,
                          const std::string& where_file);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // An odd-sized kernel, weights summing to 1, centre at (rows / 2, columns / 2).
 struct Kernel {
@@ -29,4 +29,4 @@ Kernel read_kernel_file(const std::string& path);
 std::vector<float> convolve(const std::vector<float>& plane, long rows, long columns,
                             const Kernel& kernel);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

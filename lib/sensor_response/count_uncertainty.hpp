@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "image/image.hpp"
-#include "sensor/noise.hpp"
+#include "sensor_response/noise.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 // The radiance uncertainty planes (W cm-2 sr-1 um-1, rows x columns each) of the truth
 // cube at `truth_path`: its "uncertainty_*" layers in order, one per sensor band.
@@ -25,4 +25,4 @@ std::vector<std::vector<float>> read_radiance_uncertainty(const std::string& tru
 void counts_uncertainty(std::vector<float>& sigma, const std::vector<float>& counts, double gain,
                         double bias, const NoiseModel& noise);
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

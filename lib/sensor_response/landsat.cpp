@@ -1,6 +1,6 @@
 // A Landsat band as sigchain's sensor: calibration (MTL, the ETM+ gain table) and the
 // response on a wavenumber grid with the wavelength Jacobian (man landsat_sensor(1)).
-#include "sensor/landsat.hpp"
+#include "sensor_response/landsat.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include "core/error.hpp"
 #include "core/numeric.hpp"
 #include "core/text.hpp"
-#include "sensor/band.hpp"
+#include "sensor_response/band.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 namespace {
 
@@ -191,4 +191,4 @@ BandSpectrum band_spectrum(const std::vector<double>& wl, const std::vector<doub
     return s;
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

@@ -1,11 +1,11 @@
 // The counts uncertainty of sensorize --uncertainty (count_uncertainty.hpp).
-#include "sensor/count_uncertainty.hpp"
+#include "sensor_response/count_uncertainty.hpp"
 
 #include <cmath>
 
 #include "core/error.hpp"
 
-namespace sigchain::sensor {
+namespace sigchain::sensor_response {
 
 std::vector<std::vector<float>> read_radiance_uncertainty(const std::string& truth_path,
                                                           const image::Image& cube, int bands) {
@@ -42,4 +42,4 @@ void counts_uncertainty(std::vector<float>& sigma, const std::vector<float>& cou
     }
 }
 
-}  // namespace sigchain::sensor
+}  // namespace sigchain::sensor_response

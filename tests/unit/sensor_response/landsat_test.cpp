@@ -1,6 +1,6 @@
-// Tests for a Landsat band as sigchain's sensor (lib/sensor/landsat): the ETM+ gain states,
+// Tests for a Landsat band as sigchain's sensor (lib/sensor_response/landsat): the ETM+ gain states,
 // and the band radiance sensorize forms from the .sen responses against independent integrals.
-#include "sensor/landsat.hpp"
+#include "sensor_response/landsat.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 
 #include "image/image.hpp"
 #include "io/rsr.hpp"
-#include "sensor/band.hpp"
+#include "sensor_response/band.hpp"
 
 using namespace sigchain;
-using namespace sigchain::sensor;
+using namespace sigchain::sensor_response;
 
 namespace {
 
@@ -40,7 +40,7 @@ io::Mtl hand_written(const std::string& bands) {
 }
 
 // Band radiance of `spectrum(lambda_um)` as sensorize forms it from a band's .sen responses:
-// through sensor::band_radiance on a one-pixel cube with the .rad's wavelengths.
+// through sensor_response::band_radiance on a one-pixel cube with the .rad's wavelengths.
 double sensorize_radiance(const BandSpectrum& s, double (*spectrum)(double)) {
     const long n = s.band.sample_count();
     image::Image cube(1, 1, static_cast<int>(n));
