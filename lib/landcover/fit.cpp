@@ -47,16 +47,19 @@ std::vector<ClassPoint> pick_control_points(const std::vector<int>& classes, lon
 }
 
 double fit_reflectance_scale(const std::vector<double>& dark, const std::vector<double>& base,
-                             const std::vector<double>& reference) {
-    if (dark.size() != base.size() || dark.size() != reference.size() || dark.empty())
-        throw std::invalid_argument("fit_reflectance_scale: sizes differ or are empty");
+                             const std::vector<double>& reference, const SourceLocation& where,
+                             const std::string& what) {
+    if (dark.size() != base.size() || dark.size() != reference.size())
+        throw std::invalid_argument("fit_reflectance_scale: sizes differ");
+    if (dark.empty()) throw DataError(where, what + ": no control points");
     double num = 0, den = 0;
     for (std::size_t i = 0; i < dark.size(); ++i) {
         const double b = base[i] - dark[i];
         num += b * (reference[i] - dark[i]);
         den += b * b;
     }
-    if (den == 0) throw std::invalid_argument("fit_reflectance_scale: base equals dark");
+    if (den == 0)
+        throw DataError(where, what + ": the base image equals the dark image at every control point");
     return num / den;
 }
 

@@ -4,7 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "core/error.hpp"
 
 namespace sigchain::landcover {
 
@@ -34,8 +37,12 @@ std::vector<ClassPoint> pick_control_points(const std::vector<int>& classes, lon
 // dark the value rendered with reflectance 0 (path radiance only) and base the value
 // with the unscaled reflectance. Minimises sum (dark + s (base - dark) - reference)^2:
 //   s = sum (base - dark)(reference - dark) / sum (base - dark)^2.
-// Throws std::invalid_argument for unequal sizes, no values, or base == dark everywhere.
+// `what` names the values at `where` (the control points' file) in a DataError "WHERE:
+// WHAT: no control points" for no values, or "...: the base image equals the dark image
+// at every control point" (s undetermined). Unequal sizes are the caller's bug
+// (std::invalid_argument).
 double fit_reflectance_scale(const std::vector<double>& dark, const std::vector<double>& base,
-                             const std::vector<double>& reference);
+                             const std::vector<double>& reference, const SourceLocation& where,
+                             const std::string& what);
 
 }  // namespace sigchain::landcover

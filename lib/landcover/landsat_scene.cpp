@@ -239,7 +239,9 @@ void fit_step(const std::string& cpt_path, const std::string& dark_path,
             std::snprintf(v, sizeof v, " %.6g",
                           fit_reflectance_scale(class_values(dark, b, cpt, cpt_path, name, true),
                                                 class_values(base, b, cpt, cpt_path, name, true),
-                                                class_values(ref, b, cpt, cpt_path, name, false)));
+                                                class_values(ref, b, cpt, cpt_path, name, false),
+                                                {cpt_path, 0},
+                                                "class " + name + ", band " + std::to_string(b + 1)));
             out << v;
         }
         out << "\n";

@@ -167,7 +167,9 @@ void fit_scales(const std::string& cpt_path, const std::string& dark_path,
             out << format(" %.6g",
                           fit_reflectance_scale(values(dark, b, cpt, cpt_path, name, true),
                                                 values(base, b, cpt, cpt_path, name, true),
-                                                values(ref, b, cpt, cpt_path, name, false)));
+                                                values(ref, b, cpt, cpt_path, name, false),
+                                                {cpt_path, 0},
+                                                "class " + name + ", band " + std::to_string(b + 1)));
         out << "\n";
     }
 }

@@ -8,28 +8,45 @@
 
 using namespace sigchain::landcover;
 
+namespace {
+const sigchain::SourceLocation kAt{"points.cpt", 0};
+}  // namespace
+
 TEST(FitScale, RecoversTheScaleOfExactLinearData) {
     // reference = dark + 1.37 (base - dark) exactly: the fit must return 1.37 to rounding.
     const std::vector<double> dark{10, 12, 11, 9};
     const std::vector<double> base{40, 60, 35, 50};
     std::vector<double> ref;
     for (std::size_t i = 0; i < dark.size(); ++i) ref.push_back(dark[i] + 1.37 * (base[i] - dark[i]));
-    EXPECT_NEAR(fit_reflectance_scale(dark, base, ref), 1.37, 1e-12);
+    EXPECT_NEAR(fit_reflectance_scale(dark, base, ref, kAt, "x"), 1.37, 1e-12);
 }
 
 TEST(FitScale, MatchesTheNormalEquationByHand) {
     // b = base - dark = {1, 2}, y = ref - dark = {2, 3}: s = (2 + 6) / (1 + 4) = 1.6.
-    EXPECT_DOUBLE_EQ(fit_reflectance_scale({0, 0}, {1, 2}, {2, 3}), 1.6);
+    EXPECT_DOUBLE_EQ(fit_reflectance_scale({0, 0}, {1, 2}, {2, 3}, kAt, "x"), 1.6);
     // The residual is orthogonal to b at the optimum: sum b (y - s b) = 0.
-    const double s = fit_reflectance_scale({1, 2, 3}, {4, 7, 5}, {8, 9, 4});
+    const double s = fit_reflectance_scale({1, 2, 3}, {4, 7, 5}, {8, 9, 4}, kAt, "x");
     const double r = (4 - 1) * (8 - 1 - s * 3) + (7 - 2) * (9 - 2 - s * 5) + (5 - 3) * (4 - 3 - s * 2);
     EXPECT_NEAR(r, 0.0, 1e-12);
 }
 
-TEST(FitScale, RefusesDegenerateInput) {
-    EXPECT_THROW(fit_reflectance_scale({}, {}, {}), std::invalid_argument);
-    EXPECT_THROW(fit_reflectance_scale({1, 2}, {1, 2}, {3, 4}), std::invalid_argument);
-    EXPECT_THROW(fit_reflectance_scale({1}, {1, 2}, {3, 4}), std::invalid_argument);
+TEST(FitScale, RefusesDegenerateInputAsBadData) {
+    // No control points, or base == dark everywhere: a DataError at the points' file.
+    try {
+        fit_reflectance_scale({}, {}, {}, {"p.cpt", 0}, "class water, band 2");
+        FAIL() << "no DataError";
+    } catch (const sigchain::DataError& e) {
+        EXPECT_STREQ(e.what(), "p.cpt: class water, band 2: no control points");
+    }
+    try {
+        fit_reflectance_scale({1, 2}, {1, 2}, {3, 4}, {"p.cpt", 0}, "class water, band 2");
+        FAIL() << "no DataError";
+    } catch (const sigchain::DataError& e) {
+        EXPECT_STREQ(e.what(), "p.cpt: class water, band 2: the base image equals the dark "
+                               "image at every control point");
+    }
+    // Unequal sizes are a caller's bug.
+    EXPECT_THROW(fit_reflectance_scale({1}, {1, 2}, {3, 4}, kAt, "x"), std::invalid_argument);
 }
 
 namespace {
