@@ -126,6 +126,17 @@ std::uint64_t noise_seed(const cli::po::variables_map& vm, const cli::Context& c
         cli::parse_number("--noise-seed", vm["noise-seed"].as<std::string>(), cli::seed_range()));
 }
 
+// --uncertainty-cube, or its former name --uncertainty (with a warning); not both.
+// Empty when neither is given.
+std::string uncertainty_cube(const cli::po::variables_map& vm, const cli::Context& ctx) {
+    if (!vm.count("uncertainty"))
+        return vm.count("uncertainty-cube") ? vm["uncertainty-cube"].as<std::string>() : "";
+    if (vm.count("uncertainty-cube"))
+        throw sigchain::UsageError("give --uncertainty-cube or --uncertainty, not both");
+    ctx.warn("--uncertainty is deprecated: use --uncertainty-cube");
+    return vm["uncertainty"].as<std::string>();
+}
+
 }  // namespace
 
 sensor_response::SensorizeJob sensorize_job(const cli::po::variables_map& vm, const cli::Context& ctx) {
@@ -153,7 +164,7 @@ sensor_response::SensorizeJob sensorize_job(const cli::po::variables_map& vm, co
         if (job.preview_path.empty()) throw sigchain::UsageError("--preview-stretch needs --preview");
         job.preview_common = s == "common";
     }
-    if (vm.count("uncertainty")) job.uncertainty_path = vm["uncertainty"].as<std::string>();
+    job.uncertainty_path = uncertainty_cube(vm, ctx);
     if (vm.count("uncertainty-output"))
         job.uncertainty_output_path = vm["uncertainty-output"].as<std::string>();
     job.calibrate = vm.count("calibrate") > 0;
@@ -205,10 +216,10 @@ void add_sensorize_options(cli::Cli& tool) {
         "also write a true-colour 8-bit PNG preview (2-98 % stretch)")(
         "preview-stretch", value<std::string>()->value_name("band|common"),
         "the preview's stretch: each band on its own (default), or one for all three")(
-        "uncertainty", value<std::string>()->value_name("TRUTH"),
+        "uncertainty-cube", value<std::string>()->value_name("TRUTH"),
         "trace's truth cube with uncertainty_BAND layers (trace --uncertainty)")(
         "uncertainty-output", value<std::string>()->value_name("FILE.tif"),
-        "write the counts' standard uncertainty per band (with --uncertainty)")(
+        "write the counts' standard uncertainty per band (with --uncertainty-cube)")(
         "calibrate", "solve gain and bias per band from two gray cards; -o names a directory")(
         "card1", value<std::string>()->value_name("BOX"), "card 1 pixel box ROW0,COL0,ROW1,COL1")(
         "card2", value<std::string>()->value_name("BOX"), "card 2 pixel box ROW0,COL0,ROW1,COL1")(
@@ -221,6 +232,10 @@ void add_sensorize_options(cli::Cli& tool) {
     tool.add_seed_option("seed of the noise (default 0)", 0);
     // The former name of --seed, still accepted (sensorize(1), DEPRECATED OPTIONS).
     tool.add_number("noise-seed", "N", cli::seed_range(), "use --seed", nullptr, true);
+    // The former name of --uncertainty-cube, still accepted (sensorize(1), DEPRECATED
+    // OPTIONS): in trace, --uncertainty reads an .unc file, so the cube got a name of its own.
+    tool.add_hidden_options()("uncertainty", value<std::string>()->value_name("TRUTH"),
+                              "use --uncertainty-cube");
     tool.add_required_output_option(
         "IMAGE",
         "the image to write (required); with --calibrate, the directory for the .sen files");

@@ -1,4 +1,4 @@
-// The counts uncertainty of sensorize --uncertainty (count_uncertainty.hpp).
+// The counts uncertainty of sensorize --uncertainty-cube (count_uncertainty.hpp).
 #include "sensor_response/count_uncertainty.hpp"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// sensorize --uncertainty: a per-band standard uncertainty of the counts from trace's
+// sensorize --uncertainty-cube: a per-band standard uncertainty of the counts from trace's
 // radiance uncertainty layers (trace(1) UNCERTAINTY) and the noise model (noise.hpp).
 #pragma once
 

@@ -85,7 +85,7 @@ void check_job(const SensorizeJob& job) {
         throw UsageError("--preview " + job.preview_path +
                          ": the preview is a .png file, not made with --calibrate");
     if (job.uncertainty_path.empty() != job.uncertainty_output_path.empty())
-        throw UsageError("--uncertainty and --uncertainty-output go together");
+        throw UsageError("--uncertainty-cube and --uncertainty-output go together");
     if (!job.uncertainty_path.empty() &&
         (job.calibrate || file_extension(job.uncertainty_output_path) != "tif"))
         throw UsageError("--uncertainty-output " + job.uncertainty_output_path +
@@ -188,7 +188,7 @@ SensorizeReport run_sensorize(const SensorizeJob& job) {
     image::Image radiance(radiance_preview ? cube.rows : 0, cube.columns, bands);
     // A cube in W m-2 sr-1 um-1 (trace --radiance-units W/m2/sr/um) to the .sen's unit.
     const double to_sen_units = cube.units == "W m-2 sr-1 um-1" ? 1e-4 : 1.0;
-    std::vector<std::vector<float>> sigma;  // --uncertainty: per band, radiance then counts
+    std::vector<std::vector<float>> sigma;  // --uncertainty-cube: per band, radiance then counts
     if (!job.uncertainty_path.empty())
         sigma = read_radiance_uncertainty(job.uncertainty_path, cube, bands);
     if (!job.float_output && to_sen_units != 1)

@@ -36,7 +36,7 @@ struct SensorizeJob {
     image::WriteOptions write_options;  // --co and the provenance of the image
     std::string preview_path;           // --preview: a true-colour PNG too, when not empty
     bool preview_common = false;        // --preview-stretch common: one stretch of band radiance
-    // --uncertainty TRUTH and --uncertainty-output FILE.tif (sensorize(1) UNCERTAINTY):
+    // --uncertainty-cube TRUTH and --uncertainty-output FILE.tif (sensorize(1) UNCERTAINTY):
     // trace's uncertainty_BAND layers in, the counts' standard uncertainty out.
     std::string uncertainty_path;
     std::string uncertainty_output_path;

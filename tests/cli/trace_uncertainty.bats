@@ -3,7 +3,7 @@
 # Also requires: sensorize sigchain-check gdalinfo
 #
 # trace --uncertainty FILE (trace(1) UNCERTAINTY, unc(5)) on the box scene of trace.bats
-# (tests/data/trace, training.unc), and sensorize --uncertainty carrying its layers
+# (tests/data/trace, training.unc), and sensorize --uncertainty-cube carrying its layers
 # into counts (sensorize(1) UNCERTAINTY).
 
 bats_require_minimum_version 1.5.0
@@ -45,13 +45,13 @@ load trace_helper
     trace_bad 1 "" $(inputs) -o out.img --truth t.img --uncertainty missing.unc
 }
 
-@test "sensorize --uncertainty writes one counts uncertainty band per .sen" {
+@test "sensorize --uncertainty-cube writes one counts uncertainty band per .sen" {
     trace_ok $(inputs) --samples-per-pixel 1 -o cube.img --truth truth.img \
         --uncertainty "$DATA/training.unc"
     printf '3\n10000\n5\n1\n1\n1\n' > b1.sen
     printf '3\n10000\n5\n1\n1\n1\n' > b2.sen
     run -0 --separate-stderr sensorize cube.img b1.sen b2.sen -o dc.tif \
-        --uncertainty truth.img --uncertainty-output u.tif --read-noise 1
+        --uncertainty-cube truth.img --uncertainty-output u.tif --read-noise 1
     run -0 gdalinfo -stats u.tif
     [[ "$output" == *"Band 2 Block"* ]] || fail "gdalinfo: $output"
     [[ "$output" != *"Band 3 Block"* ]] || fail "gdalinfo: $output"
@@ -62,20 +62,38 @@ load trace_helper
     awk -v m="${BASH_REMATCH[1]}" 'BEGIN { exit !(m > 1.5) }' || fail "maximum ${BASH_REMATCH[1]} <= 1.5"
 }
 
-@test "sensorize --uncertainty without --uncertainty-output is a usage error (exit 2)" {
+@test "sensorize --uncertainty-cube without --uncertainty-output is a usage error (exit 2)" {
     trace_ok $(inputs) --samples-per-pixel 1 -o cube.img --truth truth.img
     printf '3\n10000\n5\n1\n1\n1\n' > b1.sen
-    run -2 --separate-stderr sensorize cube.img b1.sen b1.sen -o dc.tif --uncertainty truth.img
-    [[ "$stderr" == "sensorize: --uncertainty and --uncertainty-output go together"* ]] ||
+    run -2 --separate-stderr sensorize cube.img b1.sen b1.sen -o dc.tif --uncertainty-cube truth.img
+    [[ "$stderr" == "sensorize: --uncertainty-cube and --uncertainty-output go together"* ]] ||
         fail "stderr: $stderr"
 }
 
-@test "sensorize --uncertainty: a truth cube without uncertainty layers (exit 1)" {
+@test "sensorize --uncertainty-cube: a truth cube without uncertainty layers (exit 1)" {
     trace_ok $(inputs) --samples-per-pixel 1 -o cube.img --truth truth.img
     printf '3\n10000\n5\n1\n1\n1\n' > b1.sen
-    run -1 --separate-stderr sensorize cube.img b1.sen b1.sen -o dc.tif --uncertainty truth.img \
+    run -1 --separate-stderr sensorize cube.img b1.sen b1.sen -o dc.tif --uncertainty-cube truth.img \
         --uncertainty-output u.tif
     [[ "$stderr" == "sensorize: truth.img"*"0 uncertainty_BAND layer(s) (trace --uncertainty), but 2 sensor band(s)"* ]] ||
         fail "stderr: $stderr"
     [ ! -e u.tif ] && [ ! -e dc.tif ]
+}
+
+@test "sensorize --uncertainty is a deprecated name of --uncertainty-cube" {
+    trace_ok $(inputs) --samples-per-pixel 1 -o cube.img --truth truth.img \
+        --uncertainty "$DATA/training.unc"
+    printf '3\n10000\n5\n1\n1\n1\n' > b1.sen
+    run -0 --separate-stderr sensorize cube.img b1.sen b1.sen -o new.tif \
+        --uncertainty-cube truth.img --uncertainty-output new_u.tif
+    run -0 --separate-stderr sensorize cube.img b1.sen b1.sen -o old.tif \
+        --uncertainty truth.img --uncertainty-output old_u.tif
+    assert_equal "${stderr_lines[0]}" "sensorize: warning: --uncertainty is deprecated: use --uncertainty-cube"
+    # The same values (the files differ in the command line they record).
+    run -0 diff <(gdalinfo -stats new_u.tif | grep STATISTICS_) \
+        <(gdalinfo -stats old_u.tif | grep STATISTICS_)
+    run -2 --separate-stderr sensorize cube.img b1.sen b1.sen -o both.tif \
+        --uncertainty-cube truth.img --uncertainty truth.img --uncertainty-output both_u.tif
+    [[ "$stderr" == "sensorize: give --uncertainty-cube or --uncertainty, not both"* ]] ||
+        fail "stderr: $stderr"
 }

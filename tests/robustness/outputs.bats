@@ -81,7 +81,7 @@ landsat_scene           pixel                  0     1000001               real
 TEXT_OPTIONS='answer answers bands co data-dir output error-map plot format method origin
 sampling bounces background rows truth tmp psf preview preview-stretch card1 card2 target1 target2
 material-map landuse landuse-map up-axis crs like radiance-units write-decks from-tape7 mtf-smear mtf-electronics
-convergence convergence-error tile igm glt uncertainty uncertainty-output rsr view-angles
+convergence convergence-error tile igm glt uncertainty uncertainty-cube uncertainty-output rsr view-angles
 name gain target mask points cloud dark sun heights'
 TOOLS='build_radiance compare control7 find_min_max_view_angle hawkeye_scene merge_tiles
 olinda_scene sensorize sigchain-check soho_scene therm trace landsat_sensor landsat_scene'

@@ -79,6 +79,21 @@ TEST(SensorizeCommand, TheDeprecatedSeedStillWorks) {
     EXPECT_EQ(job_of({"c.tif", "b.sen", "-o", "o.tif", "--noise-seed", "9"}).noise.seed, 9u);
 }
 
+TEST(SensorizeCommand, TheUncertaintyCubeAndItsDeprecatedName) {
+    const std::vector<std::string> base{"c.tif", "b.sen", "-o", "o.tif", "--uncertainty-output",
+                                        "u.tif"};
+    auto with = [&](std::vector<std::string> more) {
+        std::vector<std::string> args = base;
+        args.insert(args.end(), more.begin(), more.end());
+        return args;
+    };
+    EXPECT_EQ(job_of(with({"--uncertainty-cube", "t.img"})).uncertainty_path, "t.img");
+    EXPECT_EQ(job_of(with({"--uncertainty", "old.img"})).uncertainty_path, "old.img");
+    EXPECT_EQ(job_of(with({})).uncertainty_path, "");
+    EXPECT_EQ(usage_error(with({"--uncertainty-cube", "t.img", "--uncertainty", "t.img"})),
+              "give --uncertainty-cube or --uncertainty, not both");
+}
+
 TEST(SensorizeCommand, CalibrationNeedsItsCardsAndTargets) {
     const auto job = job_of({"c.tif", "b.sen", "-o", "dir", "--calibrate", "--card1", "0,0,2,2",
                              "--card2", "4,4,6,6", "--target1", "20", "--target2", "200,210"});

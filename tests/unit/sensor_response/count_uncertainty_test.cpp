@@ -1,5 +1,5 @@
-// sensorize --uncertainty (lib/sensor_response/count_uncertainty, noise_variance): the counts'
-// uncertainty is the input part through the gain and the noise model's variance in
+// sensorize --uncertainty-cube (lib/sensor_response/count_uncertainty, noise_variance):
+// the counts' uncertainty is the input part through the gain and the noise model's variance in
 // quadrature; the variance is checked against the spread add_noise draws.
 #include "sensor_response/count_uncertainty.hpp"
 
