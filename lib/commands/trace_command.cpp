@@ -58,11 +58,11 @@ void add_rendering_options(cli::Cli& tool) {
         "for merge_tiles");
     tool.add_strict_option(
         "--tmp keys that match no facet, or facets without a temperature, are an error");
-    tool.add_options()("sampling",
-                       value<std::string>()->default_value("golfball")->value_name("NAME"),
-                       "hemisphere sampling: golfball, montecarlo, dirsig (DIRSIG 3), proposed "
-                       "(White's proposed model) or auto (montecarlo, samples until 3 % "
-                       "relative error per pixel)")(
+    tool.add_options()("sampling", value<std::string>()->value_name("NAME"),
+                       "hemisphere sampling: auto (montecarlo, samples until each pixel's "
+                       "error is under 3 % of a grey ground's radiance; the default unless a "
+                       "sample count is named), golfball (then the default), montecarlo, "
+                       "dirsig (DIRSIG 3) or proposed (White's proposed model)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(
         "bounces", value<std::string>()->value_name("N|auto"),
         "secondary hits followed (default auto: as deep as an estimate says the "
@@ -96,10 +96,11 @@ void add_rendering_options(cli::Cli& tool) {
         "convergence", value<std::string>()->value_name("MIN,MAX,T"),
         "primary samples in batches of MIN until the relative standard error "
         "is under T (0 < T <= 1) or MAX are taken (2 <= MIN <= MAX)")(
-        "convergence-error", value<std::string>()->value_name("relative|absolute|rms"),
+        "convergence-error", value<std::string>()->value_name("relative|absolute|rms|scene"),
         "--convergence's T bounds standard error / |mean| (relative, the default), "
-        "the standard error in W cm-2 sr-1 um-1 (absolute), or "
-        "standard error x sqrt(MIN / samples) (rms: least RMS per sample)");
+        "the standard error in W cm-2 sr-1 um-1 (absolute), "
+        "standard error x sqrt(MIN / samples) (rms: least RMS per sample), or "
+        "standard error / the radiance of a 20 % grey ground at nadir (scene)");
     tool.add_number("samples-per-pixel", "N",
                     cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
@@ -179,10 +180,16 @@ std::string text(const cli::po::variables_map& vm, const char* name) {
 // The rendering options of trace_job: sampling, the depth of the paths, the outputs'
 // extras (truth, layers, units, CRS).
 void read_rendering_options(const cli::po::variables_map& vm, trace::TraceJob& job) {
-    if (text(vm, "sampling") == "auto")
+    // Without --sampling, trace chooses by accuracy (auto) unless a count of samples
+    // is named: then the golf ball, the sampling those counts were written for.
+    const bool counted = vm.count("samples-per-pixel") || vm.count("hemisphere-samples") ||
+                         vm.count("golfball-jitter") || vm.count("convergence");
+    const std::string sampling =
+        vm.count("sampling") ? text(vm, "sampling") : counted ? "golfball" : "auto";
+    if (sampling == "auto")
         job.accuracy_sampling = true;
     else
-        job.sampling = trace::parse_sampling(text(vm, "sampling"));
+        job.sampling = trace::parse_sampling(sampling);
     if (vm.count("samples-per-pixel"))
         job.samples_per_pixel = cli::integer(vm, "samples-per-pixel");
     if (vm.count("hemisphere-samples"))

@@ -234,12 +234,19 @@ std::pair<long, long> sample_pixel(const TraceContext& c, RowWorker& w, const Sa
         for (long i = n; i < n + batch; ++i)
             take(i, sobol02_offset(static_cast<std::uint32_t>(i), shift_row, shift_col));
         n += batch;
-        const double error =
-            o.convergence_error == ConvergenceError::Relative ? stats.relative_error()
-            : o.convergence_error == ConvergenceError::Absolute
-                ? stats.absolute_error()
-                : stats.absolute_error() * std::sqrt(static_cast<double>(o.convergence_min) /
-                                                     static_cast<double>(n));
+        double error = 0;
+        switch (o.convergence_error) {
+        case ConvergenceError::Relative: error = stats.relative_error(); break;
+        case ConvergenceError::Absolute: error = stats.absolute_error(); break;
+        case ConvergenceError::Rms:
+            error = stats.absolute_error() * std::sqrt(static_cast<double>(o.convergence_min) /
+                                                       static_cast<double>(n));
+            break;
+        case ConvergenceError::Scene:
+            error = stats.scaled_error(c.grey_radiance) *
+                    std::sqrt(static_cast<double>(o.convergence_min) / static_cast<double>(n));
+            break;
+        }
         if (n >= o.convergence_max || error < o.convergence_threshold) break;
     }
     return {n, hits};
@@ -318,6 +325,19 @@ std::string bounce_report(const TraceContext& c) {
                   c.opt.bounces == kAutoBounces ? ""
                   : (" with " + std::to_string(e.bounces)).c_str());
     return buf;
+}
+
+// --convergence-error scene's scale per band, for --verbose ("" in another mode).
+std::string convergence_scale_report(const TraceContext& c) {
+    if (c.grey_radiance.empty()) return "";
+    std::string out = "convergence scale (radiance of a 20 % grey ground at nadir, "
+                      "W cm-2 sr-1 um-1, per band):";
+    char buf[32];
+    for (double l : c.grey_radiance) {
+        std::snprintf(buf, sizeof buf, " %.4g", l);
+        out += buf;
+    }
+    return out;
 }
 
 // The empty cubes of `rows` rows.
@@ -418,6 +438,7 @@ RenderResult render_streamed(const RenderInputs& inputs, const RenderOptions& op
     res.stats.background = c.background.description;
     res.stats.bounces = bounce_report(c);
     res.stats.sky_lookup = sky_lookup_description(c);
+    res.stats.convergence_scale = convergence_scale_report(c);
     if (res.stats.sky_samples + res.stats.background_samples == 0)
         res.stats.skipped.push_back("the world beyond the scene for primary rays (none left it)");
     res.stats.seconds =

@@ -38,8 +38,13 @@ enum class BackgroundChoice { Mean, Material, None };
 // (relative), SE in W cm-2 sr-1 um-1 (absolute), or SE sqrt(MIN / n) (rms: a pixel stops
 // when another sample would lower its variance by less than threshold^2 / MIN, which
 // spends samples in proportion to the pixel's spread, the allocation that minimises the
-// image's summed variance for a given number of samples).
-enum class ConvergenceError { Relative, Absolute, Rms };
+// image's summed variance for a given number of samples), or max_b SE_b / L_grey,b x
+// sqrt(MIN / n) (scene: rms in units of each band's radiance at the sensor of a 20 %
+// grey Lambertian ground seen at nadir under the .rad's sun and sky,
+// TraceContext::grey_radiance, so one threshold fits any scene's brightness; a band
+// whose L_grey is not positive, a night's, is judged relative). Under scene, a pixel
+// that stopped after n samples has SE_b < THRESHOLD L_grey,b sqrt(n / MIN).
+enum class ConvergenceError { Relative, Absolute, Rms, Scene };
 
 struct RenderOptions {
     Sampling sampling = Sampling::Golfball;
@@ -128,6 +133,7 @@ struct RenderStats {
     std::string background;            // how the background world was made (world.hpp)
     std::string bounces;               // the bounce depth and its estimate, for --verbose
     std::string sky_lookup;            // how the sky is read (world.hpp), for --verbose
+    std::string convergence_scale;     // --convergence-error scene's L_grey, for --verbose
 };
 
 struct RenderResult {

@@ -72,6 +72,20 @@ struct SampleStats {
         }
         return worst;
     }
+    // max over bands of standard error / scale[b]; a band whose scale is not positive
+    // counts as in relative_error (infinite below 2 samples).
+    double scaled_error(const std::vector<double>& scale) const {
+        double worst = 0;
+        for (std::size_t b = 0; b < mean.size(); ++b) {
+            const double se = block_error(b);
+            if (se < 0) return std::numeric_limits<double>::infinity();
+            if (se == 0) continue;
+            const double unit = scale[b] > 0 ? scale[b] : std::abs(mean[b]);
+            worst = std::max(worst, unit == 0 ? std::numeric_limits<double>::infinity()
+                                              : se / unit);
+        }
+        return worst;
+    }
     // max over bands of the standard error (infinite below 2 samples).
     double absolute_error() const {
         double worst = 0;

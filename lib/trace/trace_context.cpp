@@ -54,6 +54,22 @@ void facet_temperatures(const RenderInputs& in, TraceContext& c) {
 
 }  // namespace
 
+std::vector<double> grey_ground_radiance(const TraceContext& c, double reflectance) {
+    const auto& atm = *c.in.atmosphere;
+    std::vector<double> tau2(c.n), scattered(c.n), emitted(c.n), out;
+    atm.path(0.0, tau2, scattered, emitted);
+    const double mu_sun = c.sun_up ? c.sun[2] : 0.0;
+    for (int b = 0; b < static_cast<int>(atm.grid().band_count()); ++b) {
+        const std::size_t k = atm.grid().band_centre_sample(b);
+        // L = rho / pi (E_s tau1 mu_s + E_sky) tau2 + L_path (White (1996), section 3.1,
+        // the Big Equation for a Lambertian facet in the open; c.sky_e has the sky's
+        // emission with emission on, as the path's emitted term here).
+        const double ground = reflectance / kPi * (c.sun_e[k] * mu_sun + c.sky_e[k]) * tau2[k];
+        out.push_back(ground + scattered[k] + (c.emission ? emitted[k] : 0.0));
+    }
+    return out;
+}
+
 TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) {
     // The sky with the ground-sky coupling of the scene's environment (adjacency.hpp):
     // the context reads the coupled atmosphere, which the Adjacency holds.
@@ -80,6 +96,8 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
     c.sky.emplace(atm);
     if (opt.sky_table_side > 0) c.sky_table.emplace(atm, opt.sky_table_side, c.emission);
     c.column_depth = atm.column_optical_depth();
+    if (opt.convergence_min > 0 && opt.convergence_error == ConvergenceError::Scene)
+        c.grey_radiance = grey_ground_radiance(c);
     c.background = make_background(c);
     c.bounce_estimate = estimate_bounces(c);
     c.bounces = opt.bounces == kAutoBounces ? c.bounce_estimate.bounces : opt.bounces;

@@ -295,11 +295,12 @@ std::string sampling_report(const TraceJob& job, const RenderOptions& o) {
     if (!sampling_by_accuracy(job))
         return (job.convergence ? "--convergence " : "") + count + ", " +
                sampling_name(o.sampling) + " sampling";
-    char threshold[32];
-    std::snprintf(threshold, sizeof threshold, "%g", 100 * o.convergence_threshold);
+    char bound[32];
+    std::snprintf(bound, sizeof bound, "%g", 100 * kAccuracySampling.pixel_bound());
     return count + ", montecarlo sampling with 1 hemisphere ray per sample, chosen by "
-           "accuracy (--sampling auto): samples added until the relative standard error of "
-           "each pixel is under " + std::string(threshold) + " % in every band";
+           "accuracy (--sampling auto, the default): samples where they lower the image's "
+           "error most, each pixel's standard error under " + std::string(bound) +
+           " % of a 20 % grey ground's radiance in every band";
 }
 
 RenderOptions render_options(const TraceJob& job, const Setup& st) {
@@ -349,6 +350,7 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     if (!s.background.empty()) reporter.info(s.background);
     if (!s.bounces.empty()) reporter.info(s.bounces);
     if (!s.sky_lookup.empty()) reporter.info(s.sky_lookup);
+    if (!s.convergence_scale.empty()) reporter.info(s.convergence_scale);
     if (pixels > 0)
         reporter.info(
             format("%.2f", static_cast<double>(s.pixel_samples) / static_cast<double>(pixels)) +

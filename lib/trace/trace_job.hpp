@@ -3,6 +3,7 @@
 // radiance cube, optionally a truth cube (trace(1)).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -92,13 +93,21 @@ Sampling parse_sampling(const std::string& name);
 ConvergenceError parse_convergence_error(const std::string& name);
 std::string sampling_name(Sampling sampling);
 
-// The sampling of --sampling auto (trace(1) SAMPLING BY ACCURACY): montecarlo with one
-// hemisphere ray per camera ray, camera rays added in
-// batches of `convergence.min` at each pixel's (0,2)-sequence until the relative
-// standard error of its mean is under `convergence.threshold` in every band, or
-// `convergence.max` rays.
+// The sampling of --sampling auto, trace's default (trace(1) SAMPLING BY ACCURACY):
+// montecarlo with one hemisphere ray per camera ray, camera rays added in batches of
+// `convergence.min` at each pixel's (0,2)-sequence until one more would lower the
+// pixel's variance by less than (threshold L_grey)^2 / min in every band (the scene
+// rule: samples in proportion to each pixel's spread, the least image RMS per ray), or
+// `convergence.max` rays; a pixel that stopped after n has a standard error under
+// threshold sqrt(n / min) L_grey, at most 5 % of L_grey (n <= max = 64 min).
 struct AccuracySampling {
-    Convergence convergence{8, 512, 0.03, ConvergenceError::Relative};
+    Convergence convergence{8, 512, 0.05 / 8, ConvergenceError::Scene};
+    // The per-pixel bound the rule keeps: threshold sqrt(max / min), relative to L_grey.
+    double pixel_bound() const {
+        return convergence.threshold *
+               std::sqrt(static_cast<double>(convergence.max) /
+                         static_cast<double>(convergence.min));
+    }
 };
 inline const AccuracySampling kAccuracySampling{};
 // True when `job`'s sampling is kAccuracySampling's (--sampling auto).

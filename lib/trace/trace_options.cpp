@@ -49,8 +49,9 @@ ConvergenceError parse_convergence_error(const std::string& name) {
     if (name == "relative") return ConvergenceError::Relative;
     if (name == "absolute") return ConvergenceError::Absolute;
     if (name == "rms") return ConvergenceError::Rms;
+    if (name == "scene") return ConvergenceError::Scene;
     throw UsageError("--convergence-error: unknown error '" + name +
-                     "' (relative, absolute or rms)");
+                     "' (relative, absolute, rms or scene)");
 }
 
 void parse_background(const std::string& text, RenderOptions& options) {

@@ -68,6 +68,10 @@ struct TraceContext {
     // The column's vertical optical depth per sample (Atmosphere::column_optical_depth;
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;
+    // With ConvergenceError::Scene: per band, the radiance at the sensor (W cm-2 sr-1
+    // um-1) at the band-centre sample of a 20 % grey Lambertian ground seen at nadir
+    // (grey_ground_radiance); empty otherwise.
+    std::vector<double> grey_radiance;
     Background background;                           // below the horizon (world.hpp)
     // The planes of the scene's mirror facets whose sun images light primary hits
     // (RenderOptions::sun_image_planes; find_mirror_planes), and why there are none when
@@ -84,6 +88,10 @@ struct TraceContext {
 };
 
 TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
+// Per band, the radiance at the sensor at the band-centre sample of a Lambertian ground
+// of `reflectance` in the open, seen at nadir (view angle 0 of the .rad tables) under
+// the context's sun and sky (trace_context.cpp): --convergence-error scene's scale.
+std::vector<double> grey_ground_radiance(const TraceContext& c, double reflectance = 0.2);
 // Fills the context's mirror planes (above) from the scene and its materials
 // (tracer_sun_images.cpp).
 void find_mirror_planes(TraceContext& c);

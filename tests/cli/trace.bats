@@ -221,22 +221,33 @@ band_bytes() {
     [[ "$stderr" == *"trace: scene: "*" facets, "*" triangles; 2 material(s)"* ]] || fail "$stderr"
     [[ "$stderr" == *"emission is left out"* ]] || fail "$stderr"
     [[ "$stderr" == *" rays ("*" primary, "*"Mrays/s"* ]] || fail "$stderr"
+    # The default sampling (by accuracy) says what it chose and the scale of its error.
+    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample, chosen by accuracy (--sampling auto, the default)"* ]] ||
+        fail "$stderr"
+    assert_regex "$stderr" "convergence scale \(radiance of a 20 % grey ground at nadir, W cm-2 sr-1 um-1, per band\): [0-9.e-]+ [0-9.e-]+"$'\n'
+    # A count without a strategy: the golf ball, at that count.
+    run -0 --separate-stderr trace -v $(inputs) --samples-per-pixel 4 -o out.img
     [[ "$stderr" == *"4 sample(s) per pixel, golfball sampling"* ]] || fail "$stderr"
     [[ "$stderr" == *"1024 primary"* ]] || fail "16 x 16 x 4 primary rays: $stderr"
+    [[ "$stderr" != *"convergence scale"* ]] || fail "$stderr"
 }
 
-@test "trace --sampling auto: chosen by accuracy, repeatable, said by -v; not with a count of its own" {
-    # montecarlo, 1 hemisphere ray, samples until 3 % relative standard error (trace(1)
-    # SAMPLING BY ACCURACY); the same cube for any thread count.
+@test "trace --sampling auto: the default, chosen by accuracy, repeatable, said by -v; not with a count of its own" {
+    # montecarlo, 1 hemisphere ray, samples by the scene rule (trace(1) SAMPLING BY
+    # ACCURACY); the same cube for any thread count.
     run -0 --separate-stderr trace -v --sampling auto $(inputs) -o auto.img --threads 1
-    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample, chosen by accuracy (--sampling auto)"* ]] ||
+    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample, chosen by accuracy (--sampling auto, the default)"* ]] ||
         fail "$stderr"
     [[ "$stderr" == *"primary sample(s) per pixel on average, at most "* ]] || fail "$stderr"
     trace_ok --sampling auto $(inputs) -o auto2.img --threads 2
     run -0 cmp auto.img auto2.img
-    # It is --convergence 8,512,0.03 with montecarlo and one hemisphere ray, byte for byte.
-    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 1 --convergence 8,512,0.03 \
-        -o named.img
+    # Without --sampling it is the default, byte for byte.
+    trace_ok $(inputs) -o default.img
+    run -0 cmp auto.img default.img
+    # It is --convergence 8,512,0.00625 --convergence-error scene with montecarlo and one
+    # hemisphere ray, byte for byte.
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 1 --convergence 8,512,0.00625 \
+        --convergence-error scene -o named.img
     run -0 cmp auto.img named.img
     trace_bad 2 "--sampling auto chooses its own samples: not with --convergence" \
         --sampling auto --convergence 4,8,0.1 $(inputs) -o out.img

@@ -55,14 +55,14 @@ load trace_helper
         fail "stderr: $stderr"
 }
 
-@test "trace --convergence-error absolute|rms: a threshold every pixel meets stops at MIN, and needs --convergence" {
-    for e in absolute rms; do
+@test "trace --convergence-error absolute|rms|scene: a threshold every pixel meets stops at MIN, and needs --convergence" {
+    for e in absolute rms scene; do
         run -0 --separate-stderr trace -v $(inputs) --sampling montecarlo --hemisphere-samples 8 \
             --convergence 4,32,1 --convergence-error $e -o $e.img
         [[ "$stderr" == *"trace: 4.00 primary sample(s) per pixel on average, at most 4"* ]] ||
             fail "$e: stderr: $stderr"
     done
-    trace_bad 2 "--convergence-error: unknown error 'both' (relative, absolute or rms)" $(inputs) -o out.img \
+    trace_bad 2 "--convergence-error: unknown error 'both' (relative, absolute, rms or scene)" $(inputs) -o out.img \
         --convergence 4,32,0.1 --convergence-error both
     trace_bad 2 "--convergence-error: only with --convergence" $(inputs) -o out.img \
         --convergence-error absolute

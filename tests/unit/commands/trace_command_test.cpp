@@ -62,12 +62,26 @@ TEST(TraceCommand, RenderInputsOutputAndDefaults) {
     EXPECT_EQ(job.mat_path, "m.mat");
     EXPECT_EQ(job.rad_paths, (std::vector<std::string>{"b1.rad", "b2.rad"}));
     EXPECT_EQ(job.output_path, "cube.img");
-    EXPECT_EQ(job.sampling, trace::Sampling::Golfball);
-    EXPECT_FALSE(trace::sampling_by_accuracy(job));
-    // --sampling auto: the sampling chosen by accuracy (trace(1) SAMPLING BY ACCURACY),
-    // which sets its own counts.
+    // Without --sampling or a count of samples: the sampling chosen by accuracy
+    // (trace(1) SAMPLING BY ACCURACY), as --sampling auto, which sets its own counts.
+    EXPECT_TRUE(trace::sampling_by_accuracy(job));
     EXPECT_TRUE(trace::sampling_by_accuracy(
         render_job(with(kRender, {"-o", "cube.img", "--sampling", "auto"}))));
+    // A count named without a strategy: the golf ball, as before there was a choice.
+    for (const std::vector<std::string>& count :
+         {std::vector<std::string>{"--samples-per-pixel", "4"},
+          std::vector<std::string>{"--hemisphere-samples", "16"},
+          std::vector<std::string>{"--golfball-jitter"},
+          std::vector<std::string>{"--convergence", "4,16,0.1"}}) {
+        std::vector<std::string> args{"-o", "c.img"};
+        args.insert(args.end(), count.begin(), count.end());
+        const auto counted = render_job(with(kRender, args));
+        EXPECT_FALSE(trace::sampling_by_accuracy(counted)) << count[0];
+        EXPECT_EQ(counted.sampling, trace::Sampling::Golfball) << count[0];
+    }
+    const auto named = render_job(with(kRender, {"-o", "c.img", "--sampling", "montecarlo"}));
+    EXPECT_FALSE(trace::sampling_by_accuracy(named));
+    EXPECT_EQ(named.sampling, trace::Sampling::MonteCarlo);
     const auto both = render_job(
         with(kRender, {"-o", "c.img", "--sampling", "auto", "--samples-per-pixel", "4"}));
     EXPECT_EQ(testing::usage_error_of([&] { trace::check_job(both); }),

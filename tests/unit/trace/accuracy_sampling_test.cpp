@@ -1,8 +1,10 @@
 // The sampling trace chooses when the command line names none (trace_job.hpp
 // kAccuracySampling; trace(1) SAMPLING BY ACCURACY) meets its stated per-pixel error on
 // the training scene (data/scenes/training: a box and a pyramid on grass, White (1996),
-// section 4.2.1): each pixel that stopped before the cap lies within its relative
-// threshold of a high-sample reference at the stated confidence, counted over pixels.
+// section 4.2.1): each pixel that stopped before the cap lies within its bound (a
+// share of the radiance of a 20 % grey ground under the same sun and sky, which grows
+// as the square root of the samples the pixel took, to at most 5 %) of a high-sample
+// reference at the stated confidence, counted over pixels.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/numeric.hpp"
 #include "io/mat.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
@@ -18,6 +21,7 @@
 #include "test_scene.hpp"
 #include "trace/render.hpp"
 #include "trace/trace_job.hpp"
+#include "trace/tracer.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -63,6 +67,33 @@ RenderOptions accuracy_options() {
     return o;
 }
 
+// The scale of --convergence-error scene on the training scene: the band's L_grey
+// (tracer.hpp grey_ground_radiance) as the render's context computes it.
+double grey_radiance(const Training& t, const Sensor& cam) {
+    RenderInputs in;
+    in.scene = &t.scene;
+    in.materials = &t.mats;
+    in.atmosphere = &t.atm;
+    in.sensor = &cam;
+    RenderOptions o = accuracy_options();
+    o.adjacency = false;
+    o.bounces = 1;
+    return grey_ground_radiance(make_context(in, o)).at(0);
+}
+
+TEST(AccuracySampling, TheSceneScaleIsTheBigEquationOfAGreyGround) {
+    // uniform_rad: E_s tau1 = 0.15 W cm-2 um-1 at 35 deg zenith, a sky of uniform
+    // 0.006 W cm-2 sr-1 um-1 (E_sky = pi x 0.006 on a horizontal ground), tau2 = 0.85,
+    // L_us = 0.001: L = 0.2 / pi (0.15 cos 35 + 0.006 pi) 0.85 + 0.001 (White (1996),
+    // section 3.1, for a Lambertian ground in the open). The sky's cells sum the
+    // horizontal irradiance to within the grid's cosine quadrature (1e-3 relative).
+    const Training t;
+    test::Ortho cam(4, 4, 5.0, 0.0, 20.0, {0, 0, -1}, 50);
+    const double expected =
+        0.2 / kPi * (0.15 * std::cos(35 * kRadPerDeg) + 0.006 * kPi) * 0.85 + 0.001;
+    EXPECT_NEAR(grey_radiance(t, cam), expected, 1e-3 * expected);
+}
+
 int layer(const RenderResult& r, const std::string& name) {
     const auto& n = r.truth.channel_names;
     return static_cast<int>(std::find(n.begin(), n.end(), name) - n.begin());
@@ -70,11 +101,11 @@ int layer(const RenderResult& r, const std::string& name) {
 
 TEST(AccuracySampling, TheDefaultMeetsItsStatedErrorOnTheTrainingScene) {
     // 16 x 16 nadir pixels of 1.25 m over the 20 m square: grass, the box and pyramid,
-    // their edges and shadows. A pixel that stopped before MAX has an estimated relative
-    // standard error under T; if that estimate is honest its error against the truth
-    // lies within 1.96 T |t| in about 95 % of the pixels or more (as
-    // SamplingError.ConvergedPixelsLieWithinTheThresholdOfAReference, whose bounds this
-    // follows).
+    // their edges and shadows. A pixel that stopped before MAX after n samples has an
+    // estimated standard error under T sqrt(n / MIN) L_grey; if that estimate is honest
+    // its error against the truth lies within 1.96 times that in about 95 % of the
+    // pixels or more (as SamplingError.ConvergedPixelsLieWithinTheThresholdOfAReference,
+    // whose bounds this follows).
     const Training t;
     test::Ortho cam(16, 16, 1.25, 0.0, 20.0, {0, 0, -1}, 50);
     const double kThreshold = kAccuracySampling.convergence.threshold;
@@ -94,8 +125,11 @@ TEST(AccuracySampling, TheDefaultMeetsItsStatedErrorOnTheTrainingScene) {
         refs[static_cast<std::size_t>(i)] = render_with(t, cam, ref);
     }
     const int centre = static_cast<int>(t.atm.grid().band_centre_sample(0));
-    const test::Coverage cov = test::convergence_coverage(run, refs[0], refs[1], centre,
-                                                          kThreshold, static_cast<double>(kMax));
+    ASSERT_EQ(kAccuracySampling.convergence.error, ConvergenceError::Scene);
+    const double unit = grey_radiance(t, cam);
+    const double kMin = static_cast<double>(kAccuracySampling.convergence.min);
+    const test::Coverage cov = test::convergence_coverage(
+        run, refs[0], refs[1], centre, kThreshold, static_cast<double>(kMax), unit, kMin);
     const long stopped = cov.stopped, judged = cov.judged;
     const double coverage = cov.share;
     RecordProperty("coverage", std::to_string(coverage));
@@ -106,24 +140,21 @@ TEST(AccuracySampling, TheDefaultMeetsItsStatedErrorOnTheTrainingScene) {
     // 95 % over 128 or more pixels: binomial sigma 1.9 %; two of them below is 91 %.
     EXPECT_GE(coverage, 0.91);
     // How far the rule went beyond MIN (for the record), and teeth: the pixels stopped
-    // at 2 samples whatever their error fall short of the same bound. (At the default's
-    // MIN of 8 most pixels of this scene are already within it: the rule's work is in
-    // the edges and shadows.)
+    // at MIN whatever their error fall short of the bound the rule claims of a pixel
+    // that stops there, T L_grey.
     const int samples = layer(run, "samples");
     long beyond_min = 0;
     for (long row = 0; row < 16; ++row)
         for (long col = 0; col < 16; ++col)
             beyond_min += run.truth.at(samples, row, col) > kAccuracySampling.convergence.min;
     RecordProperty("pixels_beyond_min", std::to_string(beyond_min));
-    o.convergence_min = 2;
-    o.convergence_max = 2;
-    o.convergence_threshold = 1.0;
-    const double at_min =
-        test::convergence_coverage(render_with(t, cam, o), refs[0], refs[1], centre, kThreshold,
-                                   INFINITY)
-            .share;
-    RecordProperty("coverage_at_2_samples", std::to_string(at_min));
-    EXPECT_LT(at_min, 0.91);
+    o.convergence_max = o.convergence_min;
+    const test::Coverage at_min = test::convergence_coverage(
+        render_with(t, cam, o), refs[0], refs[1], centre, kThreshold, INFINITY, unit, kMin);
+    RecordProperty("coverage_at_min", std::to_string(at_min.share));
+    RecordProperty("judged_at_min", std::to_string(at_min.judged));
+    EXPECT_GE(at_min.judged, 32);
+    EXPECT_LT(at_min.share, 0.91);
 }
 
 }  // namespace

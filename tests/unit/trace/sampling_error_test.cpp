@@ -16,6 +16,7 @@
 #include "test_scene.hpp"
 #include "trace/render.hpp"
 #include "trace/sampling.hpp"
+#include "trace/tracer.hpp"
 
 namespace sigchain::trace {
 namespace {
@@ -194,6 +195,44 @@ TEST(SamplingError, ConvergenceErrorsAbsoluteAndRms) {
             between += a > 8 && a < 64;
         }
     EXPECT_GT(fewer, 0);
+    EXPECT_GT(between, 0);
+}
+
+TEST(SamplingError, SceneErrorIsRmsInUnitsOfTheGreyGround) {
+    // --convergence-error scene with T stops where rms with T x L_grey does (L_grey:
+    // the band's radiance of a 20 % grey ground, grey_ground_radiance), so the samples
+    // each pixel took agree; a threshold between MIN and MAX for some.
+    const Fixture f;
+    Ortho cam(12, 12, 0.75, -4.5, 4.5, {0, 0, -1});
+    RenderOptions o;
+    o.sampling = Sampling::MonteCarlo;
+    o.hemisphere_samples = 8;
+    o.convergence_min = 8;
+    o.convergence_max = 64;
+    o.threads = 1;
+    o.convergence_error = ConvergenceError::Scene;
+    RenderInputs in;
+    in.scene = &f.scene;
+    in.materials = &f.mats;
+    in.atmosphere = &f.atm;
+    in.sensor = &cam;
+    o.adjacency = false;
+    o.bounces = 1;
+    const double grey = grey_ground_radiance(make_context(in, o)).at(0);
+    ASSERT_GT(grey, 0);
+    o.convergence_threshold = 0.01;
+    const RenderResult scene = render_with(f, cam, o);
+    o.convergence_error = ConvergenceError::Rms;
+    o.convergence_threshold = 0.01 * grey;
+    const RenderResult abs = render_with(f, cam, o);
+    const int samples = layer(abs, "samples");
+    long between = 0;
+    for (long row = 0; row < 12; ++row)
+        for (long col = 0; col < 12; ++col) {
+            const float a = abs.truth.at(samples, row, col);
+            EXPECT_EQ(scene.truth.at(samples, row, col), a);
+            between += a > 8 && a < 64;
+        }
     EXPECT_GT(between, 0);
 }
 

@@ -86,15 +86,17 @@ inline MeanError first_channel_mean(const image::Image& img) {
 // Coverage of a --convergence render against a reference (the stopping rule's claim):
 // of the pixels of `run` that took fewer than `cap` samples (its truth layer "samples"),
 // those judged (where half the difference of two references ref0, ref1 of other seeds,
-// e_ref, is under a quarter of T |t|, t their mean) and, of those, the share whose
-// channel `channel` lies within 1.96 x hypot(T |t|, e_ref) of t.
+// e_ref, is under a quarter of T u, t their mean) and, of those, the share whose
+// channel `channel` lies within 1.96 x hypot(T u, e_ref) of t; u is |t| (a relative
+// rule), or `unit` when it is positive (--convergence-error scene's L_grey), times
+// sqrt(n / min) for a pixel of n samples when `min` is positive (the scene rule's bound).
 struct Coverage {
     long stopped = 0, judged = 0;
     double share = 0;
 };
 inline Coverage convergence_coverage(const RenderResult& run, const RenderResult& ref0,
                                      const RenderResult& ref1, int channel, double threshold,
-                                     double cap) {
+                                     double cap, double unit = 0, double min = 0) {
     const auto& names = run.truth.channel_names;
     const int samples =
         static_cast<int>(std::find(names.begin(), names.end(), "samples") - names.begin());
@@ -102,13 +104,15 @@ inline Coverage convergence_coverage(const RenderResult& run, const RenderResult
     long inside = 0;
     for (long row = 0; row < run.radiance.rows; ++row)
         for (long col = 0; col < run.radiance.columns; ++col) {
-            if (run.truth.at(samples, row, col) >= cap) continue;  // ran to MAX: no claim
+            const double n = run.truth.at(samples, row, col);
+            if (n >= cap) continue;  // ran to MAX: no claim
             ++c.stopped;
             const double r0 = ref0.radiance.at(channel, row, col);
             const double r1 = ref1.radiance.at(channel, row, col);
             const double t = 0.5 * (r0 + r1), e_ref = 0.5 * std::abs(r0 - r1);
-            if (e_ref >= 0.25 * threshold * std::abs(t)) continue;
-            const double bound = 1.96 * std::hypot(threshold * std::abs(t), e_ref);
+            const double u = (unit > 0 ? unit : std::abs(t)) * (min > 0 ? std::sqrt(n / min) : 1.0);
+            if (e_ref >= 0.25 * threshold * u) continue;
+            const double bound = 1.96 * std::hypot(threshold * u, e_ref);
             inside += std::abs(run.radiance.at(channel, row, col) - t) <= bound;
             ++c.judged;
         }
