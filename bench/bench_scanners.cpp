@@ -71,7 +71,8 @@ imaging::PushbroomSensor pushbroom() {
     for (int k = 0; k <= 10; ++k) {
         const double t = 0.4 * k;
         trj.records.push_back(
-            {t, {0, -200 + 100 * t, 1500}, 0.2 * std::sin(t), 0, 0, geo::Vec3{0, 100, 0}, k + 2});
+            {t, io::ScenePosition{{0, -200 + 100 * t, 1500}}, 0.2 * std::sin(t), 0, 0,
+             geo::Vec3{0, 100, 0}, k + 2});
     }
     imaging::PushbroomGeometry g;
     g.lines = 1000;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <numbers>
 #include <optional>
+#include <variant>
 
 #include "core/error.hpp"
 #include "core/numeric.hpp"
@@ -45,9 +46,11 @@ void place_geodetic(const AdvAt& at, const std::string& file, io::Trj& trj) {
                         "a geodetic trajectory needs the scene's geodetic origin (the .snd's)");
     const geo::LocalEnu enu(at.origin->latitude_deg, at.origin->longitude_deg, 0.0);
     const double mpu = io::meters_per_unit(at.adv.units);
-    for (io::TrjRecord& r : trj.records)
-        r.position = geo::scale(enu.forward(r.position[0], r.position[1], r.position[2]), 1 / mpu);
-    trj.geodetic = false;
+    for (io::TrjRecord& r : trj.records) {
+        const auto& g = std::get<io::GeodeticPosition>(r.position);
+        r.position = io::ScenePosition{
+            geo::scale(enu.forward(g.latitude_deg, g.longitude_deg, g.height_m), 1 / mpu)};
+    }
 }
 
 // The platform: the .trj the `trajectory` key names (relative to the .adv's folder), or a
@@ -61,7 +64,7 @@ Trajectory platform_of(const AdvAt& at, double t0, double t1) {
         if (p.is_relative()) p = std::filesystem::path(at.path).parent_path() / p;
         const std::string file = p.lexically_normal().string();
         io::Trj trj = io::read_trj_file(file);
-        if (trj.geodetic) place_geodetic(at, file, trj);
+        if (trj.geodetic()) place_geodetic(at, file, trj);
         return Trajectory(trj, file, jitter);
     }
     const double speed_mps = a.platform_speed_mps.value();

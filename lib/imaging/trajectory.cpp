@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <utility>
+#include <variant>
 
 #include "core/error.hpp"
 #include "core/numeric.hpp"
@@ -82,8 +83,9 @@ Trajectory Trajectory::straight(const Vec3& start, double speed, double heading_
     const double h = heading_deg * kRadPerDeg;
     const Vec3 v{speed * std::sin(h), speed * std::cos(h), 0.0};
     t_end = std::max(t_end, t_begin + 1.0);  // two records with increasing times
-    io::TrjRecord a{t_begin, start, roll_deg, pitch_deg, heading_deg, v, 0};
-    io::TrjRecord b{t_end, axpy(t_end - t_begin, v, start), roll_deg, pitch_deg, heading_deg, v, 0};
+    io::TrjRecord a{t_begin, io::ScenePosition{start}, roll_deg, pitch_deg, heading_deg, v, 0};
+    io::TrjRecord b{t_end, io::ScenePosition{axpy(t_end - t_begin, v, start)}, roll_deg, pitch_deg,
+                    heading_deg, v, 0};
     t.m_records = {a, b};
     t.m_jitter = jitter;
     t.prepare();
@@ -139,8 +141,11 @@ Vec3 Trajectory::jitter_offset_rad(double t) const {
 void Trajectory::prepare() {
     prepare_walk();
     const std::size_t n = m_records.size();
+    m_positions.resize(n);
     m_tangents.resize(n);
     m_attitudes.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        m_positions[i] = std::get<io::ScenePosition>(m_records[i].position).xyz;
     for (std::size_t i = 0; i < n; ++i) {
         const io::TrjRecord& r = m_records[i];
         m_attitudes[i] = attitude_quaternion(r.roll_deg * kRadPerDeg, r.pitch_deg * kRadPerDeg,
@@ -152,7 +157,7 @@ void Trajectory::prepare() {
         const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == n ? i : i + 1;
         const double dt = m_records[hi].time_s - m_records[lo].time_s;
         for (int k = 0; k < 3; ++k)
-            m_tangents[i][k] = (m_records[hi].position[k] - m_records[lo].position[k]) / dt;
+            m_tangents[i][k] = (m_positions[hi][k] - m_positions[lo][k]) / dt;
     }
 }
 
@@ -167,8 +172,8 @@ Pose Trajectory::pose(double t) const {
                  h11 = s3 - s2;
     Pose p;
     for (int k = 0; k < 3; ++k)
-        p.position[k] = h00 * a.position[k] + h10 * h * m_tangents[i][k] + h01 * b.position[k] +
-                        h11 * h * m_tangents[i + 1][k];
+        p.position[k] = h00 * m_positions[i][k] + h10 * h * m_tangents[i][k] +
+                        h01 * m_positions[i + 1][k] + h11 * h * m_tangents[i + 1][k];
     Quaternion q = slerp(m_attitudes[i], m_attitudes[i + 1], s);
     if (m_jitter.active()) {
         const Vec3 off = jitter_offset_rad(t);

@@ -60,7 +60,8 @@ inline constexpr double kWalkStep_s = 1e-3;
 
 class Trajectory {
 public:
-    // From the records of a .trj (at least two, times increasing). Positions: cubic
+    // From the records of a .trj (at least two, times increasing), in the scene frame (a
+    // geodetic .trj placed first: std::bad_variant_access otherwise). Positions: cubic
     // Hermite between records with the file's velocities as tangents, or, without them,
     // finite-difference tangents (central inside, one-sided at the ends); attitude: slerp.
     Trajectory(const io::Trj& trj, std::string file, Jitter jitter = {});
@@ -85,6 +86,7 @@ private:
     void prepare();
     void prepare_walk();
     std::vector<io::TrjRecord> m_records;
+    std::vector<Vec3> m_positions;        // each record's scene position
     std::vector<Vec3> m_tangents;         // position derivative at each record
     std::vector<Quaternion> m_attitudes;  // body -> NED at each record
     std::string m_file;                   // "" for a straight flight

@@ -9,36 +9,49 @@ namespace sigchain::io {
 
 namespace {
 
-// The optional header line `position = scene|geodetic` (before the first record).
-void parse_header(LineCursor& cur, Trj& trj) {
-    if (cur.at_end()) return;
+// The optional header line `position = scene|geodetic` (before the first record):
+// whether the positions are geodetic.
+bool parse_header(LineCursor& cur) {
+    if (cur.at_end()) return false;
     const Line& line = cur.peek("trajectory record");
     const SourceLocation at = cur.where(line);
     const auto kv = split_key_value(line.text, at);
-    if (!kv) return;
+    if (!kv) return false;
     cur.next("position = scene|geodetic");
     if (kv->key != "position")
         throw DataError(at, "expected key position, found " + quoted(kv->key));
     if (kv->value != "scene" && kv->value != "geodetic")
         throw DataError(at, "expected position scene or geodetic, found " + quoted(kv->value));
-    trj.geodetic = kv->value == "geodetic";
+    return kv->value == "geodetic";
 }
 
-// A geodetic row: latitude and longitude in range, no velocity.
-void check_geodetic(const TrjRecord& r, const SourceLocation& at, std::string_view text) {
-    const auto f = split_fields(text);
-    if (r.velocity)
+// A geodetic row's position from its fields x y z (`f`, for the messages): latitude and
+// longitude in range, no velocity.
+GeodeticPosition geodetic_position(const geo::Vec3& xyz, const std::vector<std::string_view>& f,
+                                   bool velocity, const SourceLocation& at) {
+    if (velocity)
         throw DataError(at, "expected 7 fields in a geodetic trajectory (no velocity), found 10");
-    if (r.position[0] < -90 || r.position[0] > 90)
+    const GeodeticPosition g{xyz[0], xyz[1], xyz[2]};
+    if (g.latitude_deg < -90 || g.latitude_deg > 90)
         throw DataError(at, "expected latitude (deg) from -90 to 90, found " + quoted(f[1]));
-    if (r.position[1] < -360 || r.position[1] > 360)
+    if (g.longitude_deg < -360 || g.longitude_deg > 360)
         throw DataError(at, "expected longitude (deg) from -360 to 360, found " + quoted(f[2]));
-    if (!(std::abs(r.position[2]) <= geo::kMaxCoordinate))
+    if (!(std::abs(g.height_m) <= geo::kMaxCoordinate))
         throw DataError(at, "the height " + quoted(f[3]) +
                                 " lies beyond +-1e9 m (Embree's single precision)");
+    return g;
 }
 
-TrjRecord parse_record(const Line& line, const SourceLocation& at) {
+// A scene row's position, within Embree's single-precision limit.
+ScenePosition scene_position(const geo::Vec3& xyz, const SourceLocation& at) {
+    if (!geo::within_coordinate_limit(xyz))
+        throw DataError(at, "the position (" + format_number(xyz[0]) + ", " +
+                                format_number(xyz[1]) + ", " + format_number(xyz[2]) +
+                                ") lies beyond +-1e9 scene units (Embree's single precision)");
+    return {xyz};
+}
+
+TrjRecord parse_record(const Line& line, const SourceLocation& at, bool geodetic) {
     const auto f = split_fields(line.text);
     if (f.size() != 7 && f.size() != 10)
         throw DataError(at,
@@ -48,14 +61,18 @@ TrjRecord parse_record(const Line& line, const SourceLocation& at) {
     TrjRecord r;
     r.line = line.number;
     r.time_s = parse_double(f[0], at, "time (s)");
-    r.position = {parse_double(f[1], at, "x"), parse_double(f[2], at, "y"),
-                  parse_double(f[3], at, "z")};
+    const geo::Vec3 xyz{parse_double(f[1], at, "x"), parse_double(f[2], at, "y"),
+                        parse_double(f[3], at, "z")};
     r.roll_deg = parse_in_range(f[4], at, "roll (deg)", -180, 180);
     r.pitch_deg = parse_in_range(f[5], at, "pitch (deg)", -90, 90);
     r.yaw_deg = parse_in_range(f[6], at, "yaw (deg)", -360, 360);
     if (f.size() == 10)
         r.velocity = geo::Vec3{parse_double(f[7], at, "vx"), parse_double(f[8], at, "vy"),
                                parse_double(f[9], at, "vz")};
+    if (geodetic)
+        r.position = geodetic_position(xyz, f, r.velocity.has_value(), at);
+    else
+        r.position = scene_position(xyz, at);
     return r;
 }
 
@@ -75,18 +92,11 @@ Trj parse_trj(const TextInput& in) {
     const int minor = require_magic_line(in, "trj", 1);
     LineCursor cur(in);
     Trj trj;
-    parse_header(cur, trj);
+    const bool geodetic = parse_header(cur);
     while (!cur.at_end()) {
         const Line& line = cur.next("trajectory record");
         const SourceLocation at = cur.where(line);
-        TrjRecord r = parse_record(line, at);
-        if (trj.geodetic)
-            check_geodetic(r, at, line.text);
-        else if (!geo::within_coordinate_limit(r.position))
-            throw DataError(at, "the position (" + format_number(r.position[0]) + ", " +
-                                    format_number(r.position[1]) + ", " +
-                                    format_number(r.position[2]) +
-                                    ") lies beyond +-1e9 scene units (Embree's single precision)");
+        TrjRecord r = parse_record(line, at, geodetic);
         if (!trj.records.empty()) check_sequence(trj.records.back(), r, at);
         trj.records.push_back(r);
     }
@@ -98,16 +108,30 @@ Trj parse_trj(const TextInput& in) {
     return trj;
 }
 
+namespace {
+
+// " x y z" or " latitude longitude height".
+void write_position(std::ostream& out, const TrjPosition& position) {
+    if (const auto* g = std::get_if<GeodeticPosition>(&position)) {
+        out << ' ' << format_number(g->latitude_deg) << ' ' << format_number(g->longitude_deg)
+            << ' ' << format_number(g->height_m);
+        return;
+    }
+    for (double v : std::get<ScenePosition>(position).xyz) out << ' ' << format_number(v);
+}
+
+}  // namespace
+
 void write_trj(std::ostream& out, const Trj& trj) {
     out << "# sigchain-trj 1.1\n";
-    if (trj.geodetic)
+    if (trj.geodetic())
         out << "position = geodetic\n# time_s latitude_deg longitude_deg height_m roll_deg "
                "pitch_deg yaw_deg\n";
     else
         out << "# time_s x y z roll_deg pitch_deg yaw_deg [vx vy vz]\n";
     for (const TrjRecord& r : trj.records) {
         out << format_number(r.time_s);
-        for (double v : r.position) out << ' ' << format_number(v);
+        write_position(out, r.position);
         out << ' ' << format_number(r.roll_deg) << ' ' << format_number(r.pitch_deg) << ' '
             << format_number(r.yaw_deg);
         if (r.velocity)
@@ -124,7 +148,7 @@ FormatHandler trj_format() {
                 return std::to_string(t.records.size()) + " records, " +
                        format_number(t.records.front().time_s) + " to " +
                        format_number(t.records.back().time_s) + " s" +
-                       (t.geodetic ? ", geodetic" : "") +
+                       (t.geodetic() ? ", geodetic" : "") +
                        (t.records.front().velocity ? ", with velocities" : "");
             },
             [](const TextInput& in, std::ostream& out) { write_trj(out, parse_trj(in)); }};

@@ -5,6 +5,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/text.hpp"
@@ -13,13 +14,29 @@
 
 namespace sigchain::io {
 
+// A record's position in the scene frame: x east, y north, z up (scene units).
+struct ScenePosition {
+    geo::Vec3 xyz{};
+    bool operator==(const ScenePosition&) const = default;
+};
+
+// A record's position on the WGS84 ellipsoid (a `position = geodetic` file).
+struct GeodeticPosition {
+    double latitude_deg = 0, longitude_deg = 0, height_m = 0;
+    bool operator==(const GeodeticPosition&) const = default;
+};
+
+// One or the other, so that code cannot read one as the other (std::get). A geodetic
+// .trj is placed in the scene frame before it is flown (imaging::sensor_setup).
+using TrjPosition = std::variant<ScenePosition, GeodeticPosition>;
+
 // One pose of the platform. Frames and rotation order are trj(5)'s: position in the
-// scene frame (x east, y north, z up, scene units); attitude as yaw (heading, clockwise
-// from north about the down axis), then pitch (nose up), then roll (right wing down)
-// of the body frame x forward, y right, z down.
+// scene frame (x east, y north, z up, scene units) or geodetic; attitude as yaw
+// (heading, clockwise from north about the down axis), then pitch (nose up), then roll
+// (right wing down) of the body frame x forward, y right, z down.
 struct TrjRecord {
-    double time_s = 0;     // seconds, strictly increasing
-    geo::Vec3 position{};  // scene units
+    double time_s = 0;  // seconds, strictly increasing
+    TrjPosition position;
     double roll_deg = 0, pitch_deg = 0, yaw_deg = 0;
     std::optional<geo::Vec3> velocity;  // scene units per second (all rows or none)
     int line = 0;                       // line in the file (not compared)
@@ -31,10 +48,14 @@ struct TrjRecord {
 };
 
 struct Trj {
-    // `position = geodetic` (header line): x y z are WGS84 latitude, longitude (deg) and
-    // ellipsoidal height (m), and rows carry no velocity; else scene coordinates.
-    bool geodetic = false;
+    // Every record's position of one kind: GeodeticPosition for a `position = geodetic`
+    // file (its rows carry no velocity), else ScenePosition.
     std::vector<TrjRecord> records;  // at least kTrjMinRecords, times strictly increasing
+    // Whether the positions are geodetic (the header line `position = geodetic`).
+    bool geodetic() const {
+        return !records.empty() &&
+               std::holds_alternative<GeodeticPosition>(records.front().position);
+    }
     bool operator==(const Trj&) const = default;
 };
 

@@ -21,7 +21,7 @@ void expect_near(const Vec3& a, const Vec3& b, double tol) {
 
 io::TrjRecord record(double t, Vec3 p, double roll, double pitch, double yaw,
                      std::optional<Vec3> v = std::nullopt, int line = 0) {
-    return {t, p, roll, pitch, yaw, v, line};
+    return {t, io::ScenePosition{p}, roll, pitch, yaw, v, line};
 }
 
 }  // namespace

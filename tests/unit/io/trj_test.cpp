@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <variant>
 
 #include "data_error.hpp"
 
@@ -24,7 +25,7 @@ TEST(Trj, ParsesRecordsWithAndWithoutVelocities) {
     const Trj t = parse_trj(TextInput::from_string(kTwo, "t.trj"));
     ASSERT_EQ(t.records.size(), 2u);
     EXPECT_EQ(t.records[1].time_s, 1);
-    EXPECT_EQ(t.records[1].position, (geo::Vec3{0, 50, 1000}));
+    EXPECT_EQ(t.records[1].position, TrjPosition(ScenePosition{{0, 50, 1000}}));
     EXPECT_EQ(t.records[1].roll_deg, 0.5);
     EXPECT_EQ(t.records[1].pitch_deg, -1);
     EXPECT_EQ(t.records[1].yaw_deg, 10);
@@ -68,8 +69,10 @@ TEST(Trj, GeodeticPositions) {
         "# sigchain-trj 1\nposition = geodetic\n0 -8.0 -34.9 705000 0 0 191.6\n"
         "1 -8.06 -34.91 705000 0 0 191.6\n";
     const Trj t = parse_trj(TextInput::from_string(text, "g.trj"));
-    EXPECT_TRUE(t.geodetic);
-    EXPECT_EQ(t.records[1].position, (geo::Vec3{-8.06, -34.91, 705000}));
+    EXPECT_TRUE(t.geodetic());
+    // Latitude, longitude and height, not a scene position.
+    EXPECT_EQ(t.records[1].position, TrjPosition(GeodeticPosition{-8.06, -34.91, 705000}));
+    EXPECT_FALSE(std::holds_alternative<ScenePosition>(t.records[0].position));
     std::ostringstream out;
     write_trj(out, t);
     EXPECT_EQ(parse_trj(TextInput::from_string(out.str(), "w.trj")), t);
