@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/error.hpp"
+#include "io/registry.hpp"
 
 namespace sigchain::io {
 

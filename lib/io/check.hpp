@@ -5,8 +5,6 @@
 #include <ostream>
 #include <string>
 
-#include "io/registry.hpp"
-
 namespace sigchain::io {
 
 // The format extension of a path: "scene.adv" -> "adv"; DIRSIG's numbered radiance

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/text.hpp"
-#include "io/registry.hpp"
+#include "io/format_handler.hpp"
 
 namespace sigchain::io {
 

@@ -10,7 +10,7 @@
 
 #include "core/text.hpp"
 #include "geo/vec3.hpp"
-#include "io/registry.hpp"
+#include "io/format_handler.hpp"
 
 namespace sigchain::io {
 
