@@ -63,6 +63,55 @@ void write_calibrated_sens(const std::vector<io::Sen>& sens, const SensorizeRepo
     commit_together(order);
 }
 
+// No output may overwrite an input: with --calibrate the .sen files it writes into -o DIR,
+// otherwise the image, the preview and the uncertainty cube.
+void check_outputs_distinct(const SensorizeJob& job) {
+    std::vector<std::string> inputs = job.sen_paths;
+    inputs.push_back(job.cube_path);
+    inputs.push_back(job.psf_path);
+    inputs.push_back(job.uncertainty_path);
+    if (job.calibrate) {
+        std::vector<std::string> outputs;
+        for (const auto& path : job.sen_paths)
+            outputs.push_back(
+                (std::filesystem::path(job.output_path) / (stem_of(path) + ".sen")).string());
+        require_outputs_distinct(outputs, inputs);
+    } else {
+        require_outputs_distinct({job.output_path, job.preview_path, job.uncertainty_output_path},
+                                 inputs);
+    }
+}
+
+// --calibrate's options: one target count or one per band, .sen files of distinct names,
+// -o a directory.
+void check_calibration(const SensorizeJob& job) {
+    if (job.float_output) throw UsageError("give --calibrate or --float, not both");
+    const auto& c = job.calibration;
+    for (const auto* t : {&c.target1, &c.target2})
+        if (t->size() != 1 && t->size() != job.sen_paths.size())
+            throw UsageError("--target1 and --target2 take one count or one per band (" +
+                             std::to_string(job.sen_paths.size()) + ")");
+    std::set<std::string> names;
+    for (const auto& path : job.sen_paths)
+        if (!names.insert(stem_of(path)).second)
+            throw UsageError("--calibrate: two .sen files named " + stem_of(path) +
+                             ".sen would be written to the same file");
+    if (!std::filesystem::is_directory(job.output_path))
+        throw UsageError("-o " + job.output_path +
+                         ": not a directory (--calibrate writes "
+                         "one .sen per band there)");
+}
+
+// The image's format: a .tif with --float, otherwise .tif, .png, .pgm or .ppm.
+void check_output_format(const SensorizeJob& job) {
+    const std::string ext = file_extension(job.output_path);
+    const bool tiff = ext == "tif" || ext == "tiff";
+    const bool counts_ok = tiff || ext == "png" || ext == "pgm" || ext == "ppm";
+    if (job.float_output ? !tiff : !counts_ok)
+        throw UsageError("-o " + job.output_path + ": the output must be a " +
+                         (job.float_output ? ".tif" : ".tif, .png, .pgm or .ppm") + " file");
+}
+
 }  // namespace
 
 void check_job(const SensorizeJob& job) {
@@ -90,44 +139,12 @@ void check_job(const SensorizeJob& job) {
         (job.calibrate || file_extension(job.uncertainty_output_path) != "tif"))
         throw UsageError("--uncertainty-output " + job.uncertainty_output_path +
                          ": a float .tif file, not made with --calibrate");
-    std::vector<std::string> inputs = job.sen_paths;
-    inputs.push_back(job.cube_path);
-    inputs.push_back(job.psf_path);
-    inputs.push_back(job.uncertainty_path);
+    check_outputs_distinct(job);
     if (job.calibrate) {
-        std::vector<std::string> outputs;
-        for (const auto& path : job.sen_paths)
-            outputs.push_back(
-                (std::filesystem::path(job.output_path) / (stem_of(path) + ".sen")).string());
-        require_outputs_distinct(outputs, inputs);
-    } else {
-        require_outputs_distinct({job.output_path, job.preview_path, job.uncertainty_output_path},
-                                 inputs);
-    }
-    if (job.calibrate) {
-        if (job.float_output) throw UsageError("give --calibrate or --float, not both");
-        const auto& c = job.calibration;
-        for (const auto* t : {&c.target1, &c.target2})
-            if (t->size() != 1 && t->size() != job.sen_paths.size())
-                throw UsageError("--target1 and --target2 take one count or one per band (" +
-                                 std::to_string(job.sen_paths.size()) + ")");
-        std::set<std::string> names;
-        for (const auto& path : job.sen_paths)
-            if (!names.insert(stem_of(path)).second)
-                throw UsageError("--calibrate: two .sen files named " + stem_of(path) +
-                                 ".sen would be written to the same file");
-        if (!std::filesystem::is_directory(job.output_path))
-            throw UsageError("-o " + job.output_path +
-                             ": not a directory (--calibrate writes "
-                             "one .sen per band there)");
+        check_calibration(job);
         return;
     }
-    const std::string ext = file_extension(job.output_path);
-    const bool tiff = ext == "tif" || ext == "tiff";
-    const bool counts_ok = tiff || ext == "png" || ext == "pgm" || ext == "ppm";
-    if (job.float_output ? !tiff : !counts_ok)
-        throw UsageError("-o " + job.output_path + ": the output must be a " +
-                         (job.float_output ? ".tif" : ".tif, .png, .pgm or .ppm") + " file");
+    check_output_format(job);
 }
 
 namespace {
@@ -163,92 +180,140 @@ void write_uncertainty(const SensorizeJob& job, const image::Image& out,
     image::write_float(job.uncertainty_output_path, u, job.write_options);
 }
 
-}  // namespace
-
-SensorizeReport run_sensorize(const SensorizeJob& job) {
-    check_job(job);
+// The inputs: the .sen files, the cube, the cube's samples of each band and the PSF.
+struct Inputs {
     std::vector<io::Sen> sens;
-    for (const auto& path : job.sen_paths) sens.push_back(io::read_sen_file(path));
-    const image::Image cube = image::read_image(job.cube_path);
-    const auto groups = group_bands(sens, job.sen_paths, cube.channels, job.cube_path);
+    image::Image cube;
+    std::vector<BandSamples> groups;
     Kernel kernel;
-    const bool blur = job.psf_sigma_px > 0 || !job.psf_path.empty();
-    if (job.psf_sigma_px > 0) kernel = gaussian_kernel(job.psf_sigma_px);
-    if (!job.psf_path.empty()) kernel = read_kernel_file(job.psf_path);
+    bool blur = false;
+};
 
-    SensorizeReport report;
-    report.cube_has_wavelengths = !cube.wavelength_um.empty();
-    const int bands = static_cast<int>(sens.size());
-    image::Image out(cube.rows, cube.columns, bands);
-    out.units = job.float_output ? cube.units : "DC";
-    if (!job.float_output) out.scaled_units = "W cm-2 sr-1 um-1";  // the .sen gain's unit
-    // --preview-stretch common: the preview of the band radiance, not of counts whose
-    // gains differ from band to band.
-    const bool radiance_preview = job.preview_common && !job.float_output;
-    image::Image radiance(radiance_preview ? cube.rows : 0, cube.columns, bands);
-    // A cube in W m-2 sr-1 um-1 (trace --radiance-units W/m2/sr/um) to the .sen's unit.
-    const double to_sen_units = cube.units == "W m-2 sr-1 um-1" ? 1e-4 : 1.0;
-    std::vector<std::vector<float>> sigma;  // --uncertainty-cube: per band, radiance then counts
+// What the bands make: the output image, the band radiance for the preview
+// (--preview-stretch common) and the uncertainty (--uncertainty-cube: per band, radiance
+// then counts).
+struct Products {
+    image::Image out;
+    image::Image radiance;
+    std::vector<std::vector<float>> sigma;
+};
+
+Inputs read_inputs(const SensorizeJob& job) {
+    Inputs in;
+    for (const auto& path : job.sen_paths) in.sens.push_back(io::read_sen_file(path));
+    in.cube = image::read_image(job.cube_path);
+    in.groups = group_bands(in.sens, job.sen_paths, in.cube.channels, job.cube_path);
+    in.blur = job.psf_sigma_px > 0 || !job.psf_path.empty();
+    if (job.psf_sigma_px > 0) in.kernel = gaussian_kernel(job.psf_sigma_px);
+    if (!job.psf_path.empty()) in.kernel = read_kernel_file(job.psf_path);
+    return in;
+}
+
+// The radiance's standard uncertainty per band (--uncertainty-cube; none without it), in
+// the .sen's unit unless --float.
+std::vector<std::vector<float>> read_sigma(const SensorizeJob& job, const image::Image& cube,
+                                           int bands, double to_sen_units) {
+    std::vector<std::vector<float>> sigma;
     if (!job.uncertainty_path.empty())
         sigma = read_radiance_uncertainty(job.uncertainty_path, cube, bands);
     if (!job.float_output && to_sen_units != 1)
         for (auto& s : sigma)
             for (float& v : s) v *= static_cast<float>(to_sen_units);
-    for (int b = 0; b < bands; ++b) {
-        const auto wavelengths = band_wavelengths(cube, groups[b]);
-        const auto widths = sample_widths_um(wavelengths, groups[b].count);
-        std::vector<float> plane =
-            band_radiance(cube, groups[b], sens[b].response, widths, job.sen_paths[b]);
-        // Counts and calibration take the .sen's unit, W cm-2 sr-1 um-1.
-        if (!job.float_output && to_sen_units != 1)
-            for (float& v : plane) v *= static_cast<float>(to_sen_units);
-        if (job.calibrate) {
-            calibrate_band(job, b, plane, cube, report);
-            continue;
-        }
-        if (blur) plane = convolve(plane, cube.rows, cube.columns, kernel);
-        if (job.mtf.enabled) {
-            const double centre_um =
-                wavelengths.empty() ? 0
-                                    : centre_wavelength_um(wavelengths, sens[b].response, widths);
-            report.mtf.push_back(apply_band_mtf(plane, cube.rows, cube.columns, job.mtf,
-                                                centre_um, job.cube_path));
-        }
-        if (radiance_preview)
-            std::copy(plane.begin(), plane.end(), radiance.data.begin() + b * radiance.plane_size());
-        if (!job.float_output) {
-            apply_gain_bias(plane, sens[b].gain, sens[b].bias);
-            if (!sigma.empty())
-                counts_uncertainty(sigma[b], plane, sens[b].gain, sens[b].bias, job.noise);
-            add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));
-            // c = gain L + bias back to the band radiance L (GDAL scale and offset).
-            out.scale.push_back(1.0 / sens[b].gain);
-            out.offset.push_back(0.0 - sens[b].bias / sens[b].gain);  // not -0
-            report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
-        }
-        std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());
-        out.channel_names.push_back(stem_of(job.sen_paths[b]));
-        if (wavelengths.empty()) continue;
-        out.wavelength_um.push_back(centre_wavelength_um(wavelengths, sens[b].response, widths));
-        out.fwhm_um.push_back(fwhm_um(wavelengths, sens[b].response));
+    return sigma;
+}
+
+// Band b: its radiance through the .sen's response; with --calibrate its gain and bias
+// solved, otherwise blurred, its MTF applied and (unless --float) made counts, then stored
+// as the output's band b with its name, centre wavelength and width.
+void sensorize_band(const SensorizeJob& job, const Inputs& in, int b, double to_sen_units,
+                    bool radiance_preview, Products& p, SensorizeReport& report) {
+    const image::Image& cube = in.cube;
+    const std::vector<io::Sen>& sens = in.sens;
+    image::Image& out = p.out;
+    const auto wavelengths = band_wavelengths(cube, in.groups[b]);
+    const auto widths = sample_widths_um(wavelengths, in.groups[b].count);
+    std::vector<float> plane =
+        band_radiance(cube, in.groups[b], sens[b].response, widths, job.sen_paths[b]);
+    // Counts and calibration take the .sen's unit, W cm-2 sr-1 um-1.
+    if (!job.float_output && to_sen_units != 1)
+        for (float& v : plane) v *= static_cast<float>(to_sen_units);
+    if (job.calibrate) {
+        calibrate_band(job, b, plane, cube, report);
+        return;
     }
+    if (in.blur) plane = convolve(plane, cube.rows, cube.columns, in.kernel);
+    if (job.mtf.enabled) {
+        const double centre_um =
+            wavelengths.empty() ? 0 : centre_wavelength_um(wavelengths, sens[b].response, widths);
+        report.mtf.push_back(
+            apply_band_mtf(plane, cube.rows, cube.columns, job.mtf, centre_um, job.cube_path));
+    }
+    if (radiance_preview)
+        std::copy(plane.begin(), plane.end(),
+                  p.radiance.data.begin() + b * p.radiance.plane_size());
+    if (!job.float_output) {
+        apply_gain_bias(plane, sens[b].gain, sens[b].bias);
+        if (!p.sigma.empty())
+            counts_uncertainty(p.sigma[b], plane, sens[b].gain, sens[b].bias, job.noise);
+        add_noise(plane, sens[b].bias, job.noise, static_cast<std::uint64_t>(b));
+        // c = gain L + bias back to the band radiance L (GDAL scale and offset).
+        out.scale.push_back(1.0 / sens[b].gain);
+        out.offset.push_back(0.0 - sens[b].bias / sens[b].gain);  // not -0
+        report.bands.push_back({job.sen_paths[b], plane.size(), quantise(plane, job.bits)});
+    }
+    std::copy(plane.begin(), plane.end(), out.data.begin() + b * out.plane_size());
+    out.channel_names.push_back(stem_of(job.sen_paths[b]));
+    if (wavelengths.empty()) return;
+    out.wavelength_um.push_back(centre_wavelength_um(wavelengths, sens[b].response, widths));
+    out.fwhm_um.push_back(fwhm_um(wavelengths, sens[b].response));
+}
+
+// The updated .sen files (--calibrate) or the image, then the preview and the uncertainty.
+void write_outputs(const SensorizeJob& job, const Inputs& in, bool radiance_preview,
+                   Products& p, const SensorizeReport& report) {
+    image::Image& out = p.out;
     // The preview is made first: a cube it cannot show then leaves no output.
-    radiance.wavelength_um = out.wavelength_um;
+    p.radiance.wavelength_um = out.wavelength_um;
     const image::Image preview =
         job.preview_path.empty()
             ? image::Image()
-            : image::true_colour_preview(radiance_preview ? radiance : out, job.preview_path,
+            : image::true_colour_preview(radiance_preview ? p.radiance : out, job.preview_path,
                                          job.preview_common);
-    if (!job.calibrate) carry_georeference(job, cube, out);
+    if (!job.calibrate) carry_georeference(job, in.cube, out);
     if (job.calibrate)
-        write_calibrated_sens(sens, report);
+        write_calibrated_sens(in.sens, report);
     else if (job.float_output)
         image::write_float(job.output_path, out, job.write_options);
     else
         image::write_counts(job.output_path, out, job.bits, job.write_options);
     if (!job.preview_path.empty())
         image::write_counts(job.preview_path, preview, 8);
-    if (!sigma.empty()) write_uncertainty(job, out, sigma);
+    if (!p.sigma.empty()) write_uncertainty(job, out, p.sigma);
+}
+
+}  // namespace
+
+SensorizeReport run_sensorize(const SensorizeJob& job) {
+    check_job(job);
+    const Inputs in = read_inputs(job);
+    const image::Image& cube = in.cube;
+    SensorizeReport report;
+    report.cube_has_wavelengths = !cube.wavelength_um.empty();
+    const int bands = static_cast<int>(in.sens.size());
+    Products p;
+    p.out = image::Image(cube.rows, cube.columns, bands);
+    p.out.units = job.float_output ? cube.units : "DC";
+    if (!job.float_output) p.out.scaled_units = "W cm-2 sr-1 um-1";  // the .sen gain's unit
+    // --preview-stretch common: the preview of the band radiance, not of counts whose
+    // gains differ from band to band.
+    const bool radiance_preview = job.preview_common && !job.float_output;
+    p.radiance = image::Image(radiance_preview ? cube.rows : 0, cube.columns, bands);
+    // A cube in W m-2 sr-1 um-1 (trace --radiance-units W/m2/sr/um) to the .sen's unit.
+    const double to_sen_units = cube.units == "W m-2 sr-1 um-1" ? 1e-4 : 1.0;
+    p.sigma = read_sigma(job, cube, bands, to_sen_units);
+    for (int b = 0; b < bands; ++b)
+        sensorize_band(job, in, b, to_sen_units, radiance_preview, p, report);
+    write_outputs(job, in, radiance_preview, p, report);
     return report;
 }
 
