@@ -27,17 +27,61 @@ bool deck_mie_phase(const io::CdkCard1& card1, const io::CdkGeometry& geometry) 
     return card1.iemsct == 1 || (card1.iemsct == 2 && geometry.iph == 2);
 }
 
+namespace {
+
+// The parsed .snd keeps no line numbers: the message names the file and the field.
+void check_sensor_above_ground(double sensor_km, double ground, const std::string& snd_path) {
+    if (sensor_km <= ground)
+        throw DataError({snd_path, 0}, "the sensor altitude (" + format_number(sensor_km) +
+                                           " km) must lie above the ground (GNDALT, CARD 2: " +
+                                           format_number(ground) + " km)");
+}
+
+// The levels added to the deck's profile: the sensor's, and a cloud, rain or cirrus
+// model's, as LOWTRAN 7's FLAYZ does (those within the column).
+std::vector<double> added_levels(const io::CdkCard2& card2, double ground, double top,
+                                 double sensor, const std::optional<RainModel>& rain,
+                                 const std::optional<CirrusModel>& cirrus) {
+    std::vector<double> extra{sensor};
+    if (CloudModel::modelled(card2.icld))
+        for (double h : CloudModel::level_heights_km()) extra.push_back(ground + h);
+    auto add = [&](const std::vector<double>& levels) {
+        for (double z : levels)
+            if (z > ground && z < top) extra.push_back(z);
+    };
+    if (rain) add(rain->levels_km());
+    if (cirrus) add(cirrus->levels_km());
+    return extra;
+}
+
+// CARD 2D: with a cloud (ICLD 1-11) LOWTRAN 7 makes the cloud aerosol region 2, so
+// only IREG(1) (the boundary layer) is the aerosol's; IREG(2) is the cloud's
+// (build_radiance refuses the others: atmos_table/deck_options.cpp).
+std::optional<io::CdkUserOptics> aerosol_user_optics(const io::CdkRun& run) {
+    std::optional<io::CdkUserOptics> aerosol_user = run.user_optics;
+    if (aerosol_user && CloudModel::modelled(run.card2.icld))
+        for (std::size_t r = 1; r < aerosol_user->regions.size(); ++r)
+            aerosol_user->regions[r].reset();
+    return aerosol_user;
+}
+
+// The gas tables, only those near the samples' wavenumbers when the options name them.
+std::unique_ptr<GasTables> load_gas_tables(const ColumnOptions& o) {
+    return std::make_unique<GasTables>(
+        o.wavenumbers_cm1
+            ? GasTables::load(o.data_dir, o.wavenumbers_cm1->first, o.wavenumbers_cm1->second)
+            : GasTables::load(o.data_dir));
+}
+
+}  // namespace
+
 ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const ColumnOptions& o) {
     const Profile full = profile_from_deck(run, o.data_dir);
     const double ground = run.card2.ground_altitude_km > full.bottom_km()
                               ? run.card2.ground_altitude_km
                               : full.bottom_km();
     const double top = std::min(o.top_km, full.top_km());
-    // The parsed .snd keeps no line numbers: the message names the file and the field.
-    if (sensor_km <= ground)
-        throw DataError({o.snd_path, 0}, "the sensor altitude (" + format_number(sensor_km) +
-                                             " km) must lie above the ground (GNDALT, CARD 2: " +
-                                             format_number(ground) + " km)");
+    check_sensor_above_ground(sensor_km, ground, o.snd_path);
     const double sensor = std::min(sensor_km, top);
     // IPH 0 (CARD 3A1, IEMSCT 2): Henyey-Greenstein with the deck's G (CARD 3A2).
     const bool user_g = run.card1.iemsct == 2 && run.geometry.iph == 0;
@@ -49,31 +93,15 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const ColumnOp
     if (rain_card.icld == 11) rain_card.icld = 1;
     m_rain = RainModel::from_deck(rain_card, ground, o.data_dir,
                                   m_cirrus ? m_cirrus->levels_km() : std::vector<double>{});
-    // A cloud, rain or cirrus model adds its levels to the profile, as LOWTRAN 7's FLAYZ
-    // does (those within the column).
-    std::vector<double> extra{sensor};
-    if (CloudModel::modelled(run.card2.icld))
-        for (double h : CloudModel::level_heights_km()) extra.push_back(ground + h);
-    auto add = [&](const std::vector<double>& levels) {
-        for (double z : levels)
-            if (z > ground && z < top) extra.push_back(z);
-    };
-    if (m_rain) add(m_rain->levels_km());
-    if (m_cirrus) add(m_cirrus->levels_km());
-    m_profile = resample(full, ground, top, extra);
+    m_profile =
+        resample(full, ground, top, added_levels(run.card2, ground, top, sensor, m_rain, m_cirrus));
     m_sensor_level = index_of(m_profile.z_km, sensor);
     if (m_sensor_level >= m_profile.size() ||
         std::abs(m_profile.z_km[m_sensor_level] - sensor) > 1e-9)
         throw Error("internal: the sensor altitude is not a level of the resampled profile");
     io::CdkCard2 aerosol_card = run.card2;
     aerosol_card.icld = 0;  // the cloud, rain and cirrus are m_cloud's, m_rain's, m_cirrus's
-    // CARD 2D: with a cloud (ICLD 1-11) LOWTRAN 7 makes the cloud aerosol region 2, so
-    // only IREG(1) (the boundary layer) is the aerosol's; IREG(2) is the cloud's
-    // (build_radiance refuses the others: atmos_table/deck_options.cpp).
-    std::optional<io::CdkUserOptics> aerosol_user = run.user_optics;
-    if (aerosol_user && CloudModel::modelled(run.card2.icld))
-        for (std::size_t r = 1; r < aerosol_user->regions.size(); ++r)
-            aerosol_user->regions[r].reset();
+    const std::optional<io::CdkUserOptics> aerosol_user = aerosol_user_optics(run);
     const io::CdkUserOptics* user = aerosol_user ? &*aerosol_user : nullptr;
     m_aerosol.emplace(AerosolModel::from_deck(aerosol_card, m_profile, o.data_dir, g, user));
     for (std::size_t k = 0; k + 1 < m_profile.size(); ++k)
@@ -87,10 +115,7 @@ ColumnModel::ColumnModel(const io::CdkRun& run, double sensor_km, const ColumnOp
     if (deck_mie_phase(run.card1, run.geometry)) m_mie = MiePhaseTable::load(o.data_dir);
     m_ihaze = run.card2.ihaze;
     m_ivulcn = run.card2.ivulcn;
-    m_gas_tables = std::make_unique<GasTables>(
-        o.wavenumbers_cm1
-            ? GasTables::load(o.data_dir, o.wavenumbers_cm1->first, o.wavenumbers_cm1->second)
-            : GasTables::load(o.data_dir));
+    m_gas_tables = load_gas_tables(o);
     m_gas = std::make_unique<GasColumn>(*m_gas_tables, m_profile);
     m_shells = shells_from(m_profile);
     m_shell_nodes = shell_nodes(m_shells);

@@ -48,6 +48,25 @@ std::vector<Pair> pruned_product(const ExpSum& fa, const ExpSum& fb, double xa_c
     return p;
 }
 
+// The terms of the fitted pairs: per pair the fitted gases' depths k_a C_a W_a (plus
+// k_b C_b W_b with a second gas, wb not null) per layer, on top of the other
+// absorbers' depths `base`.
+void add_pair_terms(const std::vector<Pair>& pairs, double ca, const std::vector<double>& wa,
+                    double cb, const std::vector<double>* wb, const std::vector<double>& base,
+                    GasColumn::Terms& terms) {
+    const std::size_t layers = base.size();
+    for (const Pair& p : pairs) {
+        std::vector<double> g(layers);
+        for (std::size_t l = 0; l < layers; ++l)
+            g[l] = p.ka * ca * wa[l] + (wb ? p.kb * cb * (*wb)[l] : 0.0);
+        std::vector<double> d = base;
+        for (std::size_t l = 0; l < layers; ++l) d[l] += g[l];
+        terms.weight.push_back(p.weight);
+        terms.depth.push_back(std::move(d));
+        terms.fitted_depth.push_back(std::move(g));
+    }
+}
+
 }  // namespace
 
 // Gas g's band at nu, its 10^C' and its scaled amount W in every layer (bottom first)
@@ -133,16 +152,7 @@ GasColumn::Terms GasColumn::absorption_terms(double nu, double path_factor, doub
                                tol / 3);
     }
     Terms terms{{}, {}, false, ga, gb, {}};
-    for (const Pair& p : pairs) {
-        std::vector<double> g(layers);
-        for (std::size_t l = 0; l < layers; ++l)
-            g[l] = p.ka * a.c * a.w[l] + (gb < 0 ? 0.0 : p.kb * b.c * b.w[l]);
-        std::vector<double> d = base;
-        for (std::size_t l = 0; l < layers; ++l) d[l] += g[l];
-        terms.weight.push_back(p.weight);
-        terms.depth.push_back(std::move(d));
-        terms.fitted_depth.push_back(std::move(g));
-    }
+    add_pair_terms(pairs, a.c, a.w, b.c, gb < 0 ? nullptr : &b.w, base, terms);
     return terms;
 }
 

@@ -138,6 +138,89 @@ MieOptics mie_optics(const std::array<std::optional<TabulatedPhase>, 4>& regions
     return m;
 }
 
+namespace {
+
+// Merged layer i (the column's layers kept[i] to kept[i + 1]): its optical depth added to
+// l.tau; returned, its scattering optical depth per component (Rayleigh, the Mie
+// regions, then the Henyey-Greenstein rests, whose asymmetries comp.hg_g receives).
+std::vector<double> component_scattering(const std::vector<LayerOptics>& col,
+                                         std::size_t begin, std::size_t end, Components& comp,
+                                         rt::Layer& l) {
+    std::vector<double> sc(kHg0, 0.0);
+    for (std::size_t k = begin; k < end; ++k) {
+        const LayerOptics& c = col[k];
+        const double aer = c.tau_aerosol * c.ssa_aerosol;
+        l.tau += c.tau_rayleigh + aer + c.tau_aerosol * (1 - c.ssa_aerosol) + c.tau_gas;
+        sc[0] += c.tau_rayleigh;
+        double rest = aer;
+        for (std::size_t r = 0; r < 4; ++r)
+            sc[kMie0 + r] += c.tau_scat_mie[r], rest -= c.tau_scat_mie[r];
+        if (rest <= 1e-9 * aer) continue;  // rounding of the regions' sum: no rest
+        const std::size_t h = kHg0 + hg_index(comp.hg_g, c.g_other);
+        sc.resize(std::max(sc.size(), h + 1), 0.0);
+        sc[h] += rest;
+    }
+    return sc;
+}
+
+// The moments g^k (k = 0..moments) of each Henyey-Greenstein component, made on first use.
+class HgMoments {
+public:
+    HgMoments(const Components& comp, int moments) : m_comp(comp), m_moments(moments) {}
+    const std::vector<double>& operator()(std::size_t h) {
+        for (std::size_t n = m_chi.size(); n <= h; ++n) {
+            m_chi.emplace_back();
+            for (int j = 0; j <= m_moments; ++j) m_chi[n].push_back(std::pow(m_comp.hg_g[n], j));
+        }
+        return m_chi[h];
+    }
+
+private:
+    const Components& m_comp;
+    int m_moments;
+    std::vector<std::vector<double>> m_chi;
+};
+
+// The layer's phase-function moments from its scattering per component `sc` (sum
+// `scat`), normalised by it.
+void mix_moments(const std::vector<double>& sc, double scat,
+                 const std::array<double, 3>& rayleigh, const MieOptics& mie, HgMoments& hg_chi,
+                 int moments, std::vector<double>& pm) {
+    // Moment k sums scattering x chi_k over the components in component order; the
+    // components are taken one at a time, each over every moment.
+    pm.assign(static_cast<std::size_t>(moments) + 1, 0.0);
+    for (std::size_t c = 0; c < sc.size(); ++c) {
+        if (sc[c] == 0) continue;
+        const double w = sc[c];
+        if (c == 0) {
+            for (int k = 0; k <= moments; ++k) pm[k] += w * (k < 3 ? rayleigh[k] : 0.0);
+        } else if (c < kHg0) {
+            const std::vector<double>& chi = mie.chi[c - kMie0];
+            const int n = static_cast<int>(chi.size());
+            for (int k = 0; k <= moments; ++k) pm[k] += w * (k < n ? chi[k] : 0.0);
+        } else {
+            const std::vector<double>& chi = hg_chi(c - kHg0);
+            for (int k = 0; k <= moments; ++k) pm[k] += w * chi[k];
+        }
+    }
+    for (int k = 0; k <= moments; ++k) pm[k] = scat > 0 ? pm[k] / scat : (k == 0 ? 1.0 : 0.0);
+}
+
+// The exact phase functions of the solver's layers: each layer's weights per component
+// (its scattering fractions, scat_c) and the components' functions.
+void set_exact_phase(const std::shared_ptr<Components>& comp, std::size_t layers,
+                     const std::vector<std::vector<double>>& scat_c, rt::ExactPhase& exact) {
+    const std::size_t nc = kHg0 + comp->hg_g.size();
+    exact.components = nc;
+    exact.weights.assign(layers * nc, 0.0);
+    for (std::size_t n = 0; n < layers; ++n)
+        std::copy(scat_c[n].begin(), scat_c[n].end(), exact.weights.begin() + n * nc);
+    exact.evaluate = [comp](double x, double* v) { comp->evaluate(x, v); };
+    exact.mean = [comp](const double* xs, int n, double* v) { comp->mean(xs, n, v); };
+}
+
+}  // namespace
+
 std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
                                          const std::vector<std::size_t>& kept, const MieOptics& mie,
                                          int moments, rt::ExactPhase* exact) {
@@ -147,66 +230,20 @@ std::vector<rt::Layer> mie_solver_layers(const std::vector<LayerOptics>& col,
     for (std::size_t r = 0; r < 4; ++r)
         if (mie.has[r]) comp->grid[r] = &mie.grid[r];
     std::vector<rt::Layer> out;
-    std::vector<std::vector<double>> scat_c;      // per output layer: scattering per component
-    std::vector<std::vector<double>> hg_moments;  // g^k of each Henyey-Greenstein component
-    auto hg_chi = [&](std::size_t h) -> const std::vector<double>& {  // made on first use
-        for (std::size_t n = hg_moments.size(); n <= h; ++n) {
-            hg_moments.emplace_back();
-            for (int j = 0; j <= moments; ++j) hg_moments[n].push_back(std::pow(comp->hg_g[n], j));
-        }
-        return hg_moments[h];
-    };
+    std::vector<std::vector<double>> scat_c;  // per output layer: scattering per component
+    HgMoments hg_chi(*comp, moments);
     for (std::size_t i = kept.size() - 1; i-- > 0;) {
         rt::Layer l;
-        std::vector<double> sc(kHg0, 0.0);
-        for (std::size_t k = kept[i]; k < kept[i + 1]; ++k) {
-            const LayerOptics& c = col[k];
-            const double aer = c.tau_aerosol * c.ssa_aerosol;
-            l.tau += c.tau_rayleigh + aer + c.tau_aerosol * (1 - c.ssa_aerosol) + c.tau_gas;
-            sc[0] += c.tau_rayleigh;
-            double rest = aer;
-            for (std::size_t r = 0; r < 4; ++r)
-                sc[kMie0 + r] += c.tau_scat_mie[r], rest -= c.tau_scat_mie[r];
-            if (rest <= 1e-9 * aer) continue;  // rounding of the regions' sum: no rest
-            const std::size_t h = kHg0 + hg_index(comp->hg_g, c.g_other);
-            sc.resize(std::max(sc.size(), h + 1), 0.0);
-            sc[h] += rest;
-        }
+        std::vector<double> sc = component_scattering(col, kept[i], kept[i + 1], *comp, l);
         double scat = 0;
         for (double v : sc) scat += v;
         l.ssa = l.tau > 0 ? std::clamp(scat / l.tau, 0.0, 1.0) : 0.0;
-        // Moment k sums scattering x chi_k over the components in component order; the
-        // components are taken one at a time, each over every moment.
-        std::vector<double>& pm = l.pmom;
-        pm.assign(static_cast<std::size_t>(moments) + 1, 0.0);
-        for (std::size_t c = 0; c < sc.size(); ++c) {
-            if (sc[c] == 0) continue;
-            const double w = sc[c];
-            if (c == 0) {
-                for (int k = 0; k <= moments; ++k) pm[k] += w * (k < 3 ? rayleigh[k] : 0.0);
-            } else if (c < kHg0) {
-                const std::vector<double>& chi = mie.chi[c - kMie0];
-                const int n = static_cast<int>(chi.size());
-                for (int k = 0; k <= moments; ++k) pm[k] += w * (k < n ? chi[k] : 0.0);
-            } else {
-                const std::vector<double>& chi = hg_chi(c - kHg0);
-                for (int k = 0; k <= moments; ++k) pm[k] += w * chi[k];
-            }
-        }
-        for (int k = 0; k <= moments; ++k) pm[k] = scat > 0 ? pm[k] / scat : (k == 0 ? 1.0 : 0.0);
+        mix_moments(sc, scat, rayleigh, mie, hg_chi, moments, l.pmom);
         for (double& v : sc) v = scat > 0 ? v / scat : 0.0;
         scat_c.push_back(std::move(sc));
         out.push_back(std::move(l));
     }
-    if (exact) {
-        const std::size_t nc = kHg0 + comp->hg_g.size();
-        exact->components = nc;
-        exact->weights.assign(out.size() * nc, 0.0);
-        for (std::size_t n = 0; n < out.size(); ++n)
-            std::copy(scat_c[n].begin(), scat_c[n].end(), exact->weights.begin() + n * nc);
-        exact->evaluate = [comp](double x, double* v) { comp->evaluate(x, v); };
-        exact->mean = [comp](const double* xs, int n, double* v) { comp->mean(xs, n, v); };
-    }
+    if (exact) set_exact_phase(comp, out.size(), scat_c, *exact);
     return out;
 }
 

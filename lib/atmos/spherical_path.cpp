@@ -170,53 +170,49 @@ Ray trace_to_sun(const Shells& s, std::size_t to, double true_zenith_rad) {
     return trace_to_sun(s, shell_nodes(s), to, true_zenith_rad);
 }
 
-Ray trace_to_sun(const Shells& s, const ShellNodes& shell, std::size_t to, double true_zenith_rad) {
-    const std::size_t top = s.z_km.size() - 1;
-    if (to >= top) {  // at the top: no atmosphere above
-        Ray ray;
-        ray.zenith_rad = true_zenith_rad;
-        ray.air_mass.assign(top, 0.0);
-        ray.reaches = true_zenith_rad <= std::numbers::pi / 2;
-        return ray;
-    }
-    // z + R(z) increases with z: bisection on [0, pi/2] to 1e-12 rad.
-    const PathNodes nodes = path_nodes(s, shell, to, top);
-    auto seen = [&](double z) { return trace_nodes(nodes, s.z_km.size(), z); };
-    Ray hi = seen(std::numbers::pi / 2);
-    if (true_zenith_rad > hi.zenith_rad + hi.refraction_rad) {
-        hi.reaches = false;
-        return hi;
-    }
-    // The refraction R(z) grows with z, from R(0) = 0 (C = 0) to R(pi/2): a midpoint m
-    // with m + R(p) above the true zenith for a traced p <= m, or m + R(q) below it for
-    // a traced q >= m, by more than kSure, falls the same way as a trace of m would, so
-    // only the midpoints near the root are traced. The same intervals as tracing every
-    // midpoint, bit for bit, with a few traces instead of 40.
-    constexpr double kSure = 1e-13;  // rad: 400 times the rounding of m + R (2.2e-16)
-    const double t = true_zenith_rad, half_pi = std::numbers::pi / 2;
-    std::vector<std::pair<double, double>> traced{{0.0, 0.0}, {half_pi, hi.refraction_rad}};
+namespace {
+
+// The refraction R(z) grows with z, from R(0) = 0 (C = 0) to R(pi/2): a midpoint m
+// with m + R(p) above the true zenith for a traced p <= m, or m + R(q) below it for
+// a traced q >= m, by more than kSure, falls the same way as a trace of m would, so
+// only the midpoints near the root are traced. The same intervals as tracing every
+// midpoint, bit for bit, with a few traces instead of 40.
+constexpr double kSure = 1e-13;  // rad: 400 times the rounding of m + R (2.2e-16)
+
+using Traced = std::vector<std::pair<double, double>>;  // (z, R(z)) of the traced rays
+
+// Points bracketing the root first, by z_k+1 = t - R(z_k) from z_0 = t: the root z*
+// (z* + R(z*) = t) lies above t - R(t) (R(z*) <= R(t)), below t - R(z1) for z1 below
+// it, and so on, each pair closer by a factor dR/dz (~1e-4 away from the horizon):
+// after four traces the bracket is within rounding, and the midpoints' bounds decide
+// them all but the last few. `seen(z)` traces the ray of apparent zenith z; r_horizon
+// is R(pi/2).
+template <class Seen>
+void trace_bracket(const Seen& seen, double t, double r_horizon, Traced& traced) {
+    const double half_pi = std::numbers::pi / 2;
     auto refraction = [&](double z) {
         const double r = seen(z).refraction_rad;
         traced.emplace_back(z, r);
         return r;
     };
-    // Points bracketing the root first, by z_k+1 = t - R(z_k) from z_0 = t: the root z*
-    // (z* + R(z*) = t) lies above t - R(t) (R(z*) <= R(t)), below t - R(z1) for z1 below
-    // it, and so on, each pair closer by a factor dR/dz (~1e-4 away from the horizon):
-    // after four traces the bracket is within rounding, and the midpoints' bounds decide
-    // them all but the last few.
     double z = std::min(t, half_pi);
-    double r = z == half_pi ? hi.refraction_rad : refraction(z);
+    double r = z == half_pi ? r_horizon : refraction(z);
     for (int k = 0; k < 4; ++k) {
         const double next = std::clamp(t - r, 0.0, half_pi);
         if (std::abs(next - z) < kSure) break;
         z = next;
         r = refraction(z);
     }
-    double a = 0, b = half_pi;
+}
+
+// z + R(z) increases with z: bisection on [0, pi/2] to 1e-12 rad for the apparent
+// zenith of true zenith t, tracing only the midpoints the traced bounds leave open.
+template <class Seen>
+double bisect_zenith(const Seen& seen, double t, double r_horizon, Traced& traced) {
+    double a = 0, b = std::numbers::pi / 2;
     for (int it = 0; it < 60 && b - a > 1e-12; ++it) {
         const double m = 0.5 * (a + b);
-        double r_below = 0, r_above = hi.refraction_rad;  // R at traced points <= m, >= m
+        double r_below = 0, r_above = r_horizon;  // R at traced points <= m, >= m
         for (const auto& [zp, rp] : traced) {
             if (zp <= m) r_below = std::max(r_below, rp);
             if (zp >= m) r_above = std::min(r_above, rp);
@@ -231,7 +227,30 @@ Ray trace_to_sun(const Shells& s, const ShellNodes& shell, std::size_t to, doubl
             (rm.zenith_rad + rm.refraction_rad > t ? b : a) = m;
         }
     }
-    return seen(0.5 * (a + b));
+    return 0.5 * (a + b);
+}
+
+}  // namespace
+
+Ray trace_to_sun(const Shells& s, const ShellNodes& shell, std::size_t to, double true_zenith_rad) {
+    const std::size_t top = s.z_km.size() - 1;
+    if (to >= top) {  // at the top: no atmosphere above
+        Ray ray;
+        ray.zenith_rad = true_zenith_rad;
+        ray.air_mass.assign(top, 0.0);
+        ray.reaches = true_zenith_rad <= std::numbers::pi / 2;
+        return ray;
+    }
+    const PathNodes nodes = path_nodes(s, shell, to, top);
+    auto seen = [&](double z) { return trace_nodes(nodes, s.z_km.size(), z); };
+    Ray hi = seen(std::numbers::pi / 2);
+    if (true_zenith_rad > hi.zenith_rad + hi.refraction_rad) {
+        hi.reaches = false;
+        return hi;
+    }
+    Traced traced{{0.0, 0.0}, {std::numbers::pi / 2, hi.refraction_rad}};
+    trace_bracket(seen, true_zenith_rad, hi.refraction_rad, traced);
+    return seen(bisect_zenith(seen, true_zenith_rad, hi.refraction_rad, traced));
 }
 
 }  // namespace sigchain::atmos

@@ -109,28 +109,25 @@ std::vector<Position> locate(const Problem& p, const Scaled& s) {
     return out;
 }
 
-// Assembles and solves the boundary-value problem for one mode: top boundary, continuity
-// at every interface, Lambertian bottom (Stamnes et al. 1988, eqs. 16-20), as a banded
-// system with kl = ku = 3 nn - 1 (unknowns ordered layer by layer, decaying then growing).
-// With `factored`, band already holds this system's factors: only the right-hand side
-// is formed.
-void solve_boundary(const Problem& p, const Quadrature& q, int m,
-                    const std::vector<LayerOptics>& opt, const std::vector<LayerSolution>& sol,
-                    double beam_bottom, bool factored, linalg::BandMatrix& band,
-                    std::vector<double>& x) {
-    const int nn = q.nn, n2 = 2 * nn, L = static_cast<int>(sol.size());
-    const bool assemble = !factored;
-    if (assemble) band.reset(L * n2, 3 * nn - 1, 3 * nn - 1);
-    x.assign(L * n2, 0.0);
-    auto part = [&](int n, int a, double t) {
+// The particular solution (beam and thermal) of mode m: its intensity in stream a at
+// scaled depth t of layer n.
+struct Particular {
+    const std::vector<LayerOptics>& opt;
+    const std::vector<LayerSolution>& sol;
+    int m;
+    double operator()(int n, int a, double t) const {
         const LayerSolution& s = sol[n];
         return s.beam[a] * std::exp(-t * s.inv_mu0) + s.thermal0[a] +
                opt[n].planck_slope * t * (m == 0 ? 1 : 0);
-    };
-    const bool thermal = !p.planck_levels.empty() && m == 0;
-    (void)thermal;
-    // Top: downward intensities at t = 0 of layer 0.
-    const double top = m == 0 ? p.top_isotropic + p.top_emission : 0.0;
+    }
+};
+
+// Top: downward intensities at t = 0 of layer 0 (rows 0 to nn - 1).
+void top_rows(const Problem& p, const Quadrature& q, const Particular& part, bool assemble,
+              linalg::BandMatrix& band, std::vector<double>& x) {
+    const int nn = q.nn;
+    const std::vector<LayerSolution>& sol = part.sol;
+    const double top = part.m == 0 ? p.top_isotropic + p.top_emission : 0.0;
     for (int i = 0; i < nn; ++i) {
         const int a = nn + i;
         for (int j = 0; j < nn && assemble; ++j) {
@@ -139,9 +136,14 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
         }
         x[i] = top - part(0, a, 0);
     }
-    // Interfaces.
+}
+
+// Interfaces: every stream's intensity continuous from layer n's bottom to n + 1's top.
+void interface_rows(const Quadrature& q, const Particular& part, bool assemble,
+                    linalg::BandMatrix& band, std::vector<double>& x) {
+    const int nn = q.nn, n2 = 2 * nn, L = static_cast<int>(part.sol.size());
     for (int n = 0; n + 1 < L; ++n) {
-        const LayerSolution &u = sol[n], &d = sol[n + 1];
+        const LayerSolution &u = part.sol[n], &d = part.sol[n + 1];
         for (int a = 0; a < n2; ++a) {
             const int r = nn + n * n2 + a;
             for (int j = 0; j < nn && assemble; ++j) {
@@ -150,16 +152,23 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
                 band.at(r, (n + 1) * n2 + j) = -d.dec(j, a);
                 band.at(r, (n + 1) * n2 + nn + j) = -d.grow(j, a) * d.exp_k[j];
             }
-            x[r] = part(n + 1, a, 0) - part(n, a, opt[n].dtau);
+            x[r] = part(n + 1, a, 0) - part(n, a, part.opt[n].dtau);
         }
     }
-    // Bottom: I(+mu_i) - 2 albedo sum_k w_k mu_k I(-mu_k) = surface sources.
+}
+
+// Bottom: I(+mu_i) - 2 albedo sum_k w_k mu_k I(-mu_k) = surface sources.
+void bottom_rows(const Problem& p, const Quadrature& q, const Particular& part,
+                 double beam_bottom, bool assemble, linalg::BandMatrix& band,
+                 std::vector<double>& x) {
+    const int nn = q.nn, n2 = 2 * nn, L = static_cast<int>(part.sol.size());
     const int nb = L - 1;
-    const LayerSolution& b = sol[nb];
-    const double dt = opt[nb].dtau;
-    const double alb = m == 0 ? p.albedo : 0.0;
+    const LayerSolution& b = part.sol[nb];
+    const double dt = part.opt[nb].dtau;
+    const double alb = part.m == 0 ? p.albedo : 0.0;
     double src = 0;
-    if (m == 0) src = alb * p.beam_mu0 * beam_bottom / kPi + (1 - p.albedo) * p.planck_surface;
+    if (part.m == 0)
+        src = alb * p.beam_mu0 * beam_bottom / kPi + (1 - p.albedo) * p.planck_surface;
     double part_refl = 0;
     for (int k = 0; k < nn; ++k) part_refl += q.weight[k] * q.mu[k] * part(nb, nn + k, dt);
     for (int i = 0; i < nn; ++i) {
@@ -176,6 +185,25 @@ void solve_boundary(const Problem& p, const Quadrature& q, int m,
         }
         x[r] = src - part(nb, i, dt) + 2 * alb * part_refl;
     }
+}
+
+// Assembles and solves the boundary-value problem for one mode: top boundary, continuity
+// at every interface, Lambertian bottom (Stamnes et al. 1988, eqs. 16-20), as a banded
+// system with kl = ku = 3 nn - 1 (unknowns ordered layer by layer, decaying then growing).
+// With `factored`, band already holds this system's factors: only the right-hand side
+// is formed.
+void solve_boundary(const Problem& p, const Quadrature& q, int m,
+                    const std::vector<LayerOptics>& opt, const std::vector<LayerSolution>& sol,
+                    double beam_bottom, bool factored, linalg::BandMatrix& band,
+                    std::vector<double>& x) {
+    const int nn = q.nn, n2 = 2 * nn, L = static_cast<int>(sol.size());
+    const bool assemble = !factored;
+    if (assemble) band.reset(L * n2, 3 * nn - 1, 3 * nn - 1);
+    x.assign(L * n2, 0.0);
+    const Particular part{opt, sol, m};
+    top_rows(p, q, part, assemble, band, x);
+    interface_rows(q, part, assemble, band, x);
+    bottom_rows(p, q, part, beam_bottom, assemble, band, x);
     if (assemble && !band.factor())
         throw Error("discrete-ordinate solver: singular boundary-value system");
     band.solve(x.data());

@@ -268,6 +268,32 @@ double xi(double mu1, double mu2, double tau) {
     return (e1 - (1 + z) * std::exp(-tau / mu2)) / (a * a * mu1 * mu2);
 }
 
+// P_spike = 2 P'' - P''*P'' at scattering cosine cs by its Legendre series,
+// sum_k (2k + 1) g_k (2 - g_k) P_k(cs) over `terms` terms, g_k = 1 below the n_streams
+// streams and g[k] beyond (the recurrence for P_k).
+double spike_at(double cs, const std::vector<double>& g, std::size_t terms, int n_streams) {
+    double p0 = 1, p1 = cs, spike = 1 + 3 * cs;
+    for (std::size_t k = 2; k < terms; ++k) {
+        const double p2 = ((2.0 * k - 1) * cs * p1 - (k - 1.0) * p0) / k;
+        p0 = p1, p1 = p2;
+        const double gk = k < static_cast<std::size_t>(n_streams) ? 1 : g[k];
+        spike += gk * (2 - gk) * (2.0 * k + 1) * p2;
+    }
+    return spike;
+}
+
+// P_spike's mean over azimuth (the addition theorem): the same series with
+// P_k(mu) P_k(-mu0) for P_k(cs); pu and p0 hold those P_k.
+double spike_mean(const std::vector<double>& pu, const std::vector<double>& p0,
+                  const std::vector<double>& g, std::size_t terms, int n_streams) {
+    double spike = 1 + 3 * pu[1] * p0[1];
+    for (std::size_t k = 2; k < terms; ++k) {
+        const double gk = k < static_cast<std::size_t>(n_streams) ? 1 : g[k];
+        spike += gk * (2 - gk) * (2.0 * k + 1) * pu[k] * p0[k];
+    }
+    return spike;
+}
+
 }  // namespace
 
 // Nakajima & Tanaka (1988, JQSRT 40, 51) IMS correction (eqs. 14-15; DISORT report v1.1,
@@ -318,12 +344,7 @@ void Solver::secondary_correction() {
             if (!aureole[u]) continue;
             const double x = amp * xi(-mu, mu0p, utau);
             if (m_p.azimuth_mean) {  // the spike's mean over azimuth: addition theorem
-                const std::vector<double> pu = legendre(mu, n_spike);
-                double spike = 1 + 3 * pu[1] * p0_spike[1];
-                for (std::size_t k = 2; k < n_spike; ++k) {
-                    const double gk = k < static_cast<std::size_t>(m_N) ? 1 : g[k];
-                    spike += gk * (2 - gk) * (2.0 * k + 1) * pu[k] * p0_spike[k];
-                }
+                const double spike = spike_mean(legendre(mu, n_spike), p0_spike, g, n_spike, m_N);
                 for (std::size_t f = 0; f < nphi; ++f)
                     m_result.levels[i].intensity[u * nphi + f] -= x * spike;
                 continue;
@@ -331,14 +352,7 @@ void Solver::secondary_correction() {
             const double sines = std::sqrt((1 - mu * mu) * (1 - mu0 * mu0));
             for (std::size_t f = 0; f < nphi; ++f) {
                 const double cs = -mu * mu0 + sines * cosd[f];
-                double p0 = 1, p1 = cs, spike = 1 + 3 * cs;
-                for (std::size_t k = 2; k < std::max<std::size_t>(nmom, m_N); ++k) {
-                    const double p2 = ((2.0 * k - 1) * cs * p1 - (k - 1.0) * p0) / k;
-                    p0 = p1, p1 = p2;
-                    const double gk = k < static_cast<std::size_t>(m_N) ? 1 : g[k];
-                    spike += gk * (2 - gk) * (2.0 * k + 1) * p2;
-                }
-                m_result.levels[i].intensity[u * nphi + f] -= x * spike;
+                m_result.levels[i].intensity[u * nphi + f] -= x * spike_at(cs, g, n_spike, m_N);
             }
         }
     }
