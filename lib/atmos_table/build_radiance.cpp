@@ -5,20 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <exception>
-#include <functional>
 #include <numbers>
-#include <type_traits>
 
 #include "atmos/solar_spectrum.hpp"
 #include "atmos_table/deck_options.hpp"
 #include "atmos_table/radiance_directions.hpp"
 #include "atmos_table/radiance_sample.hpp"
+#include "atmos_table/solve_samples.hpp"
 #include "atmos_table/stream_choice.hpp"
 #include "core/error.hpp"
-#include "core/farm.hpp"
 #include "core/numeric.hpp"
 #include "core/parallel.hpp"
 #include "core/text.hpp"
@@ -131,121 +127,6 @@ std::vector<double> sample_wavenumbers(const io::Snd& snd) {
     for (const io::SndBand& band : snd.bands)
         for (long s = band.sample_count() - 1; s >= 0; --s) nus.push_back(band.wavenumber_cm1(s));
     return nus;
-}
-
-// A part of the samples' results as bytes (the farm's message): per sample its fixed
-// fields, then its series, each with its length.
-void put_bytes(FarmBytes& out, const void* data, std::size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    out.insert(out.end(), p, p + n);
-}
-template <class T>
-void put_series(FarmBytes& out, const std::vector<T>& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const auto n = static_cast<std::uint64_t>(v.size());
-    put_bytes(out, &n, sizeof n);
-    put_bytes(out, v.data(), sizeof(T) * v.size());
-}
-struct Reader {
-    const FarmBytes& bytes;
-    std::size_t at = 0;
-    void take(void* to, std::size_t n) {
-        if (at + n > bytes.size()) throw IoError("MPI: a malformed part of spectral samples");
-        std::memcpy(to, bytes.data() + at, n);
-        at += n;
-    }
-    template <class T>
-    std::vector<T> series() {
-        std::uint64_t n = 0;
-        take(&n, sizeof n);
-        std::vector<T> v(static_cast<std::size_t>(n));
-        take(v.data(), sizeof(T) * v.size());
-        return v;
-    }
-};
-struct SampleScalars {
-    io::RadSample sample;
-    double ground_irradiance, spherical_albedo, diffuse_down;
-    std::int32_t terms;  // exponential-sum terms solved (the -v count)
-    std::uint8_t thermal;
-};
-
-FarmBytes pack(const SampleResult* r, long count) {
-    FarmBytes out;
-    for (long i = 0; i < count; ++i, ++r) {
-        const SampleScalars s{r->sample,
-                              r->ground_irradiance,
-                              r->spherical_albedo,
-                              r->diffuse_down,
-                              r->terms,
-                              static_cast<std::uint8_t>(r->thermal)};
-        put_bytes(out, &s, sizeof s);
-        put_series(out, r->path);
-        for (const auto* v : {&r->ls, &r->le, &r->us, &r->ue, &r->diffuse_up}) put_series(out, *v);
-    }
-    return out;
-}
-
-void unpack(const FarmBytes& bytes, SampleResult* r, long count) {
-    Reader in{bytes};
-    for (long i = 0; i < count; ++i, ++r) {
-        SampleScalars s;
-        in.take(&s, sizeof s);
-        r->sample = s.sample;
-        r->ground_irradiance = s.ground_irradiance;
-        r->spherical_albedo = s.spherical_albedo;
-        r->diffuse_down = s.diffuse_down;
-        r->terms = s.terms;
-        r->thermal = s.thermal != 0;
-        r->path = in.series<io::RadPathSample>();
-        for (auto* v : {&r->ls, &r->le, &r->us, &r->ue, &r->diffuse_up}) *v = in.series<double>();
-    }
-    if (in.at != bytes.size()) throw IoError("MPI: a malformed part of spectral samples");
-}
-
-// Every sample is independent: solved on worker threads, each writing its own slot;
-// under mpirun parts of the samples go to the ranks (core/farm.hpp), gathered on rank 0.
-// Returns false on an MPI worker, which has no results.
-// Sample i is solved with setups[setup_of[i]] (its band's streams).
-bool solve_samples(const std::vector<SampleSetup>& setups, const std::vector<std::size_t>& setup_of,
-                   const std::vector<double>& nus, const Reporter& reporter,
-                   std::vector<SampleResult>& results) {
-    results.assign(nus.size(), {});
-    const ProgressScope bar(reporter, "spectral samples");
-    const auto solve = [&](long begin, long end, SampleResult* out,
-                           const std::function<void(long, long)>& progress) {
-        const unsigned threads = setups.front().options.threads;
-        parallel_for(end - begin, {threads, progress}, [&](long i, unsigned) {
-            const auto k = static_cast<std::size_t>(begin + i);
-            out[i] = solve_sample(setups[setup_of[k]], nus[k]);
-        });
-    };
-    const long n = static_cast<long>(nus.size());
-    FarmJob job;
-    job.items = n;
-    job.parts = farm_parts(n, farm_workers(), 1e5);  // a sample's grids: kB, not GB
-    job.compute = [&](long begin, long end) {
-        std::vector<SampleResult> part(static_cast<std::size_t>(end - begin));
-        solve(begin, end, part.data(), {});
-        return pack(part.data(), end - begin);
-    };
-    const auto progress = bar.callback();
-    long done = 0;
-    job.gather = [&](long begin, long end, const FarmBytes& bytes) {
-        unpack(bytes, results.data() + begin, end - begin);
-        done += end - begin;
-        if (progress) progress(done, n);
-    };
-    switch (n > 0 ? run_farm(job) : FarmRole::Alone) {
-        case FarmRole::Alone:
-            solve(0, n, results.data(), progress);
-            return !farm_worker();
-        case FarmRole::Lead:
-            return true;
-        case FarmRole::Worker:
-            return false;
-    }
-    return true;
 }
 
 // The sky and upwelled grids without their samples.
@@ -388,6 +269,93 @@ std::string band_output_path(const std::string& pattern, int band, int band_coun
     return out;
 }
 
+namespace {
+
+// The column is asked about the .snd's samples only (the stream choice's probes are
+// among them): gas tables beyond are not read.
+atmos::ColumnOptions column_options(const RadianceOptions& o, const std::vector<double>& nus) {
+    atmos::ColumnOptions column_options = o;
+    if (!nus.empty())
+        column_options.wavenumbers_cm1.emplace(*std::min_element(nus.begin(), nus.end()),
+                                               *std::max_element(nus.begin(), nus.end()));
+    return column_options;
+}
+
+void note_skipped_gas_tables(const atmos::ColumnModel& column, RadianceReport& rep) {
+    if (column.skipped_gas_tables().empty()) return;
+    std::string names;
+    for (const std::string& n : column.skipped_gas_tables())
+        names += (names.empty() ? "" : ", ") + n;
+    rep.notes.push_back("gas tables not read (no sample within " +
+                        format_number(atmos::GasTables::kLoadMargin) + " cm-1 of them): " + names);
+}
+
+// The layers' merge threshold the samples are solved with, and the rule that gave it.
+void report_merge_rule(const RadianceOptions& o, const RadianceOptions& solved,
+                       RadianceReport& rep) {
+    rep.merge_tau = *solved.merge_tau;
+    if (o.merge_tau)
+        rep.merge_rule = "--merge-tau";
+    else if (o.streams == kAutoStreams)
+        rep.merge_rule = "--streams auto at " + format_number(100 * o.stream_tolerance) +
+                         " %: 0.01 x sqrt(REL / 1 %)";
+}
+
+// The deck's notes, and the note when only means over azimuth are tabulated.
+void note_deck_and_directions(const io::CdkRun& run, const Directions& dirs,
+                              RadianceReport& rep) {
+    for (std::string& note : deck_notes(run)) rep.notes.push_back(std::move(note));
+    if (dirs.azimuth_means_only)
+        rep.notes.push_back(
+            "only means over azimuth tabulated (nadir views, whole-ring sky "
+            "cells): the solver's Fourier modes above 0 are not solved");
+}
+
+// Per band the setup its samples are solved with: `setup` with the band's streams
+// (band_options, which must outlive the setups); `setup_of` receives each sample's band.
+std::vector<SampleSetup> band_setups(const SampleSetup& setup, const io::Snd& snd,
+                                     const std::vector<RadianceOptions>& band_options,
+                                     std::vector<std::size_t>& setup_of) {
+    std::vector<SampleSetup> setups;
+    for (std::size_t b = 0; b < snd.bands.size(); ++b) {
+        const int n = band_options[b].streams;
+        setups.push_back({setup.column, setup.dirs, setup.solar, band_options[b],
+                          setup.views_deg, setup.mu0, setup.sun_up, setup.distance_factor,
+                          phase_moments(n), setup.deck, setup.mie});
+        setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
+    }
+    return setups;
+}
+
+// The tables, band by band, from the samples' results (in sample_wavenumbers' order);
+// the report receives each band's ground irradiance and the samples' counts.
+std::vector<io::Rad> assemble_tables(const io::Snd& snd, const SampleSetup& setup,
+                                     const geo::SolarPosition& sun, bool coupling,
+                                     const std::vector<SampleResult>& results,
+                                     RadianceReport& rep) {
+    const atmos::Profile& prof = setup.column.profile();
+    const double height_km = prof.z_km[setup.column.sensor_level()] - prof.bottom_km();
+    std::vector<io::Rad> out;
+    std::size_t j = 0;
+    for (const io::SndBand& band : snd.bands) {
+        io::Rad rad = rad_header(band, snd, setup.views_deg, height_km);
+        io::RadSky sky = sky_header(sun, setup.dirs, coupling);
+        std::vector<double> ground_irradiance;
+        for (long s = 0; s < band.sample_count(); ++s, ++j) {
+            append_sample(rad, sky, results[j]);
+            ground_irradiance.push_back(results[j].ground_irradiance);
+            if (results[j].thermal) ++rep.thermal_samples;
+            rep.gas_term_solves += results[j].terms;
+        }
+        rad.sky = std::move(sky);
+        rep.ground_diffuse_irradiance.push_back(std::move(ground_irradiance));
+        out.push_back(std::move(rad));
+    }
+    return out;
+}
+
+}  // namespace
+
 std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                                     const RadianceOptions& o, RadianceReport* report,
                                     const Reporter& reporter) {
@@ -396,22 +364,9 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const io::CdkRun& run = deck.runs.front();
     check_deck(deck, o.cdk_path);
     RadianceReport rep;
-    // The column is asked about the .snd's samples only (the stream choice's probes are
-    // among them): gas tables beyond are not read.
-    atmos::ColumnOptions column_options = o;
     const std::vector<double> nus = sample_wavenumbers(snd);
-    if (!nus.empty())
-        column_options.wavenumbers_cm1.emplace(*std::min_element(nus.begin(), nus.end()),
-                                               *std::max_element(nus.begin(), nus.end()));
-    const atmos::ColumnModel column(run, snd.sensor_altitude_km, column_options);
-    if (!column.skipped_gas_tables().empty()) {
-        std::string names;
-        for (const std::string& n : column.skipped_gas_tables())
-            names += (names.empty() ? "" : ", ") + n;
-        rep.notes.push_back("gas tables not read (no sample within " +
-                            format_number(atmos::GasTables::kLoadMargin) +
-                            " cm-1 of them): " + names);
-    }
+    const atmos::ColumnModel column(run, snd.sensor_altitude_km, column_options(o, nus));
+    note_skipped_gas_tables(column, rep);
     report_column(column, snd, rep);
     const geo::SolarPosition sun = target_sun(snd, rep);
     const atmos::SolarSpectrum solar = atmos::SolarSpectrum::load(o.data_dir);
@@ -422,12 +377,7 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
     const Directions dirs = directions(views, rep.view_azimuth_deg, rep.sun_azimuth_deg, o);
     const double distance_factor = 1 / (sun.earth_sun_distance_au * sun.earth_sun_distance_au);
     const RadianceOptions solved = deck_solver_options(run, o);
-    rep.merge_tau = *solved.merge_tau;
-    if (o.merge_tau)
-        rep.merge_rule = "--merge-tau";
-    else if (o.streams == kAutoStreams)
-        rep.merge_rule = "--streams auto at " + format_number(100 * o.stream_tolerance) +
-                         " %: 0.01 x sqrt(REL / 1 %)";
+    report_merge_rule(o, solved, rep);
     const DeckChoices choices = deck_choices(run);
     if (!choices.solar && sun.zenith_deg < 90)
         reporter.warn(o.cdk_path +
@@ -444,43 +394,15 @@ std::vector<io::Rad> build_radiance(const io::Cdk& deck, const io::Snd& snd,
                             distance_factor,
                             phase_moments(o.streams),
                             choices};
-    for (std::string& note : deck_notes(run)) rep.notes.push_back(std::move(note));
-    if (dirs.azimuth_means_only)
-        rep.notes.push_back(
-            "only means over azimuth tabulated (nadir views, whole-ring sky "
-            "cells): the solver's Fourier modes above 0 are not solved");
+    note_deck_and_directions(run, dirs, rep);
     // Per band its streams (--streams auto: band_streams), the samples solved with them.
     std::vector<RadianceOptions> band_options;
     rep.band_streams = band_streams(setup, snd, band_options);
-    std::vector<SampleSetup> setups;
     std::vector<std::size_t> setup_of;
-    for (std::size_t b = 0; b < snd.bands.size(); ++b) {
-        const int n = band_options[b].streams;
-        setups.push_back({column, dirs, solar, band_options[b], views, setup.mu0, setup.sun_up,
-                          distance_factor, phase_moments(n), setup.deck, setup.mie});
-        setup_of.insert(setup_of.end(), static_cast<std::size_t>(snd.bands[b].sample_count()), b);
-    }
+    const std::vector<SampleSetup> setups = band_setups(setup, snd, band_options, setup_of);
     std::vector<SampleResult> results;
     if (!solve_samples(setups, setup_of, nus, reporter, results)) return {};
-
-    const atmos::Profile& prof = column.profile();
-    const double height_km = prof.z_km[column.sensor_level()] - prof.bottom_km();
-    std::vector<io::Rad> out;
-    std::size_t j = 0;
-    for (const io::SndBand& band : snd.bands) {
-        io::Rad rad = rad_header(band, snd, views, height_km);
-        io::RadSky sky = sky_header(sun, dirs, solved.coupling);
-        std::vector<double> ground_irradiance;
-        for (long s = 0; s < band.sample_count(); ++s, ++j) {
-            append_sample(rad, sky, results[j]);
-            ground_irradiance.push_back(results[j].ground_irradiance);
-            if (results[j].thermal) ++rep.thermal_samples;
-            rep.gas_term_solves += results[j].terms;
-        }
-        rad.sky = std::move(sky);
-        rep.ground_diffuse_irradiance.push_back(std::move(ground_irradiance));
-        out.push_back(std::move(rad));
-    }
+    std::vector<io::Rad> out = assemble_tables(snd, setup, sun, solved.coupling, results, rep);
     if (rep.thermal_samples == 0)
         rep.notes.push_back("layer emission not solved: every sample is below " +
                             format_number(o.thermal_min_wavelength_um) + " um (L_ue = L_de = 0)");

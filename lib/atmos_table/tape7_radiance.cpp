@@ -317,6 +317,90 @@ const io::T7mView& view_run(const io::T7m& list, const std::string& list_path, d
                                         format_number(v) + " deg, found none");
 }
 
+// The list's runs and the series read from them: the sun's (none with the sun down),
+// one per view and one per sky cell.
+struct Runs {
+    std::optional<Run> sun;
+    Series es, tau1;
+    std::vector<Run> views;
+    std::vector<std::array<Series, 3>> view_series;  // tau2, L_ue, L_us
+    std::vector<Run> sky;
+    std::vector<std::array<Series, 2>> sky_series;  // L_ds, L_de
+};
+
+Runs load_runs(const io::T7m& list, const std::string& list_path, const PathSetup& p) {
+    Runs r;
+    if (p.sun_up()) {
+        r.sun = load(list_path, list.sun_tape7, "SUN");
+        check_run(*r.sun, {3}, p.ground_km, 0, p.sun_zenith_deg);
+        r.es = series(r.sun->tape, [](const io::Tape7Row& row) {
+            return io::per_micrometre(row.solar_exo, row.wavenumber_cm1);
+        });
+        r.tau1 = series(r.sun->tape, trans);
+    }
+    for (double v : p.views) {
+        const io::T7mView& entry = view_run(list, list_path, v);
+        r.views.push_back(load(list_path, entry.tape7, "VIEW " + format_number(v)));
+        check_run(r.views.back(), {1, 2}, p.sensor_km, p.ground_km, 180 - std::abs(v));
+        r.view_series.push_back({series(r.views.back().tape, trans),
+                                 series(r.views.back().tape, view_thermal(r.views.back())),
+                                 series(r.views.back().tape, per_um_solar)});
+    }
+    for (const io::T7mSky& cell : list.sky) {
+        r.sky.push_back(
+            load(list_path, cell.tape7,
+                 "SKY " + format_number(cell.zenith_deg) + " " + format_number(cell.azimuth_deg)));
+        check_run(r.sky.back(), {1, 2}, p.ground_km, 0, cell.zenith_deg);
+        r.sky_series.push_back(
+            {series(r.sky.back().tape, per_um_solar), series(r.sky.back().tape, per_um_thermal)});
+    }
+    return r;
+}
+
+// The sky grid without its samples: the list's cells with their solid angles.
+io::RadSky sky_grid(const io::T7m& list, const PathSetup& p) {
+    io::RadSky s;
+    s.sun_zenith_deg = p.sun_zenith_deg;
+    s.sun_azimuth_deg = p.sun_azimuth_deg;
+    s.zenith_count = std::lround(90 / list.sky_zenith_step_deg);
+    s.azimuth_count = std::lround(360 / list.sky_azimuth_step_deg);
+    for (const io::T7mSky& cell : list.sky) {
+        const double z0 = cell.zenith_deg - list.sky_zenith_step_deg / 2;
+        const double z1 = cell.zenith_deg + list.sky_zenith_step_deg / 2;
+        s.cells.push_back({cell.zenith_deg,
+                           cell.azimuth_deg,
+                           (std::cos(z0 * kRadPerDeg) - std::cos(z1 * kRadPerDeg)) *
+                               list.sky_azimuth_step_deg * kRadPerDeg,
+                           {},
+                           {}});
+    }
+    return s;
+}
+
+// The band's samples, from its maximum wavenumber down: each the runs' means over the
+// sample's interval. With IEMSCT 1 (no sun) the solar entries stay 0.
+void append_band_samples(const io::SndBand& band, const Runs& r, int iemsct, io::Rad& rad,
+                         io::RadSky& s) {
+    for (long k = band.sample_count() - 1; k >= 0; --k) {
+        const double nu = band.wavenumber_cm1(k);
+        const Sampler mean{nu, band.increment_cm1 / 2};
+        io::RadSample sample{um_from_cm1(nu), nu, 0, 0};
+        if (r.sun && iemsct == 2) {  // IEMSCT 1: no sun
+            sample.solar_irradiance = mean(*r.sun, r.es);
+            sample.sun_transmission = std::clamp(mean(*r.sun, r.tau1), 0.0, 1.0);
+        }
+        rad.samples.push_back(sample);
+        for (std::size_t v = 0; v < r.views.size(); ++v)
+            rad.views[v].path.push_back(
+                {std::clamp(mean(r.views[v], r.view_series[v][0]), 0.0, 1.0),
+                 mean(r.views[v], r.view_series[v][1]), mean(r.views[v], r.view_series[v][2])});
+        for (std::size_t c = 0; c < r.sky.size(); ++c) {
+            s.cells[c].scattered_radiance.push_back(mean(r.sky[c], r.sky_series[c][0]));
+            s.cells[c].emitted_radiance.push_back(mean(r.sky[c], r.sky_series[c][1]));
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list_path,
@@ -324,74 +408,12 @@ std::vector<io::Rad> tape7_radiance(const io::T7m& list, const std::string& list
                                     const RadianceOptions& o) {
     const PathSetup p = path_setup(deck, snd, o);
     check_list(list, list_path, p);
-    const bool sun_up = p.sun_up();
-    std::optional<Run> sun;
-    Series es, tau1;
-    if (sun_up) {
-        sun = load(list_path, list.sun_tape7, "SUN");
-        check_run(*sun, {3}, p.ground_km, 0, p.sun_zenith_deg);
-        es = series(sun->tape, [](const io::Tape7Row& r) {
-            return io::per_micrometre(r.solar_exo, r.wavenumber_cm1);
-        });
-        tau1 = series(sun->tape, trans);
-    }
-    std::vector<Run> views;
-    std::vector<std::array<Series, 3>> view_series;  // tau2, L_ue, L_us
-    for (double v : p.views) {
-        const io::T7mView& entry = view_run(list, list_path, v);
-        views.push_back(load(list_path, entry.tape7, "VIEW " + format_number(v)));
-        check_run(views.back(), {1, 2}, p.sensor_km, p.ground_km, 180 - std::abs(v));
-        view_series.push_back({series(views.back().tape, trans),
-                               series(views.back().tape, view_thermal(views.back())),
-                               series(views.back().tape, per_um_solar)});
-    }
-    std::vector<Run> sky;
-    std::vector<std::array<Series, 2>> sky_series;  // L_ds, L_de
-    for (const io::T7mSky& cell : list.sky) {
-        sky.push_back(
-            load(list_path, cell.tape7,
-                 "SKY " + format_number(cell.zenith_deg) + " " + format_number(cell.azimuth_deg)));
-        check_run(sky.back(), {1, 2}, p.ground_km, 0, cell.zenith_deg);
-        sky_series.push_back(
-            {series(sky.back().tape, per_um_solar), series(sky.back().tape, per_um_thermal)});
-    }
-
+    const Runs runs = load_runs(list, list_path, p);
     std::vector<io::Rad> out;
     for (const io::SndBand& band : snd.bands) {
         io::Rad rad = rad_header(band, snd, p.views, p.sensor_km - p.ground_km);
-        io::RadSky s;
-        s.sun_zenith_deg = p.sun_zenith_deg;
-        s.sun_azimuth_deg = p.sun_azimuth_deg;
-        s.zenith_count = std::lround(90 / list.sky_zenith_step_deg);
-        s.azimuth_count = std::lround(360 / list.sky_azimuth_step_deg);
-        for (const io::T7mSky& cell : list.sky) {
-            const double z0 = cell.zenith_deg - list.sky_zenith_step_deg / 2;
-            const double z1 = cell.zenith_deg + list.sky_zenith_step_deg / 2;
-            s.cells.push_back({cell.zenith_deg,
-                               cell.azimuth_deg,
-                               (std::cos(z0 * kRadPerDeg) - std::cos(z1 * kRadPerDeg)) *
-                                   list.sky_azimuth_step_deg * kRadPerDeg,
-                               {},
-                               {}});
-        }
-        for (long k = band.sample_count() - 1; k >= 0; --k) {
-            const double nu = band.wavenumber_cm1(k);
-            const Sampler mean{nu, band.increment_cm1 / 2};
-            io::RadSample sample{um_from_cm1(nu), nu, 0, 0};
-            if (sun && deck.runs.front().card1.iemsct == 2) {  // IEMSCT 1: no sun
-                sample.solar_irradiance = mean(*sun, es);
-                sample.sun_transmission = std::clamp(mean(*sun, tau1), 0.0, 1.0);
-            }
-            rad.samples.push_back(sample);
-            for (std::size_t v = 0; v < views.size(); ++v)
-                rad.views[v].path.push_back(
-                    {std::clamp(mean(views[v], view_series[v][0]), 0.0, 1.0),
-                     mean(views[v], view_series[v][1]), mean(views[v], view_series[v][2])});
-            for (std::size_t c = 0; c < sky.size(); ++c) {
-                s.cells[c].scattered_radiance.push_back(mean(sky[c], sky_series[c][0]));
-                s.cells[c].emitted_radiance.push_back(mean(sky[c], sky_series[c][1]));
-            }
-        }
+        io::RadSky s = sky_grid(list, p);
+        append_band_samples(band, runs, deck.runs.front().card1.iemsct, rad, s);
         rad.sky = std::move(s);
         out.push_back(std::move(rad));
     }
