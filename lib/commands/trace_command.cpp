@@ -50,14 +50,8 @@ void add_shared_options(cli::Cli& tool) {
                        "write the facets' sun/shadow history and sky view (.shd) instead");
 }
 
-// The render's own options (trace(1), OPTIONS).
-void add_rendering_options(cli::Cli& tool) {
-    tool.add_creation_option();
-    tool.add_tile_option(
-        "render the K-th of N equal parts of the rows (1 <= K <= N), "
-        "for merge_tiles");
-    tool.add_strict_option(
-        "--tmp keys that match no facet, or facets without a temperature, are an error");
+// How the rays are sampled and what they see beyond the scene.
+void add_light_options(cli::Cli& tool) {
     tool.add_options()("sampling", value<std::string>()->value_name("NAME"),
                        "hemisphere sampling: auto (montecarlo, samples until each pixel's "
                        "error is under 3 % of a grey ground's radiance; the default unless a "
@@ -73,8 +67,14 @@ void add_rendering_options(cli::Cli& tool) {
         "from above; default), none, or a MATERIAL_ID of the .mat")(
         "sky-lookup", value<std::string>()->value_name("exact|table[:N]"),
         "how rays leaving the scene read the sky: exact (interpolated; default) or "
-        "table (an N x N table, default 64: faster, approximate)")(
-        "rows", value<std::string>()->value_name("A:B"), "render rows A to B-1 only")(
+        "table (an N x N table, default 64: faster, approximate)");
+}
+
+// What is rendered and where it goes: rows, temperatures, coupling, grid, georeferencing,
+// radiance unit, truth and ground layers.
+void add_product_options(cli::Cli& tool) {
+    tool.add_options()("rows", value<std::string>()->value_name("A:B"),
+                       "render rows A to B-1 only")(
         "truth", value<std::string>()->value_name("FILE"), "also write the truth layers to FILE")(
         "tmp", value<std::string>()->value_name("FILE"), "facet temperatures (.tmp): add emission")(
         "no-adjacency", "leave out the ground-sky coupling and the adjacency effect")(
@@ -88,8 +88,13 @@ void add_rendering_options(cli::Cli& tool) {
         "igm", value<std::string>()->value_name("FILE.tif"),
         "write each pixel's ground position (IGM: map and scene coordinates)")(
         "glt", value<std::string>()->value_name("FILE.tif"),
-        "write the geometry lookup table (GLT: a map grid's source pixels)")(
-        "standard-error", "with --truth: add the layers samples and standard_error_BAND")(
+        "write the geometry lookup table (GLT: a map grid's source pixels)");
+}
+
+// The error estimates and the convergence rule.
+void add_error_options(cli::Cli& tool) {
+    tool.add_options()("standard-error",
+                       "with --truth: add the layers samples and standard_error_BAND")(
         "uncertainty", value<std::string>()->value_name("FILE"),
         "with --truth: add the layers uncertainty_BAND, propagated from the "
         "input uncertainties in FILE (.unc)")(
@@ -101,6 +106,10 @@ void add_rendering_options(cli::Cli& tool) {
         "the standard error in W cm-2 sr-1 um-1 (absolute), "
         "standard error x sqrt(MIN / samples) (rms: least RMS per sample), or "
         "standard error / the radiance of a 20 % grey ground at nadir (scene)");
+}
+
+// Sample counts, the sun images and the adjacency radius.
+void add_count_options(cli::Cli& tool) {
     tool.add_number("samples-per-pixel", "N",
                     cli::integers(1, sigchain::io::kAdvMaxSamplesPerPixel),
                     "primary rays per pixel (default: the .adv's samples_per_pixel)");
@@ -113,6 +122,20 @@ void add_rendering_options(cli::Cli& tool) {
     tool.add_number("adjacency-radius", "M", cli::positive(1e7),
                     "radius of the environment whose mean reflectance couples (> 0; "
                     "default 1000 m)");
+}
+
+// The render's own options (trace(1), OPTIONS).
+void add_rendering_options(cli::Cli& tool) {
+    tool.add_creation_option();
+    tool.add_tile_option(
+        "render the K-th of N equal parts of the rows (1 <= K <= N), "
+        "for merge_tiles");
+    tool.add_strict_option(
+        "--tmp keys that match no facet, or facets without a temperature, are an error");
+    add_light_options(tool);
+    add_product_options(tool);
+    add_error_options(tool);
+    add_count_options(tool);
 }
 
 // The shadow history's own options (trace(1), SHADOW HISTORY).

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <set>
 #include <tuple>
 
 #include "core/error.hpp"
@@ -28,13 +27,13 @@
 #include "io/odb.hpp"
 #include "io/rad.hpp"
 #include "io/snd.hpp"
-#include "io/tmp.hpp"
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
 #include "scene/load.hpp"
 #include "trace/black_cube.hpp"
 #include "trace/distributed.hpp"
 #include "trace/part.hpp"
+#include "trace/trace_temperatures.hpp"
 #include "trace/trace_output.hpp"
 #include "trace/uncertainty.hpp"
 
@@ -214,78 +213,6 @@ scene::Scene read_scene(const TraceJob& job, const Setup& st,
     return scene;
 }
 
-// From this wavelength on, thermal emission of scene-temperature facets is no longer
-// negligible beside reflected sunlight (B(300 K) is ~1e-4 of the solar-reflected
-// radiance at 1 um but comparable near 3-4 um): trace warns when it is left out.
-constexpr double kEmissiveFromUm = 2.5;
-
-// How the .tmp's keys meet the scene's facets (trace(1) TEMPERATURES): keys that name
-// no facet, or facets without a key, are a warning naming the counts, and with --strict
-// an error at the first unmatched key (or at the file when every key matched).
-void check_temperature_keys(const TraceJob& job, const scene::Scene& scene, const io::Tmp& tmp,
-                            const Reporter& reporter) {
-    std::set<std::string> tmp_keys, facet_keys;
-    for (const auto& t : tmp.facets) tmp_keys.insert(t.facet_id);
-    long without = 0, from_gdb = 0;
-    for (std::size_t object = 0; object < scene.placement_count(); ++object) {
-        const std::size_t mesh = scene.mesh_of_placement(object);
-        for (std::uint32_t f = 0; f < scene.facet_count(mesh); ++f) {
-            scene::Hit h;
-            h.object = static_cast<std::uint32_t>(object);
-            h.facet = f;
-            const std::string key = scene.facet_key(h);
-            facet_keys.insert(key);
-            if (!tmp_keys.count(key)) {
-                ++without;
-                if (scene.attributes(mesh, f).temperature_c != -1) ++from_gdb;
-            }
-        }
-    }
-    long matched = 0;
-    const io::FacetTemperature* first_unmatched = nullptr;
-    for (const auto& t : tmp.facets) {
-        if (facet_keys.count(t.facet_id))
-            ++matched;
-        else if (!first_unmatched)
-            first_unmatched = &t;
-    }
-    const long unmatched = static_cast<long>(tmp.facets.size()) - matched;
-    if (unmatched == 0 && without == 0) return;
-    const std::string message =
-        std::to_string(matched) + " of " + std::to_string(tmp.facets.size()) +
-        " facet key(s) match a facet of the scene, " + std::to_string(unmatched) + " match none" +
-        (first_unmatched ? " (the first: " + first_unmatched->facet_id + ")" : "") + "; " +
-        std::to_string(without) + " of " + std::to_string(facet_keys.size()) +
-        " facet(s) have no temperature (" + std::to_string(from_gdb) +
-        " take the .gdb TEMPERATURE, " + std::to_string(without - from_gdb) + " emit nothing)";
-    if (job.strict)
-        throw DataError({job.tmp_path, first_unmatched ? first_unmatched->line : 0},
-                        message + " (--strict)");
-    reporter.warn(job.tmp_path + ": " + message);
-}
-
-// Facet temperatures by key from the .tmp, when one is given.
-Temperatures read_temperatures(const TraceJob& job, const radiometry::SpectralGrid& grid,
-                               const scene::Scene& scene, const Reporter& reporter) {
-    Temperatures temperatures;
-    if (job.tmp_path.empty()) {
-        const auto longest = std::max_element(grid.wavelength_um.begin(), grid.wavelength_um.end());
-        if (longest != grid.wavelength_um.end() && *longest >= kEmissiveFromUm)
-            reporter.warn("the spectral grid reaches " + format("%.4g", *longest) +
-                          " um but no facet temperatures (--tmp) were given: facet "
-                          "emission is left out");
-        else
-            reporter.info("no temperature file (--tmp): emission is left out");
-        return temperatures;
-    }
-    const io::Tmp tmp = io::read_tmp_file(job.tmp_path);
-    for (const auto& f : tmp.facets) temperatures[f.facet_id] = f.temperature_k;
-    reporter.info("temperatures of " + std::to_string(temperatures.size()) + " facet(s) from " +
-                  job.tmp_path);
-    check_temperature_keys(job, scene, tmp, reporter);
-    return temperatures;
-}
-
 // The samples per pixel and the strategy, for -v: what was named, or what trace chose.
 std::string sampling_report(const TraceJob& job, const RenderOptions& o) {
     const std::string count =
@@ -386,6 +313,106 @@ void report_phases(const PhaseTimes& t, double render_seconds, const Reporter& r
                   " s; render " + format("%.3f", render_seconds) + " s");
 }
 
+// Where the image lies on the map: the --like raster's placement, or the one --crs (or
+// the scene's DEM) names; none with --crs none. Which CRS was taken is told with -v.
+std::optional<imaging::GeoPlacement> map_placement(const TraceJob& job, const Setup& st,
+                                                   const Reporter& reporter) {
+    std::string crs_note = "map CRS: the --like raster's";
+    const geo::LatLon origin{st.snd.latitude_deg, st.snd.longitude_east_deg};
+    const double mpu = io::meters_per_unit(st.adv.units);
+    const std::optional<imaging::GeoPlacement> place =
+        st.like
+            ? imaging::GeoPlacement{origin.latitude_deg, origin.longitude_deg, mpu, st.like->crs}
+            : imaging::geo_placement(job.crs, job.scene_path, origin, mpu, job.snd_path,
+                                     crs_note);
+    if (!crs_note.empty()) reporter.info(crs_note);
+    return place;
+}
+
+// The .adv's camera, or with --like a frame camera on the raster's grid.
+std::unique_ptr<Sensor> make_camera(const TraceJob& job, const Setup& st,
+                                    const scene::Scene& scene,
+                                    const std::optional<imaging::GeoPlacement>& place,
+                                    const Reporter& reporter) {
+    std::unique_ptr<Sensor> sensor = imaging::make_sensor(
+        st.adv, job.adv_path,
+        imaging::SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
+    if (st.like)
+        sensor = imaging::make_grid_sensor(std::move(sensor), *st.like, *place, scene,
+                                           scene.bounds().lower[2]);
+    reporter.info("sensor: " + sensor->summary());
+    return sensor;
+}
+
+// What the georeferencing of the outputs is made from: the camera, the scene, its place
+// on the map and the plane under it (none with --background none).
+struct ViewGeometry {
+    const Sensor& camera;
+    const scene::Scene& scene;
+    const std::optional<imaging::GeoPlacement>& place;
+    std::optional<double> plane;
+};
+
+// The cubes, georeferenced (by the --like raster, or by the render's geometry), open for
+// the rows as they complete.
+std::unique_ptr<TraceOutputs> open_outputs(const TraceJob& job, const Setup& st,
+                                           const radiometry::SpectralGrid& grid,
+                                           const RenderOptions& options, const ViewGeometry& v,
+                                           const HeldReports& georef_reports) {
+    image::Georeference georef;
+    if (st.like)
+        georef = imaging::like_georeference(*st.like, st.row_begin);
+    else if (v.place)
+        georef = imaging::georeference_render(
+            v.camera, v.scene, *v.place, !job.crs.empty(), v.plane, st.row_begin, st.row_end,
+            st.adv.rows, image::geolocation_name(job.output_path), georef_reports);
+    return std::make_unique<TraceOutputs>(
+        job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, options, georef,
+        sensor_type(v.camera), st.row_end - st.row_begin, v.camera.columns());
+}
+
+// --igm and --glt: each pixel's ground position and the map grid's source pixels.
+void write_ground_layers(const TraceJob& job, const Setup& st, const RenderOptions& options,
+                         const ViewGeometry& v, const Reporter& reporter) {
+    if (job.igm_path.empty() && job.glt_path.empty()) return;
+    std::string note;
+    imaging::write_ground_layers(v.camera, v.scene, v.place, options.meters_per_unit, v.plane,
+                                 st.row_begin, st.row_end, job.igm_path, job.glt_path, note);
+    reporter.info(note);
+}
+
+// Renders the rows, each written to `outputs` (none on an MPI worker) as it completes,
+// through a ring of rows; false on an MPI worker. The ring is released after the render.
+bool render_into(const RenderInputs& inputs, const RenderOptions& options,
+                 const radiometry::SpectralGrid& grid, long rows, long columns,
+                 TraceOutputs* outputs, const Reporter& reporter, RenderResult& result) {
+    const std::size_t floats =
+        grid.size() + (options.truth ? truth_layer_names(grid, options).size() : 0);
+    RowSink sink;
+    if (outputs) sink = [outputs](const RenderedRows& r) { outputs->write(r); };
+    if (!render_rows(inputs, options, ring_rows(rows, columns, floats, options.threads), sink,
+                     reporter, result))
+        return false;
+    result.radiance = {};  // the ring: its rows are written
+    result.truth = {};
+    return true;
+}
+
+// What is rendered, for -v: the rows, the columns and the sampling.
+std::string rendering_note(const TraceJob& job, const Setup& st, const RenderOptions& options) {
+    return "rendering rows " + std::to_string(st.row_begin) + " to " +
+           std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
+           std::to_string(st.adv.columns) + " columns, " + sampling_report(job, options);
+}
+
+// After the render (-v): with --convergence what the pixels took, and the phases' times.
+void report_render(const TraceReport& report, const RenderOptions& options,
+                   const PhaseTimes& times, double render_seconds, const Reporter& reporter) {
+    const long pixels = options.convergence_min > 0 ? report.rows * report.columns : 0;
+    report_stats(report.stats, pixels, reporter);
+    report_phases(times, render_seconds, reporter);
+}
+
 }  // namespace
 
 TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
@@ -413,80 +440,36 @@ TraceReport run_trace(const TraceJob& job, const Reporter& job_reporter) {
     times.scene_files = times.lap() - times.build;
     const Temperatures temperatures = read_temperatures(job, grid, scene, reporter);
     times.tmp = times.lap();
-    std::string crs_note = "map CRS: the --like raster's";
-    const geo::LatLon origin{st.snd.latitude_deg, st.snd.longitude_east_deg};
-    const double mpu = io::meters_per_unit(st.adv.units);
-    const std::optional<imaging::GeoPlacement> place =
-        st.like ? imaging::GeoPlacement{origin.latitude_deg, origin.longitude_deg, mpu, st.like->crs}
-                : imaging::geo_placement(job.crs, job.scene_path, origin, mpu, job.snd_path, crs_note);
-    if (!crs_note.empty()) reporter.info(crs_note);
-    std::unique_ptr<Sensor> sensor = imaging::make_sensor(
-        st.adv, job.adv_path,
-        imaging::SceneOrigin{st.snd.latitude_deg, st.snd.longitude_east_deg});
-    if (st.like)
-        sensor = imaging::make_grid_sensor(std::move(sensor), *st.like, *place, scene,
-                                           scene.bounds().lower[2]);
+    const std::optional<imaging::GeoPlacement> place = map_placement(job, st, reporter);
+    const std::unique_ptr<Sensor> sensor = make_camera(job, st, scene, place, reporter);
     const Sensor& camera = *sensor;
-    reporter.info("sensor: " + camera.summary());
     check_view_angles(camera, atmosphere, reporter);
     const RenderOptions options = render_options(job, st);
-    RenderInputs inputs;
-    inputs.scene = &scene;
-    inputs.atmosphere = &atmosphere;
-    inputs.materials = &materials;
-    inputs.sensor = &camera;
-    inputs.temperatures = job.tmp_path.empty() ? nullptr : &temperatures;
     const InputUncertainty uncertainty = read_input_uncertainty(job.uncertainty_path, materials);
-    inputs.uncertainty = &uncertainty;
-    const std::optional<double> plane = options.background == BackgroundChoice::None
-                                            ? std::nullopt
-                                            : std::optional<double>(scene.bounds().lower[2]);
+    const RenderInputs inputs{&scene, &atmosphere, &materials, &camera,
+                              job.tmp_path.empty() ? nullptr : &temperatures, &uncertainty};
+    const ViewGeometry view{camera, scene, place,
+                            options.background == BackgroundChoice::None
+                                ? std::nullopt
+                                : std::optional<double>(scene.bounds().lower[2])};
     const long rows = st.row_end - st.row_begin, columns = camera.columns();
     // The cubes are written as their rows complete (rank 0 alone writes under MPI), so
     // their georeferencing is made before the render; what it reports is told after
     // the render, where -v has always told it.
     const HeldReports georef_reports(reporter);
-    std::unique_ptr<TraceOutputs> outputs;
-    if (!distributed_worker()) {
-        image::Georeference georef;
-        if (st.like)
-            georef = imaging::like_georeference(*st.like, st.row_begin);
-        else if (place)
-            georef = imaging::georeference_render(
-                camera, scene, *place, !job.crs.empty(), plane, st.row_begin, st.row_end,
-                st.adv.rows, image::geolocation_name(job.output_path), georef_reports);
-        outputs = std::make_unique<TraceOutputs>(
-            job, part_write_options(job, st.row_begin, st.row_end, st.adv.rows), grid, options,
-            georef, sensor_type(camera), rows, columns);
-    }
-    reporter.info("rendering rows " + std::to_string(st.row_begin) + " to " +
-                  std::to_string(st.row_end) + " of " + std::to_string(st.adv.rows) + ", " +
-                  std::to_string(st.adv.columns) + " columns, " +
-                  sampling_report(job, options));
+    const std::unique_ptr<TraceOutputs> outputs =
+        distributed_worker() ? nullptr : open_outputs(job, st, grid, options, view, georef_reports);
+    reporter.info(rendering_note(job, st, options));
     RenderResult result;
     times.other = times.lap();
-    const std::size_t floats =
-        grid.size() + (options.truth ? truth_layer_names(grid, options).size() : 0);
-    RowSink sink;
-    if (outputs) sink = [&outputs](const RenderedRows& r) { outputs->write(r); };
-    if (!render_rows(inputs, options, ring_rows(rows, columns, floats, options.threads), sink,
-                     reporter, result))
+    if (!render_into(inputs, options, grid, rows, columns, outputs.get(), reporter, result))
         return report;  // an MPI worker
     const double render_seconds = times.lap();
-    result.radiance = {};  // the ring: its rows are written
-    result.truth = {};
     report.stats = result.stats;
     report.rows = rows;
     report.columns = columns;
-    // With --convergence, what the pixels took (-v).
-    report_stats(result.stats, options.convergence_min > 0 ? rows * columns : 0, reporter);
-    report_phases(times, render_seconds, reporter);
-    if (!job.igm_path.empty() || !job.glt_path.empty()) {
-        std::string note;
-        imaging::write_ground_layers(camera, scene, place, options.meters_per_unit, plane,
-                                     st.row_begin, st.row_end, job.igm_path, job.glt_path, note);
-        reporter.info(note);
-    }
+    report_render(report, options, times, render_seconds, reporter);
+    write_ground_layers(job, st, options, view, reporter);
     georef_reports.release();
     outputs->commit();
     alarm_if_black(outputs->largest_radiance(), outputs->values(), job.output_path, reporter);

@@ -136,48 +136,47 @@ void check_convergence(const Convergence& c, bool samples_per_pixel) {
         throw UsageError("--convergence: expected a THRESHOLD > 0");
 }
 
-}  // namespace
+// --truth (if given): a file of a known format, not the output.
+void check_truth_path(const TraceJob& job) {
+    if (job.truth_path.empty()) return;
+    if (job.truth_path == "-")
+        throw UsageError("--truth: a truth cube cannot be written to standard output");
+    image::cube_format_of(job.truth_path);
+    if (written_name(job.truth_path) == written_name(job.output_path))
+        throw UsageError("--truth: " + job.truth_path + " would overwrite the output " +
+                         job.output_path);
+}
 
-void check_job(const TraceJob& job) {
-    if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
-    if (job.output_path.empty()) throw UsageError("no output cube: give -o CUBE");
-    if (job.output_path == "-")
-        throw UsageError("a radiance cube cannot be written to standard output: give -o CUBE");
-    image::cube_format_of(job.output_path);  // UsageError for an unknown extension
-    RenderOptions background;
-    parse_background(job.background, background);  // UsageError for a bad --background
-    if (!job.truth_path.empty()) {
-        if (job.truth_path == "-")
-            throw UsageError("--truth: a truth cube cannot be written to standard output");
-        image::cube_format_of(job.truth_path);
-        if (written_name(job.truth_path) == written_name(job.output_path))
-            throw UsageError("--truth: " + job.truth_path + " would overwrite the output " +
-                             job.output_path);
+// No output overwrites an input or another output.
+void check_outputs_distinct(const TraceJob& job) {
+    // The cube and the truth, each with the ENVI header beside it, against the inputs.
+    std::vector<std::string> outputs;
+    for (const std::string& out : {job.output_path, job.truth_path}) {
+        if (out.empty()) continue;
+        outputs.push_back(written_name(out));
+        outputs.push_back(std::filesystem::path(written_name(out)).replace_extension(".hdr"));
     }
-    {
-        // The cube and the truth, each with the ENVI header beside it, against the inputs.
-        std::vector<std::string> outputs;
-        for (const std::string& out : {job.output_path, job.truth_path}) {
-            if (out.empty()) continue;
-            outputs.push_back(written_name(out));
-            outputs.push_back(std::filesystem::path(written_name(out)).replace_extension(".hdr"));
-        }
-        for (const auto& [option, layers] :
-             {std::pair{"--igm", job.igm_path}, std::pair{"--glt", job.glt_path}}) {
-            if (layers.empty()) continue;
-            if (file_extension(layers) != "tif")
-                throw UsageError(std::string(option) + ": expected a GeoTIFF FILE.tif, found '" +
-                                 layers + "'");
-            if (std::count(outputs.begin(), outputs.end(), written_name(layers)))
-                throw UsageError(std::string(option) + ": " + layers +
-                                 " would overwrite another output");
-            outputs.push_back(written_name(layers));
-        }
-        std::vector<std::string> inputs{job.adv_path, job.snd_path, job.scene_path, job.mat_path,
-                                        job.tmp_path, job.uncertainty_path};
-        inputs.insert(inputs.end(), job.rad_paths.begin(), job.rad_paths.end());
-        require_outputs_distinct(outputs, inputs);
+    for (const auto& [option, layers] :
+         {std::pair{"--igm", job.igm_path}, std::pair{"--glt", job.glt_path}}) {
+        if (layers.empty()) continue;
+        if (file_extension(layers) != "tif")
+            throw UsageError(std::string(option) + ": expected a GeoTIFF FILE.tif, found '" +
+                             layers + "'");
+        if (std::count(outputs.begin(), outputs.end(), written_name(layers)))
+            throw UsageError(std::string(option) + ": " + layers +
+                             " would overwrite another output");
+        outputs.push_back(written_name(layers));
     }
+    std::vector<std::string> inputs{job.adv_path, job.snd_path, job.scene_path, job.mat_path,
+                                    job.tmp_path, job.uncertainty_path};
+    inputs.insert(inputs.end(), job.rad_paths.begin(), job.rad_paths.end());
+    require_outputs_distinct(outputs, inputs);
+}
+
+// The sampling options: --samples-per-pixel, --convergence, --sampling auto (which
+// chooses its own samples), --hemisphere-samples, --max-transmissions, and the options
+// whose layers are in the truth cube.
+void check_sampling(const TraceJob& job) {
     if (job.samples_per_pixel &&
         (*job.samples_per_pixel < 1 || *job.samples_per_pixel > io::kAdvMaxSamplesPerPixel))
         throw UsageError("--samples-per-pixel: expected 1 to " +
@@ -201,6 +200,21 @@ void check_job(const TraceJob& job) {
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)
         throw UsageError("--max-transmissions: expected 0 or more");
+}
+
+}  // namespace
+
+void check_job(const TraceJob& job) {
+    if (job.rad_paths.empty()) throw UsageError("expected ADV SND SCENE MAT and at least one RAD");
+    if (job.output_path.empty()) throw UsageError("no output cube: give -o CUBE");
+    if (job.output_path == "-")
+        throw UsageError("a radiance cube cannot be written to standard output: give -o CUBE");
+    image::cube_format_of(job.output_path);  // UsageError for an unknown extension
+    RenderOptions background;
+    parse_background(job.background, background);  // UsageError for a bad --background
+    check_truth_path(job);
+    check_outputs_distinct(job);
+    check_sampling(job);
     if (job.adjacency_radius_m && !(*job.adjacency_radius_m > 0))
         throw UsageError("--adjacency-radius: expected a positive number of metres");
     if (job.adjacency_radius_m && !job.adjacency)
