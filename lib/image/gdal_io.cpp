@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -199,6 +200,81 @@ std::string Provenance::item(const std::string& key) const {
     return "";
 }
 
+namespace {
+
+const std::string kItemPrefix = "sigchain_";
+
+// The ENVI description "{sigchain VERSION: COMMAND}", as GDAL gives the item: the
+// version and command (none when it is not sigchain's).
+void read_envi_description(const std::string& value, Provenance& p) {
+    const std::string head = "sigchain ";
+    std::string d = value;
+    while (!d.empty() && (d.front() == ' ' || d.front() == '\n' || d.front() == '{'))
+        d.erase(0, 1);
+    while (!d.empty() && (d.back() == ' ' || d.back() == '\n' || d.back() == '}')) d.pop_back();
+    if (d.rfind(head, 0) != 0) return;
+    const auto colon = d.find(": ");
+    p.version = d.substr(head.size(),
+                         colon == std::string::npos ? std::string::npos : colon - head.size());
+    if (colon != std::string::npos) p.command = d.substr(colon + 2);
+}
+
+// "{a,b,c}": GDAL's band descriptions add the wavelength to each name.
+void read_envi_band_names(const std::string& value, Provenance& p) {
+    std::string list = value;
+    if (!list.empty() && list.front() == '{') list.erase(0, 1);
+    if (!list.empty() && list.back() == '}') list.pop_back();
+    std::size_t from = 0;
+    for (;;) {
+        const auto comma = list.find(',', from);
+        std::string name = list.substr(from, comma - from);
+        while (!name.empty() && name.front() == ' ') name.erase(0, 1);
+        p.band_names.push_back(name);
+        if (comma == std::string::npos) break;
+        from = comma + 1;
+    }
+}
+
+// The items of a KEY=VALUE metadata list, the keys in lower case.
+std::vector<std::pair<std::string, std::string>> metadata_items(char** kv) {
+    std::vector<std::pair<std::string, std::string>> items;
+    for (; *kv; ++kv) {
+        const std::string item = *kv;
+        const auto eq = item.find('=');
+        if (eq == std::string::npos) continue;
+        items.emplace_back(ascii_lower(item.substr(0, eq)), item.substr(eq + 1));
+    }
+    return items;
+}
+
+// The ENVI header's description, sensor type, band names and "sigchain KEY" items.
+void read_envi_provenance(char** envi, Provenance& p) {
+    for (const auto& [key, value] : metadata_items(envi)) {
+        if (key == "description")
+            read_envi_description(value, p);
+        else if (key == "sensor_type")
+            p.sensor_type = value;
+        else if (key == "band_names")
+            read_envi_band_names(value, p);
+        else if (key.rfind(kItemPrefix, 0) == 0 && key != "sigchain_geolocation")
+            p.items.emplace_back(key.substr(kItemPrefix.size()), value);
+    }
+}
+
+// A GeoTIFF's SIGCHAIN_VERSION, SIGCHAIN_COMMAND and SIGCHAIN_KEY metadata.
+void read_tiff_provenance(char** md, Provenance& p) {
+    for (const auto& [key, value] : metadata_items(md)) {
+        if (key == "sigchain_version")
+            p.version = value;
+        else if (key == "sigchain_command")
+            p.command = value;
+        else if (key.rfind(kItemPrefix, 0) == 0)
+            p.items.emplace_back(key.substr(kItemPrefix.size()), value);
+    }
+}
+
+}  // namespace
+
 // ENVI: the header's description "sigchain VERSION: COMMAND" and its "sigchain KEY"
 // items (GDAL's ENVI metadata domain, spaces as underscores); GeoTIFF: the dataset
 // metadata SIGCHAIN_VERSION, SIGCHAIN_COMMAND and SIGCHAIN_KEY (cube(5), Provenance).
@@ -209,63 +285,10 @@ Provenance read_provenance(const std::string& path) {
     const geo::GdalDataset ds = geo::open_dataset(data_path);
     if (!ds) throw DataError({path, 0}, "not a readable raster image: " + gdal_message());
     Provenance p;
-    const std::string prefix = "sigchain_";
-    if (char** envi = ds->GetMetadata("ENVI")) {
-        for (char** kv = envi; *kv; ++kv) {
-            const std::string item = *kv;
-            const auto eq = item.find('=');
-            if (eq == std::string::npos) continue;
-            const std::string key = ascii_lower(item.substr(0, eq)), value = item.substr(eq + 1);
-            if (key == "description") {
-                // "{sigchain VERSION: COMMAND}", as GDAL gives the item.
-                const std::string head = "sigchain ";
-                std::string d = value;
-                while (!d.empty() && (d.front() == ' ' || d.front() == '\n' || d.front() == '{'))
-                    d.erase(0, 1);
-                while (!d.empty() && (d.back() == ' ' || d.back() == '\n' || d.back() == '}'))
-                    d.pop_back();
-                if (d.rfind(head, 0) != 0) continue;
-                const auto colon = d.find(": ");
-                p.version = d.substr(head.size(), colon == std::string::npos
-                                                      ? std::string::npos
-                                                      : colon - head.size());
-                if (colon != std::string::npos) p.command = d.substr(colon + 2);
-            } else if (key == "sensor_type") {
-                p.sensor_type = value;
-            } else if (key == "band_names") {
-                // "{a,b,c}": GDAL's band descriptions add the wavelength to each name.
-                std::string list = value;
-                if (!list.empty() && list.front() == '{') list.erase(0, 1);
-                if (!list.empty() && list.back() == '}') list.pop_back();
-                std::size_t from = 0;
-                for (;;) {
-                    const auto comma = list.find(',', from);
-                    std::string name = list.substr(from, comma - from);
-                    while (!name.empty() && name.front() == ' ') name.erase(0, 1);
-                    p.band_names.push_back(name);
-                    if (comma == std::string::npos) break;
-                    from = comma + 1;
-                }
-            } else if (key.rfind(prefix, 0) == 0 && key != "sigchain_geolocation") {
-                p.items.emplace_back(key.substr(prefix.size()), value);
-            }
-        }
-        return p;
-    }
-    if (char** md = ds->GetMetadata()) {
-        for (char** kv = md; *kv; ++kv) {
-            const std::string item = *kv;
-            const auto eq = item.find('=');
-            if (eq == std::string::npos) continue;
-            const std::string key = ascii_lower(item.substr(0, eq)), value = item.substr(eq + 1);
-            if (key == "sigchain_version")
-                p.version = value;
-            else if (key == "sigchain_command")
-                p.command = value;
-            else if (key.rfind(prefix, 0) == 0)
-                p.items.emplace_back(key.substr(prefix.size()), value);
-        }
-    }
+    if (char** envi = ds->GetMetadata("ENVI"))
+        read_envi_provenance(envi, p);
+    else if (char** md = ds->GetMetadata())
+        read_tiff_provenance(md, p);
     return p;
 }
 

@@ -63,11 +63,58 @@ OdlEntry parse_statement(std::string_view text, const SourceLocation& where) {
     return e;
 }
 
+using OpenGroups = std::vector<std::pair<std::string, int>>;  // open groups and their lines
+
+// END closes the file: every group must be closed before it.
+void check_groups_closed(const OpenGroups& groups, const SourceLocation& where) {
+    if (!groups.empty())
+        throw DataError(where, "expected END_GROUP = " + groups.back().first +
+                                   " (the GROUP on line " + std::to_string(groups.back().second) +
+                                   ") before END");
+}
+
+// The statement of entry e: a value; a GROUP, pushed on `groups`; or an END_GROUP, which
+// must close the innermost open group.
+OdlStatement statement(const OdlEntry& e, OpenGroups& groups, const SourceLocation& where,
+                       int number) {
+    OdlStatement s{OdlStatement::Kind::Value, e};
+    if (e.key == "GROUP" || e.key == "BEGIN_GROUP") {
+        s.kind = OdlStatement::Kind::Group;
+        groups.emplace_back(e.value, number);
+    } else if (e.key == "END_GROUP") {
+        if (groups.empty())
+            throw DataError(where, "END_GROUP = " + e.value + " without an open GROUP");
+        if (groups.back().first != e.value)
+            throw DataError(where, "expected END_GROUP = " + groups.back().first +
+                                       " (the GROUP on line " +
+                                       std::to_string(groups.back().second) + "), found " +
+                                       quoted(e.value));
+        groups.pop_back();
+        s.kind = OdlStatement::Kind::EndGroup;
+        s.entry.depth = static_cast<int>(groups.size());
+    }
+    return s;
+}
+
+// At the end of the text: no comment left open, and an END seen.
+void check_ending(const TextInput& in, const Odl& odl, const OpenGroups& groups, bool ended,
+                  bool in_comment, int comment_line) {
+    if (in_comment)
+        throw DataError(in.at(comment_line), "a /* comment is not closed by */");
+    if (!ended) {
+        int last = odl.statements.empty() ? 0 : odl.statements.back().entry.line;
+        if (odl.statements.empty()) throw DataError(in.at(0), "empty file, expected an MTL file");
+        throw DataError(in.at(last), "unexpected end of file, expected END" +
+                                         (groups.empty() ? std::string()
+                                                         : " and END_GROUP = " + groups.back().first));
+    }
+}
+
 }  // namespace
 
 Odl parse_odl(const TextInput& in) {
     Odl odl;
-    std::vector<std::pair<std::string, int>> groups;  // open groups and their lines
+    OpenGroups groups;
     bool in_comment = false, ended = false;
     int comment_line = 0;
     const std::string& text = in.text();
@@ -85,11 +132,7 @@ Odl parse_odl(const TextInput& in) {
         const SourceLocation where = in.at(number);
         if (ended) throw DataError(where, "unexpected content after END, found " + quoted(body));
         if (body == "END") {
-            if (!groups.empty())
-                throw DataError(where, "expected END_GROUP = " + groups.back().first +
-                                           " (the GROUP on line " +
-                                           std::to_string(groups.back().second) +
-                                           ") before END");
+            check_groups_closed(groups, where);
             ended = true;
             odl.end_line = number;
             continue;
@@ -98,33 +141,9 @@ Odl parse_odl(const TextInput& in) {
         e.line = number;
         e.group = groups.empty() ? "" : groups.back().first;
         e.depth = static_cast<int>(groups.size());
-        OdlStatement s{OdlStatement::Kind::Value, e};
-        if (e.key == "GROUP" || e.key == "BEGIN_GROUP") {
-            s.kind = OdlStatement::Kind::Group;
-            groups.emplace_back(e.value, number);
-        } else if (e.key == "END_GROUP") {
-            if (groups.empty())
-                throw DataError(where, "END_GROUP = " + e.value + " without an open GROUP");
-            if (groups.back().first != e.value)
-                throw DataError(where, "expected END_GROUP = " + groups.back().first +
-                                           " (the GROUP on line " +
-                                           std::to_string(groups.back().second) + "), found " +
-                                           quoted(e.value));
-            groups.pop_back();
-            s.kind = OdlStatement::Kind::EndGroup;
-            s.entry.depth = static_cast<int>(groups.size());
-        }
-        odl.statements.push_back(std::move(s));
+        odl.statements.push_back(statement(e, groups, where, number));
     }
-    if (in_comment)
-        throw DataError(in.at(comment_line), "a /* comment is not closed by */");
-    if (!ended) {
-        int last = odl.statements.empty() ? 0 : odl.statements.back().entry.line;
-        if (odl.statements.empty()) throw DataError(in.at(0), "empty file, expected an MTL file");
-        throw DataError(in.at(last), "unexpected end of file, expected END" +
-                                         (groups.empty() ? std::string()
-                                                         : " and END_GROUP = " + groups.back().first));
-    }
+    check_ending(in, odl, groups, ended, in_comment, comment_line);
     return odl;
 }
 

@@ -88,77 +88,93 @@ CloudMaskRequest mask_request(const LandsatSceneOptions& o) {
     return rq;
 }
 
+// A command's argument count: n after the command, or with `more` at least n.
+void need(const std::vector<std::string>& a, std::size_t n, bool more = false) {
+    if (a.size() < n + 1 || (!more && a.size() != n + 1))
+        throw UsageError(a[0] + " takes " + std::to_string(n) + (more ? " or more" : "") +
+                         " arguments, found " + std::to_string(a.size() - 1));
+}
+
+using Commands = std::map<std::string, std::function<void()>>;
+
+// The commands that make the scene's products: classes, cloud masks, terrain, training
+// points, the reflectance-scale fit and the .ems files.
+void add_making_commands(Commands& commands, const std::vector<std::string>& a,
+                         const LandsatSceneOptions& o, std::ostream& out, std::ostream& report) {
+    commands["classify"] = [&] {
+        need(a, 4, true);
+        require_outputs_distinct({a[3]}, rest(a, 4));
+        classify_step(a[1], rest(a, 4), optional_path(a[2]), a[3], report);
+    };
+    commands["mask"] = [&] {
+        need(a, 2, true);
+        require_outputs_distinct({a[1]}, rest(a, 2));
+        mask_step(mask_request(o), rest(a, 2), a[1], report);
+    };
+    commands["terrain"] = [&] {
+        need(a, 3);
+        terrain_step(a[1], a[2], a[3], report);
+    };
+    commands["points"] = [&] {
+        need(a, 7);
+        PointsRequest rq{a[1], a[2], optional_path(a[3]),
+                         static_cast<int>(whole(a[4], "PER_CLASS", 1, 1 << 20)),
+                         static_cast<std::uint32_t>(whole(a[5], "SEED", 0, 4294967295)),
+                         static_cast<long>(whole(a[6], "MARGIN", 0, 1 << 20)), a[7]};
+        points_step(rq, report);
+    };
+    commands["fit"] = [&] {
+        need(a, 4);
+        fit_step(a[1], a[2], a[3], a[4], out);
+    };
+    commands["ems"] = [&] {
+        need(a, 4);
+        ems_step(a[1], a[2], a[3], a[4]);
+    };
+}
+
+// The commands that judge the products: scores, images side by side and of the
+// difference, statistics, cross tabulation and pairs of values.
+void add_judging_commands(Commands& commands, const std::vector<std::string>& a,
+                          const LandsatSceneOptions& o, std::ostream& out) {
+    commands["score"] = [&] {
+        need(a, 4);
+        score_step({a[1], a[2], a[3], a[4], o.masks, o.points, o.bands}, out);
+    };
+    commands["side-by-side"] = [&] {
+        need(a, 4);
+        require_outputs_distinct({a[4]}, {a[1], a[2]});
+        side_by_side_step(a[1], a[2], band_list(a[3]), a[4]);
+    };
+    commands["difference"] = [&] {
+        need(a, 5);
+        require_outputs_distinct({a[5]}, {a[1], a[2]});
+        difference_step(a[1], a[2], static_cast<int>(whole(a[3], "BAND", 1, 1000)),
+                        real(a[4], "RANGE"), o.masks, a[5]);
+    };
+    commands["stats"] = [&] {
+        need(a, 3);
+        stats_step(a[1], a[2], a[3], o.masks, out);
+    };
+    commands["crosstab"] = [&] {
+        need(a, 4);
+        crosstab_step(a[1], a[2], a[3], a[4], o.masks, out);
+    };
+    commands["pairs"] = [&] {
+        need(a, 6);
+        pairs_step(a[1], a[2], a[3], a[4], o.masks, static_cast<int>(whole(a[5], "BAND", 1, 1000)),
+                   static_cast<long>(whole(a[6], "STEP", 1, 1 << 30)), out);
+    };
+}
+
 }  // namespace
 
 int run_landsat_scene(const std::vector<std::string>& a, const LandsatSceneOptions& o,
                       std::ostream& out, std::ostream& report) {
     const std::string command = a.empty() ? "" : a[0];
-    auto need = [&](std::size_t n, bool more = false) {
-        if (a.size() < n + 1 || (!more && a.size() != n + 1))
-            throw UsageError(command + " takes " + std::to_string(n) + (more ? " or more" : "") +
-                             " arguments, found " + std::to_string(a.size() - 1));
-    };
-    const std::map<std::string, std::function<void()>> commands{
-        {"classify", [&] {
-             need(4, true);
-             require_outputs_distinct({a[3]}, rest(a, 4));
-             classify_step(a[1], rest(a, 4), optional_path(a[2]), a[3], report);
-         }},
-        {"mask", [&] {
-             need(2, true);
-             require_outputs_distinct({a[1]}, rest(a, 2));
-             mask_step(mask_request(o), rest(a, 2), a[1], report);
-         }},
-        {"terrain", [&] {
-             need(3);
-             terrain_step(a[1], a[2], a[3], report);
-         }},
-        {"points", [&] {
-             need(7);
-             PointsRequest rq{a[1], a[2], optional_path(a[3]),
-                              static_cast<int>(whole(a[4], "PER_CLASS", 1, 1 << 20)),
-                              static_cast<std::uint32_t>(whole(a[5], "SEED", 0, 4294967295)),
-                              static_cast<long>(whole(a[6], "MARGIN", 0, 1 << 20)), a[7]};
-             points_step(rq, report);
-         }},
-        {"fit", [&] {
-             need(4);
-             fit_step(a[1], a[2], a[3], a[4], out);
-         }},
-        {"ems", [&] {
-             need(4);
-             ems_step(a[1], a[2], a[3], a[4]);
-         }},
-        {"score", [&] {
-             need(4);
-             score_step({a[1], a[2], a[3], a[4], o.masks, o.points, o.bands}, out);
-         }},
-        {"side-by-side", [&] {
-             need(4);
-             require_outputs_distinct({a[4]}, {a[1], a[2]});
-             side_by_side_step(a[1], a[2], band_list(a[3]), a[4]);
-         }},
-        {"difference", [&] {
-             need(5);
-             require_outputs_distinct({a[5]}, {a[1], a[2]});
-             difference_step(a[1], a[2], static_cast<int>(whole(a[3], "BAND", 1, 1000)),
-                             real(a[4], "RANGE"), o.masks, a[5]);
-         }},
-        {"stats", [&] {
-             need(3);
-             stats_step(a[1], a[2], a[3], o.masks, out);
-         }},
-        {"crosstab", [&] {
-             need(4);
-             crosstab_step(a[1], a[2], a[3], a[4], o.masks, out);
-         }},
-        {"pairs", [&] {
-             need(6);
-             pairs_step(a[1], a[2], a[3], a[4], o.masks,
-                        static_cast<int>(whole(a[5], "BAND", 1, 1000)),
-                        static_cast<long>(whole(a[6], "STEP", 1, 1 << 30)), out);
-         }},
-    };
+    Commands commands;
+    add_making_commands(commands, a, o, out, report);
+    add_judging_commands(commands, a, o, out);
     const auto it = commands.find(command);
     if (it == commands.end())
         throw UsageError(command.empty() ? "expected a COMMAND" : "unknown command '" + command + "'");

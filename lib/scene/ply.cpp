@@ -175,32 +175,51 @@ private:
     }
 };
 
-}  // namespace
-
-PlyCounts check_ply(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path + ": cannot open the mesh file");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw IoError(path + ": read error");
-    // The header: lines up to end_header (at most 1 MiB of them).
-    constexpr std::size_t kMaxHeader = 1 << 20;
+// The header's elements and format, and where the body starts (byte, and the number
+// of the header's last line).
+struct Header {
     std::vector<Element> elements;
     std::string format;
     std::size_t at = 0;
     int line = 0;
+};
+
+// A property line's fields: 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'.
+Property parse_property(const std::vector<std::string_view>& f, const SourceLocation& where) {
+    Property p;
+    if (f.size() == 5 && f[1] == "list") {
+        p = {std::string(f[4]), std::string(f[3]), std::string(f[2])};
+        if (is_real(p.count_type) || type_size(p.count_type) == 0)
+            throw DataError(where, "the list's length type '" + p.count_type +
+                                       "' is not an integer type");
+    } else if (f.size() == 3) {
+        p = {std::string(f[2]), std::string(f[1]), ""};
+    } else {
+        throw DataError(where, "expected 'property TYPE NAME' or 'property list "
+                               "COUNT_TYPE TYPE NAME'");
+    }
+    if (type_size(p.type) == 0) throw DataError(where, "unknown type '" + p.type + "'");
+    return p;
+}
+
+// The header: lines up to end_header (at most 1 MiB of them).
+Header read_header(const std::string& path, const std::string& text) {
+    constexpr std::size_t kMaxHeader = 1 << 20;
+    Header h;
     bool ended = false;
     while (!ended) {
-        const std::size_t end = text.find('\n', at);
+        const std::size_t end = text.find('\n', h.at);
         if (end == std::string::npos || end > kMaxHeader)
-            throw DataError({path, line}, "the header has no end_header line (a truncated file?)");
-        std::string row = text.substr(at, end - at);
+            throw DataError({path, h.line},
+                            "the header has no end_header line (a truncated file?)");
+        std::string row = text.substr(h.at, end - h.at);
         if (!row.empty() && row.back() == '\r') row.pop_back();
-        at = end + 1;
-        ++line;
+        h.at = end + 1;
+        ++h.line;
         const std::vector<std::string_view> f = split_fields(row);
         const std::string key = f.empty() ? "" : std::string(f[0]);
-        const SourceLocation where{path, line};
-        if (line == 1) {
+        const SourceLocation where{path, h.line};
+        if (h.line == 1) {
             if (key != "ply") throw DataError(where, "not a PLY file (no 'ply' line)");
             continue;
         }
@@ -209,41 +228,39 @@ PlyCounts check_ply(const std::string& path) {
                 (f[1] != "ascii" && f[1] != "binary_little_endian" && f[1] != "binary_big_endian"))
                 throw DataError(where, "expected 'format ascii|binary_little_endian|"
                                        "binary_big_endian 1.0'");
-            format = f[1];
+            h.format = f[1];
         } else if (key == "element") {
             if (f.size() != 3) throw DataError(where, "expected 'element NAME COUNT'");
             const long count = parse_count(f[2], where, "the element count");
-            elements.push_back({std::string(f[1]), static_cast<std::size_t>(count), line, {}});
+            h.elements.push_back({std::string(f[1]), static_cast<std::size_t>(count), h.line, {}});
         } else if (key == "property") {
-            if (elements.empty()) throw DataError(where, "a property before any element");
-            Property p;
-            if (f.size() == 5 && f[1] == "list") {
-                p = {std::string(f[4]), std::string(f[3]), std::string(f[2])};
-                if (is_real(p.count_type) || type_size(p.count_type) == 0)
-                    throw DataError(where, "the list's length type '" + p.count_type +
-                                               "' is not an integer type");
-            } else if (f.size() == 3) {
-                p = {std::string(f[2]), std::string(f[1]), ""};
-            } else {
-                throw DataError(where, "expected 'property TYPE NAME' or 'property list "
-                                       "COUNT_TYPE TYPE NAME'");
-            }
-            if (type_size(p.type) == 0) throw DataError(where, "unknown type '" + p.type + "'");
-            elements.back().properties.push_back(p);
+            if (h.elements.empty()) throw DataError(where, "a property before any element");
+            h.elements.back().properties.push_back(parse_property(f, where));
         } else if (key == "end_header") {
             ended = true;
         } else if (key != "comment" && key != "obj_info" && !key.empty()) {
             throw DataError(where, "unknown header line '" + key + "'");
         }
     }
-    if (format.empty()) throw DataError({path, line}, "the header has no format line");
-    Body body(path, text, at, line);
-    if (format == "ascii")
-        body.ascii(elements);
+    if (h.format.empty()) throw DataError({path, h.line}, "the header has no format line");
+    return h;
+}
+
+}  // namespace
+
+PlyCounts check_ply(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path + ": cannot open the mesh file");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw IoError(path + ": read error");
+    const Header h = read_header(path, text);
+    Body body(path, text, h.at, h.line);
+    if (h.format == "ascii")
+        body.ascii(h.elements);
     else
-        body.binary(elements, format == "binary_big_endian");
+        body.binary(h.elements, h.format == "binary_big_endian");
     PlyCounts counts;
-    for (const Element& e : elements) {
+    for (const Element& e : h.elements) {
         if (e.name == "vertex") counts.vertices = e.count;
         if (e.name == "face") counts.faces = e.count;
     }
