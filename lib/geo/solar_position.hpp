@@ -5,6 +5,8 @@
 // for Es), trace and therm.
 #pragma once
 
+#include "geo/scene_site.hpp"
+
 namespace sigchain::geo {
 
 // A moment and a place. Time is Universal Time (UT, White (1996)'s "GMT").
@@ -46,18 +48,6 @@ double default_delta_t_s(int year);
 // The full SPA chain (sections 3.1-3.15 of the report). Throws sigchain::Error if an
 // input is out of range.
 SolarPosition solar_position(const SolarPositionInput& in);
-
-// The scene's date, time and place as the scene node (.snd) gives them; io::scene_site
-// makes one from an io::Snd.
-struct SceneSite {
-    int year = 2000;                // the scene's date (its local date)
-    int month = 1;                  // 1-12
-    int day = 1;                    // 1-31
-    double time_gmt_hours = 0;      // decimal hours GMT (UT), [0, 24)
-    double gmt_offset_hours = 0;    // GMT = local time + offset (5 for US Eastern standard)
-    double latitude_deg = 0;        // of the target, north positive
-    double longitude_east_deg = 0;  // of the target, east positive, (-180, 360)
-};
 
 // The sun at the scene's date, GMT time, latitude and longitude (east positive) at
 // elevation_m above sea level, standard pressure and temperature, Delta T from

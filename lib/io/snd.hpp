@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/text.hpp"
-#include "geo/solar_position.hpp"
+#include "geo/scene_site.hpp"
 #include "io/registry.hpp"
 
 namespace sigchain::io {
@@ -65,7 +65,7 @@ Snd parse_snd(const TextInput& in);
 void write_snd(std::ostream& out, const Snd& snd);
 inline Snd read_snd_file(const std::string& path) { return parse_snd(TextInput::from_file(path)); }
 FormatHandler snd_format();
-// The scene's date, GMT time, GMT offset and place, for the sun (geo/solar_position.hpp)
+// The scene's date, GMT time, GMT offset and place, for the sun (geo/scene_site.hpp)
 // and the .wth clock (geo/scene_clock.hpp).
 geo::SceneSite scene_site(const Snd& snd);
 

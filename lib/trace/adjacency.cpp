@@ -81,7 +81,7 @@ std::vector<double> environment_reflectance(const RenderInputs& in, const geo::V
             if (normal[2] < 0) normal = geo::scale(normal, -1);
             const double cos_i =
                 atm.sun_up() ? std::max(0.0, geo::dot(normal, atm.sun_direction())) : 1.0;
-            const double theta = std::acos(std::min(1.0, cos_i)) * kDeg;
+            const double theta = std::acos(std::min(1.0, cos_i)) * kDegPerRad;
             const int curve = m.curve_at(x, y, static_cast<int>(a.texture_curve));
             m.reflectance(curve, theta, a.thickness_cm, rho);
             for (std::size_t k = 0; k < n; ++k) sum[k] += rho[k];

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "radiometry/atmosphere.hpp"
-#include "trace/render.hpp"
+#include "trace/render_options.hpp"
 
 namespace sigchain::trace {
 

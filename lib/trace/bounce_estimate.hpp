@@ -3,7 +3,7 @@
 // reflections than a given depth follows.
 #pragma once
 
-#include "trace/render.hpp"
+#include "trace/render_options.hpp"
 
 namespace sigchain::trace {
 

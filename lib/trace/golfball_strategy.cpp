@@ -34,7 +34,7 @@ public:
         double s = specularity_of(m);
         bool lobe = has_lobe(m);
         Vec3 mir = radiometry::mirror(wo_l);
-        int matrix = lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDeg) : 0;
+        int matrix = lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDegPerRad) : 0;
         const auto& rays = golfball_rays(matrix);
         double lobe_sum = directions(tracer, m, rays, mir, wo_l, lobe);
         bool lobe_rays = lobe && lobe_sum >= 0.5;
@@ -65,7 +65,7 @@ public:
         const std::size_t n = tracer.context().n;
         const Vec3 mir = radiometry::mirror(wo_l);
         const int matrix =
-            w.lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDeg) : 0;
+            w.lobe ? golfball_matrix(std::acos(std::clamp(mir[2], -1.0, 1.0)) * kDegPerRad) : 0;
         const auto& rays = golfball_rays(matrix);
         const double lobe_sum = directions(tracer, m, rays, mir, wo_l, w.lobe);
         const bool lobe_rays = w.lobe && lobe_sum >= 0.5;

@@ -145,11 +145,11 @@ private:
             std::min(static_cast<std::size_t>(it - m_sky_cdf.begin()), m_sky_cdf.size() - 1);
         while (m_sky_prob[i] == 0 && i > 0) --i;  // guards the u1 = cdf edge case
         const auto& c = m_atm.sky_cells()[i];
-        double clo = std::cos(c.zenith_hi_deg / kDeg), chi = std::cos(c.zenith_lo_deg / kDeg);
+        double clo = std::cos(c.zenith_hi_deg / kDegPerRad), chi = std::cos(c.zenith_lo_deg / kDegPerRad);
         double cz = clo + u2 * (chi - clo);
         double az = c.azimuth_lo_deg + u3 * (c.azimuth_hi_deg - c.azimuth_lo_deg);
         double sz = std::sqrt(std::max(0.0, 1 - cz * cz));
-        double ar = az / kDeg;
+        double ar = az / kDegPerRad;
         return {sz * std::sin(ar), sz * std::cos(ar), cz};
     }
 };

@@ -14,7 +14,7 @@
 #include "core/tile.hpp"
 #include "image/image.hpp"
 #include "scene/load.hpp"
-#include "trace/render.hpp"
+#include "trace/render_options.hpp"
 
 namespace sigchain::trace {
 

@@ -197,7 +197,7 @@ void Tracer::shade_one_bounce(const scene::Hit& hit, const MaterialOptics& m,
     double* rho = m_arena.take();
     double* in = m_arena.take();
     double cos_o = std::clamp(geo::dot(n, wo), 0.0, 1.0);
-    double theta_o = std::acos(cos_o) * kDeg;
+    double theta_o = std::acos(cos_o) * kDegPerRad;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     m.reflectance(curve, theta_o, a.thickness_cm, {rho, m_c.n});
     apply_texture_gain(m_c, m, hit, rho);
@@ -243,7 +243,7 @@ void Tracer::shade_path(const scene::Hit& hit, const MaterialOptics& m,
     std::fill(in, in + m_c.n, 0.0);
     FacetFrame f(n);
     const Vec3 wo_l = f.to_local(wo);
-    const double theta_o = std::acos(std::clamp(wo_l[2], 0.0, 1.0)) * kDeg;
+    const double theta_o = std::acos(std::clamp(wo_l[2], 0.0, 1.0)) * kDegPerRad;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     m.reflectance(curve, theta_o, a.thickness_cm, {rho, m_c.n});
     apply_texture_gain(m_c, m, hit, rho);
@@ -297,7 +297,7 @@ void Tracer::shade_full(const scene::Hit& hit, const MaterialOptics& m,
     FacetFrame f(n);
     Vec3 wo_l = f.to_local(wo);
     double cos_o = std::clamp(wo_l[2], 0.0, 1.0);
-    double theta_o = std::acos(cos_o) * kDeg;
+    double theta_o = std::acos(cos_o) * kDegPerRad;
     int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     double* rho = m_arena.take();
     double* solar = m_arena.take();

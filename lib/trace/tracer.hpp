@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/numeric.hpp"
 #include "geo/vec3.hpp"
 #include "radiometry/material.hpp"
 #include "scene/scene.hpp"
@@ -29,13 +30,12 @@
 #include "trace/bounce_estimate.hpp"
 #include "radiometry/sky_interpolation.hpp"
 #include "radiometry/sky_table.hpp"
-#include "trace/render.hpp"
+#include "trace/render_options.hpp"
 #include "trace/world.hpp"
 
 namespace sigchain::trace {
 
 inline constexpr double kPi = 3.14159265358979323846;
-inline constexpr double kDeg = 180.0 / kPi;  // degrees per radian
 
 class Adjacency;
 

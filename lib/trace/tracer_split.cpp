@@ -71,7 +71,7 @@ void Tracer::shade_one_bounce_split(const scene::Hit& hit, const MaterialOptics&
     const FacetFrame f(n);
     const Vec3 wo_l = f.to_local(wo);
     const double cos_o = std::clamp(wo_l[2], 0.0, 1.0);
-    const double theta_o = std::acos(cos_o) * kDeg;
+    const double theta_o = std::acos(cos_o) * kDegPerRad;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     split_reflectances(hit, m, a, curve, theta_o, rho_d, rho_s);
     const ReflectanceSplit w = m.split_weights(cos_o);
@@ -101,7 +101,7 @@ void Tracer::shade_path_split(const scene::Hit& hit, const MaterialOptics& m,
     double* li = m_arena.take();
     const FacetFrame f(n);
     const Vec3 wo_l = f.to_local(wo);
-    const double theta_o = std::acos(std::clamp(wo_l[2], 0.0, 1.0)) * kDeg;
+    const double theta_o = std::acos(std::clamp(wo_l[2], 0.0, 1.0)) * kDegPerRad;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     split_reflectances(hit, m, a, curve, theta_o, rho_d, rho_s);
     const ReflectanceSplit w = m.split_weights(std::clamp(wo_l[2], 0.0, 1.0));
@@ -152,7 +152,7 @@ void Tracer::shade_full_split(const scene::Hit& hit, const MaterialOptics& m,
     const FacetFrame f(n);
     const Vec3 wo_l = f.to_local(wo);
     const double cos_o = std::clamp(wo_l[2], 0.0, 1.0);
-    const double theta_o = std::acos(cos_o) * kDeg;
+    const double theta_o = std::acos(cos_o) * kDegPerRad;
     const int curve = m.curve_at(point[0], point[1], static_cast<int>(a.texture_curve));
     double* rho_d = m_arena.take();
     double* rho_s = m_arena.take();

@@ -70,7 +70,7 @@ bool Tracer::sun_image(const scene::Plane& plane, const Vec3& p, const Vec3& n, 
     // The mirror's specular reflectance toward p: rho s F(cos) as in add_mirror, or
     // rho_s w_s F(cos) for a split material.
     const double cos_i = std::clamp(-geo::dot(nm, dir), 0.0, 1.0);
-    const double theta_deg = std::acos(cos_i) * kDeg;
+    const double theta_deg = std::acos(cos_i) * kDegPerRad;
     const auto& a = m_c.in.scene->attributes(*hit);
     const int curve = mm.curve_at(q[0], q[1], static_cast<int>(a.texture_curve));
     double* rho = m_arena.take();

@@ -17,7 +17,6 @@ namespace {
 // away from shadow edges (held fixed, V is not differentiable), so the O(h^2)
 // truncation at 0.01 deg is below 1e-8 of the rate for any zenith under 89.9 deg.
 constexpr double kZenithStep_deg = 0.01;
-constexpr double kRad = kPi / 180;
 }  // namespace
 
 void prepare_uncertainty(TraceContext& c) {
@@ -32,9 +31,9 @@ void prepare_uncertainty(TraceContext& c) {
     if (c.column_depth.size() != c.n) return;  // tau1 unknown: no sun, or Es = 0
     // tau1(z) = exp(-delta / cos z): Beer's law in a plane-parallel column, the model
     // of Atmosphere::column_optical_depth.
-    const double mu = std::cos(z * kRad);
+    const double mu = std::cos(z * kRadPerDeg);
     auto ratio = [&](double delta, double z_deg) {
-        const double m = std::cos(z_deg * kRad);
+        const double m = std::cos(z_deg * kRadPerDeg);
         return m > 0 ? std::exp(-delta * (1 / m - 1 / mu)) : 0.0;
     };
     for (std::size_t k = 0; k < c.n; ++k) {

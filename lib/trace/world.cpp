@@ -141,7 +141,7 @@ std::string sky_lookup_description(const TraceContext& c) {
                   "sky lookup: table %d x %d for rays from facets (the interpolation at each "
                   "cell's centre, read by nearest cell, at most %.2f deg away; %.0f KiB); "
                   "camera rays interpolate",
-                  side, side, c.sky_table->max_cell_radius_rad() * kDeg, kib);
+                  side, side, c.sky_table->max_cell_radius_rad() * kDegPerRad, kib);
     return buf;
 }
 

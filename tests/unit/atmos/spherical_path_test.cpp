@@ -1,6 +1,7 @@
 // Tests for the refracted spherical-shell paths (lib/atmos/spherical_path): the Chapman
 // function of an exponential atmosphere, Bennett's (1982) refraction formula, the
 // plane-parallel limit and the grazing ray.
+#include "core/numeric.hpp"
 #include "atmos/spherical_path.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +13,7 @@ using namespace sigchain::atmos;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 constexpr double kH = 8.0;      // scale height of the test atmosphere, km
 constexpr double kTop = 120.0;  // its top, km (e^-15 of the column lies above)
 
@@ -87,21 +88,21 @@ Shells standard_shells() {
 TEST(Atmos_SphericalPath, MatchesChapmanFunctionOfExponentialAtmosphere) {
     const Shells s = exponential_shells(1.0);
     for (double deg : {0.0, 60.0, 80.0, 85.0, 88.0, 90.0}) {
-        const Ray r = trace_up(s, 0, s.z_km.size() - 1, deg * kDeg);
-        const double ref = chapman(deg * kDeg);
+        const Ray r = trace_up(s, 0, s.z_km.size() - 1, deg * kRadPerDeg);
+        const double ref = chapman(deg * kRadPerDeg);
         EXPECT_NEAR(traced_air_mass(s, r) / ref, 1.0, 5e-3) << deg << " deg, Chapman " << ref;
         EXPECT_NEAR(r.refraction_rad, 0.0, 1e-15);
     }
     // The plane-parallel air mass is far off at 88 deg: the test can tell them apart.
-    EXPECT_GT(1 / std::cos(88 * kDeg) / chapman(88 * kDeg), 1.3);
+    EXPECT_GT(1 / std::cos(88 * kRadPerDeg) / chapman(88 * kRadPerDeg), 1.3);
 }
 
 // Earth radius -> infinity, no refraction: every layer's air mass is 1 / mu.
 TEST(Atmos_SphericalPath, FlatLimitIsOneOverMu) {
     const Shells s = exponential_shells(2.0, 1e15);
     for (double deg : {0.0, 30.0, 53.18, 70.0, 85.0}) {
-        const Ray r = trace_up(s, 0, s.z_km.size() - 1, deg * kDeg);
-        for (double m : r.air_mass) EXPECT_NEAR(m * std::cos(deg * kDeg), 1.0, 1e-9) << deg;
+        const Ray r = trace_up(s, 0, s.z_km.size() - 1, deg * kRadPerDeg);
+        for (double m : r.air_mass) EXPECT_NEAR(m * std::cos(deg * kRadPerDeg), 1.0, 1e-9) << deg;
     }
 }
 
@@ -115,9 +116,9 @@ TEST(Atmos_SphericalPath, FlatLimitIsOneOverMu) {
 TEST(Atmos_SphericalPath, RefractionMatchesBennett) {
     const Shells s = standard_shells();
     for (double h : {0.0, 0.5, 1.0, 2.0, 3.0, 5.0}) {
-        const Ray r = trace_up(s, 0, s.z_km.size() - 1, (90 - h) * kDeg);
-        const double bennett = 1 / std::tan((h + 7.31 / (h + 4.4)) * kDeg);
-        const double arcmin = r.refraction_rad / kDeg * 60;
+        const Ray r = trace_up(s, 0, s.z_km.size() - 1, (90 - h) * kRadPerDeg);
+        const double bennett = 1 / std::tan((h + 7.31 / (h + 4.4)) * kRadPerDeg);
+        const double arcmin = r.refraction_rad / kRadPerDeg * 60;
         EXPECT_NEAR(arcmin, bennett, 0.07 + 0.02 * bennett) << h << " deg";
     }
 }
@@ -126,18 +127,18 @@ TEST(Atmos_SphericalPath, RefractionMatchesBennett) {
 // refraction; below the refracted horizon it is not.
 TEST(Atmos_SphericalPath, SunAtNinetyDegreesIsSeenGrazing) {
     const Shells s = standard_shells();
-    const Ray r = trace_to_sun(s, 0, 90 * kDeg);
+    const Ray r = trace_to_sun(s, 0, 90 * kRadPerDeg);
     ASSERT_TRUE(r.reaches);
-    EXPECT_LT(r.zenith_rad, 90 * kDeg);
-    EXPECT_NEAR(r.zenith_rad + r.refraction_rad, 90 * kDeg, 1e-10);
+    EXPECT_LT(r.zenith_rad, 90 * kRadPerDeg);
+    EXPECT_NEAR(r.zenith_rad + r.refraction_rad, 90 * kRadPerDeg, 1e-10);
     for (double m : r.air_mass) {
         EXPECT_TRUE(std::isfinite(m));
         EXPECT_GE(m, 1.0);
     }
     EXPECT_GT(r.air_mass[0], 20.0);  // near-grazing through the lowest layer
-    EXPECT_FALSE(trace_to_sun(s, 0, 91 * kDeg).reaches);
+    EXPECT_FALSE(trace_to_sun(s, 0, 91 * kRadPerDeg).reaches);
     // A level at the top sees the sun with no atmosphere in between.
-    EXPECT_TRUE(trace_to_sun(s, s.z_km.size() - 1, 45 * kDeg).reaches);
+    EXPECT_TRUE(trace_to_sun(s, s.z_km.size() - 1, 45 * kRadPerDeg).reaches);
 }
 
 // trace_to_sun traces only the bisection's midpoints near the root, deciding the others
@@ -149,7 +150,7 @@ TEST(Atmos_SphericalPath, SunRayEqualsThePlainBisectionBitForBit) {
     const std::size_t top = s.z_km.size() - 1;
     for (std::size_t level : {std::size_t{0}, std::size_t{37}, std::size_t{150}, top - 1})
         for (double deg : {0.0, 10.0, 53.17794587288526, 80.0, 89.5, 90.0}) {
-            const double zenith = deg * kDeg;
+            const double zenith = deg * kRadPerDeg;
             double a = 0, b = std::numbers::pi / 2;
             for (int it = 0; it < 60 && b - a > 1e-12; ++it) {
                 const double m = 0.5 * (a + b);

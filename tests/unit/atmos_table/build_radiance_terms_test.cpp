@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/numeric.hpp"
 #include "../record_property.hpp"
 #include "atmos/column_model.hpp"
 #include "atmos_table/build_radiance.hpp"
@@ -19,7 +20,7 @@ namespace sigchain::atmos_table {
 using namespace atmos;  // the column (lib/atmos) the tables are built from
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 const std::string kSource = SIGCHAIN_SOURCE_DIR;
 
 RadianceOptions fast_options(int max_terms) {
@@ -108,7 +109,7 @@ TEST(BuildRadianceTerms, ThermalPathRadianceFollowsTheSlantPathTransmittance) {
         const auto col = column.layers(nu);
         double formal[2], sums[2], one[2];
         for (int v = 0; v < 2; ++v) {
-            const double mu = std::cos(v * 40 * kDeg);
+            const double mu = std::cos(v * 40 * kRadPerDeg);
             formal[v] = 0;
             for (std::size_t k = 0; k < sensor; ++k)
                 formal[v] += 0.5 *

@@ -1,5 +1,6 @@
 // build_radiance: output names, options, and the tables' physics against the solver's
 // own fluxes and against symmetry.
+#include "core/numeric.hpp"
 #include "atmos_table/build_radiance.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace sigchain::atmos_table {
 using namespace atmos;  // the column (lib/atmos) the tables are built from
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 const std::string kSource = SIGCHAIN_SOURCE_DIR;
 
 io::Cdk hawkeye_deck() { return io::read_cdk_file(kSource + "/tests/golden/control7/hawkeye.cdk"); }
@@ -83,7 +84,7 @@ TEST(BuildRadiance, HemisphereIntegratesToTheSolversDiffuseIrradiance) {
         for (std::size_t s = 0; s < run.rads[b].samples.size(); ++s) {
             double e = 0;
             for (const auto& cell : sky.cells) {
-                const double z0 = (cell.zenith_deg - dz / 2) * kDeg, z1 = (cell.zenith_deg + dz / 2) * kDeg;
+                const double z0 = (cell.zenith_deg - dz / 2) * kRadPerDeg, z1 = (cell.zenith_deg + dz / 2) * kRadPerDeg;
                 const double w = (std::sin(z1) * std::sin(z1) - std::sin(z0) * std::sin(z0)) / 2 * dphi;
                 e += (cell.scattered_radiance[s] + cell.emitted_radiance[s]) * w;
             }
@@ -107,7 +108,7 @@ TEST(BuildRadiance, GridsRangesAndTransmissionsFollowTheGeometry) {
     EXPECT_DOUBLE_EQ(rad.samples.back().wavenumber_cm1, 22000);
     const double height = 1.0 - 0.218;  // sensor at 1 km over the sonde's 0.218 km ground
     for (const auto& v : rad.views)
-        EXPECT_NEAR(v.range_km, height / std::cos(v.view_angle_deg * kDeg), 1e-12);
+        EXPECT_NEAR(v.range_km, height / std::cos(v.view_angle_deg * kRadPerDeg), 1e-12);
     for (std::size_t s = 0; s < rad.samples.size(); ++s) {
         const double nadir = rad.views[1].path[s].transmission;
         // Same slant path either side of nadir; longer path, less transmission.
@@ -364,7 +365,7 @@ TEST(BuildRadiance, ThermalEmissionMatchesTheAbsorptionOnlyFormalSolution) {
     const ColumnModel column(deck.runs[0], snd.sensor_altitude_km, o);
     const Profile& p = column.profile();
     const std::size_t sensor = column.sensor_level();
-    const double mu_zenith = std::cos(2.5 * kDeg);
+    const double mu_zenith = std::cos(2.5 * kRadPerDeg);
     for (std::size_t b = 0; b < rads.size(); ++b) {
         const double nu = rads[b].samples[0].wavenumber_cm1;
         const auto col = column.layers(nu);

@@ -16,6 +16,7 @@
 #include "atmos/single_scatter.hpp"
 #include "atmos_table/build_radiance.hpp"
 #include "core/error.hpp"
+#include "geo/solar_position.hpp"
 #include "rt/coupling.hpp"
 
 namespace sigchain::atmos_table {

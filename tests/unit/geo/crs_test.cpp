@@ -1,6 +1,7 @@
 // Tests for lib/geo/crs: a CRS from WKT and back, the transformation to WGS84 against
 // GeographicLib's own UTM (independent of GDAL/PROJ), and the local east-north-up frame
 // against the WGS84 radii of curvature.
+#include "core/numeric.hpp"
 #include "geo/crs.hpp"
 #include "geo/georef.hpp"
 
@@ -15,7 +16,7 @@ using namespace sigchain::geo;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 
 Crs epsg(int code) {
     OGRSpatialReference srs;
@@ -106,7 +107,7 @@ TEST(LocalEnu, OffsetsAlongTheRadiiOfCurvature) {
     // offsets by far less than 1 mm (second order in the angle: ~1e-6 m).
     const double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
     const double lat0 = -7.995376, lon0 = -34.871272, h0 = 12;
-    const double s = std::sin(lat0 * kDeg);
+    const double s = std::sin(lat0 * kRadPerDeg);
     const double m = a * (1 - e2) / std::pow(1 - e2 * s * s, 1.5);
     const double n = a / std::sqrt(1 - e2 * s * s);
     const LocalEnu enu(lat0, lon0, h0);
@@ -115,10 +116,10 @@ TEST(LocalEnu, OffsetsAlongTheRadiiOfCurvature) {
     EXPECT_NEAR(o[1], 0, 1e-9);
     EXPECT_NEAR(o[2], 0, 1e-9);
     const Vec3 north = enu.forward(lat0 + 0.001, lon0, h0);
-    EXPECT_NEAR(north[1], 0.001 * kDeg * (m + h0), 1e-3);
+    EXPECT_NEAR(north[1], 0.001 * kRadPerDeg * (m + h0), 1e-3);
     EXPECT_NEAR(north[0], 0, 1e-6);
     const Vec3 east = enu.forward(lat0, lon0 + 0.001, h0);
-    EXPECT_NEAR(east[0], 0.001 * kDeg * (n + h0) * std::cos(lat0 * kDeg), 1e-3);
+    EXPECT_NEAR(east[0], 0.001 * kRadPerDeg * (n + h0) * std::cos(lat0 * kRadPerDeg), 1e-3);
     const Vec3 up = enu.forward(lat0, lon0, h0 + 100);
     EXPECT_NEAR(up[2], 100, 1e-9);
 }

@@ -1,5 +1,6 @@
 // SkyInterpolator: a smooth sky is reproduced between cell centres where the cell
 // lookup errs; uniform skies stay exact; directions at or below the horizon add nothing.
+#include "core/numeric.hpp"
 #include "radiometry/sky_interpolation.hpp"
 
 #include <gtest/gtest.h>
@@ -15,13 +16,13 @@ namespace {
 
 using geo::Vec3;
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 
 // A smooth sky brightening toward the horizon and toward azimuth 40 deg: the shape of
 // a clear sky's aerosol brightening, with the magnitude of a visible-band sky.
 double smooth_sky(double zenith_deg, double azimuth_deg) {
-    const double z = zenith_deg * kDeg;
-    return 0.01 * (1 + 0.8 * (1 - std::cos(z)) + 0.3 * std::sin(z) * std::cos((azimuth_deg - 40) * kDeg));
+    const double z = zenith_deg * kRadPerDeg;
+    return 0.01 * (1 + 0.8 * (1 - std::cos(z)) + 0.3 * std::sin(z) * std::cos((azimuth_deg - 40) * kRadPerDeg));
 }
 
 Atmosphere sky_atmosphere(int rings, int columns) {

@@ -2,6 +2,7 @@
 // WGS84 radii of curvature (an independent first-order computation), a UTM raster
 // through GeographicLib's own UTM (independent of GDAL/PROJ), nodata, winding, facet
 // ids, land use, and the errors.
+#include "core/numeric.hpp"
 #include "scene/dem.hpp"
 
 #include <cpl_conv.h>
@@ -22,7 +23,7 @@ using namespace sigchain;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 constexpr double kNodata = -9999;
 
 // A small raster written with GDAL (GeoTIFF), band 1 = `values` (row-major).
@@ -71,10 +72,10 @@ double prime_vertical_radius(double phi) {
 // up = dh minus the drop of the tangent plane d^2 / 2R.
 std::array<double, 3> enu_first_order(double lat, double lon, double h, double lat0, double lon0,
                                       double h0) {
-    double phi0 = lat0 * kDeg;
+    double phi0 = lat0 * kRadPerDeg;
     double m = meridional_radius(phi0), n = prime_vertical_radius(phi0);
-    double north = (lat - lat0) * kDeg * (m + h);
-    double east = (lon - lon0) * kDeg * (n + h) * std::cos(phi0);
+    double north = (lat - lat0) * kRadPerDeg * (m + h);
+    double east = (lon - lon0) * kRadPerDeg * (n + h) * std::cos(phi0);
     double up = (h - h0) - (east * east + north * north) / (2 * std::sqrt(m * n));
     return {east, north, up};
 }

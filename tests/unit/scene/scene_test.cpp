@@ -1,6 +1,7 @@
 // Tests for the Embree scene: instance normals against the analytic normal of the
 // transformed facet, 1000 instances against the same copies flattened by hand,
 // occlusion against nearest-hit queries, bounds.
+#include "core/numeric.hpp"
 #include "scene/scene.hpp"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,7 @@ using sigchain::geo::Vec3;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using sigchain::kRadPerDeg;
 
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3 cross(const Vec3& a, const Vec3& b) {
@@ -42,8 +43,8 @@ Vec3 apply(const Affine& t, const Vec3& p) {
 
 // T Rz Rx S as a 3x4 affine (odb(5) order, no y rotation).
 Affine make_affine(Vec3 scale, double rx_deg, double rz_deg, Vec3 translation) {
-    double cx = std::cos(rx_deg * kDeg), sx = std::sin(rx_deg * kDeg);
-    double cz = std::cos(rz_deg * kDeg), sz = std::sin(rz_deg * kDeg);
+    double cx = std::cos(rx_deg * kRadPerDeg), sx = std::sin(rx_deg * kRadPerDeg);
+    double cz = std::cos(rz_deg * kRadPerDeg), sz = std::sin(rz_deg * kRadPerDeg);
     // Rz * Rx
     double r[3][3] = {{cz, -sz * cx, sz * sx}, {sz, cz * cx, -cz * sx}, {0, sx, cx}};
     Affine a;

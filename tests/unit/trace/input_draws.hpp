@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/numeric.hpp"
 #include "io/rad.hpp"
 #include "radiometry/material.hpp"
 #include "trace/uncertainty.hpp"
@@ -30,10 +31,10 @@ inline double moved(const Sigma& s, double x, double z) {
 // z'), the model the layer differentiates.
 inline std::vector<io::Rad> perturbed_rads(std::vector<io::Rad> rads, const InputUncertainty& u,
                                            const Draw& d) {
-    constexpr double kRad = 3.14159265358979323846 / 180;
+    using sigchain::kRadPerDeg;
     for (io::Rad& r : rads) {
         const double z0 = r.sky->sun_zenith_deg, z1 = z0 + u.sun_zenith_deg * d.zenith;
-        const double power = std::cos(z0 * kRad) / std::cos(z1 * kRad);
+        const double power = std::cos(z0 * kRadPerDeg) / std::cos(z1 * kRadPerDeg);
         r.sky->sun_zenith_deg = z1;
         for (io::RadSample& s : r.samples) {
             s.solar_irradiance = moved(u.es, s.solar_irradiance, d.es);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../record_property.hpp"
+#include "geo/solar_position.hpp"
 #include "core/error.hpp"
 #include "geo/scene_clock.hpp"
 #include "io/snd.hpp"
