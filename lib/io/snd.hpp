@@ -8,7 +8,7 @@
 
 #include "core/text.hpp"
 #include "geo/scene_site.hpp"
-#include "io/registry.hpp"
+#include "io/format_handler.hpp"
 
 namespace sigchain::io {
 
