@@ -160,6 +160,18 @@ TEST(SamplingError, ConvergenceStopsAtMinOnThePlateAndLaterOnTheEdge) {
     EXPECT_GT(e.truth.at(se, 0, 0), 0.01 * e.radiance.at(0, 0, 0));
 }
 
+// The two convergence-rule tests' set-up: montecarlo, 8 hemisphere rays, --convergence
+// 8 to 64 samples, one thread.
+RenderOptions convergence_8_to_64() {
+    RenderOptions o;
+    o.sampling = Sampling::MonteCarlo;
+    o.hemisphere_samples = 8;
+    o.convergence_min = 8;
+    o.convergence_max = 64;
+    o.threads = 1;
+    return o;
+}
+
 TEST(SamplingError, ConvergenceErrorsAbsoluteAndRms) {
     // --convergence-error absolute bounds the standard error itself, rms the standard
     // error times sqrt(MIN / n), which is never larger: with one threshold, rms never
@@ -167,12 +179,7 @@ TEST(SamplingError, ConvergenceErrorsAbsoluteAndRms) {
     // A threshold no error meets runs to MAX, one every error meets stops at MIN.
     const Fixture f;
     Ortho cam(12, 12, 0.75, -4.5, 4.5, {0, 0, -1});
-    RenderOptions o;
-    o.sampling = Sampling::MonteCarlo;
-    o.hemisphere_samples = 8;
-    o.convergence_min = 8;
-    o.convergence_max = 64;
-    o.threads = 1;
+    RenderOptions o = convergence_8_to_64();
     o.convergence_error = ConvergenceError::Absolute;
     o.convergence_threshold = 1e-12;
     const RenderResult all = render_with(f, cam, o);
@@ -204,18 +211,9 @@ TEST(SamplingError, SceneErrorIsRmsInUnitsOfTheGreyGround) {
     // each pixel took agree; a threshold between MIN and MAX for some.
     const Fixture f;
     Ortho cam(12, 12, 0.75, -4.5, 4.5, {0, 0, -1});
-    RenderOptions o;
-    o.sampling = Sampling::MonteCarlo;
-    o.hemisphere_samples = 8;
-    o.convergence_min = 8;
-    o.convergence_max = 64;
-    o.threads = 1;
+    RenderOptions o = convergence_8_to_64();
     o.convergence_error = ConvergenceError::Scene;
-    RenderInputs in;
-    in.scene = &f.scene;
-    in.materials = &f.mats;
-    in.atmosphere = &f.atm;
-    in.sensor = &cam;
+    RenderInputs in{&f.scene, &f.atm, &f.mats, &cam};
     o.adjacency = false;
     o.bounces = 1;
     const double grey = grey_ground_radiance(make_context(in, o)).at(0);
