@@ -54,7 +54,7 @@ void add_shared_options(cli::Cli& tool) {
 void add_light_options(cli::Cli& tool) {
     tool.add_options()("sampling", value<std::string>()->value_name("NAME"),
                        "hemisphere sampling: auto (montecarlo, samples until each pixel's "
-                       "error is under 3 % of a grey ground's radiance; the default unless a "
+                       "error is under 5 % of a grey ground's radiance; the default unless a "
                        "sample count is named), golfball (then the default), montecarlo, "
                        "dirsig (DIRSIG 3) or proposed (White's proposed model)")(
         "golfball-jitter", "golfball: each cell's ray at random inside its cell (unbiased)")(

@@ -60,41 +60,35 @@ struct SampleStats {
         if (n < 2) return -1;
         return std::sqrt(m2[b] / static_cast<double>(n - 1) / static_cast<double>(n));
     }
-    // max over bands of standard error / |mean| (0 / 0 counts as 0, x / 0 as infinite).
-    double relative_error() const {
+    // max over bands of standard error / unit(b), with the unit of each band from
+    // `unit_of` (0 / 0 counts as 0, x / 0 as infinite; infinite below 2 samples): the
+    // one loop of the three rules below.
+    template <class Unit>
+    double worst_error(Unit unit_of) const {
         double worst = 0;
         for (std::size_t b = 0; b < mean.size(); ++b) {
             const double se = block_error(b);
             if (se < 0) return std::numeric_limits<double>::infinity();
             if (se == 0) continue;
-            worst = std::max(worst, mean[b] == 0 ? std::numeric_limits<double>::infinity()
-                                                 : se / std::abs(mean[b]));
-        }
-        return worst;
-    }
-    // max over bands of standard error / scale[b]; a band whose scale is not positive
-    // counts as in relative_error (infinite below 2 samples).
-    double scaled_error(const std::vector<double>& scale) const {
-        double worst = 0;
-        for (std::size_t b = 0; b < mean.size(); ++b) {
-            const double se = block_error(b);
-            if (se < 0) return std::numeric_limits<double>::infinity();
-            if (se == 0) continue;
-            const double unit = scale[b] > 0 ? scale[b] : std::abs(mean[b]);
+            const double unit = unit_of(b);
             worst = std::max(worst, unit == 0 ? std::numeric_limits<double>::infinity()
                                               : se / unit);
         }
         return worst;
     }
-    // max over bands of the standard error (infinite below 2 samples).
+    // max over bands of standard error / |mean|.
+    double relative_error() const {
+        return worst_error([&](std::size_t b) { return std::abs(mean[b]); });
+    }
+    // max over bands of standard error / scale[b]; a band whose scale is not positive
+    // counts as in relative_error.
+    double scaled_error(const std::vector<double>& scale) const {
+        return worst_error(
+            [&](std::size_t b) { return scale[b] > 0 ? scale[b] : std::abs(mean[b]); });
+    }
+    // max over bands of the standard error.
     double absolute_error() const {
-        double worst = 0;
-        for (std::size_t b = 0; b < mean.size(); ++b) {
-            const double se = block_error(b);
-            if (se < 0) return std::numeric_limits<double>::infinity();
-            worst = std::max(worst, se);
-        }
-        return worst;
+        return worst_error([](std::size_t) { return 1.0; });
     }
 };
 
