@@ -67,7 +67,11 @@ void add_light_options(cli::Cli& tool) {
         "from above; default), none, or a MATERIAL_ID of the .mat")(
         "sky-lookup", value<std::string>()->value_name("exact|table[:N]"),
         "how rays leaving the scene read the sky: exact (interpolated; default) or "
-        "table (an N x N table, default 64: faster, approximate)");
+        "table (an N x N table, default 64: faster, approximate)")(
+        "open-sky", value<std::string>()->value_name("integrated|sampled"),
+        "montecarlo: the open sky's irradiance on each hit integrated, rays sampling "
+        "only what the scene changes (integrated; the default with --sampling auto), "
+        "or sampled by the rays");
 }
 
 // What is rendered and where it goes: rows, temperatures, coupling, grid, georeferencing,
@@ -223,6 +227,7 @@ void read_rendering_options(const cli::po::variables_map& vm, trace::TraceJob& j
         job.sun_image_planes = static_cast<int>(cli::integer(vm, "sun-images"));
     if (vm.count("sky-lookup"))
         job.sky_table_side = trace::parse_sky_lookup(text(vm, "sky-lookup"));
+    if (vm.count("open-sky")) job.open_sky_integrated = trace::parse_open_sky(text(vm, "open-sky"));
     if (vm.count("rows")) job.rows = trace::parse_rows(vm["rows"].as<std::string>());
     job.tile = cli::tile(vm);
     job.truth_path = text(vm, "truth");

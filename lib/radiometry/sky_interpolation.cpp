@@ -73,9 +73,9 @@ SkyInterpolator::SkyInterpolator(const Atmosphere& atmosphere) : m_atm(atmospher
         }
 }
 
-void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double> out,
-                          bool emitted) const {
-    if (m_rings == 0 || !(dir[2] > 0)) return;
+SkyInterpolator::Stencil SkyInterpolator::stencil(const geo::Vec3& dir, double weight) const {
+    Stencil st;
+    if (m_rings == 0 || !(dir[2] > 0)) return st;
     const double zenith = std::acos(std::min(1.0, dir[2])) * kDegPerRad;
     double azimuth = std::atan2(dir[0], dir[1]) * kDegPerRad;  // clockwise from north
     if (azimuth < 0) azimuth += 360;
@@ -112,18 +112,30 @@ void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double>
                                w * f * g};
     const int cells[4] = {r0 * m_columns + c0, r0 * m_columns + c1, r1 * m_columns + c0,
                           r1 * m_columns + c1};
-    const std::vector<double>& table = emitted ? m_total : m_scattered;
-    double wt[4];
-    const double* v[4];
-    int m = 0;
     for (int i = 0; i < 4; ++i)
         if (weights[i] != 0) {
-            wt[m] = weights[i];
-            v[m++] = table.data() + static_cast<std::size_t>(cells[i]) * m_samples;
+            st.weights[st.count] = weights[i];
+            st.cells[st.count++] = cells[i];
         }
-    add_weighted(wt, v, m, out.first(std::min(out.size(), m_samples)));
-    if (top > 0) {
-        const double t = weight * top;
+    if (top > 0) st.top = weight * top;
+    return st;
+}
+
+std::span<const double> SkyInterpolator::cell(int i, bool emitted) const {
+    const std::vector<double>& table = emitted ? m_total : m_scattered;
+    return {table.data() + static_cast<std::size_t>(i) * m_samples, m_samples};
+}
+
+void SkyInterpolator::add(const geo::Vec3& dir, double weight, std::span<double> out,
+                          bool emitted) const {
+    const Stencil st = stencil(dir, weight);
+    const std::vector<double>& table = emitted ? m_total : m_scattered;
+    const double* v[4];
+    for (int i = 0; i < st.count; ++i)
+        v[i] = table.data() + static_cast<std::size_t>(st.cells[i]) * m_samples;
+    add_weighted(st.weights, v, st.count, out.first(std::min(out.size(), m_samples)));
+    if (st.top != 0) {
+        const double t = st.top;
         const std::size_t n = std::min(out.size(), m_zenith_mean_scattered.size());
         for (std::size_t k = 0; k < n; ++k)
             out[k] += t * (m_zenith_mean_scattered[k] + (emitted ? m_zenith_mean_emitted[k] : 0));

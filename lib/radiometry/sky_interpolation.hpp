@@ -30,6 +30,23 @@ public:
     // direction at or below the horizon or without a sky.
     void add(const geo::Vec3& dir, double weight, std::span<double> out, bool emitted) const;
 
+    // The terms of add(dir, weight): up to four cells with a non-zero weight (cell
+    // index in the atmosphere's order) and the weight of ring 0's azimuthal mean (the
+    // zenith's value). count 0 and top 0 at or below the horizon or without a sky.
+    struct Stencil {
+        int count = 0;
+        int cells[4] = {0, 0, 0, 0};
+        double weights[4] = {0, 0, 0, 0};
+        double top = 0;
+    };
+    Stencil stencil(const geo::Vec3& dir, double weight) const;
+    // Cell i's radiance, L_ds or L_ds + L_de (`emitted`), per spectral sample.
+    std::span<const double> cell(int i, bool emitted) const;
+    int cell_count() const { return m_rings * m_columns; }
+    // Ring 0's cells are 0 to columns() - 1; the zenith's value is their mean.
+    int columns() const { return m_columns; }
+    std::size_t samples() const { return m_samples; }
+
 private:
     const Atmosphere& m_atm;
     int m_rings = 0, m_columns = 0;

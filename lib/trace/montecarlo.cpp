@@ -43,7 +43,10 @@ public:
 
     // n_b directions from Brdf::sample and n_l from the sky map (balance heuristic):
     // each ray's estimate is f L / (n_b p_b + n_l p_l). The delta lobe's mirror term
-    // is one exact ray. Returns the (unbiased) sky-view-factor estimate.
+    // is one exact ray. Returns the (unbiased) sky-view-factor estimate. With the open
+    // sky integrated (open_sky_for): (1 - s) E(n) / pi whole, and each ray f (L - L_sky)
+    // / (n_b p_b), L_sky the interpolated sky where the ray points above the horizon
+    // (0 below it), all rays drawn from the BRDF.
     double add_hemisphere(Tracer& tracer, const MaterialOptics& m, const FacetFrame& f,
                           const Vec3& p, const Vec3& wo_l, double* acc) override {
         Arena& arena = tracer.arena();
@@ -52,9 +55,11 @@ public:
         const TraceContext& c = tracer.context();
         double s = specularity_of(m);
         bool delta = m.brdf.shape() == LobeShape::Delta || m.brdf.shape() == LobeShape::None;
+        // The open sky integrated for a weight (1 - s) cos / pi: no finite lobe.
+        const radiometry::SkyIrradiance* open = has_lobe(m) ? nullptr : open_sky_for(c, m);
         double s_sample = delta ? 0.0 : s;  // the delta part is not sampled
         long total = std::max(1L, c.opt.hemisphere_samples);
-        long n_l = m_light_sampling ? total / 2 : 0;
+        long n_l = m_light_sampling && !open ? total / 2 : 0;
         long n_b = total - n_l;
         double svf = 0;
         for (long i = 0; i < total; ++i) {
@@ -73,10 +78,13 @@ public:
             double denom = static_cast<double>(n_b) * m.brdf.pdf(d_l, wo_l, s_sample);
             if (n_l > 0) denom += static_cast<double>(n_l) * sky_pdf(d_w);
             if (denom <= 0) continue;
-            bool escaped = tracer.incoming(p, d_w, li);
+            bool escaped = open ? incoming_less_sky(tracer, p, d_w, li)
+                                : tracer.incoming(p, d_w, li);
             if (escaped) svf += d_l[2] / kPi / denom;
+            if (open && escaped && d_w[2] > 0) continue;  // L - L_sky = 0
             for (std::size_t k = 0; k < c.n; ++k) acc[k] += fw / denom * li[k];
         }
+        if (open) open->add(f.z, (1 - s) / kPi, {acc, c.n});
         if (has_delta(m)) tracer.add_mirror(s * m.fall_off_cos(wo_l[2]), f, p, wo_l, acc);
         return svf;
     }
@@ -92,9 +100,11 @@ public:
         ArenaScope scope(arena);
         double* li = arena.take();
         const TraceContext& c = tracer.context();
+        // The open sky integrated for the diffuse part when no lobe shares the rays.
+        const radiometry::SkyIrradiance* open = w.lobe ? nullptr : open_sky_for(c, m);
         const double p_lobe = w.lobe ? w.lobe_probability : 0.0;
         const long total = std::max(1L, c.opt.hemisphere_samples);
-        const long n_l = m_light_sampling ? total / 2 : 0;
+        const long n_l = m_light_sampling && !open ? total / 2 : 0;
         const long n_b = total - n_l;
         double svf = 0;
         for (long i = 0; i < total; ++i) {
@@ -114,18 +124,38 @@ public:
             const double fall_off = m.fall_off_cos(d_l[2]) / denom;
             const double fd = w.diffuse * d_l[2] / kPi * fall_off;
             const double fs = w.lobe ? w.specular * m.brdf.lobe_weight(d_l, wo_l) * fall_off : 0.0;
-            if (tracer.incoming(p, d_w, li)) svf += d_l[2] / kPi / denom;
+            const bool escaped = open ? incoming_less_sky(tracer, p, d_w, li)
+                                      : tracer.incoming(p, d_w, li);
+            if (escaped) svf += d_l[2] / kPi / denom;
+            if (open && escaped && d_w[2] > 0) continue;  // L - L_sky = 0
             for (std::size_t k = 0; k < c.n; ++k) {
                 diffuse[k] += fd * li[k];
                 specular[k] += fs * li[k];
             }
         }
+        if (open) open->add(f.z, w.diffuse / kPi, {diffuse, c.n});
         if (w.delta) tracer.add_mirror(w.specular * m.fall_off_cos(wo_l[2]), f, p, wo_l, specular);
         return svf;
     }
 
 private:
     const radiometry::Atmosphere& m_atm;
+
+    // The open-sky table when the render integrates the open sky and m's fall-off is
+    // flat (the caller checks that no lobe shares the rays: the weight is then (1 - s)
+    // cos / pi, the table's integrand); else null.
+    static const radiometry::SkyIrradiance* open_sky_for(const TraceContext& c,
+                                                         const MaterialOptics& m) {
+        return m.flat_fall_off ? c.open_sky.get() : nullptr;
+    }
+    // L - L_sky along d_w into li: the scene's radiance (incoming_from_scene) less the
+    // interpolated sky where d_w points above the horizon. True if the ray escapes.
+    static bool incoming_less_sky(Tracer& tracer, const Vec3& p, const Vec3& d_w, double* li) {
+        const TraceContext& c = tracer.context();
+        const bool escaped = tracer.incoming_from_scene(p, d_w, li);
+        if (!escaped && d_w[2] > 0) c.sky->add(d_w, -1.0, {li, c.n}, c.emission);
+        return escaped;
+    }
     std::vector<double> m_sky_prob, m_sky_cdf;
     bool m_light_sampling = false;
 

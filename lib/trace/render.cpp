@@ -438,6 +438,7 @@ RenderResult render_streamed(const RenderInputs& inputs, const RenderOptions& op
     res.stats.background = c.background.description;
     res.stats.bounces = bounce_report(c);
     res.stats.sky_lookup = sky_lookup_description(c);
+    res.stats.open_sky = open_sky_description(c);
     res.stats.convergence_scale = convergence_scale_report(c);
     if (res.stats.sky_samples + res.stats.background_samples == 0)
         res.stats.skipped.push_back("the world beyond the scene for primary rays (none left it)");

@@ -81,6 +81,12 @@ struct RenderOptions {
     // table (radiometry/sky_table.hpp) instead of interpolating it; 0 (exact): they
     // interpolate (radiometry/sky_interpolation.hpp).
     int sky_table_side = 0;
+    // --open-sky integrated (montecarlo): a primary hit's open-sky irradiance E(n) / pi
+    // added whole from radiometry::SkyIrradiance, its hemisphere rays sampling only what
+    // the scene changes (a control variate: rays that reach the sky carry no variance),
+    // for materials whose hemisphere weight is (1 - s) cos / pi with a flat fall-off;
+    // false (sampled): the rays sample the sky too.
+    bool open_sky_integrated = false;
     double meters_per_unit = 1;  // scene units -> metres (transmission, range)
     // Ground-sky coupling and adjacency effect (adjacency.hpp; trace(1) RADIOMETRY):
     // on when the .rad has COUPLING terms; the environment's mean reflectance is taken
@@ -124,6 +130,7 @@ struct RenderStats {
     std::string background;            // how the background world was made (world.hpp)
     std::string bounces;               // the bounce depth and its estimate, for --verbose
     std::string sky_lookup;            // how the sky is read (world.hpp), for --verbose
+    std::string open_sky;              // --open-sky integrated's table, for --verbose
     std::string convergence_scale;     // --convergence-error scene's L_grey, for --verbose
 };
 

@@ -95,6 +95,8 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
     }
     c.sky.emplace(atm);
     if (opt.sky_table_side > 0) c.sky_table.emplace(atm, opt.sky_table_side, c.emission);
+    if (opt.open_sky_integrated && atm.has_sky())
+        c.open_sky = std::make_shared<const radiometry::SkyIrradiance>(atm, c.emission);
     c.column_depth = atm.column_optical_depth();
     if (opt.convergence_min > 0 && opt.convergence_error == ConvergenceError::Scene)
         c.grey_radiance = grey_ground_radiance(c);

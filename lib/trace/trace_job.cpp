@@ -224,7 +224,8 @@ std::string sampling_report(const TraceJob& job, const RenderOptions& o) {
                sampling_name(o.sampling) + " sampling";
     char bound[32];
     std::snprintf(bound, sizeof bound, "%g", 100 * kAccuracySampling.pixel_bound());
-    return count + ", montecarlo sampling with 1 hemisphere ray per sample, chosen by "
+    return count + ", montecarlo sampling with 1 hemisphere ray per sample" +
+           (o.open_sky_integrated ? " and the open sky integrated" : "") + ", chosen by "
            "accuracy (--sampling auto, the default): samples where they lower the image's "
            "error most, each pixel's standard error under " + std::string(bound) +
            " % of a 20 % grey ground's radiance in every band";
@@ -245,6 +246,8 @@ RenderOptions render_options(const TraceJob& job, const Setup& st) {
     if (job.sun_image_planes) options.sun_image_planes = *job.sun_image_planes;
     parse_background(job.background, options);
     options.sky_table_side = job.sky_table_side;
+    options.open_sky_integrated =
+        job.open_sky_integrated.value_or(by_accuracy && kAccuracySampling.open_sky_integrated);
     options.golfball_jitter = job.golfball_jitter;
     options.seed = job.seed;
     options.threads = job.threads;
@@ -277,6 +280,7 @@ void report_stats(const RenderStats& s, long pixels, const Reporter& reporter) {
     if (!s.background.empty()) reporter.info(s.background);
     if (!s.bounces.empty()) reporter.info(s.bounces);
     if (!s.sky_lookup.empty()) reporter.info(s.sky_lookup);
+    if (!s.open_sky.empty()) reporter.info(s.open_sky);
     if (!s.convergence_scale.empty()) reporter.info(s.convergence_scale);
     if (pixels > 0)
         reporter.info(

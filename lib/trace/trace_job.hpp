@@ -49,6 +49,9 @@ struct TraceJob {
     std::string background = "mean";        // "mean", "none" or a MATERIAL_ID (world.hpp)
     std::optional<int> sun_image_planes;     // --sun-images; default: RenderOptions's
     int sky_table_side = 0;                  // --sky-lookup table:N; 0: exact (RenderOptions)
+    // --open-sky integrated (true) or sampled (false); unset: integrated with --sampling
+    // auto, sampled otherwise (RenderOptions::open_sky_integrated).
+    std::optional<bool> open_sky_integrated;
     std::uint64_t seed = 1;
     unsigned threads = 0;                       // 0: all cores
     std::optional<std::pair<long, long>> rows;  // [begin, end); default: every row
@@ -94,14 +97,16 @@ ConvergenceError parse_convergence_error(const std::string& name);
 std::string sampling_name(Sampling sampling);
 
 // The sampling of --sampling auto, trace's default (trace(1) SAMPLING BY ACCURACY):
-// montecarlo with one hemisphere ray per camera ray, camera rays added in batches of
-// `convergence.min` at each pixel's (0,2)-sequence until one more would lower the
-// pixel's variance by less than (threshold L_grey)^2 / min in every band (the scene
+// montecarlo with one hemisphere ray per camera ray and the open sky integrated, camera
+// rays added in batches of `convergence.min` at each pixel's (0,2)-sequence until one
+// more would lower the pixel's variance by less than (threshold L_grey)^2 / min in every band (the scene
 // rule: samples in proportion to each pixel's spread, the least image RMS per ray), or
 // `convergence.max` rays; a pixel that stopped after n has a standard error under
 // threshold sqrt(n / min) L_grey, at most 5 % of L_grey (n <= max = 64 min).
 struct AccuracySampling {
     Convergence convergence{8, 512, 0.05 / 8, ConvergenceError::Scene};
+    // The open sky integrated (--open-sky integrated) unless --open-sky sampled is given.
+    bool open_sky_integrated = true;
     // The per-pixel bound the rule keeps: threshold sqrt(max / min), relative to L_grey.
     double pixel_bound() const {
         return convergence.threshold *
@@ -118,6 +123,8 @@ void parse_background(const std::string& text, RenderOptions& options);
 // from SkyTable::kMinSide to kMaxSide) as RenderOptions::sky_table_side; else UsageError.
 inline constexpr int kDefaultSkyTableSide = 64;
 int parse_sky_lookup(const std::string& text);
+// --open-sky: "integrated" (true) or "sampled" (false); else UsageError.
+bool parse_open_sky(const std::string& text);
 // "auto" (kAutoBounces) or an integer 0 to kMaxBounces; else UsageError.
 int parse_bounces(const std::string& text);
 // "A:B" with 0 <= A < B (integers) as [A, B); else UsageError naming `option`.

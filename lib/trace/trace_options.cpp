@@ -84,6 +84,12 @@ int parse_sky_lookup(const std::string& text) {
                      std::to_string(SkyTable::kMaxSide) + "), not '" + text + "'");
 }
 
+bool parse_open_sky(const std::string& text) {
+    if (text == "integrated") return true;
+    if (text == "sampled") return false;
+    throw UsageError("--open-sky: expected integrated or sampled, not '" + text + "'");
+}
+
 std::string sampling_name(Sampling sampling) {
     switch (sampling) {
         case Sampling::Dirsig:
@@ -196,6 +202,10 @@ void check_sampling(const TraceJob& job) {
                 throw UsageError(std::string("--sampling auto chooses its own samples: not with ") +
                                  option);
     }
+    if (job.open_sky_integrated.value_or(false) && !job.accuracy_sampling &&
+        job.sampling != Sampling::MonteCarlo)
+        throw UsageError("--open-sky integrated: only with --sampling montecarlo or auto (" +
+                         sampling_name(job.sampling) + " samples the sky in fixed directions)");
     if (job.hemisphere_samples && *job.hemisphere_samples < 1)
         throw UsageError("--hemisphere-samples: expected at least 1");
     if (job.max_transmissions && *job.max_transmissions < 0)

@@ -104,23 +104,29 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
         if (depth > 0) add_world(origin, dir, out);
         return hit;
     }
-    refine(origin, dir, *hit);
+    shade_hit(origin, dir, *hit, depth, transmissions, out, truth);
+    return hit;
+}
+
+void Tracer::shade_hit(const Vec3& origin, const Vec3& dir, scene::Hit& hit, int depth,
+                       int transmissions, double* out, HitTruth* truth) {
+    refine(origin, dir, hit);
     ++m_counters.hits;
-    const MaterialOptics& m = material_of(*hit);
-    const auto& a = m_c.in.scene->attributes(*hit);
-    Vec3 n = hit->normal;
+    const MaterialOptics& m = material_of(hit);
+    const auto& a = m_c.in.scene->attributes(hit);
+    Vec3 n = hit.normal;
     if (geo::dot(n, dir) > 0) n = geo::scale(n, -1);
-    Vec3 point = geo::add(origin, geo::scale(dir, hit->distance));
+    Vec3 point = geo::add(origin, geo::scale(dir, hit.distance));
     Vec3 wo = geo::scale(dir, -1);
-    bool black = back_is_black(m, hit->normal, dir);
+    bool black = back_is_black(m, hit.normal, dir);
     if (black) {
         // the back of a single-sided facet reflects and emits nothing
     } else if (depth == 0) {
-        shade_full(*hit, m, a, point, n, wo, out, truth);
+        shade_full(hit, m, a, point, n, wo, out, truth);
     } else if (depth < m_c.bounces) {
-        shade_path(*hit, m, a, point, n, wo, depth, out);
+        shade_path(hit, m, a, point, n, wo, depth, out);
     } else if (depth == m_c.bounces) {
-        shade_one_bounce(*hit, m, a, point, n, wo, out);
+        shade_one_bounce(hit, m, a, point, n, wo, out);
     }
     if (m.transmissive && transmissions < m_c.opt.max_transmissions) {
         ArenaScope scope(m_arena);
@@ -131,10 +137,9 @@ std::optional<scene::Hit> Tracer::along(const Vec3& origin, const Vec3& dir, dou
             ++m_counters.primary;
         else
             ++m_counters.secondary;
-        along(origin, dir, hit->distance + m_c.eps, depth, transmissions + 1, behind, nullptr);
+        along(origin, dir, hit.distance + m_c.eps, depth, transmissions + 1, behind, nullptr);
         for (std::size_t k = 0; k < m_c.n; ++k) out[k] += t[k] * behind[k];
     }
-    return hit;
 }
 
 // A secondary ray that left the scene: the sky above the horizon, the background
@@ -176,6 +181,18 @@ bool Tracer::incoming(const Vec3& p, const Vec3& d, double* li) {
     std::fill(li, li + m_c.n, 0.0);
     ++m_counters.secondary;
     return !along(p, d, 0.0, 1, 0, li, nullptr).has_value();
+}
+
+bool Tracer::incoming_from_scene(const Vec3& p, const Vec3& d, double* li) {
+    std::fill(li, li + m_c.n, 0.0);
+    ++m_counters.secondary;
+    auto hit = m_c.in.scene->intersect(p, d, 0.0, INFINITY);
+    if (!hit) {
+        if (!(d[2] > 0)) add_world(p, d, li);  // the background plane, or nothing
+        return true;
+    }
+    shade_hit(p, d, *hit, 1, 0, li, nullptr);
+    return false;
 }
 
 void Tracer::add_mirror(double s, const FacetFrame& f, const Vec3& p, const Vec3& wo_l,

@@ -29,6 +29,7 @@
 #include "trace/arena.hpp"
 #include "trace/bounce_estimate.hpp"
 #include "radiometry/sky_interpolation.hpp"
+#include "radiometry/sky_irradiance.hpp"
 #include "radiometry/sky_table.hpp"
 #include "trace/render_options.hpp"
 #include "trace/world.hpp"
@@ -65,6 +66,9 @@ struct TraceContext {
     // With RenderOptions::sky_table_side > 0: that sky tabulated (sky_table.hpp), read
     // instead of it by add_sky (world.hpp).
     std::optional<radiometry::SkyTable> sky_table;
+    // With RenderOptions::open_sky_integrated: the open sky's irradiance by facet
+    // normal (sky_irradiance.hpp), of the same interpolated sky as `sky`.
+    std::shared_ptr<const radiometry::SkyIrradiance> open_sky;
     // The column's vertical optical depth per sample (Atmosphere::column_optical_depth;
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;
@@ -181,6 +185,10 @@ public:
     // For the strategies. Radiance along a secondary ray from p (just above the
     // facet) in world direction d into `li` (zeroed here); true if it escapes to the sky.
     bool incoming(const geo::Vec3& p, const geo::Vec3& d, double* li);
+    // The same without the open sky (--open-sky integrated, the control variate): a ray
+    // that escapes upward brings nothing; one that hits a facet its radiance, one that
+    // escapes below the horizon the background's. True if it escapes.
+    bool incoming_from_scene(const geo::Vec3& p, const geo::Vec3& d, double* li);
     // Exact mirror term s L_i(mirror) of a delta lobe, added to `acc`.
     void add_mirror(double s, const FacetFrame& f, const geo::Vec3& p, const geo::Vec3& wo_l,
                     double* acc);
@@ -211,6 +219,10 @@ private:
     double sun_visibility(const geo::Vec3& p, double* vis);
     std::optional<scene::Hit> along(const geo::Vec3& origin, const geo::Vec3& dir, double tnear,
                                     int depth, int transmissions, double* out, HitTruth* truth);
+    // along()'s work once the ray has hit: the facet's radiance toward origin, as deep as
+    // `depth` says, plus what its transmission lets through.
+    void shade_hit(const geo::Vec3& origin, const geo::Vec3& dir, scene::Hit& hit, int depth,
+                   int transmissions, double* out, HitTruth* truth);
     void refine(const geo::Vec3& origin, const geo::Vec3& dir, scene::Hit& hit) const;
     void add_world(const geo::Vec3& origin, const geo::Vec3& dir, double* out) const;
     void shade_one_bounce(const scene::Hit& hit, const radiometry::MaterialOptics& m,

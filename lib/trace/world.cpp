@@ -145,6 +145,23 @@ std::string sky_lookup_description(const TraceContext& c) {
     return buf;
 }
 
+std::string open_sky_description(const TraceContext& c) {
+    if (!c.open_sky) return "";
+    const auto& materials = c.in.materials->materials();
+    long served = 0;
+    for (const auto& m : materials) served += m.flat_fall_off && !has_lobe(m) ? 1 : 0;
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "open sky: integrated over each primary hit's hemisphere (a table by facet "
+                  "normal, %g x %g deg, %zu of %zu nodes computed), hemisphere rays sample what "
+                  "the scene changes; for %ld of %zu material(s) (the others have a lobe or a "
+                  "fall-off: their rays sample the sky)",
+                  radiometry::SkyIrradiance::kZenithStepDeg,
+                  radiometry::SkyIrradiance::kAzimuthStepDeg, c.open_sky->nodes_computed(),
+                  c.open_sky->node_count(), served, materials.size());
+    return buf;
+}
+
 void effective_sky(const TraceContext& c, const Sensor& sensor, const Vec3& dir, double* out,
                    double* tau2, double* lus, double* lue) {
     const std::size_t n = c.n;

@@ -73,6 +73,9 @@ void add_sky(const TraceContext& c, const geo::Vec3& dir, double* out);
 // How add_sky reads the sky, for --verbose: "sky lookup: exact (...)" or
 // "sky lookup: table N x N (...)".
 std::string sky_lookup_description(const TraceContext& c);
+// With --open-sky integrated, for --verbose: the table, how many of its nodes the render
+// computed, and the materials it serves; "" otherwise.
+std::string open_sky_description(const TraceContext& c);
 
 // The effective sky radiance (header) of a primary ray `dir` (dir[2] > 0) into `out`;
 // tau2, lus and lue are scratch; every buffer holds the context's n samples.

@@ -222,21 +222,23 @@ band_bytes() {
     [[ "$stderr" == *"emission is left out"* ]] || fail "$stderr"
     [[ "$stderr" == *" rays ("*" primary, "*"Mrays/s"* ]] || fail "$stderr"
     # The default sampling (by accuracy) says what it chose and the scale of its error.
-    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample, chosen by accuracy (--sampling auto, the default)"* ]] ||
+    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample and the open sky integrated, chosen by accuracy (--sampling auto, the default)"* ]] ||
         fail "$stderr"
+    assert_regex "$stderr" "open sky: integrated over each primary hit's hemisphere \(a table by facet normal, 3 x 6 deg, [0-9]+ of 3660 nodes computed\).*for 2 of 2 material\(s\)"
     assert_regex "$stderr" "convergence scale \(radiance of a 20 % grey ground at nadir, W cm-2 sr-1 um-1, per band\): [0-9.e-]+ [0-9.e-]+"$'\n'
     # A count without a strategy: the golf ball, at that count.
     run -0 --separate-stderr trace -v $(inputs) --samples-per-pixel 4 -o out.img
     [[ "$stderr" == *"4 sample(s) per pixel, golfball sampling"* ]] || fail "$stderr"
     [[ "$stderr" == *"1024 primary"* ]] || fail "16 x 16 x 4 primary rays: $stderr"
     [[ "$stderr" != *"convergence scale"* ]] || fail "$stderr"
+    [[ "$stderr" != *"open sky"* ]] || fail "$stderr"
 }
 
 @test "trace --sampling auto: the default, chosen by accuracy, repeatable, said by -v; not with a count of its own" {
     # montecarlo, 1 hemisphere ray, samples by the scene rule (trace(1) SAMPLING BY
     # ACCURACY); the same cube for any thread count.
     run -0 --separate-stderr trace -v --sampling auto $(inputs) -o auto.img --threads 1
-    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample, chosen by accuracy (--sampling auto, the default)"* ]] ||
+    [[ "$stderr" == *"8 to 512 sample(s) per pixel, montecarlo sampling with 1 hemisphere ray per sample and the open sky integrated, chosen by accuracy (--sampling auto, the default)"* ]] ||
         fail "$stderr"
     [[ "$stderr" == *"primary sample(s) per pixel on average, at most "* ]] || fail "$stderr"
     trace_ok --sampling auto $(inputs) -o auto2.img --threads 2
@@ -244,13 +246,38 @@ band_bytes() {
     # Without --sampling it is the default, byte for byte.
     trace_ok $(inputs) -o default.img
     run -0 cmp auto.img default.img
-    # It is --convergence 8,512,0.00625 --convergence-error scene with montecarlo and one
-    # hemisphere ray, byte for byte.
-    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 1 --convergence 8,512,0.00625 \
-        --convergence-error scene -o named.img
+    # It is --convergence 8,512,0.00625 --convergence-error scene with montecarlo, one
+    # hemisphere ray and the open sky integrated, byte for byte.
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 1 --open-sky integrated \
+        --convergence 8,512,0.00625 --convergence-error scene -o named.img
     run -0 cmp auto.img named.img
     trace_bad 2 "--sampling auto chooses its own samples: not with --convergence" \
         --sampling auto --convergence 4,8,0.1 $(inputs) -o out.img
+}
+
+@test "trace --open-sky: integrated by default with auto, sampled with montecarlo; bad values refused" {
+    # montecarlo alone keeps the sampled sky, byte for byte.
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 4 -o mc.img
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 4 --open-sky sampled -o sampled.img
+    run -0 cmp mc.img sampled.img
+    # integrated: another cube, the same for any thread count.
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 4 --open-sky integrated \
+        --threads 1 -o cv1.img
+    trace_ok $(inputs) --sampling montecarlo --hemisphere-samples 4 --open-sky integrated \
+        --threads 2 -o cv2.img
+    run -0 cmp cv1.img cv2.img
+    run -1 cmp -s cv1.img mc.img
+    # auto with the sky sampled: no open-sky line, and not the default's cube.
+    run -0 --separate-stderr trace -v $(inputs) --open-sky sampled -o autosampled.img
+    [[ "$stderr" == *"1 hemisphere ray per sample, chosen by accuracy"* ]] || fail "$stderr"
+    [[ "$stderr" != *"open sky"* ]] || fail "$stderr"
+    trace_ok $(inputs) -o default.img
+    run -1 cmp -s autosampled.img default.img
+    trace_bad 2 "--open-sky: expected integrated or sampled, not 'yes'" \
+        --open-sky yes $(inputs) -o out.img
+    trace_bad 2 "--open-sky integrated: only with --sampling montecarlo or auto (golfball samples the sky in fixed directions)" \
+        --sampling golfball --open-sky integrated $(inputs) -o out.img
+    [ ! -e out.img ]
 }
 
 @test "trace -v splits the wall time into the set-up's phases and the render" {

@@ -251,6 +251,7 @@ const std::map<std::string, std::string> kRenderValues{{"co", "COMPRESS=DEFLATE"
                                                        {"crs", "none"},
                                                        {"like", "l.tif"},
                                                        {"sky-lookup", "table"},
+                                                       {"open-sky", "sampled"},
                                                        {"radiance-units", "W/m2/sr/um"},
                                                        {"igm", "i.tif"},
                                                        {"glt", "g.tif"},

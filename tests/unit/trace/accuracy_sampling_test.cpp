@@ -60,6 +60,7 @@ RenderOptions accuracy_options() {
     const Convergence& c = kAccuracySampling.convergence;
     o.sampling = Sampling::MonteCarlo;
     o.hemisphere_samples = 1;
+    o.open_sky_integrated = kAccuracySampling.open_sky_integrated;
     o.convergence_min = c.min;
     o.convergence_max = c.max;
     o.convergence_threshold = c.threshold;

@@ -188,7 +188,7 @@ constexpr long kHemisphere = 1024;  // montecarlo rays per primary hit
 
 // The floor centre line's radiance per pixel (tau2 = 1 and no path radiance: the
 // pixel is the floor's leaving radiance).
-std::vector<double> render_floor(int bounces) {
+std::vector<double> render_floor(int bounces, bool open_sky_integrated = false) {
     const CanyonScene& c = canyon();
     Ortho cam(kPixels, 1, 0.05, -0.025, 6.4, {0, 0, -1});
     RenderInputs in;
@@ -200,6 +200,7 @@ std::vector<double> render_floor(int bounces) {
     o.sampling = Sampling::MonteCarlo;
     o.bounces = bounces;
     o.hemisphere_samples = kHemisphere;
+    o.open_sky_integrated = open_sky_integrated;
     o.background = BackgroundChoice::None;  // nothing below the horizon: the canyon is closed
     o.threads = 2;
     RenderResult res = render(in, o);
@@ -309,6 +310,21 @@ TEST(Canyon, EachBounceBrightensTheFloorByTheExpectedAmount) {
         EXPECT_NEAR(m.mean, want,
                     4 * m.standard_error + kBias * reference().floor_radiance(0, n + 1))
             << n << " -> " << n + 1;
+    }
+}
+
+TEST(Canyon, OpenSkyIntegratedMatchesTheRadiosityReference) {
+    // --open-sky integrated: the floor's open-sky irradiance pi L from the table
+    // (straight up: a node, 6e-6 of E), the rays only the walls' radiance less the sky
+    // they hide. Same reference and tolerance as the sampled sky's.
+    for (int n : {0, 1, 2}) {
+        const MeanError m = mean_error(render_floor(n, true));
+        const double want = reference().floor_radiance(0, n);
+        std::printf("canyon floor centre, %d bounce(s), open sky integrated: render %.5f +- "
+                    "%.5f, reference %.5f\n",
+                    n, m.mean, m.standard_error, want);
+        EXPECT_LT(m.standard_error, 0.002 * want) << n << " bounces";
+        EXPECT_NEAR(m.mean, want, 4 * m.standard_error + kBias * want) << n << " bounces";
     }
 }
 
