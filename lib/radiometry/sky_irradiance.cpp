@@ -3,14 +3,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/numeric.hpp"
 
 namespace sigchain::radiometry {
 
-SkyIrradiance::SkyIrradiance(const Atmosphere& atmosphere, bool emitted)
+SkyIrradiance::SkyIrradiance(const Atmosphere& atmosphere, bool emitted,
+                             std::function<double(double)> fall_off)
     : m_sky(atmosphere),
       m_emitted(emitted),
+      m_fall_off(std::move(fall_off)),
       m_once(std::make_unique<std::once_flag[]>(static_cast<std::size_t>(kZenithNodes) *
                                                 kAzimuthNodes)),
       m_nodes(static_cast<std::size_t>(kZenithNodes) * kAzimuthNodes) {
@@ -34,12 +37,13 @@ void SkyIrradiance::integrate(const geo::Vec3& n, std::span<double> out) const {
     std::fill(out.begin(), out.end(), 0.0);
     const int cells = m_sky.cell_count();
     if (cells == 0) return;
-    // W_c(n): each cell's weight summed over the grid, times n . omega.
+    // W_c(n): each cell's weight summed over the grid, times n . omega (and F).
     std::vector<double> w(static_cast<std::size_t>(cells), 0.0);
     double top = 0;
     for (const Direction& g : m_grid) {
-        const double c = geo::dot(n, g.d);
+        double c = geo::dot(n, g.d);
         if (!(c > 0)) continue;
+        if (m_fall_off) c *= m_fall_off(c);
         for (int i = 0; i < g.stencil.count; ++i)
             w[static_cast<std::size_t>(g.stencil.cells[i])] += c * g.stencil.weights[i];
         top += c * g.stencil.top;

@@ -1,7 +1,9 @@
 // The open sky's irradiance on a facet of any orientation (trace --open-sky integrated):
-//   E(n) = Int over the sky (omega_z > 0) with n . omega > 0 of L(omega) (n . omega) d omega,
+//   E(n) = Int over the sky (omega_z > 0) with n . omega > 0 of L(omega) (n . omega)
+//          F(n . omega) d omega,
 // L the four-neighbour interpolation of SkyInterpolator (White (1996), section 5.2.3
-// step 4), n the facet's unit normal (ENU). It is the control variate of trace's
+// step 4), n the facet's unit normal (ENU), F a material's incoming fall-off (White
+// (1996), section 5.2.3; ems(5) FALL-OFF) or 1. It is the control variate of trace's
 // hemisphere rays: a facet's open-sky irradiance E(n) / pi is added whole, and the rays
 // sample only what the scene changes (L_scene - L_sky where a ray is blocked), so rays
 // that reach the open sky carry no variance (the control-variate estimator, Kalos &
@@ -20,6 +22,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -36,9 +39,10 @@ public:
     static constexpr int kZenithNodes = 61, kAzimuthNodes = 60;  // 0..180 deg, 0..354 deg
     static constexpr int kQuadratureZenith = 180, kQuadratureAzimuth = 360;
 
-    // From the atmosphere's sky, interpolated (L_ds, plus L_de when `emitted`); the
-    // atmosphere must outlive this object.
-    SkyIrradiance(const Atmosphere& atmosphere, bool emitted);
+    // From the atmosphere's sky, interpolated (L_ds, plus L_de when `emitted`), with the
+    // fall-off F(cos) (none: 1); the atmosphere must outlive this object.
+    SkyIrradiance(const Atmosphere& atmosphere, bool emitted,
+                  std::function<double(double)> fall_off = {});
 
     // Adds weight * E(n) to `out` (its first min(out.size(), samples) values): the
     // table's bilinear interpolation between the four nodes around n (unit length).
@@ -56,6 +60,7 @@ private:
     };
     SkyInterpolator m_sky;
     bool m_emitted = false;
+    std::function<double(double)> m_fall_off;
     std::vector<Direction> m_grid;
     std::unique_ptr<std::once_flag[]> m_once;
     mutable std::vector<std::vector<double>> m_nodes;

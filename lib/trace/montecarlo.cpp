@@ -141,12 +141,12 @@ public:
 private:
     const radiometry::Atmosphere& m_atm;
 
-    // The open-sky table when the render integrates the open sky and m's fall-off is
-    // flat (the caller checks that no lobe shares the rays: the weight is then (1 - s)
-    // cos / pi, the table's integrand); else null.
+    // m's open-sky table when the render integrates the open sky (the caller checks
+    // that no lobe shares the rays: the weight is then (1 - s) cos F / pi, the table's
+    // integrand); else null.
     static const radiometry::SkyIrradiance* open_sky_for(const TraceContext& c,
                                                          const MaterialOptics& m) {
-        return m.flat_fall_off ? c.open_sky.get() : nullptr;
+        return open_sky_of(c, m);
     }
     // L - L_sky along d_w into li: the scene's radiance (incoming_from_scene) less the
     // interpolated sky where d_w points above the horizon. True if the ray escapes.

@@ -1,6 +1,7 @@
 // The render's shared state (make_context), the facet frame, and the material
 // lookups every part of the tracer uses (tracer.hpp).
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "core/error.hpp"
@@ -52,6 +53,27 @@ void facet_temperatures(const RenderInputs& in, TraceContext& c) {
     }
 }
 
+// The open-sky tables (TraceContext::open_sky): one per distinct incoming fall-off
+// (materials that share one share its table), each weighted by its materials' F.
+void make_open_sky(TraceContext& c) {
+    const auto& atm = *c.in.atmosphere;
+    std::vector<const MaterialOptics*> owners;  // the first material of each table
+    for (const MaterialOptics& m : c.in.materials->materials()) {
+        std::size_t t = 0;
+        while (t < owners.size() && !(owners[t]->flat_fall_off == m.flat_fall_off &&
+                                      (m.flat_fall_off || owners[t]->fall_off == m.fall_off)))
+            ++t;
+        if (t == owners.size()) {
+            owners.push_back(&m);
+            std::function<double(double)> fall_off;
+            if (!m.flat_fall_off) fall_off = [&m](double cos) { return m.fall_off_cos(cos); };
+            c.open_sky_tables.push_back(
+                std::make_shared<const radiometry::SkyIrradiance>(atm, c.emission, fall_off));
+        }
+        c.open_sky[&m] = c.open_sky_tables[t].get();
+    }
+}
+
 }  // namespace
 
 std::vector<double> grey_ground_radiance(const TraceContext& c, double reflectance) {
@@ -95,8 +117,7 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
     }
     c.sky.emplace(atm);
     if (opt.sky_table_side > 0) c.sky_table.emplace(atm, opt.sky_table_side, c.emission);
-    if (opt.open_sky_integrated && atm.has_sky())
-        c.open_sky = std::make_shared<const radiometry::SkyIrradiance>(atm, c.emission);
+    if (opt.open_sky_integrated && atm.has_sky()) make_open_sky(c);
     c.column_depth = atm.column_optical_depth();
     if (opt.convergence_min > 0 && opt.convergence_error == ConvergenceError::Scene)
         c.grey_radiance = grey_ground_radiance(c);
@@ -106,6 +127,11 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
     find_mirror_planes(c);
     if (opt.uncertainty_layers) prepare_uncertainty(c);
     return c;
+}
+
+const radiometry::SkyIrradiance* open_sky_of(const TraceContext& c, const MaterialOptics& m) {
+    const auto it = c.open_sky.find(&m);
+    return it == c.open_sky.end() ? nullptr : it->second;
 }
 
 FacetFrame::FacetFrame(const geo::Vec3& n) : z(n) {

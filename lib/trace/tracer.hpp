@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/numeric.hpp"
@@ -67,8 +68,11 @@ struct TraceContext {
     // instead of it by add_sky (world.hpp).
     std::optional<radiometry::SkyTable> sky_table;
     // With RenderOptions::open_sky_integrated: the open sky's irradiance by facet
-    // normal (sky_irradiance.hpp), of the same interpolated sky as `sky`.
-    std::shared_ptr<const radiometry::SkyIrradiance> open_sky;
+    // normal (sky_irradiance.hpp), of the same interpolated sky as `sky`, one table per
+    // distinct incoming fall-off, and each material's table (open_sky_of).
+    std::vector<std::shared_ptr<const radiometry::SkyIrradiance>> open_sky_tables;
+    std::unordered_map<const radiometry::MaterialOptics*, const radiometry::SkyIrradiance*>
+        open_sky;
     // The column's vertical optical depth per sample (Atmosphere::column_optical_depth;
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;
@@ -92,6 +96,10 @@ struct TraceContext {
 };
 
 TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
+// Material m's open-sky table (TraceContext::open_sky), or null when the open sky is
+// sampled.
+const radiometry::SkyIrradiance* open_sky_of(const TraceContext& c,
+                                             const radiometry::MaterialOptics& m);
 // Per band, the radiance at the sensor at the band-centre sample of a Lambertian ground
 // of `reflectance` in the open, seen at nadir (view angle 0 of the .rad tables) under
 // the context's sun and sky (trace_context.cpp): --convergence-error scene's scale.

@@ -146,19 +146,22 @@ std::string sky_lookup_description(const TraceContext& c) {
 }
 
 std::string open_sky_description(const TraceContext& c) {
-    if (!c.open_sky) return "";
+    if (c.open_sky_tables.empty()) return "";
     const auto& materials = c.in.materials->materials();
     long served = 0;
-    for (const auto& m : materials) served += m.flat_fall_off && !has_lobe(m) ? 1 : 0;
+    for (const auto& m : materials) served += has_lobe(m) ? 0 : 1;
+    std::size_t nodes = 0;
+    for (const auto& t : c.open_sky_tables) nodes += t->nodes_computed();
     char buf[400];
     std::snprintf(buf, sizeof buf,
-                  "open sky: integrated over each primary hit's hemisphere (a table by facet "
-                  "normal, %g x %g deg, %zu of %zu nodes computed), hemisphere rays sample what "
-                  "the scene changes; for %ld of %zu material(s) (the others have a lobe or a "
-                  "fall-off: their rays sample the sky)",
-                  radiometry::SkyIrradiance::kZenithStepDeg,
-                  radiometry::SkyIrradiance::kAzimuthStepDeg, c.open_sky->nodes_computed(),
-                  c.open_sky->node_count(), served, materials.size());
+                  "open sky: integrated over each primary hit's hemisphere (%zu table(s) by "
+                  "facet normal, one per incoming fall-off, %g x %g deg, %zu of %zu nodes "
+                  "computed), hemisphere rays sample what the scene changes; for %ld of %zu "
+                  "material(s) (the others have a specular lobe: their rays sample the sky)",
+                  c.open_sky_tables.size(), radiometry::SkyIrradiance::kZenithStepDeg,
+                  radiometry::SkyIrradiance::kAzimuthStepDeg, nodes,
+                  c.open_sky_tables.size() * c.open_sky_tables.front()->node_count(), served,
+                  materials.size());
     return buf;
 }
 

@@ -80,6 +80,27 @@ TEST(SkyIrradiance, UniformSkyGivesTheClosedFormAtEveryTilt) {
 
 }
 
+// A material's incoming fall-off weights the integrand: with F = cos (of the angle
+// from the normal), a uniform sky gives L Int cos^2 d omega = 2 pi L / 3 on a horizontal
+// facet and, by the integrand's symmetry about the horizon, half of it on a wall.
+TEST(SkyIrradiance, FallOffWeightsTheIntegrandByTheAngleFromTheNormal) {
+    constexpr double kL = 0.02;
+    const Atmosphere atm =
+        Atmosphere::from_rads({uniform_rad({0.5, 0.6}, 30, 90, 0.1, kL, 0.9, 0.001)}, {"u.rad"});
+    const SkyIrradiance e(atm, false, [](double cos) { return cos; });
+    const double up_expected = 2 * kPi * kL / 3;
+    std::vector<double> up(2), wall(2), wall_table(2, 0.0);
+    e.integrate({0, 0, 1}, up);
+    e.integrate({1, 0, 0}, wall);
+    e.add({1, 0, 0}, 1.0, wall_table);
+    // The midpoint sum of a smooth integrand over 0.5 x 1 deg cells (the kink at the
+    // facet's horizon is gone: F cos is 0 there with zero slope): 1e-5 as above.
+    EXPECT_NEAR(up[0], up_expected, 1e-5 * up_expected);
+    EXPECT_NEAR(wall[0], up_expected / 2, 1e-5 * up_expected);
+    // A table node sits on the wall's normal (zenith 90, azimuth 90): its value.
+    EXPECT_NEAR(wall_table[0], wall[0], 1e-12);
+}
+
 TEST(SkyIrradiance, AureoleSkyAgreesWithAMonteCarloIntegral) {
     const Atmosphere atm = aureole_atmosphere();
     const SkyInterpolator sky(atm);

@@ -1,8 +1,9 @@
 // --open-sky integrated (RenderOptions::open_sky_integrated), the control variate of the
 // montecarlo hemisphere: against a closed form on an open plane, where it leaves no
 // noise at all, and against the plain estimator in a scene that hides part of the sky,
-// for a Lambertian, a mirror-lobed and a split (SPECULAR_CURVE) material. (The street
-// canyon's radiosity reference checks it too: canyon_test.cpp.)
+// for a Lambertian, a mirror-lobed, a split (SPECULAR_CURVE) material and one with an
+// incoming fall-off. (The street canyon's radiosity reference checks it too:
+// canyon_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -141,9 +142,14 @@ TEST(OpenSky, AgreesWithTheSampledSkyBesideAWallForEachKindOfMaterial) {
     MaterialOptics split = radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta());
     split.emissivity.push_back(std::vector<double>(kWl.size(), 1 - 0.2));
     split.specular_curve = 1;
+    // A grass-like incoming fall-off: F = 1 to 45 deg, linear to 0.2 at 80 deg and 0.1
+    // at 90 deg (White (1996), section 5.2.3), with a mirror part too.
+    MaterialOptics falling = radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta());
+    for (int d = 0; d <= 90; ++d)
+        falling.fall_off[d] = d <= 45 ? 1.0 : d <= 80 ? 1.0 - 0.8 * (d - 45) / 35.0 : 0.2 - 0.01 * (d - 80);
     const MaterialOptics materials[] = {
         radiometry::grey_material(1, kA, kWl.size()),
-        radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta()), split};
+        radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta()), split, falling};
     for (const MaterialOptics& m : materials) {
         const auto mats = radiometry::MaterialLibrary::from_optics({m});
         const RenderResult cv =
@@ -155,7 +161,8 @@ TEST(OpenSky, AgreesWithTheSampledSkyBesideAWallForEachKindOfMaterial) {
         // interpolation adds at most 2.6e-4 of the sky's E (sky_irradiance_test.cpp), a
         // fifth of the radiance here: 5e-5 allowed besides 4 standard errors.
         EXPECT_NEAR(p.difference, 0, 4 * p.standard_error + 5e-5 * p.mean)
-            << "specularity " << m.specularity << ", split " << m.split_reflectance();
+            << "specularity " << m.specularity << ", split " << m.split_reflectance()
+            << ", F(80 deg) " << m.fall_off[80];
         // And the comparison can see a bias of 1 % of the sky's part.
         EXPECT_LT(4 * p.standard_error, 0.002 * p.mean);
     }
