@@ -4,6 +4,8 @@
 //   BM_SkyIrradianceSetUp   the quadrature grid's 64 800 stencils, once per render
 //   BM_SkyIrradianceNode    one node of the table (W_c(n) over the grid, then the
 //                           cells' spectra): paid once per node a render touches
+//   BM_SkyIrradianceNodeFallOff  the same with a material's incoming fall-off F(theta)
+//                           (linear between whole degrees) weighting the integrand
 //   BM_SkyIrradianceRead    a hit's E(n) from four warm nodes
 //   BM_SkyInterpolatorAdd   one interpolated sky lookup: what each hemisphere ray that
 //                           escapes upward no longer needs
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "radiometry/atmosphere.hpp"
+#include "radiometry/material.hpp"
 #include "radiometry/sky_interpolation.hpp"
 #include "radiometry/sky_irradiance.hpp"
 
@@ -63,6 +66,25 @@ void BM_SkyIrradianceNode(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_SkyIrradianceNode)->Unit(benchmark::kMicrosecond);
+
+void BM_SkyIrradianceNodeFallOff(benchmark::State& state) {
+    // A grass-like fall-off: 1 to 45 deg, then linear to 0.2 at 80 and 0.1 at 90 deg.
+    radiometry::MaterialOptics m = radiometry::grey_material(1, 0.1, 1);
+    for (int d = 0; d <= 90; ++d)
+        m.fall_off[d] = d <= 45 ? 1.0 : d <= 80 ? 1.0 - 0.8 * (d - 45) / 35.0 : 0.2 - 0.01 * (d - 80);
+    const auto lib = radiometry::MaterialLibrary::from_optics({m});
+    const radiometry::MaterialOptics& mm = *lib.find(1);
+    const radiometry::SkyIrradiance e(landsat_like(), false,
+                                      [&mm](double c) { return mm.fall_off_cos(c); });
+    const auto n = normals(64);
+    std::vector<double> out(144);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        e.integrate(n[i++ % n.size()], out);
+        benchmark::DoNotOptimize(out.data());
+    }
+}
+BENCHMARK(BM_SkyIrradianceNodeFallOff)->Unit(benchmark::kMicrosecond);
 
 void BM_SkyIrradianceRead(benchmark::State& state) {
     const radiometry::SkyIrradiance e(landsat_like(), false);

@@ -60,7 +60,8 @@ private:
     };
     SkyInterpolator m_sky;
     bool m_emitted = false;
-    std::function<double(double)> m_fall_off;
+    static constexpr int kFallOffSteps = 16384;
+    std::vector<double> m_fall_off;  // cos F(cos) at cos = j / kFallOffSteps; empty: F = 1
     std::vector<Direction> m_grid;
     std::unique_ptr<std::once_flag[]> m_once;
     mutable std::vector<std::vector<double>> m_nodes;
