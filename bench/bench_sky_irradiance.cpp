@@ -55,8 +55,8 @@ void BM_SkyIrradianceSetUp(benchmark::State& state) {
 }
 BENCHMARK(BM_SkyIrradianceSetUp)->Unit(benchmark::kMillisecond);
 
-void BM_SkyIrradianceNode(benchmark::State& state) {
-    const radiometry::SkyIrradiance e(landsat_like(), false);
+// One node after another, at 64 normals near the zenith.
+void time_nodes(benchmark::State& state, const radiometry::SkyIrradiance& e) {
     const auto n = normals(64);
     std::vector<double> out(144);
     std::size_t i = 0;
@@ -64,6 +64,10 @@ void BM_SkyIrradianceNode(benchmark::State& state) {
         e.integrate(n[i++ % n.size()], out);
         benchmark::DoNotOptimize(out.data());
     }
+}
+
+void BM_SkyIrradianceNode(benchmark::State& state) {
+    time_nodes(state, radiometry::SkyIrradiance(landsat_like(), false));
 }
 BENCHMARK(BM_SkyIrradianceNode)->Unit(benchmark::kMicrosecond);
 
@@ -74,15 +78,8 @@ void BM_SkyIrradianceNodeFallOff(benchmark::State& state) {
         m.fall_off[d] = d <= 45 ? 1.0 : d <= 80 ? 1.0 - 0.8 * (d - 45) / 35.0 : 0.2 - 0.01 * (d - 80);
     const auto lib = radiometry::MaterialLibrary::from_optics({m});
     const radiometry::MaterialOptics& mm = *lib.find(1);
-    const radiometry::SkyIrradiance e(landsat_like(), false,
-                                      [&mm](double c) { return mm.fall_off_cos(c); });
-    const auto n = normals(64);
-    std::vector<double> out(144);
-    std::size_t i = 0;
-    for (auto _ : state) {
-        e.integrate(n[i++ % n.size()], out);
-        benchmark::DoNotOptimize(out.data());
-    }
+    time_nodes(state, radiometry::SkyIrradiance(landsat_like(), false,
+                                                [&mm](double c) { return mm.fall_off_cos(c); }));
 }
 BENCHMARK(BM_SkyIrradianceNodeFallOff)->Unit(benchmark::kMicrosecond);
 

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "io/rad.hpp"
+#include "test_sky.hpp"
 
 namespace sigchain::radiometry {
 namespace {
@@ -23,26 +24,7 @@ using geo::Vec3;
 constexpr double kPi = std::numbers::pi;
 constexpr double kRad = kPi / 180;
 
-// Sample 0: a clear sky brightening toward the horizon and toward azimuth 40 deg;
-// sample 1: the same with an aureole 10 deg wide around the sun (zenith 30, azimuth 150).
-double sky_sample(int k, double zenith_deg, double azimuth_deg) {
-    const double z = zenith_deg * kRad;
-    const double smooth = 0.01 * (1 + 0.8 * (1 - std::cos(z)) +
-                                  0.3 * std::sin(z) * std::cos((azimuth_deg - 40) * kRad));
-    if (k == 0) return smooth;
-    const Vec3 d = geo::direction_from_degrees(zenith_deg, azimuth_deg);
-    const double c = geo::dot(d, geo::direction_from_degrees(30, 150));
-    const double angle = std::acos(std::clamp(c, -1.0, 1.0));
-    return smooth + 0.05 * std::exp(-std::pow(angle / (10 * kRad), 2));
-}
-
-Atmosphere aureole_atmosphere() {
-    io::Rad rad = uniform_rad({0.55, 0.65}, 30, 150, 0.1, 0.01, 0.9, 0.001, {-60, 0, 60}, 18, 36);
-    for (auto& cell : rad.sky->cells)
-        for (int k = 0; k < 2; ++k)
-            cell.scattered_radiance[k] = sky_sample(k, cell.zenith_deg, cell.azimuth_deg);
-    return Atmosphere::from_rads({rad}, {"aureole.rad"});
-}
+Atmosphere aureole_atmosphere() { return test::aureole_atmosphere(18, 36); }
 
 Vec3 random_unit(std::mt19937_64& rng) {
     std::normal_distribution<double> g;

@@ -14,6 +14,7 @@
 
 #include "io/rad.hpp"
 #include "radiometry/sky_interpolation.hpp"
+#include "test_sky.hpp"
 
 namespace sigchain::radiometry {
 namespace {
@@ -23,27 +24,8 @@ using geo::Vec3;
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
 
-// Sample 0: a clear sky's smooth brightening toward the horizon and toward azimuth 40
-// deg. Sample 1: the same with an aureole, a bright peak 20 deg wide around the sun
-// (zenith 30 deg, azimuth 150 deg): steep gradients between cells.
-double sky_sample(int k, double zenith_deg, double azimuth_deg) {
-    const double z = zenith_deg * kDeg;
-    const double smooth = 0.01 * (1 + 0.8 * (1 - std::cos(z)) +
-                                  0.3 * std::sin(z) * std::cos((azimuth_deg - 40) * kDeg));
-    if (k == 0) return smooth;
-    const Vec3 d = geo::direction_from_degrees(zenith_deg, azimuth_deg);
-    const double c = geo::dot(d, geo::direction_from_degrees(30, 150));
-    const double angle = std::acos(std::clamp(c, -1.0, 1.0));
-    return smooth + 0.05 * std::exp(-std::pow(angle / (10 * kDeg), 2));
-}
-
 Atmosphere sky_atmosphere(int rings, int columns) {
-    io::Rad rad =
-        uniform_rad({0.55, 0.65}, 30, 150, 0.1, 0.01, 0.9, 0.001, {-60, 0, 60}, rings, columns);
-    for (auto& cell : rad.sky->cells)
-        for (int k = 0; k < 2; ++k)
-            cell.scattered_radiance[k] = sky_sample(k, cell.zenith_deg, cell.azimuth_deg);
-    return Atmosphere::from_rads({rad}, {"aureole.rad"});
+    return test::aureole_atmosphere(rings, columns);
 }
 
 // The interpolated sky's largest change per radian of angle on the sphere, sample k,

@@ -41,11 +41,7 @@ struct Training {
 };
 
 RenderResult render_with(const Training& t, const Sensor& cam, RenderOptions o) {
-    RenderInputs in;
-    in.scene = &t.scene;
-    in.materials = &t.mats;
-    in.atmosphere = &t.atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&t.scene, &t.mats, &t.atm, &cam);
     o.truth = true;
     o.sampling_layers = true;
     o.adjacency = false;
@@ -71,11 +67,7 @@ RenderOptions accuracy_options() {
 // The scale of --convergence-error scene on the training scene: the band's L_grey
 // (tracer.hpp grey_ground_radiance) as the render's context computes it.
 double grey_radiance(const Training& t, const Sensor& cam) {
-    RenderInputs in;
-    in.scene = &t.scene;
-    in.materials = &t.mats;
-    in.atmosphere = &t.atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&t.scene, &t.mats, &t.atm, &cam);
     RenderOptions o = accuracy_options();
     o.adjacency = false;
     o.bounces = 1;

@@ -115,11 +115,7 @@ RenderResult render_plate(double rho, const radiometry::Atmosphere& atm, RenderO
     const auto mats =
         radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, rho, kWl.size())});
     const Ortho cam(3, 3, 1, -1.5, 1.5, {0, 0, -1});
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     o.threads = 1;
     return render(in, o);
 }
@@ -174,11 +170,7 @@ TEST(Adjacency, EnvironmentIsTheMeanReflectanceWithinTheRadius) {
                                                   radiometry::grey_material(2, 0.5, kWl.size())});
     const auto atm = radiometry::Atmosphere::from_rads({coupled_rad(0.2, 0.1, 0.05)}, {"c.rad"});
     Ortho cam(3, 3, 1, -1.5, 1.5, {0, 0, -1});
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     const auto both = environment_reflectance(in, {0, 0, 0}, 50, 128);
     ASSERT_EQ(both.size(), kWl.size());
     EXPECT_NEAR(both[0], 0.3, 1e-9);  // the grid is symmetric about x = 0

@@ -26,11 +26,7 @@ BounceEstimate estimate(const scene::Scene& s, double a, const Sensor& cam, int 
         {radiometry::grey_material(1, a, kWl.size())});
     auto atm = radiometry::Atmosphere::from_rads(
         {radiometry::uniform_rad(kWl, 30, 0.01, 0.0, 0.0, 0.9, 0.001)}, {"uniform.rad"});
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     o.bounces = bounces;
     const TraceContext c = make_context(in, o);

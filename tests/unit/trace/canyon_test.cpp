@@ -191,11 +191,7 @@ constexpr long kHemisphere = 1024;  // montecarlo rays per primary hit
 std::vector<double> render_floor(int bounces, bool open_sky_integrated = false) {
     const CanyonScene& c = canyon();
     Ortho cam(kPixels, 1, 0.05, -0.025, 6.4, {0, 0, -1});
-    RenderInputs in;
-    in.scene = &c.scene;
-    in.materials = &c.materials;
-    in.atmosphere = &c.atmosphere;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&c.scene, &c.materials, &c.atmosphere, &cam);
     RenderOptions o;
     o.sampling = Sampling::MonteCarlo;
     o.bounces = bounces;

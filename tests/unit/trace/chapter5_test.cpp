@@ -203,11 +203,7 @@ test::MeanError render_case(const Case& c, Sampling sampling, bool jitter = fals
         {"chapter5.rad"});
     const double v = rad(c.view_zenith_deg);
     test::Ortho cam(8, 8, 1, 0, 0, {0, std::sin(v), -std::cos(v)}, 50);
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     o.sampling = sampling;
     o.golfball_jitter = jitter;
@@ -446,11 +442,7 @@ test::MeanError wall_case(const Wall& w, Sampling smp) {
                                  {-89, 0, 89})},
         {"chapter5.rad"});
     test::Ortho cam(8, 8, 0.005, 0.01, 0, {0, 0, -1}, 50);
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     o.sampling = smp;
     o.golfball_jitter = true;

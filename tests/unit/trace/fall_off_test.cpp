@@ -69,11 +69,7 @@ double leaving(const radiometry::MaterialOptics& mat, const Vec3& dir, Sampling 
     auto atm = radiometry::Atmosphere::from_rads(
         {radiometry::uniform_rad(kWl, 30, 120, 0.2, 0.004, 0.9, 0.001, {-89, 0, 89})}, {"u.rad"});
     Ortho cam(2, 2, 1, 0, 0, dir, 50);
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     o.sampling = sampling;
     o.samples_per_pixel = 64;

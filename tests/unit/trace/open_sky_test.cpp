@@ -57,11 +57,7 @@ double horizontal_irradiance(double z0_deg, double z1_deg) {
 RenderResult render_scene(const scene::Scene& s, const radiometry::MaterialLibrary& mats,
                           const radiometry::Atmosphere& atm, const Ortho& cam, bool integrated,
                           long hemisphere, long spp) {
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     o.sampling = Sampling::MonteCarlo;
     o.open_sky_integrated = integrated;

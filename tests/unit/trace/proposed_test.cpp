@@ -47,11 +47,7 @@ test::MeanError render_plate(const Brdf& wall_lobe, Sampling smp, int spp = 256)
     const auto atm = radiometry::Atmosphere::from_rads(
         {radiometry::uniform_rad(kWl, kSunZenith, 90, kEs, 0, 1, 0, {-89, 0, 89})}, {"sun.rad"});
     test::Ortho cam(8, 8, 0.005, 0.01, 0, {0, 0, -1}, 50);
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     o.sampling = smp;
     o.golfball_jitter = true;  // an unbiased stratified estimate of the plate's hemisphere

@@ -41,11 +41,7 @@ struct Inputs {
         {radiometry::uniform_rad(kWl, 40, 120, 0.2, 0.004, 0.9, 0.001)}, {"u.rad"});
     Ortho camera{13, 12, 0.7, -4, 4, {0.2, 0.1, -1}};
     RenderInputs in() const {
-        RenderInputs r;
-        r.scene = &scene;
-        r.materials = &materials;
-        r.atmosphere = &atmosphere;
-        r.sensor = &camera;
+        RenderInputs r = test::inputs(&scene, &materials, &atmosphere, &camera);
         return r;
     }
 };

@@ -49,11 +49,7 @@ radiometry::Atmosphere atmosphere(double sun_zenith, double sun_e, double sky) {
 
 RenderResult run(const scene::Scene& s, const radiometry::MaterialLibrary& mats,
                  const radiometry::Atmosphere& atm, const Sensor& cam, RenderOptions o) {
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     return render(in, o);
 }
 
@@ -323,11 +319,7 @@ TEST(Render, ProgressIsMonotonicAndEndsAtTheTotal) {
     auto mats = busy_materials();
     auto atm = atmosphere(40, 0.2, 0.004);
     Ortho cam(24, 8, 0.7, -4, 4, {0, 0, -1});
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     RenderOptions o;
     std::vector<RenderResult> results;
     for (unsigned threads : {1u, 3u}) {
@@ -399,11 +391,7 @@ TEST(Render, EmissionFromFacetTemperatures) {
     auto atm = atmosphere(120, 0.2, 0.0);
     Ortho cam(1, 1, 1, 0, 0, {0, 0, -1});
     Temperatures temps{{"1-1-1", 300.0}};
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     in.temperatures = &temps;
     RenderOptions o;
     o.truth = true;

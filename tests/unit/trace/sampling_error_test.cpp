@@ -45,11 +45,7 @@ struct Fixture {
 };
 
 RenderResult render_with(const Fixture& f, const Sensor& cam, RenderOptions o) {
-    RenderInputs in;
-    in.scene = &f.scene;
-    in.materials = &f.mats;
-    in.atmosphere = &f.atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&f.scene, &f.mats, &f.atm, &cam);
     o.truth = true;
     o.sampling_layers = true;
     o.adjacency = false;
@@ -349,11 +345,7 @@ TEST(SamplingError, WithoutConvergenceTheImageIsUnchangedByTheLayers) {
     o.samples_per_pixel = 4;
     o.threads = 1;
     const RenderResult with = render_with(f, cam, o);
-    RenderInputs in;
-    in.scene = &f.scene;
-    in.materials = &f.mats;
-    in.atmosphere = &f.atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&f.scene, &f.mats, &f.atm, &cam);
     o.adjacency = false;
     o.bounces = 1;
     const RenderResult without = render(in, o);

@@ -350,11 +350,7 @@ TEST(RenderEmission, BlackbodyPlateThroughUnitTransmissionGivesPlanck) {
         {radiometry::uniform_rad(wl, 120, 0, 0.0, 0.0, 1.0, 0.0)}, {"u.rad"});
     test::Ortho cam(1, 1, 1, 0, 0, {0, 0, -1});
     Temperatures temps{{"1-1-1", 300.0}};
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     in.temperatures = &temps;
     const RenderResult res = render(in, RenderOptions{});
     for (std::size_t k = 0; k < wl.size(); ++k)
@@ -384,11 +380,7 @@ TEST(RenderEmission, EmittedSkyAndPathAreAddedOnlyWithTemperatures) {
         radiometry::MaterialLibrary::from_optics({radiometry::grey_material(1, r, wl.size())});
     test::Ortho cam(1, 1, 1, 0, 0, {0, 0, -1});
     Temperatures temps{{"1-1-1", 300.0}};
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = test::inputs(&s, &mats, &atm, &cam);
     in.temperatures = &temps;
     RenderResult res = render(in, RenderOptions{});
     for (std::size_t k = 0; k < wl.size(); ++k) {

@@ -43,6 +43,18 @@ inline scene::Scene closed_box(long material) {
     return single(m.data);
 }
 
+// A render's inputs: the scene, materials, atmosphere and sensor every test names
+// (pointers, as RenderInputs keeps them: each must outlive the render).
+inline RenderInputs inputs(const scene::Scene* s, const radiometry::MaterialLibrary* mats,
+                           const radiometry::Atmosphere* atm, const Sensor* sensor) {
+    RenderInputs in;
+    in.scene = s;
+    in.materials = mats;
+    in.atmosphere = atm;
+    in.sensor = sensor;
+    return in;
+}
+
 // A render from inside closed_box(1) with `mats` and `atm`, every wall at `t_k`: a
 // 4 x 4 camera looking down at the floor from off the box's symmetry lines (from a
 // symmetric point, golf-ball rays would meet the box's edges exactly, where no face is
@@ -54,11 +66,7 @@ inline image::Image render_closed_box(const radiometry::MaterialLibrary& mats,
     Ortho cam(4, 4, 0.2, -0.3137, 0.2791, {0, 0, -1}, 0.5);
     Temperatures temps;
     for (int f = 1; f <= 6; ++f) temps["1-1-" + std::to_string(f)] = t_k;
-    RenderInputs in;
-    in.scene = &s;
-    in.materials = &mats;
-    in.atmosphere = &atm;
-    in.sensor = &cam;
+    RenderInputs in = inputs(&s, &mats, &atm, &cam);
     in.temperatures = &temps;
     RenderOptions o;
     o.sampling = sampling;
