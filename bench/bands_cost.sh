@@ -3,7 +3,8 @@
 #   bench/bands_cost.sh BUILD [BANDS...]        (default BANDS: 3 30 100 200)
 # Environment: ROUNDS [3] rounds over the band counts, SIZE [32] the image's lines and
 # detectors, PER_BAND_MAX [100] the largest count also run as one build_radiance per
-# band, OUT [none] a folder for the raw times (bands_cost.tsv, for `make chart`).
+# band, OUT [none] a folder for the raw times (bands_cost.tsv, for `make chart`),
+# TRACE_FLAGS [none] flags added to trace's command line (e.g. --open-sky sampled).
 #
 # The stages of data/scenes/hawkeye's imaging spectrometer (`make hyperspectral`:
 # hyperspectral.mk, 5 spectral samples per band) with N of the 211 bands of
@@ -81,7 +82,7 @@ round() {
                 { echo "$0: band $k of $n: one run per band wrote other bytes" >&2; exit 1; }; done
         fi
         /usr/bin/time -f %e -o "$W/time" "$BIN/trace" -v "$W/hsi.adv" "$o/hawkeye.snd" "$ODB" \
-            "$o/hyperspectral.mat" $(seq -f "$o/hawkeye-%g.rad" 1 "$n") -o "$o/cube.img" \
+            "$o/hyperspectral.mat" $(seq -f "$o/hawkeye-%g.rad" 1 "$n") -o "$o/cube.img" ${TRACE_FLAGS:-} \
             2> "$W/trace.log" || { cat "$W/trace.log" >&2; exit 1; }
         tr=$(cat "$W/time")
         line=$(sed -n -E 's/.*set-up ([0-9.]+) s:.*\.rad tables ([0-9.]+) s.*render ([0-9.]+) s.*/\1 \2 \3/p' \

@@ -157,11 +157,14 @@ std::string open_sky_description(const TraceContext& c) {
                   "open sky: integrated over each primary hit's hemisphere (%zu table(s) by "
                   "facet normal, one per incoming fall-off, %g x %g deg, %zu of %zu nodes "
                   "computed), hemisphere rays sample what the scene changes; for %ld of %zu "
-                  "material(s) (the others have a specular lobe: their rays sample the sky)",
+                  "material(s)%s",
                   c.open_sky_tables.size(), radiometry::SkyIrradiance::kZenithStepDeg,
                   radiometry::SkyIrradiance::kAzimuthStepDeg, nodes,
                   c.open_sky_tables.size() * c.open_sky_tables.front()->node_count(), served,
-                  materials.size());
+                  materials.size(),
+                  static_cast<std::size_t>(served) < materials.size()
+                      ? " (the others have a specular lobe: their rays sample the sky)"
+                      : "");
     return buf;
 }
 
