@@ -16,9 +16,23 @@ load test_helper
     assert_equal "$stderr" ''
     # PNG width and height (IHDR, big-endian, bytes 17-24): two scenes side by side.
     [ "$(od -An -tu1 -j16 -N8 chart.png | awk '{ print $3 * 256 + $4, $7 * 256 + $8 }')" = "1400 520" ]
-    # One label per point, or per group of points of one label whose markers overlap.
+    # One label per point, or per group of points of one label whose markers overlap:
+    # every label text of a scene's points is set in that scene's panel (the panels in
+    # refs.tsv's order, each opened by "unset label"), and no more labels than points.
+    # (How many groups there are depends on where the points fall: not a fixed count.)
     CHART_PLOT_DEBUG=plot.gp run -0 "$SIGCHAIN_SOURCE_DIR/scripts/chart-plot" .
-    [ "$(grep -c '^set label' plot.gp)" -ge 40 ]
+    run -0 awk -F '\t' '
+        FILENAME ~ /\.tsv$/ && FNR == 1 { next }
+        FILENAME ~ /refs\.tsv$/ { order[++ns] = $1; next }
+        FILENAME ~ /data\.tsv$/ { lab = $3; if ($10 != "-") { lab = $10; sub(/.*,/, "T=", lab) }
+                                  want[$1 SUBSEP lab] = 1; points++; next }
+        /^unset label/ { panel++; next }
+        /^set label/ { match($0, /"[^"]*"/); labels++
+                       got[order[panel] SUBSEP substr($0, RSTART + 1, RLENGTH - 2)] = 1 }
+        END { for (k in want) if (!(k in got)) { split(k, a, SUBSEP); print "no label " a[2] " in " a[1]; bad = 1 }
+              n = 0; for (k in want) n++
+              print labels " labels for " points " points, " n " texts"
+              exit bad || labels > points || labels < n }' refs.tsv data.tsv plot.gp
 }
 
 @test "chart-plot: a missing data file exits 1 naming it" {
