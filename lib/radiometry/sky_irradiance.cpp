@@ -17,12 +17,12 @@ SkyIrradiance::SkyIrradiance(const Atmosphere& atmosphere, bool emitted,
                                                 kAzimuthNodes)),
       m_nodes(static_cast<std::size_t>(kZenithNodes) * kAzimuthNodes) {
     if (fall_off) {
-        // cos F(cos) at kFallOffSteps + 1 cosines from 0 to 1, read linearly: a material's
-        // F (linear between whole degrees) takes an acos per point, three times a node's
-        // other work (bench_sky_irradiance). Interpolation in cos errs by at most
-        // h^2 |G''| / 8 ~ 1e-8 of E (h = 1 / 16384) away from F's kinks, and within one
-        // step of a kink: a strip of 2 pi h sr, 4e-4 of the hemisphere at the worst
-        // (a kink at the normal itself).
+        // cos F(cos) at kFallOffSteps + 1 cosines from 0 to 1, read linearly: a
+        // material's F (linear between whole degrees) would take an acos per point, 2.5
+        // times a node's other work (bench_sky_irradiance: 899 against 254 us a node).
+        // Interpolation in cos errs by at most h^2 |G''| / 8 ~ 1e-8 of E (h = 1 / 16384)
+        // away from F's kinks, and within one step of a kink: a strip of 2 pi h sr, 4e-4
+        // of the hemisphere at the worst (a kink at the normal itself).
         m_fall_off.resize(kFallOffSteps + 1);
         for (int j = 0; j <= kFallOffSteps; ++j) {
             const double c = static_cast<double>(j) / kFallOffSteps;

@@ -54,15 +54,14 @@ void facet_temperatures(const RenderInputs& in, TraceContext& c) {
 }
 
 // The open-sky tables (TraceContext::open_sky): one per distinct incoming fall-off
-// (materials that share one share its table), each weighted by its materials' F.
+// (materials that share one share its table; a flat fall-off is all ones), each
+// weighted by its materials' F.
 void make_open_sky(TraceContext& c) {
     const auto& atm = *c.in.atmosphere;
     std::vector<const MaterialOptics*> owners;  // the first material of each table
     for (const MaterialOptics& m : c.in.materials->materials()) {
         std::size_t t = 0;
-        while (t < owners.size() && !(owners[t]->flat_fall_off == m.flat_fall_off &&
-                                      (m.flat_fall_off || owners[t]->fall_off == m.fall_off)))
-            ++t;
+        while (t < owners.size() && owners[t]->fall_off != m.fall_off) ++t;
         if (t == owners.size()) {
             owners.push_back(&m);
             std::function<double(double)> fall_off;
@@ -70,7 +69,7 @@ void make_open_sky(TraceContext& c) {
             c.open_sky_tables.push_back(
                 std::make_shared<const radiometry::SkyIrradiance>(atm, c.emission, fall_off));
         }
-        c.open_sky[&m] = c.open_sky_tables[t].get();
+        c.open_sky.push_back(c.open_sky_tables[t].get());
     }
 }
 
@@ -130,8 +129,11 @@ TraceContext make_context(const RenderInputs& inputs, const RenderOptions& opt) 
 }
 
 const radiometry::SkyIrradiance* open_sky_of(const TraceContext& c, const MaterialOptics& m) {
-    const auto it = c.open_sky.find(&m);
-    return it == c.open_sky.end() ? nullptr : it->second;
+    if (c.open_sky.empty()) return nullptr;
+    const auto& all = c.in.materials->materials();
+    const std::less<const MaterialOptics*> before;
+    if (before(&m, all.data()) || !before(&m, all.data() + all.size())) return nullptr;
+    return c.open_sky[static_cast<std::size_t>(&m - all.data())];
 }
 
 FacetFrame::FacetFrame(const geo::Vec3& n) : z(n) {

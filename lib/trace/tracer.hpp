@@ -20,7 +20,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "core/numeric.hpp"
@@ -69,10 +68,10 @@ struct TraceContext {
     std::optional<radiometry::SkyTable> sky_table;
     // With RenderOptions::open_sky_integrated: the open sky's irradiance by facet
     // normal (sky_irradiance.hpp), of the same interpolated sky as `sky`, one table per
-    // distinct incoming fall-off, and each material's table (open_sky_of).
+    // distinct incoming fall-off, and each material's table by its place in
+    // in.materials->materials() (open_sky_of); both empty when the open sky is sampled.
     std::vector<std::shared_ptr<const radiometry::SkyIrradiance>> open_sky_tables;
-    std::unordered_map<const radiometry::MaterialOptics*, const radiometry::SkyIrradiance*>
-        open_sky;
+    std::vector<const radiometry::SkyIrradiance*> open_sky;
     // The column's vertical optical depth per sample (Atmosphere::column_optical_depth;
     // empty when unknown), for the effective sky (world.hpp).
     std::vector<double> column_depth;
@@ -97,7 +96,7 @@ struct TraceContext {
 
 TraceContext make_context(const RenderInputs& in, const RenderOptions& opt);
 // Material m's open-sky table (TraceContext::open_sky), or null when the open sky is
-// sampled.
+// sampled (or m is not one of the library's materials).
 const radiometry::SkyIrradiance* open_sky_of(const TraceContext& c,
                                              const radiometry::MaterialOptics& m);
 // Per band, the radiance at the sensor at the band-centre sample of a Lambertian ground
