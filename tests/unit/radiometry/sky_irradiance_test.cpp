@@ -89,9 +89,7 @@ TEST(SkyIrradiance, FallOffWeightsTheIntegrandByTheAngleFromTheNormal) {
 // steps, independent of the table's quadrature over directions and its F by cos).
 TEST(SkyIrradiance, GrassLikeFallOffGivesPiLTimesItsMean) {
     constexpr double kL = 0.02;
-    auto f = [](double deg) {
-        return deg <= 45 ? 1.0 : deg <= 80 ? 1.0 - 0.8 * (deg - 45) / 35.0 : 0.2 - 0.01 * (deg - 80);
-    };
+    const auto f = test::grass_like_fall_off;
     const Atmosphere atm =
         Atmosphere::from_rads({uniform_rad({0.5, 0.6}, 30, 90, 0.1, kL, 0.9, 0.001)}, {"u.rad"});
     const SkyIrradiance e(atm, false, [&](double cos) {

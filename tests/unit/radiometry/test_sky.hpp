@@ -1,5 +1,7 @@
 // A sky with structure for the sky-lookup tests (sky_table_test.cpp,
-// sky_irradiance_test.cpp): two spectral samples over a .rad sky map of any size.
+// sky_irradiance_test.cpp): two spectral samples over a .rad sky map of any size; and a
+// grass-like incoming fall-off for the tests of F (sky_irradiance_test.cpp,
+// trace/open_sky_test.cpp, trace/fall_off_test.cpp).
 #pragma once
 
 #include <algorithm>
@@ -35,6 +37,12 @@ inline Atmosphere aureole_atmosphere(int rings, int columns) {
         for (int k = 0; k < 2; ++k)
             cell.scattered_radiance[k] = sky_sample(k, cell.zenith_deg, cell.azimuth_deg);
     return Atmosphere::from_rads({rad}, {"aureole.rad"});
+}
+
+// F at `deg` from the normal: 1 to 45 deg, then linear to 0.2 at 80 deg and 0.1 at 90
+// deg, Case 4's fivefold drop at a high oblique view (White (1996), section 5.2.3).
+inline double grass_like_fall_off(double deg) {
+    return deg <= 45 ? 1.0 : deg <= 80 ? 1.0 - 0.8 * (deg - 45) / 35.0 : 0.2 - 0.01 * (deg - 80);
 }
 
 }  // namespace sigchain::radiometry::test

@@ -10,6 +10,7 @@
 
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "../radiometry/test_sky.hpp"
 #include "test_scene.hpp"
 #include "trace/render.hpp"
 
@@ -23,12 +24,10 @@ using geo::Vec3;
 constexpr double kPi = std::numbers::pi;
 const std::vector<double> kWl = {0.5, 0.6};
 
-// F = 1 to 45 deg, then linear to 0.2 at 80 deg and 0.1 at 90 deg: a grass-like
-// fall-off with Case 4's fivefold drop at a high oblique view.
+// The grass-like fall-off of test_sky.hpp: Case 4's fivefold drop at a high oblique view.
 radiometry::MaterialOptics oblique_material(double rho) {
     auto m = radiometry::grey_material(1, rho, kWl.size());
-    for (int d = 0; d <= 90; ++d)
-        m.fall_off[d] = d <= 45 ? 1.0 : d <= 80 ? 1.0 - 0.8 * (d - 45) / 35.0 : 0.2 - 0.01 * (d - 80);
+    for (int d = 0; d <= 90; ++d) m.fall_off[d] = radiometry::test::grass_like_fall_off(d);
     return m;
 }
 

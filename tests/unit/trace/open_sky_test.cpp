@@ -12,6 +12,7 @@
 
 #include "radiometry/atmosphere.hpp"
 #include "radiometry/material.hpp"
+#include "../radiometry/test_sky.hpp"
 #include "test_scene.hpp"
 #include "trace/render.hpp"
 
@@ -138,11 +139,9 @@ TEST(OpenSky, AgreesWithTheSampledSkyBesideAWallForEachKindOfMaterial) {
     MaterialOptics split = radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta());
     split.emissivity.push_back(std::vector<double>(kWl.size(), 1 - 0.2));
     split.specular_curve = 1;
-    // A grass-like incoming fall-off: F = 1 to 45 deg, linear to 0.2 at 80 deg and 0.1
-    // at 90 deg (White (1996), section 5.2.3), with a mirror part too.
+    // A grass-like incoming fall-off (test_sky.hpp), with a mirror part too.
     MaterialOptics falling = radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta());
-    for (int d = 0; d <= 90; ++d)
-        falling.fall_off[d] = d <= 45 ? 1.0 : d <= 80 ? 1.0 - 0.8 * (d - 45) / 35.0 : 0.2 - 0.01 * (d - 80);
+    for (int d = 0; d <= 90; ++d) falling.fall_off[d] = radiometry::test::grass_like_fall_off(d);
     const MaterialOptics materials[] = {
         radiometry::grey_material(1, kA, kWl.size()),
         radiometry::grey_material(1, kA, kWl.size(), 0.3, Brdf::delta()), split, falling};
